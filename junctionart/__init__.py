@@ -1,0 +1,1 @@
+"""junctionart: procedural OpenDRIVE road networks after the JunctionArt paper."""

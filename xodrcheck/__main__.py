@@ -1,0 +1,5 @@
+import sys
+
+from xodrcheck.cli import main
+
+sys.exit(main())

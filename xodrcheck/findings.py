@@ -1,0 +1,69 @@
+"""Findings: what the reader and the rules say about a file, with where and why."""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import asdict, dataclass
+
+
+class Severity(enum.IntEnum):
+    """Ordered so that ``max()`` gives the worst."""
+
+    INFO = 0
+    WARNING = 1
+    ERROR = 2
+
+    def __str__(self) -> str:
+        return self.name.lower()
+
+
+class Category(enum.Enum):
+    XML = "xml"
+    SCHEMA = "schema"
+    REFERENCE = "reference"
+    LINK = "link"
+    LANE = "lane"
+    GEOMETRY = "geometry"
+    CURVATURE = "curvature"
+    JUNCTION = "junction"
+    OVERLAP = "overlap"
+
+    def __str__(self) -> str:
+        return self.value
+
+
+@dataclass(frozen=True, slots=True)
+class Finding:
+    """One problem found in a file.
+
+    ``code`` is stable (e.g. ``X101``); ``name`` is its kebab-case name. ``road``/``lane``/``s``/``x``/``y`` say where
+    on the map, ``line`` where in the file; each is ``None`` where it does not apply. ``lane`` is the lane id; with
+    ``section_s`` it completes the :class:`~xodrcheck.model.LaneKey`.
+    """
+
+    code: str
+    name: str
+    category: Category
+    severity: Severity
+    message: str
+    road: str | None = None
+    lane: int | None = None
+    section_s: float | None = None
+    s: float | None = None
+    x: float | None = None
+    y: float | None = None
+    line: int | None = None
+
+    def to_dict(self) -> dict:
+        d = asdict(self)
+        d["category"] = self.category.value
+        d["severity"] = str(self.severity)
+        return d
+
+
+class XodrError(Exception):
+    """Base of every error xodrcheck raises on purpose (one hierarchy, as in shapely)."""
+
+
+class ReadError(XodrError):
+    """The input cannot be read at all (missing file, not a file, too large to be an OpenDRIVE file)."""

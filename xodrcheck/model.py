@@ -1,0 +1,448 @@
+"""The OpenDRIVE document as plain, frozen, typed data.
+
+Nothing here parses XML or evaluates geometry: :mod:`xodrcheck.reader` builds these values, :mod:`xodrcheck.geometry`
+and :mod:`xodrcheck.lanes` evaluate them. Every element keeps the source ``line`` it came from (0 when it was not read
+from a file) so findings can point at it.
+
+Conventions
+-----------
+* Lengths in metres, angles in radians, as in the standard.
+* ``s`` of a record inside a lane section (width, border, road mark, speed) is the standard's ``sOffset``: relative to the
+  lane section's start. ``s`` of a road-level record (geometry, elevation, laneOffset, lane section) is absolute.
+* A value the file did not give and the standard does not default is ``None``, never a made-up 0.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+from functools import cached_property
+from typing import Union
+
+
+# --------------------------------------------------------------------------------------------------------------------
+# Naming a lane: one value type everywhere (findings, meshes, graphs).
+# --------------------------------------------------------------------------------------------------------------------
+@dataclass(frozen=True, slots=True, order=True)
+class LaneKey:
+    """A lane named as (road id, lane-section start s, lane id)."""
+
+    road: str
+    section_s: float
+    lane: int
+
+    def __str__(self) -> str:
+        return f"{self.road}/{self.section_s:g}/{self.lane}"
+
+
+# --------------------------------------------------------------------------------------------------------------------
+# Enumerations
+# --------------------------------------------------------------------------------------------------------------------
+class ElementType(enum.Enum):
+    ROAD = "road"
+    JUNCTION = "junction"
+
+
+class ContactPoint(enum.Enum):
+    START = "start"
+    END = "end"
+
+
+class ElementDir(enum.Enum):
+    """OpenDRIVE 1.8 ``elementDir`` of a link into a direct junction / road: ``+`` or ``-``."""
+
+    PLUS = "+"
+    MINUS = "-"
+
+
+class TrafficRule(enum.Enum):
+    RHT = "RHT"
+    LHT = "LHT"
+
+
+class PRange(enum.Enum):
+    ARC_LENGTH = "arcLength"
+    NORMALIZED = "normalized"
+
+
+class JunctionType(enum.Enum):
+    DEFAULT = "default"
+    DIRECT = "direct"
+    VIRTUAL = "virtual"
+    CROSSING = "crossing"
+
+
+class LaneType(enum.Enum):
+    """Lane types of OpenDRIVE 1.4 to 1.8 (lower-case spellings of older files map onto these)."""
+
+    NONE = "none"
+    DRIVING = "driving"
+    STOP = "stop"
+    SHOULDER = "shoulder"
+    BIKING = "biking"
+    SIDEWALK = "sidewalk"
+    WALKING = "walking"
+    BORDER = "border"
+    RESTRICTED = "restricted"
+    PARKING = "parking"
+    BIDIRECTIONAL = "bidirectional"
+    MEDIAN = "median"
+    SPECIAL1 = "special1"
+    SPECIAL2 = "special2"
+    SPECIAL3 = "special3"
+    ROAD_WORKS = "roadWorks"
+    TRAM = "tram"
+    RAIL = "rail"
+    ENTRY = "entry"
+    EXIT = "exit"
+    OFF_RAMP = "offRamp"
+    ON_RAMP = "onRamp"
+    CONNECTING_RAMP = "connectingRamp"
+    BUS = "bus"
+    TAXI = "taxi"
+    HOV = "HOV"
+    MWY_ENTRY = "mwyEntry"
+    MWY_EXIT = "mwyExit"
+    SLIP_LANE = "slipLane"
+    CURB = "curb"
+    # Not in the standard: the file named a type no version defines. The reader records a finding with the raw name.
+    UNKNOWN = "unknown"
+
+
+#: Lane types a motor vehicle may drive on (used by rules that only concern drivable lanes).
+DRIVABLE_LANE_TYPES = frozenset(
+    {
+        LaneType.DRIVING,
+        LaneType.ENTRY,
+        LaneType.EXIT,
+        LaneType.OFF_RAMP,
+        LaneType.ON_RAMP,
+        LaneType.CONNECTING_RAMP,
+        LaneType.BIDIRECTIONAL,
+        LaneType.BUS,
+        LaneType.TAXI,
+        LaneType.HOV,
+        LaneType.MWY_ENTRY,
+        LaneType.MWY_EXIT,
+        LaneType.SLIP_LANE,
+    }
+)
+
+
+class Side(enum.Enum):
+    LEFT = "left"
+    CENTER = "center"
+    RIGHT = "right"
+
+
+# --------------------------------------------------------------------------------------------------------------------
+# One cubic-profile type for width, border, laneOffset, elevation and superelevation
+# --------------------------------------------------------------------------------------------------------------------
+@dataclass(frozen=True, slots=True)
+class Cubic:
+    """One record of a piecewise cubic profile: ``f(s) = a + b ds + c ds^2 + d ds^3`` with ``ds = s - self.s``.
+
+    ``s`` is the record's start (absolute for road-level profiles, ``sOffset`` for lane records).
+    """
+
+    s: float
+    a: float
+    b: float
+    c: float
+    d: float
+    line: int = 0
+
+
+#: A piecewise cubic profile: records sorted by ``s`` as the file gave them (the reader reports unsorted ones).
+Profile = tuple[Cubic, ...]
+
+
+# --------------------------------------------------------------------------------------------------------------------
+# Plan view
+# --------------------------------------------------------------------------------------------------------------------
+@dataclass(frozen=True, slots=True)
+class Line:
+    s: float
+    x: float
+    y: float
+    hdg: float
+    length: float
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Arc:
+    s: float
+    x: float
+    y: float
+    hdg: float
+    length: float
+    curvature: float
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Spiral:
+    s: float
+    x: float
+    y: float
+    hdg: float
+    length: float
+    curv_start: float
+    curv_end: float
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Poly3:
+    """Cubic ``v(u) = a + b u + c u^2 + d u^3`` in the local (u, v) frame (deprecated in 1.6, still read)."""
+
+    s: float
+    x: float
+    y: float
+    hdg: float
+    length: float
+    a: float
+    b: float
+    c: float
+    d: float
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class ParamPoly3:
+    s: float
+    x: float
+    y: float
+    hdg: float
+    length: float
+    aU: float
+    bU: float
+    cU: float
+    dU: float
+    aV: float
+    bV: float
+    cV: float
+    dV: float
+    p_range: PRange = PRange.NORMALIZED
+    line: int = 0
+
+
+Geometry = Union[Line, Arc, Spiral, Poly3, ParamPoly3]
+
+
+# --------------------------------------------------------------------------------------------------------------------
+# Links
+# --------------------------------------------------------------------------------------------------------------------
+@dataclass(frozen=True, slots=True)
+class RoadLink:
+    """A road's ``predecessor`` or ``successor``."""
+
+    element_type: ElementType
+    element_id: str
+    contact_point: ContactPoint | None = None
+    element_s: float | None = None
+    element_dir: ElementDir | None = None
+    line: int = 0
+
+
+# --------------------------------------------------------------------------------------------------------------------
+# Lanes
+# --------------------------------------------------------------------------------------------------------------------
+@dataclass(frozen=True, slots=True)
+class RoadMark:
+    s: float  # sOffset
+    type: str
+    weight: str | None = None
+    color: str | None = None
+    width: float | None = None
+    lane_change: str | None = None
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Speed:
+    s: float  # sOffset
+    max: float
+    unit: str | None = None
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Lane:
+    id: int
+    type: LaneType
+    level: bool = False
+    predecessors: tuple[int, ...] = ()
+    successors: tuple[int, ...] = ()
+    widths: Profile = ()
+    borders: Profile = ()
+    road_marks: tuple[RoadMark, ...] = ()
+    speeds: tuple[Speed, ...] = ()
+    type_name: str = ""  # the type as spelled in the file (meaningful when ``type`` is UNKNOWN)
+    line: int = 0
+
+    @property
+    def side(self) -> Side:
+        return Side.LEFT if self.id > 0 else Side.RIGHT if self.id < 0 else Side.CENTER
+
+    @property
+    def drivable(self) -> bool:
+        return self.type in DRIVABLE_LANE_TYPES
+
+
+@dataclass(frozen=True, slots=True)
+class LaneSection:
+    s: float
+    single_side: bool | None = None
+    left: tuple[Lane, ...] = ()  # in file order; use ``lanes`` for id order
+    center: tuple[Lane, ...] = ()
+    right: tuple[Lane, ...] = ()
+    line: int = 0
+
+    @property
+    def lanes(self) -> tuple[Lane, ...]:
+        """All lanes ordered by id, from the leftmost (highest id) to the rightmost (lowest)."""
+        return tuple(sorted((*self.left, *self.center, *self.right), key=lambda lane: -lane.id))
+
+    def lane(self, lane_id: int) -> Lane | None:
+        for lane in (*self.left, *self.center, *self.right):
+            if lane.id == lane_id:
+                return lane
+        return None
+
+
+# --------------------------------------------------------------------------------------------------------------------
+# Roads
+# --------------------------------------------------------------------------------------------------------------------
+@dataclass(frozen=True, slots=True)
+class Road:
+    id: str
+    length: float
+    junction: str | None = None  # None for "-1" (not inside a junction)
+    name: str | None = None
+    rule: TrafficRule = TrafficRule.RHT
+    predecessor: RoadLink | None = None
+    successor: RoadLink | None = None
+    plan_view: tuple[Geometry, ...] = ()
+    elevation: Profile = ()
+    superelevation: Profile = ()
+    lane_offset: Profile = ()
+    lane_sections: tuple[LaneSection, ...] = ()
+    objects: int = 0  # counted records
+    signals: int = 0
+    line: int = 0
+
+    def section_end(self, index: int) -> float:
+        """End s of lane section ``index`` (the next section's start or the road length)."""
+        sections = self.lane_sections
+        return sections[index + 1].s if index + 1 < len(sections) else self.length
+
+    def lane_key(self, section: LaneSection, lane_id: int) -> LaneKey:
+        return LaneKey(self.id, section.s, lane_id)
+
+
+# --------------------------------------------------------------------------------------------------------------------
+# Junctions
+# --------------------------------------------------------------------------------------------------------------------
+@dataclass(frozen=True, slots=True)
+class JunctionLaneLink:
+    from_lane: int
+    to_lane: int
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Connection:
+    id: str
+    incoming_road: str | None
+    connecting_road: str | None = None  # default junctions
+    linked_road: str | None = None  # direct junctions (1.7+)
+    contact_point: ContactPoint | None = None
+    lane_links: tuple[JunctionLaneLink, ...] = ()
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Junction:
+    id: str
+    name: str | None = None
+    type: JunctionType = JunctionType.DEFAULT
+    connections: tuple[Connection, ...] = ()
+    line: int = 0
+
+    @property
+    def incoming_roads(self) -> tuple[str, ...]:
+        """Distinct incoming road ids in order of first appearance (the junction's legs)."""
+        seen: dict[str, None] = {}
+        for c in self.connections:
+            if c.incoming_road is not None:
+                seen.setdefault(c.incoming_road, None)
+        return tuple(seen)
+
+
+# --------------------------------------------------------------------------------------------------------------------
+# Header and document
+# --------------------------------------------------------------------------------------------------------------------
+@dataclass(frozen=True, slots=True)
+class Offset:
+    """The header's ``offset`` element (1.5+): the map is shifted by (x, y, z) and rotated by hdg."""
+
+    x: float = 0.0
+    y: float = 0.0
+    z: float = 0.0
+    hdg: float = 0.0
+
+
+@dataclass(frozen=True, slots=True)
+class Header:
+    rev_major: int | None
+    rev_minor: int | None
+    name: str | None = None
+    version: str | None = None
+    date: str | None = None
+    vendor: str | None = None
+    north: float | None = None
+    south: float | None = None
+    east: float | None = None
+    west: float | None = None
+    geo_reference: str | None = None
+    offset: Offset | None = None
+    line: int = 0
+
+    @property
+    def version_tuple(self) -> tuple[int, int] | None:
+        if self.rev_major is None or self.rev_minor is None:
+            return None
+        return (self.rev_major, self.rev_minor)
+
+
+@dataclass(frozen=True)
+class Document:
+    """A whole OpenDRIVE file. ``roads`` and ``junctions`` keep file order; the ``*_by_id`` maps keep the first of
+    duplicated ids (duplicates are reported by the reference rules)."""
+
+    header: Header | None
+    roads: tuple[Road, ...] = ()
+    junctions: tuple[Junction, ...] = ()
+    controllers: int = 0
+    source: str | None = None
+    extras: dict[str, int] = field(default_factory=dict, compare=False)  # counts of other top-level elements
+
+    @cached_property
+    def road_by_id(self) -> dict[str, Road]:
+        out: dict[str, Road] = {}
+        for road in self.roads:
+            out.setdefault(road.id, road)
+        return out
+
+    @cached_property
+    def junction_by_id(self) -> dict[str, Junction]:
+        out: dict[str, Junction] = {}
+        for junction in self.junctions:
+            out.setdefault(junction.id, junction)
+        return out
+
+    @property
+    def version(self) -> tuple[int, int] | None:
+        return None if self.header is None else self.header.version_tuple
