@@ -1,1 +1,58 @@
-"""junctionart: procedural OpenDRIVE road networks after the JunctionArt paper."""
+"""junctionart: procedural OpenDRIVE road networks after the JunctionArt paper.
+
+``generate(params, seed)`` runs the four stages (control lines -> graph -> lanes -> intersections -> cleanup) and
+returns the generator's own document model; ``write(document, path, version)`` writes it atomically.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from . import cleanup, controllines, intersections, lanes, network
+from .controllines import ControlLines
+from .errors import InputError, JunctionArtError, ParamsError
+from .opendrive import Document
+from .params import Params
+from .writer import to_bytes
+from .writer import write as _write
+
+__all__ = ["generate", "generate_layout", "write", "to_bytes", "Params", "ParamsError", "InputError",
+           "JunctionArtError", "Document", "ControlLines"]
+
+
+@dataclass(frozen=True)
+class Result:
+    """Every stage's value of one run (for tests, metrics and debugging)."""
+
+    control_lines: ControlLines
+    network: network.Network
+    laned: lanes.LanedNetwork
+    layout: intersections.Layout
+    document: Document
+
+
+def generate_layout(params: Params | None = None, seed: int = 0, control_lines: ControlLines | None = None) -> Result:
+    """Run all stages; randomness comes from one ``numpy.random.Generator`` seeded with ``seed``."""
+    params = params if params is not None else Params()
+    if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        raise ParamsError(f"seed={seed!r}: must be a non-negative integer")
+    rng = np.random.default_rng(int(seed))
+    lines = control_lines if control_lines is not None else controllines.automatic(params, rng)
+    net = network.build(lines, params, rng)
+    laned = lanes.assign(net, lines, params, rng)
+    layout = intersections.build(laned, params, rng)
+    doc = cleanup.document(layout, params, name=f"junctionart seed {int(seed)}")
+    return Result(lines, net, laned, layout, doc)
+
+
+def generate(params: Params | None = None, seed: int = 0, control_lines: ControlLines | None = None) -> Document:
+    """A road network as the generator's document model."""
+    return generate_layout(params, seed, control_lines).document
+
+
+def write(document: Document, path: str | Path, version: str = "1.8") -> Path:
+    """Write ``document`` as OpenDRIVE ``version`` ("1.8" or "1.7") to ``path``, atomically."""
+    return _write(document, path, version)

@@ -32,6 +32,8 @@ class Tolerances:
     min_radius: float = 5.0
     #: Chord error (m) for polylines and meshes.
     chord: float = 0.01
+    #: Longest step (m) between sampled points along a lane, whatever the chord tolerance allows.
+    max_step: float = 5.0
     #: Smallest lane width (m) treated as non-zero (a lane narrower than this "starts or ends at zero width").
     zero_width: float = 1e-3
     #: Plan-view overlap area (m^2) between roads above which an overlap is reported.

@@ -1,0 +1,67 @@
+"""The checker's rules, one module per family.
+
+Every rule is registered in :mod:`xodrcheck.rules.registry` when its module is imported; :func:`load_rules` imports
+them all. A family module that does not exist (yet) is skipped, so a partial tree still imports.
+
+Codes are stable: a letter for the family, then three digits.
+
+========  ==========  =========================================================================================
+prefix    category    codes
+========  ==========  =========================================================================================
+``X``     xml         ``X0xx``-``X8xx`` reader rules (:mod:`.xml`); ``X9xx`` the engine's own (:mod:`.internal`)
+``S``     schema      ``S0xx`` XSD validation (:mod:`.schema`)
+``R``     reference   ``R0xx`` ids and references (:mod:`.reference`)
+``K``     link        ``K0xx`` road-link topology (:mod:`.link_topology`); ``K1xx`` positions at contacts (:mod:`.link`)
+``L``     lane        ``L0xx`` lane topology (:mod:`.lane`, :mod:`.lane_attributes`); ``L1xx`` lane geometry
+``G``     geometry    ``G0xx``-``G8xx`` plan view and profiles (:mod:`.geometry`); ``G9xx`` redundant records
+                      (:mod:`.records`)
+``C``     curvature   ``C0xx`` (:mod:`.curvature`)
+``J``     junction    ``J0xx`` junction topology (:mod:`.junction`); ``J1xx`` junction geometry
+                      (:mod:`.junction_geometry`)
+``O``     overlap     ``O0xx`` (:mod:`.overlap`)
+========  ==========  =========================================================================================
+"""
+
+from __future__ import annotations
+
+import importlib
+
+from xodrcheck.rules.registry import RULES, Rule
+
+#: Rule modules in the order their rules run (cheap, structural families first).
+FAMILIES = (
+    "internal",
+    "xml",
+    "schema",
+    "reference",
+    "link_topology",
+    "link",
+    "lane",
+    "lane_attributes",
+    "geometry",
+    "records",
+    "curvature",
+    "junction",
+    "junction_geometry",
+    "overlap",
+)
+
+_loaded = False
+
+
+def load_rules() -> dict[str, Rule]:
+    """Import every family module that exists and return the registry (code -> rule)."""
+    global _loaded
+    if not _loaded:
+        for family in FAMILIES:
+            name = f"{__name__}.{family}"
+            try:
+                importlib.import_module(name)
+            except ModuleNotFoundError as exc:  # a family not written yet; a missing dependency still raises
+                if exc.name != name:
+                    raise
+        _loaded = True
+    return RULES
+
+
+__all__ = ["FAMILIES", "RULES", "Rule", "load_rules"]

@@ -1,0 +1,98 @@
+"""The paper's Table 1 configurations, timed in one run: CPU time per valid map (whole pipeline, file written), peak
+traced memory, tries and valid maps, with the original JunctionArt's figures measured on the same kind of machine
+(``junctionart-notes.md``) printed beside.
+
+    python benchmarks/bench_generate.py            # 500 m and 1 km: 10 maps each, 5 km: 1 map
+    python benchmarks/bench_generate.py --maps 50 --big-maps 3
+"""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import tempfile
+import time
+import tracemalloc
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+
+import junctionart as ja  # noqa: E402
+from junctionart import controllines  # noqa: E402
+from junctionart.params import Params  # noqa: E402
+
+#: (label, size, randomize lanes, original CPU s per valid map, original tries per valid map)
+CONFIGS = [
+    ("500 x 500 m, 2 lanes", 500, False, 0.105, 1.0),
+    ("500 x 500 m, random lanes", 500, True, 0.124, 1.0),
+    ("1 x 1 km, 2 lanes", 1000, False, 0.44, 1.0),
+    ("1 x 1 km, random lanes", 1000, True, 0.53, 1.0),
+    ("5 x 5 km, 2 lanes", 5000, False, 26.0, 14 / 5),
+    ("5 x 5 km, random lanes", 5000, True, 37.0, 21 / 5),
+]
+
+
+def _run(params: Params, seeds: range, lines, out: Path) -> tuple[float, int, int, dict]:
+    tries = valid = 0
+    stats = {"roads": 0, "junctions": 0, "connections": 0, "repairs": 0}
+    t0 = time.process_time()
+    for seed in seeds:
+        tries += 1
+        result = ja.generate_layout(params, seed, lines)
+        ja.write(result.document, out)
+        valid += 1
+        lay = result.layout
+        stats["roads"] += len(lay.roads)
+        stats["junctions"] += len(lay.junctions)
+        stats["connections"] += sum(len(j.connections) for j in lay.junctions)
+        stats["repairs"] += len(lay.repairs)
+    cpu = time.process_time() - t0
+    return cpu, tries, valid, stats
+
+
+def _peak(params: Params, seed: int, lines, out: Path) -> float:
+    tracemalloc.start()
+    ja.write(ja.generate(params, seed, lines), out)
+    _, peak = tracemalloc.get_traced_memory()
+    tracemalloc.stop()
+    return peak / 1e6
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--maps", type=int, default=10, help="maps per 500 m / 1 km configuration")
+    ap.add_argument("--big-maps", type=int, default=1, help="maps per 5 km configuration (0: skip)")
+    args = ap.parse_args(argv)
+    rows = []
+    with tempfile.TemporaryDirectory() as tmp:
+        out = Path(tmp) / "map.xodr"
+        for label, size, rnd, orig_cpu, orig_tries in CONFIGS:
+            n = args.big_maps if size >= 5000 else args.maps
+            if n <= 0:
+                continue
+            params = Params(width=size, height=size, randomize_lanes=rnd)
+            cpu, tries, valid, st = _run(params, range(n), None, out)
+            peak = _peak(params, 0, None, out) if size < 5000 else float("nan")
+            rows.append((label, cpu / valid, orig_cpu, tries, valid, orig_tries, peak, st, valid))
+        a_shape = controllines.load(REPO / "examples" / "a_shape.json")
+        for rnd in (False, True):
+            params = Params(randomize_lanes=rnd)
+            cpu, tries, valid, st = _run(params, range(args.maps), a_shape, out)
+            rows.append((f"A shape, {'random' if rnd else '2'} lanes", cpu / valid, float("nan"), tries, valid, 1.0,
+                         _peak(params, 0, a_shape, out), st, valid))
+    print(f"{'configuration':28} {'CPU s/map':>10} {'original':>9} {'ratio':>6} {'tries':>6} {'valid':>6} "
+          f"{'orig tries/map':>14} {'peak MB':>8} {'roads':>7} {'junct.':>7} {'conn.':>7} {'repairs':>8}")
+    for label, per, orig, tries, valid, orig_tries, peak, st, n in rows:
+        ratio = per / orig if orig == orig else float("nan")
+        print(f"{label:28} {per:10.3f} {orig:9.3f} {ratio:6.2f} {tries:6d} {valid:6d} {orig_tries:14.1f} "
+              f"{peak:8.1f} {st['roads'] / n:7.0f} {st['junctions'] / n:7.0f} {st['connections'] / n:7.0f} "
+              f"{st['repairs'] / n:8.1f}")
+    print("original: CPU s per successful map, generation only, 2 cores (junctionart-notes.md); its 1 km run peaks "
+          "at about 200 MB (process RSS). Here: whole pipeline including the written file; peak = Python heap "
+          "(tracemalloc) for one map.")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,90 @@
+"""Reading and sampling speed on the CARLA towns, as ratios measured in one run.
+
+For each town: a bare ``lxml.etree.parse`` of the file, ``xodrcheck.reader.read`` of the same file, their ratio, and the
+time to sample every lane's inner and outer border every 0.5 m from the read document (road geometry built afresh).
+Each figure is the median of ``--repeats`` runs. Targets, printed beside: read within 3x of the bare parse; Town07's
+borders in under 1 s.
+
+    python benchmarks/bench_read.py [--repeats 5] [--corpus DIR]
+
+The corpus folder defaults to ``$XODR_CORPUS``, else ``../shared/corpus`` beside the checkout.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import time
+from collections.abc import Callable
+from pathlib import Path
+
+from lxml import etree
+
+from xodrcheck.lanes import RoadGeometry
+from xodrcheck.reader import read
+from xodrcheck.sample import sample_lanes
+
+REPO = Path(__file__).resolve().parents[1]
+STEP = 0.5
+READ_RATIO_TARGET = 3.0
+TOWN07_BORDERS_TARGET_S = 1.0
+
+
+def median_time(fn: Callable[[], object], repeats: int) -> tuple[float, object]:
+    """Median wall time of ``repeats`` calls, and the last call's value."""
+    times = []
+    value = None
+    for _ in range(repeats):
+        start = time.perf_counter()
+        value = fn()
+        times.append(time.perf_counter() - start)
+    return statistics.median(times), value
+
+
+def sample_borders(document) -> int:
+    """Sample every lane border of the document at :data:`STEP`; returns the number of points."""
+    geometry = {}
+    for road in document.roads:
+        geometry.setdefault(road.id, RoadGeometry(road))
+    return sum(len(line) for line in sample_lanes(document, STEP, ("inner", "outer"), geometry))
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeats", type=int, default=5)
+    default_corpus = Path(os.environ.get("XODR_CORPUS", REPO.parent / "shared" / "corpus"))
+    parser.add_argument("--corpus", type=Path, default=default_corpus)
+    args = parser.parse_args()
+    towns = sorted((args.corpus / "carla-towns").rglob("Town*.xodr"))
+    if not towns:
+        raise SystemExit(f"no CARLA towns under {args.corpus / 'carla-towns'}: set XODR_CORPUS or --corpus")
+
+    lxml_parser = etree.XMLParser(resolve_entities=False, no_network=True)
+    header = (
+        f"{'map':<8} {'MB':>5} {'lxml ms':>8} {'read ms':>8} {'ratio':>6} {'<=':>4} "
+        f"{'borders ms':>10} {'points':>8} {'target':>8}"
+    )
+    print(f"median of {args.repeats} runs; borders: inner and outer border of every lane every {STEP} m")
+    print(header)
+    print("-" * len(header))
+    worst_ratio = 0.0
+    for path in towns:
+        bare, _ = median_time(lambda: etree.parse(str(path), lxml_parser), args.repeats)
+        model, result = median_time(lambda: read(path), args.repeats)
+        ratio = model / bare
+        worst_ratio = max(worst_ratio, ratio)
+        borders, points = median_time(lambda: sample_borders(result.document), args.repeats)
+        target = f"< {TOWN07_BORDERS_TARGET_S * 1000:.0f}" if path.stem == "Town07" else ""
+        flag = "" if ratio <= READ_RATIO_TARGET else " !"
+        if path.stem == "Town07" and borders >= TOWN07_BORDERS_TARGET_S:
+            target += " !"
+        print(
+            f"{path.stem:<8} {path.stat().st_size / 1e6:>5.2f} {bare * 1e3:>8.1f} {model * 1e3:>8.1f} {ratio:>6.2f} "
+            f"{READ_RATIO_TARGET:>4g}{flag:2} {borders * 1e3:>8.1f} {points:>8} {target:>8}"
+        )
+    print(f"worst read/lxml ratio {worst_ratio:.2f} (target <= {READ_RATIO_TARGET:g}); '!' marks a missed target")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,147 @@
+"""Stage 4: lane sections with tapers where lane counts change, lane markings, and the final document.
+
+A road whose lane count differs between its middle and one end (a merge before a junction, a turn lane, an exit lane
+nobody feeds) gets a taper section at that end: the extra lanes, always the outermost of their side, go from full width
+to zero (or from zero to full) with a smooth cubic, and link only to lanes that exist on the other side of the
+section boundary. Markings: solid yellow centre line (solid white on one-way roads), broken white between lanes of one
+direction and solid within :data:`SOLID_NEAR_JUNCTION` of a junction, solid white road edges, none inside junctions.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from .intersections.model import Layout, RoadPlan
+from .lanegeom import lane_id
+from .opendrive import (Connection, Cubic, Document, Header, Junction, Lane, LaneLink, LaneSection, Link, Road,
+                        RoadMark)
+from .params import Params, TrafficRule
+from .curves import sample
+
+SOLID_NEAR_JUNCTION = 30.0
+ROAD_SPEED = 50.0
+JUNCTION_SPEED = 30.0
+
+
+def _taper(a: float, b: float, length: float) -> Cubic:
+    if a == b:
+        return Cubic(0.0, a)
+    d = b - a
+    return Cubic(0.0, a, 0.0, 3 * d / length**2, -2 * d / length**3)
+
+
+@dataclass(frozen=True)
+class _Span:
+    s0: float
+    s1: float
+    start: tuple[int, int]  # (forward, backward) lanes at s0
+    end: tuple[int, int]
+
+
+def _spans(rp: RoadPlan, taper: float) -> list[_Span]:
+    mid = (rp.lanes.forward, rp.lanes.backward)
+    first, last = (rp.fwd_start, rp.bwd_start), (rp.fwd_end, rp.bwd_end)
+    s1 = taper if first != mid else 0.0
+    s2 = rp.length - taper if last != mid else rp.length
+    spans = []
+    if s1 > 0:
+        spans.append(_Span(0.0, s1, first, mid))
+    spans.append(_Span(s1, s2, mid, mid))
+    if s2 < rp.length:
+        spans.append(_Span(s2, rp.length, mid, last))
+    return spans
+
+
+def _marks(kind: str, color: str, s0: float, s1: float, rp: RoadPlan) -> tuple[RoadMark, ...]:
+    """Marks of one border over [s0, s1): ``kind`` in the open, solid within reach of a junction."""
+    if kind == "solid":
+        return (RoadMark(0.0, "solid", color, lane_change="none"),)
+    cuts = []
+    near0 = SOLID_NEAR_JUNCTION if rp.start_junction is not None else 0.0
+    near1 = rp.length - SOLID_NEAR_JUNCTION if rp.end_junction is not None else rp.length
+    pieces = [(0.0, near0, "solid"), (near0, near1, kind), (near1, rp.length, "solid")]
+    for a, b, k in pieces:
+        a, b = max(a, s0), min(b, s1)
+        if b - a > 1e-9 and (not cuts or cuts[-1][1] != k):
+            cuts.append((a - s0, k))
+    if not cuts:
+        cuts = [(0.0, "solid")]
+    return tuple(RoadMark(s, k, color, lane_change="none" if k == "solid" else "both") for s, k in cuts)
+
+
+def _section(rp: RoadPlan, span: _Span, params: Params, prev: _Span | None, nxt: _Span | None) -> LaneSection:
+    w, mw, rule = params.lane_width, params.median_width, params.traffic_rule
+    median = rp.lanes.median
+    L = span.s1 - span.s0
+    lanes_by_side: dict[int, list[Lane]] = {1: [], -1: []}
+    for forward, idx in ((True, 0), (False, 1)):
+        a, b = span.start[idx], span.end[idx]
+        n = max(a, b)
+        for k in range(1, n + 1):
+            lid = lane_id(forward, k, median, rule)
+            wa, wb = (w if k <= a else 0.0), (w if k <= b else 0.0)
+            pred = lid if prev is not None and k <= max(prev.start[idx], prev.end[idx]) and wa > 0 else None
+            succ = lid if nxt is not None and k <= max(nxt.start[idx], nxt.end[idx]) and wb > 0 else None
+            outer = k == n
+            kind = "solid" if outer else "broken"
+            marks = _marks(kind, "standard", span.s0, span.s1, rp)
+            lanes_by_side[1 if lid > 0 else -1].append(Lane(lid, "driving", (_taper(wa, wb, L),), marks, pred, succ))
+    if median:
+        has_prev, has_next = prev is not None, nxt is not None
+        lanes_by_side[1].append(Lane(1, "median", (Cubic(0.0, mw),), (RoadMark(0.0, "solid", "yellow"),),
+                                     1 if has_prev else None, 1 if has_next else None))
+    two_way = rp.lanes.forward > 0 and rp.lanes.backward > 0
+    centre = Lane(0, "none", (), (RoadMark(0.0, "solid", "yellow" if two_way else "standard", lane_change="none"),))
+    left = tuple(sorted(lanes_by_side[1], key=lambda l: l.id))
+    right = tuple(sorted(lanes_by_side[-1], key=lambda l: -l.id))
+    return LaneSection(span.s0, left, centre, right)
+
+
+def _road(rp: RoadPlan, rid: str, junction_ids: list[str], params: Params) -> Road:
+    spans = _spans(rp, params.taper_length)
+    sections = tuple(
+        _section(rp, sp, params, spans[i - 1] if i > 0 else None, spans[i + 1] if i + 1 < len(spans) else None)
+        for i, sp in enumerate(spans)
+    )
+    pred = Link("junction", junction_ids[rp.start_junction]) if rp.start_junction is not None else None
+    succ = Link("junction", junction_ids[rp.end_junction]) if rp.end_junction is not None else None
+    return Road(rid, rp.length, "-1", rp.geometry, sections, params.traffic_rule.value, pred, succ,
+                name=f"road {rid}", speed_kmh=ROAD_SPEED)
+
+
+def document(layout: Layout, params: Params, name: str = "junctionart") -> Document:
+    """The OpenDRIVE document of a finished layout."""
+    n_roads = len(layout.roads)
+    n_conn = sum(len(j.connections) for j in layout.junctions)
+    road_ids = [str(i + 1) for i in range(n_roads)]
+    junction_ids = [str(n_roads + n_conn + 1 + i) for i in range(len(layout.junctions))]
+    roads = [_road(rp, road_ids[rp.index], junction_ids, params) for rp in layout.roads]
+    conn_lane = -1 if params.traffic_rule is TrafficRule.RHT else 1
+    next_id = n_roads + 1
+    junctions = []
+    for jn, jp in enumerate(layout.junctions):
+        conns = []
+        for cn, cp in enumerate(jp.connections):
+            rid = str(next_id)
+            next_id += 1
+            lane = Lane(conn_lane, "driving", (Cubic(0.0, params.lane_width),), (RoadMark(0.0, "none", "standard"),),
+                        cp.in_lane, cp.out_lane)
+            centre = Lane(0, "none", (), (RoadMark(0.0, "none", "standard"),))
+            sec = LaneSection(0.0, (lane,) if conn_lane > 0 else (), centre, (lane,) if conn_lane < 0 else ())
+            roads.append(Road(rid, cp.geometry.length, junction_ids[jn], (cp.geometry,), (sec,),
+                              params.traffic_rule.value,
+                              Link("road", road_ids[cp.in_road], cp.in_contact),
+                              Link("road", road_ids[cp.out_road], cp.out_contact),
+                              name=f"junction {junction_ids[jn]} connection {cn + 1}", speed_kmh=JUNCTION_SPEED))
+            conns.append(Connection(str(cn + 1), road_ids[cp.in_road], rid, "start",
+                                    (LaneLink(cp.in_lane, conn_lane),)))
+        junctions.append(Junction(junction_ids[jn], f"junction {junction_ids[jn]} ({jp.legs} legs)", tuple(conns)))
+    xs, ys = [], []
+    for r in roads:
+        for g in r.geometry:
+            pts = sample(g, 3)
+            xs.extend(pts[:, 0])
+            ys.extend(pts[:, 1])
+    header = Header(name=name, north=max(ys, default=0.0), south=min(ys, default=0.0), east=max(xs, default=0.0),
+                    west=min(xs, default=0.0))
+    return Document(header, tuple(roads), tuple(junctions))

@@ -1,0 +1,248 @@
+"""Control lines, control-line pairs and groups: read from JSON / GeoJSON or drawn automatically inside W x H.
+
+A control line is a polyline (a sequence of segments joined at their endpoints). Connecting roads are only created
+between the two lines of a pair; lines carry a group (distinct sub-networks, joined later so the map is connected)
+and optionally a fixed lane configuration (lanes travelling along the line and against it).
+
+JSON::
+
+    {"lines": [{"id": "a", "points": [[0, 0], [400, 0]], "group": 0, "lanes": {"forward": 2, "backward": 1}}, ...],
+     "pairs": [["a", "b"], ...]}
+
+GeoJSON: a FeatureCollection of LineString features; ``properties`` may hold ``id``, ``group``, ``lanes`` and
+``pair_with`` (a list of line ids). Without explicit pairs, consecutive lines of one group form the pairs.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from .errors import InputError
+from .params import Params
+
+MAX_FILE_BYTES = 20_000_000
+
+
+@dataclass(frozen=True)
+class ControlLine:
+    id: str
+    points: tuple[tuple[float, float], ...]
+    group: int = 0
+    lanes: tuple[int, int] | None = None  # (forward, backward) lane counts, None: drawn
+
+    @property
+    def length(self) -> float:
+        p = np.asarray(self.points)
+        return float(np.hypot(*np.diff(p, axis=0).T).sum())
+
+    def cumulative(self) -> np.ndarray:
+        p = np.asarray(self.points)
+        return np.concatenate([[0.0], np.cumsum(np.hypot(*np.diff(p, axis=0).T))])
+
+    def point_at(self, a: float) -> tuple[float, float]:
+        """The point at arc length ``a`` (clamped to the line)."""
+        cum = self.cumulative()
+        a = min(max(a, 0.0), cum[-1])
+        i = int(min(np.searchsorted(cum, a, side="right") - 1, len(self.points) - 2))
+        seg = cum[i + 1] - cum[i]
+        t = 0.0 if seg <= 0 else (a - cum[i]) / seg
+        (x0, y0), (x1, y1) = self.points[i], self.points[i + 1]
+        return (x0 + t * (x1 - x0), y0 + t * (y1 - y0))
+
+    def project(self, xy: tuple[float, float]) -> float:
+        """Arc length of the point of the line nearest ``xy``."""
+        cum = self.cumulative()
+        best, best_d = 0.0, math.inf
+        for i in range(len(self.points) - 1):
+            (x0, y0), (x1, y1) = self.points[i], self.points[i + 1]
+            dx, dy = x1 - x0, y1 - y0
+            seg2 = dx * dx + dy * dy
+            t = 0.0 if seg2 == 0 else max(0.0, min(1.0, ((xy[0] - x0) * dx + (xy[1] - y0) * dy) / seg2))
+            d = math.hypot(x0 + t * dx - xy[0], y0 + t * dy - xy[1])
+            if d < best_d:
+                best, best_d = cum[i] + t * (cum[i + 1] - cum[i]), d
+        return float(best)
+
+
+@dataclass(frozen=True)
+class ControlLines:
+    lines: tuple[ControlLine, ...]
+    pairs: tuple[tuple[int, int], ...]  # indexes into lines
+
+    @property
+    def groups(self) -> tuple[int, ...]:
+        return tuple(sorted({ln.group for ln in self.lines}))
+
+
+# ---------------------------------------------------------------------------------------------------------------------
+# Automatic lines
+# ---------------------------------------------------------------------------------------------------------------------
+def automatic(params: Params, rng: np.random.Generator) -> ControlLines:
+    """Lines across x = 0..W stacked upwards inside y = 0..H (both dimensions honoured), paired consecutively."""
+    W, H = params.width, params.height
+    lo, hi = params.line_spacing
+    margin = min(20.0, 0.05 * H)
+    y0 = y1 = margin
+    lines: list[ControlLine] = []
+    wanted = params.n_lines if params.n_lines is not None else 10**9
+    while len(lines) < wanted:
+        xs, xe = 0.0, W
+        if rng.random() < 0.2:  # shortened by 20 % at one end
+            if rng.random() < 0.5:
+                xs = 0.2 * W
+            else:
+                xe = 0.8 * W
+        lines.append(ControlLine(f"auto{len(lines)}", ((xs, y0), (xe, y1))))
+        step = rng.uniform(lo, hi)
+        if rng.random() < 0.25:
+            step += 200.0
+        y0n = y0 + step
+        y1n = y1 + max(lo, step * rng.uniform(0.7, 1.3))
+        top = H - margin
+        if max(y0n, y1n) > top:
+            if min(top - y0, top - y1) < lo or len(lines) >= wanted:
+                break
+            y0n, y1n = min(y0n, top), min(y1n, top)  # the last line runs along the top edge
+            if len(lines) + 1 < wanted:
+                wanted = len(lines) + 1
+        y0, y1 = y0n, y1n
+    if len(lines) < 2:
+        # Height allows a single spacing draw only: put the second line at the top edge.
+        lines.append(ControlLine("auto1", ((0.0, H - margin), (W, H - margin))))
+    pairs = tuple((i, i + 1) for i in range(len(lines) - 1))
+    return ControlLines(tuple(lines), pairs)
+
+
+# ---------------------------------------------------------------------------------------------------------------------
+# Files
+# ---------------------------------------------------------------------------------------------------------------------
+def _points(where: str, raw: Any) -> tuple[tuple[float, float], ...]:
+    if not isinstance(raw, list) or len(raw) < 2:
+        raise InputError(f"{where}: needs a list of at least 2 points [x, y]")
+    pts = []
+    for k, p in enumerate(raw):
+        if (not isinstance(p, (list, tuple)) or len(p) < 2
+                or not all(isinstance(c, (int, float)) and not isinstance(c, bool) and math.isfinite(c)
+                           for c in p[:2])):
+            raise InputError(f"{where}: point {k} is {p!r}, expected [x, y] with finite numbers")
+        pts.append((float(p[0]), float(p[1])))
+    for k in range(len(pts) - 1):
+        if math.hypot(pts[k + 1][0] - pts[k][0], pts[k + 1][1] - pts[k][1]) < 1.0:
+            raise InputError(f"{where}: points {k} and {k + 1} are less than 1 m apart")
+    return tuple(pts)
+
+
+def _lanes(where: str, raw: Any) -> tuple[int, int] | None:
+    if raw is None:
+        return None
+    if isinstance(raw, dict):
+        fwd = raw.get("forward", raw.get("right"))
+        bwd = raw.get("backward", raw.get("left"))
+    elif isinstance(raw, list) and len(raw) == 2:
+        fwd, bwd = raw
+    else:
+        raise InputError(f"{where}: lanes must be {{\"forward\": n, \"backward\": m}} or [n, m]")
+    for v in (fwd, bwd):
+        if isinstance(v, bool) or not isinstance(v, int) or not 0 <= v <= 3:
+            raise InputError(f"{where}: lane counts must be integers in [0, 3], got {fwd!r}, {bwd!r}")
+    if fwd == 0 and bwd == 0:
+        raise InputError(f"{where}: lanes cannot be 0 in both directions")
+    return (fwd, bwd)
+
+
+def _group(where: str, raw: Any) -> int:
+    if raw is None:
+        return 0
+    if isinstance(raw, bool) or not isinstance(raw, int):
+        raise InputError(f"{where}: group must be an integer, got {raw!r}")
+    return raw
+
+
+def _assemble(source: str, entries: list[tuple[str, tuple, int, Any]], pairs_raw: list[Any]) -> ControlLines:
+    if len(entries) < 2:
+        raise InputError(f"{source}: needs at least 2 control lines, found {len(entries)}")
+    ids = [e[0] for e in entries]
+    if len(set(ids)) != len(ids):
+        dup = next(i for i in ids if ids.count(i) > 1)
+        raise InputError(f"{source}: line id {dup!r} is used twice")
+    lines = tuple(ControlLine(i, pts, grp, lanes) for i, pts, grp, lanes in entries)
+    index = {ln.id: k for k, ln in enumerate(lines)}
+    pairs: list[tuple[int, int]] = []
+    for p in pairs_raw:
+        if not isinstance(p, (list, tuple)) or len(p) != 2 or any(str(x) not in index for x in p):
+            raise InputError(f"{source}: pair {p!r} must name two line ids among {', '.join(ids)}")
+        a, b = index[str(p[0])], index[str(p[1])]
+        if a == b:
+            raise InputError(f"{source}: pair {p!r} pairs a line with itself")
+        if (a, b) not in pairs and (b, a) not in pairs:
+            pairs.append((a, b))
+    if not pairs:
+        by_group: dict[int, list[int]] = {}
+        for k, ln in enumerate(lines):
+            by_group.setdefault(ln.group, []).append(k)
+        for members in by_group.values():
+            pairs.extend(zip(members[:-1], members[1:]))
+    return ControlLines(lines, tuple(pairs))
+
+
+def parse(data: Any, source: str = "<input>") -> ControlLines:
+    """Control lines from already-decoded JSON or GeoJSON."""
+    if not isinstance(data, dict):
+        raise InputError(f"{source}: expected a JSON object with \"lines\" or a GeoJSON FeatureCollection")
+    entries: list[tuple[str, tuple, int, Any]] = []
+    pairs_raw: list[Any] = []
+    if data.get("type") == "FeatureCollection":
+        feats = data.get("features")
+        if not isinstance(feats, list):
+            raise InputError(f"{source}: FeatureCollection without a features list")
+        for k, f in enumerate(feats):
+            where = f"{source}: feature {k}"
+            geom = f.get("geometry") if isinstance(f, dict) else None
+            if not isinstance(geom, dict) or geom.get("type") != "LineString":
+                raise InputError(f"{where}: only LineString geometries are control lines")
+            props = f.get("properties") or {}
+            if not isinstance(props, dict):
+                raise InputError(f"{where}: properties must be an object")
+            lid = str(props.get("id", f.get("id", k)))
+            entries.append((lid, _points(where, geom.get("coordinates")), _group(where, props.get("group")),
+                            _lanes(where, props.get("lanes"))))
+            for other in props.get("pair_with") or []:
+                pairs_raw.append([lid, str(other)])
+    elif "lines" in data:
+        raw_lines = data["lines"]
+        if not isinstance(raw_lines, list):
+            raise InputError(f"{source}: \"lines\" must be a list")
+        for k, ln in enumerate(raw_lines):
+            where = f"{source}: line {k}"
+            if not isinstance(ln, dict):
+                raise InputError(f"{where}: must be an object with \"points\"")
+            entries.append((str(ln.get("id", k)), _points(where, ln.get("points")), _group(where, ln.get("group")),
+                            _lanes(where, ln.get("lanes"))))
+        pairs_raw = data.get("pairs") or []
+        if not isinstance(pairs_raw, list):
+            raise InputError(f"{source}: \"pairs\" must be a list of [id, id]")
+    else:
+        raise InputError(f"{source}: expected a JSON object with \"lines\" or a GeoJSON FeatureCollection")
+    return _assemble(source, entries, pairs_raw)
+
+
+def load(path: str | Path) -> ControlLines:
+    """Read a JSON / GeoJSON control-line file; every problem is an :class:`InputError` naming the file."""
+    p = Path(path)
+    try:
+        if p.stat().st_size > MAX_FILE_BYTES:
+            raise InputError(f"{p}: larger than {MAX_FILE_BYTES} bytes")
+        text = p.read_text(encoding="utf-8")
+    except (OSError, UnicodeDecodeError) as exc:
+        raise InputError(f"{p}: cannot read ({exc.__class__.__name__}: {exc})") from None
+    try:
+        data = json.loads(text)
+    except json.JSONDecodeError as exc:
+        raise InputError(f"{p}: not valid JSON (line {exc.lineno}: {exc.msg})") from None
+    return parse(data, str(p))

@@ -1,0 +1,220 @@
+"""The curves the generator writes: evaluation of its own geometry, fillet chains and cubic Hermite connections.
+
+Everything here works on the generator's model (:mod:`junctionart.opendrive`). Arc lengths of paramPoly3 curves are
+computed with composite Gauss-Legendre quadrature (error far below a micrometre), so the declared length is the
+curve's length.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from .opendrive import Arc, Geometry, Line, ParamPoly3
+
+_GL_X, _GL_W = np.polynomial.legendre.leggauss(24)
+_PANELS = 8
+
+
+@dataclass(frozen=True)
+class Pose:
+    x: float
+    y: float
+    hdg: float
+
+
+def end_pose(g: Geometry) -> Pose:
+    """Pose at the end of one element (the next element starts exactly here)."""
+    if isinstance(g, Line):
+        return Pose(g.x + g.length * math.cos(g.hdg), g.y + g.length * math.sin(g.hdg), g.hdg)
+    if isinstance(g, Arc):
+        k, L = g.curvature, g.length
+        h1 = g.hdg + k * L
+        return Pose(g.x + (math.sin(h1) - math.sin(g.hdg)) / k, g.y - (math.cos(h1) - math.cos(g.hdg)) / k, h1)
+    u = g.au + g.bu + g.cu + g.du
+    v = g.av + g.bv + g.cv + g.dv
+    du = g.bu + 2 * g.cu + 3 * g.du
+    dv = g.bv + 2 * g.cv + 3 * g.dv
+    c, s = math.cos(g.hdg), math.sin(g.hdg)
+    return Pose(g.x + c * u - s * v, g.y + s * u + c * v, g.hdg + math.atan2(dv, du))
+
+
+def sample(g: Geometry, n: int = 16) -> np.ndarray:
+    """``n`` points (x, y) along one element, both ends included (for rendering and overlap tests)."""
+    t = np.linspace(0.0, 1.0, n)
+    if isinstance(g, Line):
+        d = t * g.length
+        return np.column_stack([g.x + d * math.cos(g.hdg), g.y + d * math.sin(g.hdg)])
+    if isinstance(g, Arc):
+        d = t * g.length
+        h = g.hdg + g.curvature * d
+        return np.column_stack([g.x + (np.sin(h) - math.sin(g.hdg)) / g.curvature,
+                                g.y - (np.cos(h) - math.cos(g.hdg)) / g.curvature])
+    u = g.au + t * (g.bu + t * (g.cu + t * g.du))
+    v = g.av + t * (g.bv + t * (g.cv + t * g.dv))
+    c, s = math.cos(g.hdg), math.sin(g.hdg)
+    return np.column_stack([g.x + c * u - s * v, g.y + s * u + c * v])
+
+
+def wrap(a: float) -> float:
+    """Angle in (-pi, pi]."""
+    a = math.fmod(a + math.pi, 2 * math.pi)
+    if a <= 0:
+        a += 2 * math.pi
+    return a - math.pi
+
+
+# ---------------------------------------------------------------------------------------------------------------------
+# Cubic Hermite connections
+# ---------------------------------------------------------------------------------------------------------------------
+def _gl_nodes() -> tuple[np.ndarray, np.ndarray]:
+    edges = np.linspace(0.0, 1.0, _PANELS + 1)
+    half = 0.5 * (edges[1:] - edges[:-1])
+    mid = 0.5 * (edges[1:] + edges[:-1])
+    p = (mid[:, None] + half[:, None] * _GL_X[None, :]).ravel()
+    w = (half[:, None] * _GL_W[None, :]).ravel()
+    return p, w
+
+
+_P_NODES, _P_WEIGHTS = _gl_nodes()
+_P_CHECK = np.linspace(0.0, 1.0, 65)
+
+
+def _derivatives(coef: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, ...]:
+    bu, cu, du = coef[:, 1:2], coef[:, 2:3], coef[:, 3:4]
+    bv, cv, dv = coef[:, 5:6], coef[:, 6:7], coef[:, 7:8]
+    d1u = bu + p * (2 * cu + 3 * du * p)
+    d1v = bv + p * (2 * cv + 3 * dv * p)
+    d2u = 2 * cu + 6 * du * p
+    d2v = 2 * cv + 6 * dv * p
+    return d1u, d1v, d2u, d2v
+
+
+def arc_lengths(coef: np.ndarray) -> np.ndarray:
+    d1u, d1v, _, _ = _derivatives(coef, _P_NODES[None, :])
+    return (np.hypot(d1u, d1v) * _P_WEIGHTS[None, :]).sum(axis=1)
+
+
+@dataclass(frozen=True)
+class HermiteFit:
+    coef: tuple[float, ...]
+    length: float
+    min_radius: float  # smallest radius over the reference line and the given offset lines
+
+
+def fit_connections(targets: np.ndarray, offsets: tuple[float, ...], min_radius: float,
+                    scales: np.ndarray) -> list[HermiteFit | None]:
+    """For each target (u1, v1, phi), the smoothest Hermite cubic from (0, 0) heading 0 meeting the radius bound on
+    its reference line and on the lines at lateral ``offsets`` (lane centre, outer border); None when no candidate
+    tangent length (``scales`` times the chord, equal at both ends) does. The candidate whose smallest radius is the
+    largest wins; a candidate whose heading does not turn monotonically by exactly the needed angle is rejected.
+    All targets and candidates are evaluated in one vectorised pass.
+    """
+    t = np.asarray(targets, dtype=float).reshape(-1, 3)
+    n, m = len(t), len(scales)
+    if n == 0:
+        return []
+    u1, v1, phi = (np.repeat(t[:, i], m) for i in range(3))
+    chord = np.hypot(u1, v1)
+    k = np.maximum(np.tile(scales, n) * chord, 1.0)
+    c, s = np.cos(phi), np.sin(phi)
+    cu = 3 * u1 - 2 * k - k * c
+    du = -2 * u1 + k + k * c
+    cv = 3 * v1 - k * s
+    dv = -2 * v1 + k * s
+    p = _P_CHECK[None, :]
+    d1u = k[:, None] + p * (2 * cu[:, None] + 3 * du[:, None] * p)
+    d1v = p * (2 * cv[:, None] + 3 * dv[:, None] * p)
+    d2u = 2 * cu[:, None] + 6 * du[:, None] * p
+    d2v = 2 * cv[:, None] + 6 * dv[:, None] * p
+    speed = np.hypot(d1u, d1v)
+    ok = (speed.min(axis=1) > 1e-9) & (chord > 1e-6)
+    kappa = (d1u * d2v - d1v * d2u) / np.maximum(speed, 1e-12) ** 3
+    worst = np.abs(kappa).max(axis=1)
+    for off in offsets:
+        denom = 1.0 - off * kappa
+        ok &= denom.min(axis=1) > 0.05
+        worst = np.maximum(worst, np.abs(kappa / np.maximum(denom, 0.05)).max(axis=1))
+    # total turning equals the heading change: the heading increments never change sign
+    dh = np.diff(np.arctan2(d1v, d1u), axis=1)
+    dh = (dh + np.pi) % (2 * np.pi) - np.pi
+    turned = dh.sum(axis=1)
+    ok &= np.abs(np.abs(turned) - np.abs(phi)) < 1e-6
+    radius = 1.0 / np.maximum(worst, 1e-300)
+    ok &= radius >= min_radius
+    score = np.where(ok, radius, -1.0).reshape(n, m)
+    best = score.argmax(axis=1)
+    out: list[HermiteFit | None] = []
+    for i in range(n):
+        if score[i, best[i]] < 0:
+            out.append(None)
+            continue
+        j = i * m + best[i]
+        coef = np.array([0.0, k[j], cu[j], du[j], 0.0, 0.0, cv[j], dv[j]])
+        length = float(arc_lengths(coef[None, :])[0])
+        out.append(HermiteFit(tuple(float(x) for x in coef), length, float(radius[j])))
+    return out
+
+
+def fit_connection(u1: float, v1: float, phi: float, offsets: tuple[float, ...], min_radius: float,
+                   scales: np.ndarray) -> HermiteFit | None:
+    """:func:`fit_connections` for one target."""
+    return fit_connections(np.array([[u1, v1, phi]]), offsets, min_radius, scales)[0]
+
+
+def connection_geometry(x0: float, y0: float, h0: float, fit: HermiteFit) -> ParamPoly3:
+    c = fit.coef
+    return ParamPoly3(0.0, x0, y0, h0, fit.length, c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7])
+
+
+def local_target(x0: float, y0: float, h0: float, x1: float, y1: float, h1: float) -> tuple[float, float, float]:
+    """(u1, v1, phi): the end point and heading change in the frame of the start pose."""
+    dx, dy = x1 - x0, y1 - y0
+    c, s = math.cos(h0), math.sin(h0)
+    return c * dx + s * dy, -s * dx + c * dy, wrap(h1 - h0)
+
+
+# ---------------------------------------------------------------------------------------------------------------------
+# Fillet chains: a polyline with circular arcs at its interior vertices
+# ---------------------------------------------------------------------------------------------------------------------
+def fillet_chain(start: tuple[float, float], vertices: list[tuple[float, float]], end: tuple[float, float],
+                 radii: list[float]) -> tuple[Geometry, ...]:
+    """Lines and arcs from ``start`` through the corners at ``vertices`` (rounded with ``radii``) to ``end``.
+
+    Each element starts exactly at the end pose of the previous one (evaluated with :func:`end_pose`).
+    """
+    pts = [start, *vertices, end]
+    dirs = []
+    for a, b in zip(pts[:-1], pts[1:]):
+        dirs.append(math.atan2(b[1] - a[1], b[0] - a[0]))
+    out: list[Geometry] = []
+    s = 0.0
+    pose = Pose(start[0], start[1], dirs[0])
+    for i, v in enumerate(vertices):
+        theta = wrap(dirs[i + 1] - dirs[i])
+        r = radii[i]
+        tangent = r * math.tan(abs(theta) / 2)
+        # line up to the tangent point, measured along the current heading
+        dx, dy = v[0] - pose.x, v[1] - pose.y
+        along = dx * math.cos(pose.hdg) + dy * math.sin(pose.hdg) - tangent
+        if along > 1e-9:
+            g = Line(s, pose.x, pose.y, pose.hdg, along)
+            out.append(g)
+            s += along
+            pose = end_pose(g)
+        if abs(theta) > 1e-12:
+            g = Arc(s, pose.x, pose.y, pose.hdg, r * abs(theta), math.copysign(1.0 / r, theta))
+            out.append(g)
+            s += g.length
+            pose = end_pose(g)
+    dx, dy = end[0] - pose.x, end[1] - pose.y
+    along = dx * math.cos(pose.hdg) + dy * math.sin(pose.hdg)
+    if along > 1e-9 or not out:
+        out.append(Line(s, pose.x, pose.y, pose.hdg, max(along, 1e-3)))
+    return tuple(out)
+
+
+def chain_length(geoms: tuple[Geometry, ...]) -> float:
+    return sum(g.length for g in geoms)

@@ -1,0 +1,15 @@
+"""The generator's error types: one for bad parameters, one for bad input files."""
+
+from __future__ import annotations
+
+
+class JunctionArtError(Exception):
+    """Base of every error junctionart raises on purpose (the CLI turns these into one line and exit code 2)."""
+
+
+class ParamsError(JunctionArtError, ValueError):
+    """A parameter is outside its valid range; the message names the value and the range."""
+
+
+class InputError(JunctionArtError, ValueError):
+    """A control-line file (JSON / GeoJSON) cannot be used; the message names the file and the problem."""

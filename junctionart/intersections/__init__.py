@@ -1,0 +1,6 @@
+"""Stage 3: intersections (incident points, connection lanes, lane links) with repair instead of discarding."""
+
+from .layout import build
+from .model import ConnectionPlan, JunctionPlan, Layout, RoadPlan
+
+__all__ = ["build", "Layout", "RoadPlan", "JunctionPlan", "ConnectionPlan"]

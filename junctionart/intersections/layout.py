@@ -1,0 +1,590 @@
+"""Stage 3: incident points, road geometry and connection lanes, repairing until every intersection fits.
+
+The loop never discards a map. When something does not fit it changes the network, always towards a state that
+fits, and records what it did:
+
+* a node with more than 7 legs loses a leg;
+* a bend (2-leg node) too sharp for its roads' lanes is straightened (the vertex is removed);
+* a road too short for its two incident points and lane tapers is removed when the map stays connected without it,
+  otherwise its two nodes are merged into one intersection;
+* an intersection whose turns do not meet the radius bound gets its incident points moved outward, and after
+  :data:`MAX_GROWTH` attempts loses the leg that still fails.
+
+Each repair removes an edge or a node or enlarges a finite counter, so the loop ends.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import shapely
+
+from ..curves import (HermiteFit, connection_geometry, end_pose, fillet_chain, fit_connections, local_target,
+                      sample, wrap)
+from ..graph import Chain, chains
+from ..lanegeom import border_point, inner_offset, lane_id, side_width
+from ..lanes import LaneConfig, LanedNetwork
+from ..params import Params, TrafficRule
+from . import links as linkplan
+from .model import ConnectionPlan, JunctionPlan, Layout, RoadPlan
+
+MAX_LEGS = 7
+MAX_GROWTH = 6
+GROWTH = 1.3
+MIN_ROAD = 5.0  #: shortest road written between two junctions
+MARGIN = 1.0  #: clearance between the stubs of neighbouring legs
+SCALES = np.linspace(0.2, 1.4, 17)  #: Hermite tangent lengths tried, in chords
+
+
+class _Repair(Exception):
+    """Raised inside one pass when the network was changed; the pass starts again."""
+
+
+@dataclass
+class _State:
+    nodes: list[tuple[float, float]]
+    edges: dict[int, tuple[int, int, LaneConfig]]
+    factor: dict[int, float]
+    scale: dict[int, float]
+    growth: dict[int, int]
+    turn_lane: dict[tuple[int, bool], bool]
+    repairs: list[str]
+
+
+def _unit(a: tuple[float, float], b: tuple[float, float]) -> tuple[float, float, float]:
+    dx, dy = b[0] - a[0], b[1] - a[1]
+    L = math.hypot(dx, dy)
+    return dx / L, dy / L, L
+
+
+_P_CROSS = np.linspace(0.0, 1.0, 33)
+
+
+def _crossing(rows: list, skip: set[int]) -> set[int]:
+    """Links whose centre line crosses that of a link leaving another lane of the same incoming leg (the one of each
+    crossing pair that comes later in the plan's order)."""
+    by_leg: dict[int, list[int]] = {}
+    for n, r in enumerate(rows):
+        if n not in skip:
+            by_leg.setdefault(r[0], []).append(n)
+    pairs = [(a, b) for group in by_leg.values() for i, a in enumerate(group) for b in group[i + 1:]
+             if rows[a][1] != rows[b][1]]
+    if not pairs:
+        return set()
+    idx = sorted({n for pair in pairs for n in pair})
+    pos = {n: k for k, n in enumerate(idx)}
+    coef = np.array([rows[n][-1].coef for n in idx])
+    p = _P_CROSS[None, :]
+    u = coef[:, 0:1] + p * (coef[:, 1:2] + p * (coef[:, 2:3] + p * coef[:, 3:4]))
+    v = coef[:, 4:5] + p * (coef[:, 5:6] + p * (coef[:, 6:7] + p * coef[:, 7:8]))
+    x0 = np.array([rows[n][6][0] for n in idx])[:, None]
+    y0 = np.array([rows[n][6][1] for n in idx])[:, None]
+    h = np.array([rows[n][7] for n in idx])[:, None]
+    xy = np.stack([x0 + np.cos(h) * u - np.sin(h) * v, y0 + np.sin(h) * u + np.cos(h) * v], axis=-1)
+    lines = shapely.linestrings(xy)
+    a = np.array([pos[x] for x, _ in pairs])
+    b = np.array([pos[y] for _, y in pairs])
+    hit = shapely.intersects(lines[a], lines[b])
+    return {pairs[k][1] for k in np.flatnonzero(hit)}
+
+
+class Builder:
+    def __init__(self, laned: LanedNetwork, params: Params, rng: np.random.Generator) -> None:
+        net = laned.network
+        self.p = params
+        self.rng = rng
+        self.w = params.lane_width
+        self.mw = params.median_width
+        self.st = _State(
+            nodes=list(net.nodes),
+            edges={k: (e.u, e.v, laned.lanes[k]) for k, e in enumerate(net.edges)},
+            factor={}, scale={}, growth={}, turn_lane={}, repairs=[],
+        )
+        self._fits: dict[tuple[float, float, float], HermiteFit | None] = {}
+
+    # ---------------------------------------------------------------------------------------------------------------
+    # graph helpers
+    # ---------------------------------------------------------------------------------------------------------------
+    def _ids(self) -> list[int]:
+        return sorted(self.st.edges)
+
+    def _chains(self) -> tuple[list[int], list[Chain]]:
+        ids = self._ids()
+        ch = chains(len(self.st.nodes), [self.st.edges[k][:2] for k in ids])
+        # map local edge positions back to edge ids
+        out = [Chain(c.nodes, tuple(ids[e] for e in c.edges), c.forward) for c in ch]
+        return ids, out
+
+    def _degree(self) -> list[int]:
+        deg = [0] * len(self.st.nodes)
+        for u, v, _ in self.st.edges.values():
+            deg[u] += 1
+            deg[v] += 1
+        return deg
+
+    def _connected_without(self, eid: int | set[int]) -> bool:
+        """Whether the ends of edge ``eid`` (or of a chain given as a set of edges, first and last node) stay
+        connected without it."""
+        drop = {eid} if isinstance(eid, int) else set(eid)
+        if isinstance(eid, int):
+            u, v, _ = self.st.edges[eid]
+        else:
+            ends = [n for e in drop for n in self.st.edges[e][:2]]
+            odd = sorted({n for n in ends if ends.count(n) == 1})
+            if len(odd) != 2:
+                return True  # a closed chain: removing it cannot disconnect the rest
+            u, v = odd
+        adj: dict[int, list[int]] = {}
+        for k, (a, b, _) in self.st.edges.items():
+            if k not in drop:
+                adj.setdefault(a, []).append(b)
+                adj.setdefault(b, []).append(a)
+        seen, stack = {u}, [u]
+        while stack:
+            x = stack.pop()
+            if x == v:
+                return True
+            for y in adj.get(x, ()):
+                if y not in seen:
+                    seen.add(y)
+                    stack.append(y)
+        return False
+
+    def _remove_edge(self, eid: int, why: str) -> None:
+        del self.st.edges[eid]
+        self.st.repairs.append(why)
+        raise _Repair
+
+    def _contract(self, eid: int, why: str) -> None:
+        u, v, _ = self.st.edges.pop(eid)
+        (x0, y0), (x1, y1) = self.st.nodes[u], self.st.nodes[v]
+        self.st.nodes[u] = ((x0 + x1) / 2, (y0 + y1) / 2)
+        seen: set[tuple[int, int]] = set()
+        for k in sorted(self.st.edges):
+            a, b, cfg = self.st.edges[k]
+            a, b = (u if a == v else a), (u if b == v else b)
+            key = (min(a, b), max(a, b))
+            if a == b or key in seen:
+                del self.st.edges[k]
+                continue
+            seen.add(key)
+            self.st.edges[k] = (a, b, cfg)
+        self.st.scale.pop(u, None)
+        self.st.growth.pop(u, None)
+        for k in [k for k in sorted(self.st.edges) if u in self.st.edges[k][:2]]:
+            a, b, cfg = self.st.edges.pop(k)
+            self._insert_planar(a, b, cfg)
+        self.st.repairs.append(why)
+        raise _Repair
+
+    def _smooth(self, chain: Chain, i: int, why: str) -> None:
+        """Repair a bend at interior vertex ``chain.nodes[i]``: cut it open when the map stays connected (one side
+        becomes a dead end), otherwise replace its two edges by one straight edge (split where it crosses others)."""
+        a, v, b = chain.nodes[i - 1], chain.nodes[i], chain.nodes[i + 1]
+        e1, e2 = chain.edges[i - 1], chain.edges[i]
+        for e in (e2, e1):
+            if self._connected_without(e):
+                self._remove_edge(e, why + " (cut open)")
+        cfg = self.st.edges[e1][2] if chain.forward[i - 1] else self.st.edges[e1][2].reversed()  # oriented a -> v
+        del self.st.edges[e1], self.st.edges[e2]
+        exists = any({x, y} == {a, b} for x, y, _ in self.st.edges.values())
+        if a != b and not exists:
+            self._insert_planar(a, b, cfg)
+        del v
+        self.st.repairs.append(why + " (straightened)")
+        raise _Repair
+
+    def _insert_planar(self, a: int, b: int, cfg: LaneConfig) -> None:
+        """Add edge a-b; where it crosses an existing edge both are split at a new node (a new intersection)."""
+        pa, pb = self.st.nodes[a], self.st.nodes[b]
+        new = shapely.LineString([pa, pb])
+        cuts = []
+        for k in sorted(self.st.edges):
+            u, v, c = self.st.edges[k]
+            if {u, v} & {a, b}:
+                continue
+            seg = shapely.LineString([self.st.nodes[u], self.st.nodes[v]])
+            if new.crosses(seg):
+                pt = new.intersection(seg)
+                if pt.geom_type == "Point":
+                    cuts.append((math.hypot(pt.x - pa[0], pt.y - pa[1]), k, (pt.x, pt.y)))
+        prev = a
+        next_id = max(self.st.edges, default=-1) + 1
+        for _, k, xy in sorted(cuts):
+            u, v, c = self.st.edges.pop(k)
+            n = len(self.st.nodes)
+            self.st.nodes.append((float(xy[0]), float(xy[1])))
+            self.st.edges[k] = (u, n, c)
+            self.st.edges[next_id] = (n, v, c)
+            self.st.edges[next_id + 1] = (prev, n, cfg)
+            next_id += 2
+            prev = n
+        self.st.edges[next_id] = (prev, b, cfg)
+
+    # ---------------------------------------------------------------------------------------------------------------
+    # one pass
+    # ---------------------------------------------------------------------------------------------------------------
+    def _normalise(self, chs: list[Chain], deg: list[int]) -> None:
+        """Give every chain one configuration (its first edge's); break pure cycles."""
+        for ch in chs:
+            if ch.start == ch.end and deg[ch.start] == 2:
+                self._remove_edge(ch.edges[0], f"removed a road forming a closed loop without junction at node {ch.start}")
+            first = self.st.edges[ch.edges[0]][2]
+            cfg = first if ch.forward[0] else first.reversed()
+            if deg[ch.start] == 1 or deg[ch.end] == 1:
+                cfg = LaneConfig(max(cfg.forward, 1), max(cfg.backward, 1), cfg.median)
+            if not (cfg.forward and cfg.backward):
+                cfg = LaneConfig(cfg.forward, cfg.backward, False)
+            for e, fw in zip(ch.edges, ch.forward):
+                u, v, _ = self.st.edges[e]
+                self.st.edges[e] = (u, v, cfg if fw else cfg.reversed())
+
+    def _chain_cfg(self, ch: Chain) -> LaneConfig:
+        cfg = self.st.edges[ch.edges[0]][2]
+        return cfg if ch.forward[0] else cfg.reversed()
+
+    def _set_chain_cfg(self, ch: Chain, cfg: LaneConfig) -> None:
+        for e, fw in zip(ch.edges, ch.forward):
+            u, v, _ = self.st.edges[e]
+            self.st.edges[e] = (u, v, cfg if fw else cfg.reversed())
+
+    def _legs(self, chs: list[Chain], deg: list[int]) -> dict[int, list[tuple[int, bool]]]:
+        legs: dict[int, list[tuple[int, bool]]] = {}
+        for c, ch in enumerate(chs):
+            if deg[ch.start] >= 3:
+                legs.setdefault(ch.start, []).append((c, True))
+            if deg[ch.end] >= 3:
+                legs.setdefault(ch.end, []).append((c, False))
+        return legs
+
+    def _leg(self, chs: list[Chain], key: tuple[int, bool]) -> linkplan.Leg:
+        c, at_start = key
+        ch = chs[c]
+        cfg = self._chain_cfg(ch)
+        if at_start:
+            a, b = self.st.nodes[ch.nodes[0]], self.st.nodes[ch.nodes[1]]
+            n_in, n_out = cfg.backward, cfg.forward
+        else:
+            a, b = self.st.nodes[ch.nodes[-1]], self.st.nodes[ch.nodes[-2]]
+            n_in, n_out = cfg.forward, cfg.backward
+        return linkplan.Leg(key, math.atan2(b[1] - a[1], b[0] - a[0]), n_in, n_out, cfg.median)
+
+    def _fix_exits(self, chs: list[Chain], legs: dict[int, list[tuple[int, bool]]]) -> None:
+        """Every leg with lanes in has another leg with lanes out, and the other way round (opening one-way roads)."""
+        for _ in range(10 * len(chs) + 10):
+            changed = False
+            for node in sorted(legs):
+                keys = sorted(legs[node], key=lambda k: self._leg(chs, k).angle)
+                L = [self._leg(chs, k) for k in keys]
+                for i, leg in enumerate(L):
+                    others = [L[j] for j in range(len(L)) if j != i]
+                    need_out = leg.n_in > 0 and not any(o.n_out for o in others)
+                    need_in = leg.n_out > 0 and not any(o.n_in for o in others)
+                    if need_out or need_in:
+                        key = keys[(i + 1) % len(keys)]
+                        ch = chs[key[0]]
+                        cfg = self._chain_cfg(ch)
+                        # outgoing at a chain start is forward; incoming at a chain start is backward
+                        f, b = cfg.forward, cfg.backward
+                        if need_out:
+                            f, b = (max(f, 1), b) if key[1] else (f, max(b, 1))
+                        else:
+                            f, b = (f, max(b, 1)) if key[1] else (max(f, 1), b)
+                        self._set_chain_cfg(ch, LaneConfig(f, b, cfg.median))
+                        changed = True
+                        break
+                if changed:
+                    break
+            if not changed:
+                return
+
+    def _incident(self, node: int, L: list[linkplan.Leg]) -> list[float]:
+        """Distance of each leg's incident point from the control point: the paper's W / sin(d) rule with the legs'
+        actual widths, times the node's random factor and growth."""
+        if node not in self.st.factor:
+            self.st.factor[node] = float(self.rng.uniform(1.0, 1.2))
+        order = sorted(range(len(L)), key=lambda i: L[i].angle)
+        half = [max(side_width(l.n_in, l.median, self.w, self.mw), side_width(l.n_out, l.median, self.w, self.mw))
+                for l in L]
+        r = [h + self.p.min_turn_radius + 2.0 for h in half]
+        turn_r = self.p.min_turn_radius + 1.0 + self.w / 2
+        for a, b in zip(order, order[1:] + order[:1]):
+            d = (L[b].angle - L[a].angle) % (2 * math.pi)
+            W = half[a] + half[b] + MARGIN
+            need = W / max(math.sin(d), 1e-3) if d < math.pi / 2 else W
+            if d < math.pi:
+                # a kerb-side turn through the wedge: tangent points of a circle of radius turn_r fitted between
+                # the two legs' outer lanes lie (offset + radius) / tan(d / 2) from the control point
+                need = max(need, (max(half[a], half[b]) + turn_r) / max(math.tan(d / 2), 1e-3))
+            r[a], r[b] = max(r[a], need), max(r[b], need)
+        f = self.st.factor[node] * self.st.scale.get(node, 1.0)
+        return [x * f for x in r]
+
+    def _road_geometry(self, ch: Chain, r0: float, r1: float, need: float, cfg: LaneConfig):
+        """Geometry of a chain trimmed by r0 / r1, or ("vertex", i) / ("short", None) when it does not fit."""
+        P = [self.st.nodes[n] for n in ch.nodes]
+        segs = [_unit(a, b) for a, b in zip(P[:-1], P[1:])]
+        if any(s[2] < 1e-6 for s in segs):
+            return "short", None
+        n = len(segs)
+        avail = [s[2] for s in segs]
+        avail[0] -= r0
+        avail[-1] -= r1
+        widest = max(side_width(cfg.forward, cfg.median, self.w, self.mw),
+                     side_width(cfg.backward, cfg.median, self.w, self.mw))
+        r_min = widest + self.p.min_turn_radius + 0.5
+        r_pref = max(r_min, 60.0)
+        radii = []
+        tangents = []
+        for i in range(1, n):
+            theta = abs(wrap(math.atan2(segs[i][1], segs[i][0]) - math.atan2(segs[i - 1][1], segs[i - 1][0])))
+            share_l = avail[i - 1] / (2 if i - 1 > 0 else 1)
+            share_r = avail[i] / (2 if i < n - 1 else 1)
+            t_max = min(share_l, share_r) - 0.5
+            if theta < 1e-9:  # collinear: no vertex, one line runs through
+                radii.append(0.0)
+                tangents.append(0.0)
+                continue
+            if t_max <= 0 or theta > math.radians(170):
+                return "vertex", i
+            R = min(r_pref, t_max / math.tan(theta / 2))
+            if R < r_min:
+                return "vertex", i
+            radii.append(R)
+            tangents.append(R * math.tan(theta / 2))
+        if any(a <= 0 for a in avail) and n == 1:
+            return "short", None
+        straight = sum(avail) - 2 * sum(tangents)
+        if straight < 0:
+            return "short", None
+        start = (P[0][0] + r0 * segs[0][0], P[0][1] + r0 * segs[0][1])
+        end = (P[-1][0] - r1 * segs[-1][0], P[-1][1] - r1 * segs[-1][1])
+        corners = [(v, r) for v, r in zip(P[1:-1], radii) if r > 0]
+        geom = fillet_chain(start, [v for v, _ in corners], end, [r for _, r in corners])
+        length = geom[-1].s + geom[-1].length
+        if length < need:
+            return "short", None
+        return "ok", geom
+
+    def _overlap_repair(self, chs: list[Chain], geoms: list, plans: dict) -> None:
+        """Roads and junction areas may only touch where the map connects them; otherwise a road is removed
+        (one whose removal keeps the map connected when there is one)."""
+        shapes, owners = [], []
+        for c, (g, cfg, *_rest) in enumerate(geoms):
+            half = max(side_width(cfg.forward, cfg.median, self.w, self.mw),
+                       side_width(cfg.backward, cfg.median, self.w, self.mw))
+            pts = np.concatenate([sample(e, max(2, int(e.length / 5.0) + 2)) for e in g])
+            shapes.append(shapely.LineString(pts).buffer(half, cap_style="flat"))
+            owners.append(("road", c))
+        for node, (keys, L, _, _) in plans.items():
+            corners = []
+            for c, at_start in keys:
+                g, cfg = geoms[c][0], geoms[c][1]
+                pose = (g[0].x, g[0].y, g[0].hdg) if at_start else (lambda e: (e.x, e.y, e.hdg))(end_pose(g[-1]))
+                left = side_width(cfg.backward if self.p.traffic_rule is TrafficRule.RHT else cfg.forward,
+                                  cfg.median, self.w, self.mw)
+                right = side_width(cfg.forward if self.p.traffic_rule is TrafficRule.RHT else cfg.backward,
+                                   False, self.w, self.mw)
+                corners.append(border_point(*pose, left))
+                corners.append(border_point(*pose, -right))
+            shapes.append(shapely.MultiPoint(corners).convex_hull.buffer(-0.5))
+            owners.append(("junction", node))
+        tree = shapely.STRtree(shapes)
+        left_i, right_i = tree.query(shapes, predicate="intersects")
+        for i, j in sorted(zip(left_i.tolist(), right_i.tolist())):
+            if i >= j:
+                continue
+            (ka, a), (kb, b) = owners[i], owners[j]
+            if ka == "road" and kb == "road":
+                if {chs[a].start, chs[a].end} & {chs[b].start, chs[b].end}:
+                    continue
+                cands = [a, b]
+            elif ka == "junction" and kb == "junction":
+                cands = [c for c, ch in enumerate(chs) if {ch.start, ch.end} & {a, b}]
+            else:
+                road, node = (a, b) if ka == "road" else (b, a)
+                if node in (chs[road].start, chs[road].end):
+                    continue
+                cands = [road]
+            if shapes[i].intersection(shapes[j]).area < 0.01:
+                continue
+            for c in cands:
+                if self._connected_without(set(chs[c].edges)):
+                    break
+            else:
+                c = cands[0]
+            for e in chs[c].edges:
+                del self.st.edges[e]
+            self.st.repairs.append(f"removed road between nodes {chs[c].start} and {chs[c].end}: it overlapped "
+                                   f"another road or junction")
+            raise _Repair
+
+    def _drop_leg(self, node: int, keys: list[tuple[int, bool]], chs: list[Chain], prefer: list[int], why: str) -> None:
+        """Remove the edge of one leg at ``node``: the first of ``prefer`` (leg indexes) that is not a bridge."""
+        cands = []
+        for i in prefer:
+            c, at_start = keys[i]
+            cands.append(chs[c].edges[0] if at_start else chs[c].edges[-1])
+        for e in cands:
+            if self._connected_without(e):
+                self._remove_edge(e, why)
+        self._remove_edge(cands[0], why + " (the map loses the part behind it)")
+
+    def _fit(self, node: int, plan: linkplan.LinkPlan, contact, median) -> tuple[list, bool]:
+        """Connection geometry for every link (one vectorised fit for the links not seen before).
+
+        Returns the links that fit and whether the junction must grow: a link that cannot meet the radius bound is
+        dropped once the junction has grown at least once, provided its incoming lane keeps another link and its
+        outgoing lane another feeder; otherwise the junction grows.
+        """
+        rule = self.p.traffic_rule
+        sign = -1.0 if rule is TrafficRule.RHT else 1.0
+        offsets = (sign * self.w / 2, sign * self.w)
+        rows = []
+        for i, k, j, m in plan.links:
+            xi, yi, hi, at_start_i = contact[i]
+            xj, yj, hj, at_start_j = contact[j]
+            lid_in = lane_id(not at_start_i, k, median[i], rule)
+            lid_out = lane_id(at_start_j, m, median[j], rule)
+            p0 = border_point(xi, yi, hi, inner_offset(lid_in, median[i], self.w, self.mw))
+            p1 = border_point(xj, yj, hj, inner_offset(lid_out, median[j], self.w, self.mw))
+            h0 = hi + (math.pi if at_start_i else 0.0)
+            h1 = hj + (0.0 if at_start_j else math.pi)
+            rows.append((i, k, j, m, lid_in, lid_out, p0, wrap(h0), local_target(p0[0], p0[1], h0, p1[0], p1[1], h1)))
+        todo = sorted({r[-1] for r in rows if r[-1] not in self._fits})
+        if todo:
+            for key, fit in zip(todo, fit_connections(np.array(todo), offsets, self.p.min_turn_radius + 0.5, SCALES)):
+                self._fits[key] = fit
+        out = [(*r[:-1], self._fits[r[-1]]) for r in rows]
+        bad = {n for n, r in enumerate(out) if r[-1] is None}
+        bad |= _crossing(out, bad)
+        if not bad:
+            return out, False
+        if self.st.growth.get(node, 0) < 1:
+            return [r if n not in bad else (*r[:-1], None) for n, r in enumerate(out)], True
+        good = [r for n, r in enumerate(out) if n not in bad]
+        lanes_ok = {(r[0], r[1]) for r in good}
+        fed_ok = {(r[2], r[3]) for r in good}
+        for n in bad:
+            r = out[n]
+            if (r[0], r[1]) not in lanes_ok or (r[2], r[3]) not in fed_ok:
+                return [r if n not in bad else (*r[:-1], None) for n, r in enumerate(out)], True
+        return good, False
+
+    def run_once(self) -> Layout:
+        ids, chs = self._chains()
+        deg = self._degree()
+        self._normalise(chs, deg)
+        legs_at = self._legs(chs, deg)
+        for node in sorted(legs_at):
+            if len(legs_at[node]) > MAX_LEGS:
+                keys = legs_at[node]
+                L = [self._leg(chs, k) for k in keys]
+                order = sorted(range(len(L)), key=lambda i: L[i].angle)
+                gaps = [((L[b].angle - L[a].angle) % (2 * math.pi), a) for a, b in zip(order, order[1:] + order[:1])]
+                prefer = [a for _, a in sorted(gaps)]
+                self._drop_leg(node, keys, chs, prefer, f"node {node}: dropped a leg ({len(keys)} legs, at most 7)")
+        self._fix_exits(chs, legs_at)
+        plans: dict[int, tuple[list[tuple[int, bool]], list[linkplan.Leg], linkplan.LinkPlan, list[float]]] = {}
+        r_at: dict[tuple[int, bool], float] = {}
+        for node in sorted(legs_at):
+            keys = sorted(legs_at[node])
+            L = [self._leg(chs, k) for k in keys]
+            plan = linkplan.plan(L, self.p, self.rng, self.st.turn_lane)
+            r = self._incident(node, L)
+            plans[node] = (keys, L, plan, r)
+            for k, x in zip(keys, r):
+                r_at[k] = x
+        # roads
+        counts: dict[tuple[int, bool], tuple[int, int]] = {}
+        for node, (keys, L, plan, _) in plans.items():
+            for idx, k in enumerate(keys):
+                counts[k] = (plan.n_in_end[idx], plan.n_out_end[idx])
+        geoms = []
+        for c, ch in enumerate(chs):
+            cfg = self._chain_cfg(ch)
+            r0, r1 = r_at.get((c, True), 0.0), r_at.get((c, False), 0.0)
+            fs, bs = (counts[(c, True)][1], counts[(c, True)][0]) if (c, True) in counts else (cfg.forward, cfg.backward)
+            fe, be = (counts[(c, False)][0], counts[(c, False)][1]) if (c, False) in counts else (cfg.forward, cfg.backward)
+            taper = self.p.taper_length
+            need = MIN_ROAD + (taper if (fs, bs) != (cfg.forward, cfg.backward) else 0.0) \
+                + (taper if (fe, be) != (cfg.forward, cfg.backward) else 0.0)
+            status, g = self._road_geometry(ch, r0, r1, need, cfg)
+            if status == "vertex":
+                self._smooth(ch, g, f"straightened a bend at node {ch.nodes[g]} too sharp for its lanes")
+            if status == "short":
+                if len(ch.nodes) > 2:
+                    P = [self.st.nodes[n] for n in ch.nodes]
+                    turns = [abs(wrap(math.atan2(P[i + 1][1] - P[i][1], P[i + 1][0] - P[i][0])
+                                      - math.atan2(P[i][1] - P[i - 1][1], P[i][0] - P[i - 1][0])))
+                             for i in range(1, len(P) - 1)]
+                    self._smooth(ch, 1 + int(np.argmax(turns)), f"straightened a bend at a road too short between nodes "
+                                 f"{ch.start} and {ch.end}")
+                e = ch.edges[0]
+                if self._connected_without(e):
+                    self._remove_edge(e, f"removed road between nodes {ch.start} and {ch.end}: too short for its "
+                                         f"intersections")
+                self._contract(e, f"merged nodes {ch.start} and {ch.end} into one intersection: the road between them "
+                                  f"was too short")
+            geoms.append((g, cfg, fs, bs, fe, be))
+        self._overlap_repair(chs, geoms, plans)
+        # junctions
+        junction_of: dict[int, int] = {node: n for n, node in enumerate(sorted(plans))}
+        jplans = []
+        grown = []
+        for node in sorted(plans):
+            keys, L, plan, _ = plans[node]
+            contact, median = [], []
+            for c, at_start in keys:
+                g = geoms[c][0]
+                if at_start:
+                    contact.append((g[0].x, g[0].y, g[0].hdg, True))
+                else:
+                    e = end_pose(g[-1])
+                    contact.append((e.x, e.y, e.hdg, False))
+                median.append(geoms[c][1].median)
+            fits, grow = self._fit(node, plan, contact, median)
+            if grow:
+                failed = [r[0] for r in fits if r[-1] is None]
+                self.st.growth[node] = self.st.growth.get(node, 0) + 1
+                if self.st.growth[node] > MAX_GROWTH:
+                    self.st.growth[node] = 0
+                    self.st.scale[node] = 1.0
+                    self._drop_leg(node, keys, chs, sorted(set(failed)),
+                                   f"node {node}: dropped a leg whose turns stay under the radius bound")
+                self.st.scale[node] = self.st.scale.get(node, 1.0) * GROWTH
+                self.st.repairs.append(f"node {node}: moved incident points outward (turn radius)")
+                grown.append(node)
+                continue
+            conns = []
+            for i, k, j, m, lid_in, lid_out, p0, h0, fit in fits:
+                ci, si = keys[i]
+                cj, sj = keys[j]
+                conns.append(ConnectionPlan(ci, "start" if si else "end", lid_in, cj, "start" if sj else "end",
+                                            lid_out, connection_geometry(p0[0], p0[1], h0, fit), fit.min_radius))
+            jplans.append(JunctionPlan(node, self.st.nodes[node], len(keys), tuple(conns)))
+        if grown:
+            raise _Repair
+        roads = []
+        for c, ch in enumerate(chs):
+            g, cfg, fs, bs, fe, be = geoms[c]
+            roads.append(RoadPlan(c, ch.start, ch.end, junction_of.get(ch.start) if deg[ch.start] >= 3 else None,
+                                  junction_of.get(ch.end) if deg[ch.end] >= 3 else None, g,
+                                  g[-1].s + g[-1].length, cfg, fs, bs, fe, be))
+        return Layout(tuple(roads), tuple(jplans), tuple(self.st.repairs))
+
+    def run(self) -> Layout:
+        limit = 20 * (len(self.st.edges) + len(self.st.nodes)) + 100
+        for _ in range(limit):
+            try:
+                return self.run_once()
+            except _Repair:
+                continue
+        raise RuntimeError("stage 3 did not converge")  # every repair shrinks the network: unreachable
+
+
+def build(laned: LanedNetwork, params: Params, rng: np.random.Generator) -> Layout:
+    """Stage 3 for a whole network."""
+    return Builder(laned, params, rng).run()

@@ -1,0 +1,90 @@
+"""Lane links of one intersection: which incoming lane feeds which outgoing lane.
+
+For each incoming leg the outgoing lanes of the other legs are enumerated from the sharpest turn towards the kerb side
+(right in RHT, left in LHT) to the sharpest turn the other way, each leg's lanes from the kerb to the centre; incoming
+lanes are enumerated the same way and paired in order. Extra outgoing lanes are fed by the lane nearest the centre
+(split-first) or the kerb (split-last). Every outgoing lane gets exactly one lane of each incoming leg, so no two lanes
+of one road merge, every incoming lane reaches an outgoing lane, and one road's connection lanes keep their order.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from ..curves import wrap
+from ..params import Params, SplitStrategy, TrafficRule
+
+#: Turns sharper than this (a near U-turn between two legs at a small angle) are only used when nothing else exists.
+SHARPEST_TURN = math.radians(150.0)
+
+
+@dataclass(frozen=True)
+class Leg:
+    key: tuple[int, bool]  #: (chain index, the chain starts here)
+    angle: float  #: heading of the leg leaving the node
+    n_in: int  #: lanes travelling into the node
+    n_out: int  #: lanes travelling away from the node
+    median: bool
+
+
+@dataclass(frozen=True)
+class LinkPlan:
+    n_in_end: tuple[int, ...]  #: per leg: incoming lanes reaching the junction (after merges / turn lanes)
+    n_out_end: tuple[int, ...]  #: per leg: outgoing lanes leaving the junction (unfed ones taper out)
+    links: tuple[tuple[int, int, int, int], ...]  #: (leg in, lane k in, leg out, lane m out), k and m from 1
+
+
+def turn(legs: list[Leg], i: int, j: int) -> float:
+    """Signed heading change driving in on leg i and out on leg j (positive: left)."""
+    return wrap(legs[j].angle - (legs[i].angle + math.pi))
+
+
+def _targets(legs: list[Leg], i: int, rule: TrafficRule) -> list[int]:
+    others = [j for j in range(len(legs)) if j != i and legs[j].n_out > 0]
+    usable = [j for j in others if abs(turn(legs, i, j)) <= SHARPEST_TURN] or others
+    sign = 1.0 if rule is TrafficRule.RHT else -1.0
+    return sorted(usable, key=lambda j: sign * turn(legs, i, j))
+
+
+def plan(legs: list[Leg], params: Params, rng: np.random.Generator, turn_lane: dict[tuple[int, bool], bool]) -> LinkPlan:
+    """Lane links for one junction; ``turn_lane`` remembers per leg whether it got a turn lane (stable over repairs)."""
+    n = len(legs)
+    n_in_end = [0] * n
+    fed: list[set[int]] = [set() for _ in range(n)]
+    links: list[tuple[int, int, int, int]] = []
+    for i, leg in enumerate(legs):
+        if leg.n_in == 0:
+            continue
+        targets = [(j, m) for j in _targets(legs, i, params.traffic_rule) for m in range(legs[j].n_out, 0, -1)]
+        if not targets:
+            continue
+        count = min(leg.n_in, len(targets))
+        if leg.key not in turn_lane:
+            turn_lane[leg.key] = bool(rng.random() < params.turn_lane_probability)
+        if turn_lane[leg.key] and count == leg.n_in and leg.n_in < 3 and len(targets) > count:
+            count += 1  # a turn lane appears before the junction on the kerb side
+        n_in_end[i] = count
+        strategy = params.split_strategy
+        if strategy is SplitStrategy.RANDOM:
+            strategy = SplitStrategy.SPLIT_FIRST if rng.random() < 0.5 else SplitStrategy.SPLIT_LAST
+        extra = len(targets) - count
+        # incoming lanes from the kerb (k = count) to the centre (k = 1), each taking a block of targets
+        pos = 0
+        for rank, k in enumerate(range(count, 0, -1)):
+            take = 1
+            if strategy is SplitStrategy.SPLIT_LAST and rank == 0:
+                take += extra
+            if strategy is SplitStrategy.SPLIT_FIRST and k == 1:
+                take += extra
+            for j, m in targets[pos:pos + take]:
+                links.append((i, k, j, m))
+                fed[j].add(m)
+            pos += take
+    n_out_end = []
+    for j, leg in enumerate(legs):
+        # outgoing lanes nobody feeds taper out before the junction; fed ones are a contiguous set 1..max
+        n_out_end.append(max(fed[j]) if fed[j] else 0)
+    return LinkPlan(tuple(n_in_end), tuple(n_out_end), tuple(links))

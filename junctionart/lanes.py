@@ -1,0 +1,71 @@
+"""Stage 2: lane configuration of every road (a chain of edges between junctions or dead ends).
+
+Counts are per travel direction along the chain: ``forward`` lanes travel from its first node to its last,
+``backward`` lanes the other way; 0 to 3 each, never 0 both. A median lane is added to some two-way roads.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .controllines import ControlLines
+from .graph import chains
+from .network import Network
+from .params import Params
+
+
+@dataclass(frozen=True)
+class LaneConfig:
+    forward: int
+    backward: int
+    median: bool = False
+
+    def reversed(self) -> "LaneConfig":
+        return LaneConfig(self.backward, self.forward, self.median)
+
+
+@dataclass(frozen=True)
+class LanedNetwork:
+    network: Network
+    lanes: tuple[LaneConfig, ...]  #: per edge, oriented from edge.u to edge.v
+
+
+def _draw(rng: np.random.Generator, dist: tuple[float, ...]) -> tuple[int, int]:
+    for _ in range(50):
+        a, b = (int(x) for x in rng.choice(4, size=2, p=np.asarray(dist) / sum(dist)))
+        if a or b:
+            return a, b
+    return 1, 1
+
+
+def assign(net: Network, lines: ControlLines, params: Params, rng: np.random.Generator) -> LanedNetwork:
+    """Draw one configuration per chain and give it to every edge of the chain."""
+    deg = net.degree()
+    lanes: list[LaneConfig | None] = [None] * len(net.edges)
+    for ch in chains(len(net.nodes), [(e.u, e.v) for e in net.edges]):
+        fixed = [(e, fw) for e, fw in zip(ch.edges, ch.forward)
+                 if net.edges[e].line >= 0 and lines.lines[net.edges[e].line].lanes is not None]
+        on_line = any(net.edges[e].line >= 0 for e in ch.edges)
+        if not params.randomize_lanes:
+            fwd, bwd = 1, 1
+        elif fixed:
+            e, fw = fixed[0]
+            line = lines.lines[net.edges[e].line]
+            fwd, bwd = line.lanes  # type: ignore[misc]
+            # the line's direction is along its points; the chain may run the other way over this edge
+            edge = net.edges[e]
+            a, b = (edge.u, edge.v) if fw else (edge.v, edge.u)
+            ta, tb = line.project(net.nodes[a]), line.project(net.nodes[b])
+            if tb < ta:
+                fwd, bwd = bwd, fwd
+        else:
+            fwd, bwd = _draw(rng, params.lane_distribution_control_lines if on_line else params.lane_distribution_side)
+        if deg[ch.start] == 1 or deg[ch.end] == 1:  # a dead end must let traffic turn back out
+            fwd, bwd = max(fwd, 1), max(bwd, 1)
+        median = bool(fwd and bwd and rng.random() < params.median_probability)
+        cfg = LaneConfig(fwd, bwd, median)
+        for e, fw in zip(ch.edges, ch.forward):
+            lanes[e] = cfg if fw else cfg.reversed()
+    return LanedNetwork(net, tuple(lanes))  # type: ignore[arg-type]

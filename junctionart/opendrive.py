@@ -1,0 +1,158 @@
+"""The generator's own small OpenDRIVE document model (frozen dataclasses).
+
+Deliberately independent of :mod:`xodrcheck.model`: the checker reads what this model was written to, so a mistake
+here cannot be hidden by a shared data type. Only what the generator writes is modelled. Lane-record ``s`` values are
+``sOffset`` values (relative to their lane section); road-level ``s`` values are absolute.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Union
+
+
+@dataclass(frozen=True)
+class Line:
+    s: float
+    x: float
+    y: float
+    hdg: float
+    length: float
+
+
+@dataclass(frozen=True)
+class Arc:
+    s: float
+    x: float
+    y: float
+    hdg: float
+    length: float
+    curvature: float
+
+
+@dataclass(frozen=True)
+class ParamPoly3:
+    """A parametric cubic in the local (u, v) frame with ``pRange="normalized"`` (p from 0 to 1)."""
+
+    s: float
+    x: float
+    y: float
+    hdg: float
+    length: float
+    au: float
+    bu: float
+    cu: float
+    du: float
+    av: float
+    bv: float
+    cv: float
+    dv: float
+
+
+Geometry = Union[Line, Arc, ParamPoly3]
+
+
+@dataclass(frozen=True)
+class Cubic:
+    """``a + b ds + c ds^2 + d ds^3`` from ``s`` on (width records: ``s`` is sOffset in the lane section)."""
+
+    s: float
+    a: float
+    b: float = 0.0
+    c: float = 0.0
+    d: float = 0.0
+
+
+@dataclass(frozen=True)
+class RoadMark:
+    s: float  # sOffset in the lane section
+    type: str  # "solid", "broken", "none", "solid solid"
+    color: str = "standard"  # "standard" (white), "yellow"
+    width: float = 0.12
+    lane_change: str | None = None  # "none", "both", "increase", "decrease"
+
+
+@dataclass(frozen=True)
+class Lane:
+    id: int
+    type: str  # "driving", "median", "none"
+    widths: tuple[Cubic, ...] = ()
+    marks: tuple[RoadMark, ...] = ()
+    predecessor: int | None = None
+    successor: int | None = None
+
+
+@dataclass(frozen=True)
+class LaneSection:
+    s: float
+    left: tuple[Lane, ...]  # ordered by id ascending (1, 2, ...)
+    center: Lane
+    right: tuple[Lane, ...]  # ordered by id descending (-1, -2, ...)
+
+
+@dataclass(frozen=True)
+class Link:
+    element_type: str  # "road" or "junction"
+    element_id: str
+    contact_point: str | None = None  # "start" / "end" for roads
+
+
+@dataclass(frozen=True)
+class Road:
+    id: str
+    length: float
+    junction: str  # "-1" outside junctions
+    geometry: tuple[Geometry, ...]
+    sections: tuple[LaneSection, ...]
+    rule: str = "RHT"
+    predecessor: Link | None = None
+    successor: Link | None = None
+    lane_offset: tuple[Cubic, ...] = ()
+    name: str = ""
+    speed_kmh: float | None = None
+
+
+@dataclass(frozen=True)
+class LaneLink:
+    from_lane: int
+    to_lane: int
+
+
+@dataclass(frozen=True)
+class Connection:
+    id: str
+    incoming_road: str
+    connecting_road: str
+    contact_point: str  # "start" / "end" of the connecting road
+    lane_links: tuple[LaneLink, ...]
+
+
+@dataclass(frozen=True)
+class Junction:
+    id: str
+    name: str
+    connections: tuple[Connection, ...]
+
+
+@dataclass(frozen=True)
+class Header:
+    name: str = "junctionart"
+    vendor: str = "junctionart"
+    date: str = ""
+    north: float = 0.0
+    south: float = 0.0
+    east: float = 0.0
+    west: float = 0.0
+
+
+@dataclass(frozen=True)
+class Document:
+    header: Header
+    roads: tuple[Road, ...]
+    junctions: tuple[Junction, ...]
+
+    def road(self, road_id: str) -> Road:
+        for r in self.roads:
+            if r.id == road_id:
+                return r
+        raise KeyError(road_id)

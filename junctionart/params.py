@@ -1,0 +1,207 @@
+"""Generation parameters: one frozen dataclass, validated before anything is drawn.
+
+Every check raises :class:`junctionart.errors.ParamsError` naming the parameter, the bad value and the valid range.
+Defaults follow the original JunctionArt (see ``junctionart-notes.md``) except where a defect is fixed.
+"""
+
+from __future__ import annotations
+
+import enum
+import math
+from dataclasses import dataclass, field, fields, replace
+from typing import Any
+
+from .errors import ParamsError
+
+
+class SplitStrategy(enum.Enum):
+    """Which incoming lane feeds the extra outgoing lanes of a junction leg."""
+
+    SPLIT_FIRST = "split-first"  # the lane nearest the centre line
+    SPLIT_LAST = "split-last"  # the lane nearest the kerb
+    RANDOM = "random"  # one of the two, drawn per incoming leg
+
+
+class TrafficRule(enum.Enum):
+    RHT = "RHT"
+    LHT = "LHT"
+
+
+STATES = ("orthogonal", "parallel", "random", "commonEnd")
+
+#: The original's MDP over the shape of the next section between a pair of control lines.
+DEFAULT_TRANSITIONS: dict[str, dict[str, float]] = {
+    "start": {"orthogonal": 0.3, "random": 0.7},
+    "orthogonal": {"parallel": 0.4, "random": 0.3, "commonEnd": 0.3},
+    "parallel": {"orthogonal": 0.4, "parallel": 0.3, "random": 0.2, "commonEnd": 0.1},
+    "random": {"orthogonal": 0.1, "parallel": 0.5, "random": 0.3, "commonEnd": 0.1},
+    "commonEnd": {"orthogonal": 0.5, "parallel": 0.1, "random": 0.4},
+}
+
+VERSIONS = ("1.8", "1.7")
+
+
+def _frozen_transitions(t: dict[str, dict[str, float]]) -> tuple[tuple[str, tuple[tuple[str, float], ...]], ...]:
+    return tuple((k, tuple(sorted(v.items()))) for k, v in sorted(t.items()))
+
+
+@dataclass(frozen=True)
+class Params:
+    """All parameters of one generation run (lengths in metres, probabilities in [0, 1])."""
+
+    width: float = 500.0  #: map width W (automatic control lines span x = 0..W)
+    height: float = 500.0  #: map height H (automatic control lines stay inside y = 0..H)
+    n_lines: int | None = None  #: automatic control lines; None: as many as fit in H
+    line_spacing: tuple[float, float] = (80.0, 200.0)  #: gap between consecutive automatic lines
+    snap_distance: float = 60.0  #: control points on one line closer than this are merged
+    min_distance: float = 100.0  #: smallest gap between adjacent control points on a line
+    max_distance: float = 150.0  #: largest gap (before the scale factor)
+    gap_scale: tuple[float, float] = (1.0, 2.1)  #: the gap is also multiplied by a factor drawn in this range
+    transitions: tuple[tuple[str, tuple[tuple[str, float], ...]], ...] = field(
+        default_factory=lambda: _frozen_transitions(DEFAULT_TRANSITIONS)
+    )
+    randomize_lanes: bool = False  #: False: one lane each way everywhere
+    lane_distribution_side: tuple[float, float, float, float] = (0.15, 0.6, 0.2, 0.05)  #: P(0..3 lanes on a side)
+    lane_distribution_control_lines: tuple[float, float, float, float] = (0.05, 0.45, 0.4, 0.1)
+    lane_width: float = 3.5
+    median_probability: float = 0.3  #: chance that a two-way road gets a median lane
+    median_width: float = 2.0
+    split_strategy: SplitStrategy = SplitStrategy.RANDOM
+    traffic_rule: TrafficRule = TrafficRule.RHT
+    curved_roads: bool = False  #: bend long connections through an extra vertex
+    curve_probability: float = 0.5  #: chance that an eligible connection is bent (with curved_roads)
+    turn_lane_probability: float = 0.2  #: chance of a turn lane before a junction where the exits allow it
+    min_turn_radius: float = 5.0  #: smallest radius of any reference line or lane centre line written
+    taper_length: float = 25.0  #: length of a lane split / merge
+    version: str = "1.8"  #: OpenDRIVE version written: "1.8" or "1.7"
+
+    def __post_init__(self) -> None:
+        validate(self)
+
+    def transition_table(self) -> dict[str, dict[str, float]]:
+        return {k: dict(v) for k, v in self.transitions}
+
+    def with_(self, **changes: Any) -> "Params":
+        """A copy with some fields changed (validated again)."""
+        return replace(self, **changes)
+
+    @classmethod
+    def create(cls, **values: Any) -> "Params":
+        """Build from plain values (strings for enums, a nested dict for ``transitions``), validated."""
+        names = {f.name for f in fields(cls)}
+        unknown = sorted(set(values) - names)
+        if unknown:
+            raise ParamsError(f"unknown parameter {unknown[0]!r}; valid: {', '.join(sorted(names))}")
+        v = dict(values)
+        if "split_strategy" in v and not isinstance(v["split_strategy"], SplitStrategy):
+            v["split_strategy"] = _enum(SplitStrategy, "split_strategy", v["split_strategy"])
+        if "traffic_rule" in v and not isinstance(v["traffic_rule"], TrafficRule):
+            v["traffic_rule"] = _enum(TrafficRule, "traffic_rule", v["traffic_rule"])
+        if "transitions" in v and isinstance(v["transitions"], dict):
+            _check_transition_dict(v["transitions"])
+            v["transitions"] = _frozen_transitions(v["transitions"])
+        for name in ("line_spacing", "gap_scale", "lane_distribution_side", "lane_distribution_control_lines"):
+            if name in v and isinstance(v[name], list):
+                v[name] = tuple(v[name])
+        return cls(**v)
+
+
+def _enum(kind: type[enum.Enum], name: str, value: Any) -> Any:
+    try:
+        return kind(value)
+    except ValueError:
+        raise ParamsError(f"{name}={value!r}: must be one of {', '.join(m.value for m in kind)}") from None
+
+
+def _number(name: str, value: Any) -> float:
+    if isinstance(value, bool) or not isinstance(value, (int, float)) or not math.isfinite(value):
+        raise ParamsError(f"{name}={value!r}: must be a finite number")
+    return float(value)
+
+
+def _range(name: str, value: Any, lo: float, hi: float, *, lo_open: bool = False) -> float:
+    x = _number(name, value)
+    if x < lo or x > hi or (lo_open and x == lo):
+        left = "(" if lo_open else "["
+        raise ParamsError(f"{name}={value!r}: must be in {left}{lo:g}, {hi:g}]")
+    return x
+
+
+def _pair(name: str, value: Any, lo: float, hi: float) -> None:
+    if not isinstance(value, tuple) or len(value) != 2:
+        raise ParamsError(f"{name}={value!r}: must be a pair (low, high)")
+    a = _range(f"{name}[0]", value[0], lo, hi, lo_open=lo == 0)
+    b = _range(f"{name}[1]", value[1], lo, hi, lo_open=lo == 0)
+    if a > b:
+        raise ParamsError(f"{name}={value!r}: low {a:g} must not exceed high {b:g}")
+
+
+def _distribution(name: str, value: Any) -> None:
+    if not isinstance(value, tuple) or len(value) != 4:
+        raise ParamsError(f"{name}={value!r}: must be 4 probabilities for 0, 1, 2, 3 lanes")
+    for i, p in enumerate(value):
+        _range(f"{name}[{i}]", p, 0.0, 1.0)
+    total = sum(value)
+    if abs(total - 1.0) > 1e-9:
+        raise ParamsError(f"{name}={value!r}: probabilities must sum to 1 (they sum to {total:g})")
+    if sum(value[1:]) <= 0:
+        raise ParamsError(f"{name}={value!r}: at least one of 1, 2, 3 lanes needs a positive probability")
+
+
+def _check_transition_dict(t: Any) -> None:
+    if not isinstance(t, dict):
+        raise ParamsError(f"transitions={t!r}: must map a state to {{next state: probability}}")
+    valid = ("start",) + STATES
+    for state, row in t.items():
+        if state not in valid:
+            raise ParamsError(f"transitions: unknown state {state!r}; valid: {', '.join(valid)}")
+        if not isinstance(row, dict) or not row:
+            raise ParamsError(f"transitions[{state!r}]={row!r}: must be a non-empty {{next state: probability}}")
+        for nxt, p in row.items():
+            if nxt not in STATES:
+                raise ParamsError(f"transitions[{state!r}]: unknown next state {nxt!r}; valid: {', '.join(STATES)}")
+            _range(f"transitions[{state!r}][{nxt!r}]", p, 0.0, 1.0)
+        total = sum(row.values())
+        if abs(total - 1.0) > 1e-9:
+            raise ParamsError(f"transitions[{state!r}]: probabilities must sum to 1 (they sum to {total:g})")
+    missing = [s for s in valid if s not in t]
+    if missing:
+        raise ParamsError(f"transitions: no row for state {missing[0]!r}")
+
+
+def validate(p: Params) -> None:
+    """Raise :class:`ParamsError` for the first parameter outside its range."""
+    _range("width", p.width, 50.0, 100_000.0)
+    _range("height", p.height, 50.0, 100_000.0)
+    if p.n_lines is not None:
+        if isinstance(p.n_lines, bool) or not isinstance(p.n_lines, int) or not 2 <= p.n_lines <= 1000:
+            raise ParamsError(f"n_lines={p.n_lines!r}: must be an integer in [2, 1000] or None")
+    _pair("line_spacing", p.line_spacing, 0.0, 10_000.0)
+    if p.line_spacing[0] < 40.0:
+        raise ParamsError(f"line_spacing={p.line_spacing!r}: low must be at least 40 m (roads would overlap)")
+    _range("snap_distance", p.snap_distance, 0.0, 10_000.0)
+    _range("min_distance", p.min_distance, 20.0, 10_000.0)
+    _range("max_distance", p.max_distance, 20.0, 10_000.0)
+    if p.min_distance > p.max_distance:
+        raise ParamsError(f"min_distance={p.min_distance!r}: must not exceed max_distance={p.max_distance!r}")
+    _pair("gap_scale", p.gap_scale, 0.0, 100.0)
+    _check_transition_dict(p.transition_table())
+    if not isinstance(p.randomize_lanes, bool):
+        raise ParamsError(f"randomize_lanes={p.randomize_lanes!r}: must be true or false")
+    _distribution("lane_distribution_side", p.lane_distribution_side)
+    _distribution("lane_distribution_control_lines", p.lane_distribution_control_lines)
+    _range("lane_width", p.lane_width, 2.0, 6.0)
+    _range("median_probability", p.median_probability, 0.0, 1.0)
+    _range("median_width", p.median_width, 0.5, 10.0)
+    if not isinstance(p.split_strategy, SplitStrategy):
+        raise ParamsError(f"split_strategy={p.split_strategy!r}: must be one of split-first, split-last, random")
+    if not isinstance(p.traffic_rule, TrafficRule):
+        raise ParamsError(f"traffic_rule={p.traffic_rule!r}: must be RHT or LHT")
+    if not isinstance(p.curved_roads, bool):
+        raise ParamsError(f"curved_roads={p.curved_roads!r}: must be true or false")
+    _range("curve_probability", p.curve_probability, 0.0, 1.0)
+    _range("turn_lane_probability", p.turn_lane_probability, 0.0, 1.0)
+    _range("min_turn_radius", p.min_turn_radius, 1.0, 50.0)
+    _range("taper_length", p.taper_length, 5.0, 200.0)
+    if p.version not in VERSIONS:
+        raise ParamsError(f"version={p.version!r}: must be one of {', '.join(VERSIONS)}")

@@ -1,0 +1,42 @@
+"""Run CARLA's OpenDRIVE parser on one file and print what it made of it as JSON (one object on stdout).
+
+Run by :mod:`tests.interop.carla_harness` with the ``carla`` interpreter (``.venv-carla``), never imported by the test
+process: CARLA can crash the process that loads a bad map. Usage: ``python _carla_worker.py MAP.xodr DISTANCE OUT.json``
+(a file rather than stdout, because CARLA writes its own messages to the standard streams).
+
+CARLA's y axis points the other way from OpenDRIVE's; ``y`` and ``hdg`` are turned back into OpenDRIVE's frame here.
+"""
+
+import json
+import math
+import sys
+
+
+def _point(wp):
+    loc = wp.transform.location
+    return {
+        "road_id": str(wp.road_id),
+        "section_id": int(wp.section_id),
+        "lane_id": int(wp.lane_id),
+        "s": float(wp.s),
+        "x": float(loc.x),
+        "y": -float(loc.y),
+        "z": float(loc.z),
+        "hdg": -math.radians(float(wp.transform.rotation.yaw)),
+    }
+
+
+def main(path: str, distance: float, out: str) -> None:
+    import carla  # imported here so that a missing carla is an error of this process only
+
+    with open(path, encoding="utf-8") as f:
+        text = f.read()
+    world_map = carla.Map("xodrcheck-interop", text)
+    waypoints = [_point(wp) for wp in world_map.generate_waypoints(distance)]
+    topology = [[_point(a), _point(b)] for a, b in world_map.get_topology()]
+    with open(out, "w", encoding="utf-8") as f:
+        json.dump({"waypoints": waypoints, "topology": topology}, f)
+
+
+if __name__ == "__main__":
+    main(sys.argv[1], float(sys.argv[2]), sys.argv[3])

@@ -1,0 +1,142 @@
+import math
+from collections import defaultdict
+
+import numpy as np
+import pytest
+from shapely import LineString
+
+import junctionart as ja
+from junctionart.curves import end_pose, sample
+from junctionart.lanegeom import lane_id
+from junctionart.params import Params, SplitStrategy, TrafficRule
+
+
+def _check_links(layout, params):
+    rule = params.traffic_rule
+    roads = layout.roads
+    for jp in layout.junctions:
+        assert 3 <= jp.legs <= 7
+        by_in = defaultdict(list)
+        for c in jp.connections:
+            by_in[(c.in_road, c.in_contact)].append(c)
+        for (r, contact), conns in by_in.items():
+            rp = roads[r]
+            n_in = rp.bwd_start if contact == "start" else rp.fwd_end
+            median = rp.lanes.median
+            expect = {lane_id(contact == "end", k, median, rule) for k in range(1, n_in + 1)}
+            assert {c.in_lane for c in conns} == expect, "every incoming lane reaches an outgoing lane"
+            targets = [(c.out_road, c.out_contact, c.out_lane) for c in conns]
+            assert len(targets) == len(set(targets)), "two lanes of one road merge into one lane"
+            assert all((c.out_road, c.out_contact) != (r, contact) for c in conns), "no U-turn"
+        for c in jp.connections:
+            assert c.min_radius >= params.min_turn_radius
+        # every outgoing lane is fed
+        fed = {(c.out_road, c.out_contact, c.out_lane) for c in jp.connections}
+        for rp in roads:
+            for contact, j, n_out in (("start", rp.start_junction, rp.fwd_start), ("end", rp.end_junction, rp.bwd_end)):
+                if j is not None and layout.junctions[j] is jp:
+                    for m in range(1, n_out + 1):
+                        assert (rp.index, contact, lane_id(contact == "start", m, rp.lanes.median, rule)) in fed
+
+
+def _no_crossing(layout):
+    """Centre lines of the connection lanes leaving one road meet only where they start."""
+    bad = 0
+    for jp in layout.junctions:
+        by_in = defaultdict(list)
+        for c in jp.connections:
+            by_in[(c.in_road, c.in_contact)].append(c)
+        for conns in by_in.values():
+            lines = [LineString(sample(c.geometry, 64)) for c in conns]
+            for a in range(len(conns)):
+                for b in range(a + 1, len(conns)):
+                    if conns[a].in_lane == conns[b].in_lane:
+                        continue  # same start point, they split there
+                    if lines[a].intersects(lines[b]):
+                        bad += 1
+    return bad
+
+
+@pytest.mark.parametrize("idx", range(5))
+def test_stage3_invariants_random_lanes(random_500, idx):
+    result = random_500[idx]
+    params = Params(randomize_lanes=True, curved_roads=True)
+    _check_links(result.layout, params)
+    assert _no_crossing(result.layout) == 0
+
+
+@pytest.mark.parametrize("rule", [TrafficRule.RHT, TrafficRule.LHT])
+@pytest.mark.parametrize("strategy", list(SplitStrategy))
+def test_rules_and_strategies(rule, strategy):
+    params = Params(randomize_lanes=True, traffic_rule=rule, split_strategy=strategy, width=800, height=800)
+    for seed in range(2):
+        layout = ja.generate_layout(params, seed).layout
+        _check_links(layout, params)
+        assert _no_crossing(layout) == 0
+        lanes_used = {c.in_lane for j in layout.junctions for c in j.connections}
+        # right-hand traffic drives on the right: forward lanes are negative, and vice versa
+        for j in layout.junctions:
+            for c in j.connections:
+                if c.in_contact == "end":
+                    assert (c.in_lane < 0) == (rule is TrafficRule.RHT)
+        assert lanes_used
+
+
+def test_split_first_and_split_last_differ():
+    """With more outgoing lanes than incoming ones, split-first feeds the extras from the centre lane, split-last from
+    the kerb lane."""
+    def extras(strategy):
+        params = Params(randomize_lanes=True, split_strategy=strategy, width=800, height=800, turn_lane_probability=0.0)
+        layout = ja.generate_layout(params, 2).layout
+        counts = defaultdict(lambda: defaultdict(int))
+        for j in layout.junctions:
+            for c in j.connections:
+                counts[(j.node, c.in_road, c.in_contact)][abs(c.in_lane)] += 1
+        centre = kerb = 0
+        for per_lane in counts.values():
+            if len(per_lane) >= 2:
+                ids = sorted(per_lane)
+                centre += per_lane[ids[0]] > 1
+                kerb += per_lane[ids[-1]] > 1
+        return centre, kerb
+    c_first, k_first = extras(SplitStrategy.SPLIT_FIRST)
+    c_last, k_last = extras(SplitStrategy.SPLIT_LAST)
+    assert c_first > 0 and k_last > 0
+    assert c_first > c_last and k_last > k_first
+
+
+def test_bends_are_roads_not_junctions(random_500):
+    for result in random_500:
+        deg = result.network.degree()
+        for jp in result.layout.junctions:
+            assert deg[jp.node] >= 3 or jp.legs >= 3
+        arcs = [g for r in result.layout.roads for g in r.geometry if type(g).__name__ == "Arc"]
+        for a in arcs:
+            assert 1 / abs(a.curvature) >= 5.0
+
+
+def test_roads_start_at_their_incident_points(random_500):
+    """Every road end at a junction lies outside the junction's centre and joins its chain seamlessly."""
+    for result in random_500:
+        lay = result.layout
+        for rp in lay.roads:
+            for g, h in zip(rp.geometry, rp.geometry[1:]):
+                e = end_pose(g)
+                assert math.hypot(e.x - h.x, e.y - h.y) < 1e-9 and abs(e.hdg - h.hdg) < 1e-12
+            if rp.start_junction is not None:
+                cx, cy = lay.junctions[rp.start_junction].position
+                assert math.hypot(rp.geometry[0].x - cx, rp.geometry[0].y - cy) > 3.0
+
+
+def test_repairs_never_discard_a_map():
+    """Dense networks (tiny gaps, wide roads) need repairs; every seed still yields a map."""
+    params = Params(randomize_lanes=True, min_distance=30.0, max_distance=40.0, snap_distance=20.0,
+                    lane_distribution_side=(0.0, 0.0, 0.0, 1.0), lane_distribution_control_lines=(0.0, 0.0, 0.0, 1.0),
+                    width=600, height=600, curved_roads=True)
+    repairs = 0
+    for seed in range(4):
+        result = ja.generate_layout(params, seed)
+        assert result.layout.roads and result.layout.junctions
+        _check_links(result.layout, params)
+        repairs += len(result.layout.repairs)
+    assert repairs > 0

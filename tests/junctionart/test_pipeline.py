@@ -1,0 +1,62 @@
+"""End to end over many seeds: written maps read back by xodrcheck without error, pass `xodrcheck check`, and keep
+the geometric promises measured through xodrcheck's own geometry."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+import junctionart as ja
+from junctionart.params import Params, TrafficRule
+
+from .geomcheck import measure
+
+TOL_GAP = 1e-6
+TOL_HDG = 1e-6
+
+SMALL = [(Params(randomize_lanes=bool(seed % 2), curved_roads=seed % 3 == 0,
+                 traffic_rule=TrafficRule.LHT if seed % 5 == 4 else TrafficRule.RHT), seed) for seed in range(20)]
+BIG = [(Params(width=1000, height=1000, randomize_lanes=r, curved_roads=True), seed)
+       for seed, r in ((100, False), (101, True), (102, True))]
+
+
+def _assert_map(params: Params, seed: int, tmp_path, version: str = "1.8") -> None:
+    import xodrcheck
+
+    path = ja.write(ja.generate(params, seed), tmp_path / f"m{seed}.xodr", version)
+    m = measure(path)
+    assert m.read_errors == ()
+    assert m.links > 0
+    assert m.max_gap < TOL_GAP, f"seed {seed}: contact points {m.max_gap} m apart"
+    assert m.max_heading < TOL_HDG, f"seed {seed}: heading kink {m.max_heading} rad"
+    assert m.min_radius >= params.min_turn_radius, f"seed {seed}: radius {m.min_radius}"
+    report = xodrcheck.check(path)
+    errors = [f"{f.code} {f.message}" for f in report.findings if f.severity.name == "ERROR"]
+    assert report.ok, errors[:5]
+
+
+@pytest.mark.parametrize("params, seed", SMALL, ids=[f"500m-{s}" for _, s in SMALL])
+def test_500m_maps(params, seed, tmp_path):
+    _assert_map(params, seed, tmp_path)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("params, seed", BIG, ids=[f"1km-{s}" for _, s in BIG])
+def test_1km_maps(params, seed, tmp_path):
+    _assert_map(params, seed, tmp_path)
+
+
+def test_17_output_checks_too(tmp_path):
+    _assert_map(Params(randomize_lanes=True, version="1.7"), 3, tmp_path, "1.7")
+
+
+def test_no_discarded_maps():
+    """Tries equal maps: every seed produces a map on the first try, including dense random-lane ones."""
+    params = Params(randomize_lanes=True, curved_roads=True, width=700, height=700)
+    maps = [ja.generate_layout(params, seed) for seed in range(10)]
+    assert all(r.layout.junctions for r in maps)
+    assert len(maps) == 10
+    legs = {j.legs for r in maps for j in r.layout.junctions}
+    assert {3, 4} <= legs
+    assert all(math.isfinite(rp.length) for r in maps for rp in r.layout.roads)

@@ -1,0 +1,76 @@
+import math
+
+import pytest
+from lxml import etree
+
+import junctionart as ja
+from junctionart.errors import JunctionArtError
+from junctionart.opendrive import Cubic, Document, Header, Lane, LaneSection, Line, Road
+from junctionart.params import Params, TrafficRule
+from junctionart.writer import fmt, to_bytes, write
+
+
+def _tiny(x0: float = 0.1) -> Document:
+    lane = Lane(-1, "driving", (Cubic(0.0, 3.5),))
+    sec = LaneSection(0.0, (), Lane(0, "none"), (lane,))
+    road = Road("1", 10.0, "-1", (Line(0.0, x0, 0.2, 0.3, 10.0),), (sec,))
+    return Document(Header(), (road,), ())
+
+
+@pytest.mark.parametrize("x", [0.1, 1 / 3, 1e-300, 123456.789012345678, -2.5e-7, math.pi])
+def test_floats_round_trip_exactly(x):
+    assert float(fmt(x)) == x
+
+
+def test_non_finite_numbers_are_refused(tmp_path):
+    with pytest.raises(JunctionArtError, match="non-finite"):
+        write(_tiny(float("nan")), tmp_path / "a.xodr")
+    assert list(tmp_path.iterdir()) == []  # atomic: nothing written, no temporary left
+
+
+def test_declaration_first_and_deterministic():
+    data = to_bytes(_tiny())
+    assert data.startswith(b'<?xml version="1.0" encoding="UTF-8"?>\n<OpenDRIVE>')
+    assert data == to_bytes(_tiny())
+
+
+def test_atomic_write_replaces_whole_file(tmp_path):
+    target = tmp_path / "m.xodr"
+    target.write_text("old")
+    write(_tiny(), target)
+    assert target.read_bytes() == to_bytes(_tiny())
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["m.xodr"]
+    with pytest.raises(JunctionArtError, match="does not exist"):
+        write(_tiny(), tmp_path / "missing" / "m.xodr")
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+@pytest.mark.parametrize("rule", [TrafficRule.RHT, TrafficRule.LHT])
+def test_generated_maps_valid_against_both_schemas(seed, rule, schema18, schema17, tmp_path):
+    doc = ja.generate(Params(randomize_lanes=True, curved_roads=True, traffic_rule=rule), seed)
+    p18 = write(doc, tmp_path / "a.xodr", "1.8")
+    errors = list(schema18.iter_errors(str(p18)))
+    assert errors == [], errors[:3]
+    p17 = write(doc, tmp_path / "b.xodr", "1.7")
+    tree = etree.parse(str(p17))
+    assert schema17.validate(tree), schema17.error_log
+    assert tree.getroot().find("header").get("revMinor") == "7"
+    assert etree.parse(str(p18)).getroot().find("header").get("revMinor") == "8"
+
+
+def test_same_seed_same_bytes_other_seed_other_bytes(tmp_path):
+    p = Params(randomize_lanes=True, curved_roads=True)
+    a = write(ja.generate(p, 7), tmp_path / "a.xodr").read_bytes()
+    b = write(ja.generate(p, 7), tmp_path / "b.xodr").read_bytes()
+    c = write(ja.generate(p, 8), tmp_path / "c.xodr").read_bytes()
+    assert a == b
+    assert a != c
+
+
+def test_written_numbers_read_back_to_the_model(tmp_path):
+    doc = ja.generate(Params(randomize_lanes=True, curved_roads=True), 3)
+    root = etree.fromstring(to_bytes(doc))
+    for road, el in zip(doc.roads, root.iter("road")):
+        assert float(el.get("length")) == road.length
+        for g, ge in zip(road.geometry, el.find("planView")):
+            assert (float(ge.get("x")), float(ge.get("y")), float(ge.get("hdg"))) == (g.x, g.y, g.hdg)

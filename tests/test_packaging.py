@@ -1,0 +1,108 @@
+"""The wheel ships the OpenDRIVE schemas as package data, and an installed tree finds them through importlib.resources.
+
+The wheel is built from a copy of the source tree so that the build leaves nothing behind in the checkout.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import subprocess
+import sys
+import zipfile
+from pathlib import Path
+
+import pytest
+
+REPO = Path(__file__).resolve().parents[1]
+SCHEMAS = REPO / "schemas"
+
+pytestmark = pytest.mark.slow
+
+
+def _schema_files() -> set[str]:
+    """Schema files of the source tree, relative to ``schemas/``."""
+    files = {p.relative_to(SCHEMAS).as_posix() for p in SCHEMAS.rglob("*.xsd")}
+    assert len(files) > 20, "the source tree should hold the XSDs of OpenDRIVE 1.1 to 1.8.1"
+    return files | {"NOTICE.md"}
+
+
+@pytest.fixture(scope="module")
+def wheel(tmp_path_factory) -> Path:
+    tmp = tmp_path_factory.mktemp("wheel")
+    src = tmp / "src"
+    shutil.copytree(
+        REPO,
+        src,
+        ignore=shutil.ignore_patterns(".git", ".venv*", "build", "dist", "*.egg-info", "__pycache__", ".pytest_cache",
+                                      ".hypothesis", "out"),
+    )
+    out = tmp / "dist"
+    proc = subprocess.run(
+        [sys.executable, "-m", "pip", "wheel", str(src), "--no-deps", "--no-build-isolation", "-q", "-w", str(out)],
+        capture_output=True,
+        text=True,
+        cwd=tmp,
+    )
+    assert proc.returncode == 0, f"pip wheel failed:\n{proc.stdout}\n{proc.stderr}"
+    wheels = list(out.glob("*.whl"))
+    assert len(wheels) == 1, wheels
+    return wheels[0]
+
+
+def test_wheel_contains_every_schema_and_the_notice(wheel: Path):
+    with zipfile.ZipFile(wheel) as zf:
+        names = set(zf.namelist())
+    shipped = {n.removeprefix("xodrcheck/schemas/") for n in names if n.startswith("xodrcheck/schemas/")}
+    missing = _schema_files() - shipped
+    assert not missing, f"not in the wheel: {sorted(missing)}"
+
+
+def test_wheel_contains_every_package_of_the_source_tree(wheel: Path):
+    """A subpackage missing from pyproject's package list would install without its modules."""
+    with zipfile.ZipFile(wheel) as zf:
+        names = set(zf.namelist())
+    modules = {
+        p.relative_to(REPO).as_posix()
+        for top in ("xodrcheck", "junctionart", "fuzz")
+        for p in (REPO / top).rglob("*.py")
+        if "__pycache__" not in p.parts
+    }
+    missing = modules - names
+    assert not missing, f"not in the wheel (add their packages to [tool.setuptools] packages): {sorted(missing)}"
+
+
+def test_installed_tree_finds_schemas_through_importlib_resources(wheel: Path, tmp_path: Path):
+    target = tmp_path / "site"
+    proc = subprocess.run(
+        [sys.executable, "-m", "pip", "install", "--no-deps", "-q", "--target", str(target), str(wheel)],
+        capture_output=True,
+        text=True,
+    )
+    assert proc.returncode == 0, f"pip install --target failed:\n{proc.stdout}\n{proc.stderr}"
+    # -S: no site-packages, so neither the editable install nor the checkout can answer instead of the installed tree.
+    probe = (
+        "import importlib.resources, json, xodrcheck\n"
+        "root = importlib.resources.files('xodrcheck.schemas')\n"
+        "def walk(node, prefix=''):\n"
+        "    for child in node.iterdir():\n"
+        "        if child.is_dir():\n"
+        "            yield from walk(child, prefix + child.name + '/')\n"
+        "        else:\n"
+        "            yield prefix + child.name\n"
+        "print(json.dumps({'package': xodrcheck.__file__, 'files': sorted(walk(root)),\n"
+        "                  'notice': root.joinpath('NOTICE.md').read_text(encoding='utf-8')[:200]}))\n"
+    )
+    proc = subprocess.run(
+        [sys.executable, "-S", "-c", probe],
+        capture_output=True,
+        text=True,
+        cwd=tmp_path,
+        env={"PYTHONPATH": str(target), "PATH": "/usr/bin:/bin"},
+    )
+    assert proc.returncode == 0, proc.stderr
+    found = json.loads(proc.stdout)
+    assert Path(found["package"]).resolve().is_relative_to(target.resolve()), found["package"]
+    missing = _schema_files() - set(found["files"])
+    assert not missing, f"importlib.resources does not find: {sorted(missing)}"
+    assert found["notice"].strip(), "NOTICE.md is empty"

@@ -1,0 +1,168 @@
+"""``xodrcheck check``: exit codes, rule selection, strictness, output files, tolerances and configuration."""
+
+from __future__ import annotations
+
+import json
+import shutil
+from pathlib import Path
+
+import pytest
+
+from tests.xodrcheck.rules.helpers import fixture
+from xodrcheck.cli import main
+
+CLEAN = fixture("link-not-reciprocal", "pass.xodr")
+BROKEN = fixture("road-link-target-missing", "fail.xodr")  # R010 + K001 errors
+WARNING_ONLY = fixture("lane-link-missing-lane", "fail_dangling.xodr")  # one R015 warning
+
+
+def run(capsys, *args) -> tuple[int, str, str]:
+    code = main(["check", *map(str, args)])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+@pytest.fixture(autouse=True)
+def _no_project_config(tmp_path, monkeypatch):
+    """Run from an empty folder so the repository's own pyproject does not configure the checks."""
+    home = tmp_path / "cwd"
+    home.mkdir()
+    monkeypatch.chdir(home)
+
+
+def test_exit_0_on_a_clean_map(capsys):
+    code, out, err = run(capsys, CLEAN)
+    assert code == 0 and out == ""
+    assert "0 error(s)" in err
+
+
+def test_exit_1_on_an_error_and_one_line_per_finding(capsys):
+    code, out, err = run(capsys, BROKEN)
+    assert code == 1
+    lines = out.splitlines()
+    assert [line.split()[1] for line in lines] == ["R010", "K001"]  # by line
+    assert all(line.startswith(f"{BROKEN}:") for line in lines)
+    assert "Traceback" not in err
+
+
+def test_exit_2_on_a_missing_file_and_the_others_are_still_checked(capsys, tmp_path):
+    code, out, err = run(capsys, tmp_path / "nope.xodr", BROKEN)
+    assert code == 2
+    assert "cannot read" in err and "nope.xodr" in err and "Traceback" not in err
+    assert "R010" in out
+
+
+def test_exit_2_on_a_folder_without_maps(capsys, tmp_path):
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    code, _, err = run(capsys, empty)
+    assert code == 2 and "without .xodr files" in err
+
+
+def test_a_folder_stands_for_its_maps(capsys, tmp_path):
+    folder = tmp_path / "maps"
+    (folder / "sub").mkdir(parents=True)
+    shutil.copy(CLEAN, folder / "a.xodr")
+    shutil.copy(BROKEN, folder / "sub" / "b.xodr")
+    code, out, _ = run(capsys, folder, "--format", "json")
+    assert code == 1
+    assert [Path(f["path"]).name for f in json.loads(out)["files"]] == ["a.xodr", "b.xodr"]
+
+
+@pytest.mark.parametrize(
+    ("flags", "expected_codes", "exit_code"),
+    [
+        (["--select", "R010"], {"R010"}, 1),
+        (["--select", "reference"], {"R010"}, 1),
+        (["--select", "link,R"], {"R010", "K001"}, 1),
+        (["--select", "link", "--select", "R010"], {"R010", "K001"}, 1),
+        (["--ignore", "R010,K001"], set(), 0),
+        (["--ignore", "reference", "--ignore", "link"], set(), 0),
+        (["--select", "R", "--ignore", "R010"], set(), 0),
+    ],
+)
+def test_select_and_ignore(capsys, flags, expected_codes, exit_code):
+    code, out, _ = run(capsys, BROKEN, "--format", "json", *flags)
+    found = {f["code"] for f in json.loads(out)["files"][0]["findings"]}
+    assert (found, code) == (expected_codes, exit_code)
+
+
+@pytest.mark.parametrize("flags", [["--select", "Q999"], ["--ignore", "no-such-rule"], ["--select", ""]])
+def test_unknown_selector_is_a_usage_error(capsys, flags):
+    code, out, err = run(capsys, CLEAN, *flags)
+    assert code == 2 and out == ""
+    assert err.startswith("xodrcheck: check:") and "Traceback" not in err
+
+
+def test_strict_makes_warnings_fail(capsys):
+    assert run(capsys, WARNING_ONLY)[0] == 0
+    assert run(capsys, WARNING_ONLY, "--strict")[0] == 1
+
+
+@pytest.mark.parametrize(
+    ("value", "message"),
+    [
+        ("position", "NAME=VALUE"),
+        ("=1", "NAME=VALUE"),
+        ("position=", "NAME=VALUE"),
+        ("nonsense=1", "unknown tolerance 'nonsense'"),
+        ("position=abc", "must be a number"),
+        ("position=-1", ">= 0"),
+        ("position=nan", ">= 0"),
+    ],
+)
+def test_bad_tolerance_is_a_usage_error(capsys, value, message):
+    code, out, err = run(capsys, CLEAN, "--tolerance", value)
+    assert code == 2 and out == ""
+    assert message in err and "Traceback" not in err
+
+
+def test_good_tolerance_is_used(capsys):
+    """A zero-width threshold of 5 m makes every lane "zero width", so the appearing full-width lane is accepted."""
+    path = fixture("lane-not-continued", "fail.xodr")
+    assert run(capsys, path, "--select", "L010")[0] == 1
+    assert run(capsys, path, "--select", "L010", "--tolerance", "zero_width=5", "--tolerance", "position=0.01")[0] == 0
+
+
+def test_output_file_is_written_whole_and_atomically(capsys, tmp_path):
+    target = tmp_path / "out" / "report.json"
+    target.parent.mkdir()
+    target.write_text("old content", encoding="utf-8")
+    code, out, _ = run(capsys, BROKEN, "--format", "json", "-o", target)
+    assert code == 1 and out == ""
+    assert json.loads(target.read_text(encoding="utf-8"))["summary"]["errors"] == 2
+    assert sorted(p.name for p in target.parent.iterdir()) == ["report.json"]  # no temporary file left
+
+
+def test_output_into_a_missing_folder_is_an_io_error(capsys, tmp_path):
+    code, _, err = run(capsys, CLEAN, "-o", tmp_path / "missing" / "report.txt")
+    assert code == 2 and "cannot write" in err and "Traceback" not in err
+
+
+@pytest.mark.parametrize("fmt", ["text", "json", "junit", "sarif", "github"])
+def test_every_format_keeps_the_exit_code(capsys, fmt):
+    code, out, _ = run(capsys, BROKEN, "--format", fmt)
+    assert code == 1 and out
+
+
+def test_configuration_file_selects_and_flags_override(capsys):
+    Path("xodrcheck.toml").write_text('ignore = ["K001"]\nstrict = true\n', encoding="utf-8")
+    code, out, _ = run(capsys, BROKEN, "--format", "json")
+    assert {f["code"] for f in json.loads(out)["files"][0]["findings"]} == {"R010"} and code == 1
+    code, out, _ = run(capsys, BROKEN, "--format", "json", "--ignore", "R010")
+    assert {f["code"] for f in json.loads(out)["files"][0]["findings"]} == {"K001"}
+    assert run(capsys, WARNING_ONLY)[0] == 1  # strict from the file
+
+
+def test_pyproject_tool_table_and_its_tolerances(capsys):
+    Path("pyproject.toml").write_text(
+        '[tool.xodrcheck]\nselect = ["L010"]\n[tool.xodrcheck.tolerances]\nzero_width = 5\n', encoding="utf-8"
+    )
+    assert run(capsys, fixture("lane-not-continued", "fail.xodr"))[0] == 0
+
+
+@pytest.mark.parametrize("text", ["select = [\n", "select = [1]\n", "[tolerances]\nposition = -2\n"])
+def test_bad_configuration_file_is_a_usage_error(capsys, text):
+    Path("xodrcheck.toml").write_text(text, encoding="utf-8")
+    code, out, err = run(capsys, CLEAN)
+    assert code == 2 and out == "" and err.startswith("xodrcheck: check:") and "Traceback" not in err

@@ -1,0 +1,54 @@
+"""``xodrcheck rules``: the list of rules and one rule's documentation."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from xodrcheck.cli import main
+from xodrcheck.rules import load_rules
+
+
+def test_lists_every_rule_with_code_name_category_severity_summary(capsys):
+    assert main(["rules"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    rules = load_rules()
+    assert len(lines) == len(rules)
+    for line in lines:
+        code, name, category, severity, *summary = line.split()
+        rule = rules[code]
+        assert (name, category, severity) == (rule.name, rule.category.value, str(rule.severity)) and summary
+
+
+def test_json_list(capsys):
+    assert main(["rules", "--format", "json"]) == 0
+    items = json.loads(capsys.readouterr().out)
+    assert {i["code"] for i in items} == set(load_rules())
+    assert all(set(i) == {"code", "name", "category", "severity", "summary"} for i in items)
+
+
+@pytest.mark.parametrize("which", ["R010", "r010", "road-link-target-missing"])
+def test_one_rule_prints_its_full_doc_with_examples(capsys, which):
+    assert main(["rules", which]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("R010 road-link-target-missing (reference, error)")
+    assert "Passes::" in out and "Fails" in out and "<successor" in out
+
+
+def test_one_rule_as_json(capsys):
+    assert main(["rules", "J006", "--format", "json"]) == 0
+    item = json.loads(capsys.readouterr().out)
+    assert item["name"] == "junction-merge" and "Fails" in item["doc"]
+
+
+def test_unknown_rule_exits_2(capsys):
+    assert main(["rules", "Q999"]) == 2
+    assert "no rule 'Q999'" in capsys.readouterr().err
+
+
+@pytest.mark.parametrize("rule", sorted(load_rules().values(), key=lambda r: r.code), ids=lambda r: r.code)
+def test_every_rule_documents_a_passing_and_a_failing_example(rule):
+    doc = rule.doc
+    assert rule.summary and len(rule.summary) <= 120
+    assert "Pass" in doc and "Fail" in doc, rule.code

@@ -1,0 +1,58 @@
+import numpy as np
+import pytest
+
+from xodrcheck.geometry import profile
+from xodrcheck.model import Cubic
+
+RECORDS = (Cubic(2.0, 1.0, 0.5, -0.1, 0.01), Cubic(10.0, 3.0, 0.0, 0.2, 0.0))
+
+
+def _cubic(record, s):
+    ds = s - record.s
+    return record.a + record.b * ds + record.c * ds**2 + record.d * ds**3
+
+
+def test_value_and_derivatives_follow_the_record_in_force():
+    s = np.array([2.0, 5.0, 9.999, 10.0, 14.0])
+    value, first, second = profile.jet(RECORDS, s)
+    for i, si in enumerate(s):
+        record = RECORDS[0] if si < 10.0 else RECORDS[1]
+        ds = si - record.s
+        assert value[i] == pytest.approx(_cubic(record, si), abs=1e-12)
+        assert first[i] == pytest.approx(record.b + 2 * record.c * ds + 3 * record.d * ds**2, abs=1e-12)
+        assert second[i] == pytest.approx(2 * record.c + 6 * record.d * ds, abs=1e-12)
+    assert np.array_equal(profile.evaluate(RECORDS, s), value)
+    assert np.array_equal(profile.derivative(RECORDS, s), first)
+    assert np.array_equal(profile.second_derivative(RECORDS, s), second)
+
+
+def test_last_record_holds_to_the_end():
+    assert profile.evaluate(RECORDS, 1000.0)[0] == pytest.approx(_cubic(RECORDS[1], 1000.0))
+
+
+def test_empty_profile_is_zero():
+    value, first, second = profile.jet((), [0.0, 5.0])
+    assert not value.any() and not first.any() and not second.any()
+
+
+def test_before_the_first_record_the_default_zero_applies():
+    value, first, second = profile.jet(RECORDS, [0.0, 1.999])
+    assert not value.any() and not first.any() and not second.any()
+
+
+def test_equal_starts_take_the_later_record():
+    records = (Cubic(0.0, 1.0, 0.0, 0.0, 0.0), Cubic(5.0, 2.0, 0.0, 0.0, 0.0), Cubic(5.0, 3.0, 0.0, 0.0, 0.0))
+    assert profile.evaluate(records, [4.0, 5.0, 6.0]).tolist() == [1.0, 3.0, 3.0]
+
+
+def test_unsorted_records_are_looked_up_by_start():
+    records = (RECORDS[1], RECORDS[0])
+    assert np.array_equal(profile.evaluate(records, [3.0, 11.0]), profile.evaluate(RECORDS, [3.0, 11.0]))
+
+
+def test_origin_shifts_record_starts():
+    """Lane records are sOffsets: with the section start as origin, absolute s works."""
+    assert profile.evaluate(RECORDS, [102.0, 111.0], origin=100.0).tolist() == pytest.approx(
+        [_cubic(RECORDS[0], 2.0), _cubic(RECORDS[1], 11.0)]
+    )
+    assert profile.breakpoints(RECORDS, origin=100.0).tolist() == [102.0, 110.0]

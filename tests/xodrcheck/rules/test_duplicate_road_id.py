@@ -1,0 +1,17 @@
+"""Rule duplicate-road-id: its pass fixtures give no finding, its fail fixtures one where the defect is."""
+
+from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture, line_of
+
+RULE = "duplicate-road-id"
+
+
+def test_pass_fixtures_give_no_finding():
+    assert_passes(RULE)
+
+
+def test_second_road_with_the_id_is_reported():
+    path = fixture(RULE, "fail.xodr")
+    (f,) = findings(path, RULE)
+    assert f.line == line_of(path, '<road id="2"', occurrence=2)
+    first = line_of(path, '<road id="2"')
+    assert f"first at line {first}" in f.message

@@ -1,0 +1,17 @@
+"""Rule junction-merge: its pass fixtures give no finding, its fail fixtures one where the defect is."""
+
+from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture, line_of
+
+RULE = "junction-merge"
+
+
+def test_pass_fixtures_give_no_finding():
+    assert_passes(RULE)
+
+
+def test_two_incoming_lanes_into_one_connecting_lane():
+    path = fixture(RULE, "fail.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane) == ("10", -1)
+    assert f.line == line_of(path, '<laneLink from="-2" to="-1"/>')
+    assert "2 lanes" in f.message

@@ -1,0 +1,16 @@
+"""Rule lane-level-changes: its pass fixtures give no finding, its fail fixtures one where the defect is."""
+
+from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture
+
+RULE = "lane-level-changes"
+
+
+def test_pass_fixtures_give_no_finding():
+    assert_passes(RULE)
+
+
+def test_level_changes_between_linked_lanes_of_two_sections():
+    path = fixture(RULE, "fail.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane, f.section_s) == ("2", -1, 0.0)
+    assert "level=false" in f.message and "level=true" in f.message

@@ -1,0 +1,27 @@
+"""Rule lane-link-missing-lane: its pass fixtures give no finding, its fail fixtures one where the defect is."""
+
+from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture, line_of
+from xodrcheck.findings import Severity
+
+RULE = "lane-link-missing-lane"
+
+
+def test_pass_fixtures_give_no_finding():
+    assert_passes(RULE)
+
+
+def test_successor_lane_missing_on_the_next_road():
+    path = fixture(RULE, "fail.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane, f.section_s) == ("1", -1, 0.0)
+    assert f.severity is Severity.ERROR
+    assert f.line == line_of(path, '<lane id="-1"')
+    assert "lane -2" in f.message and "road 2" in f.message
+
+
+def test_lane_link_where_the_road_has_no_link_is_a_warning():
+    path = fixture(RULE, "fail_dangling.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane) == ("2", -1)
+    assert f.severity is Severity.WARNING
+    assert f.line == line_of(path, '<lane id="-1"', occurrence=2)

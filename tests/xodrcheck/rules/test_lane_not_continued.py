@@ -1,0 +1,26 @@
+"""Rule lane-not-continued: its pass fixtures give no finding, its fail fixtures one where the defect is."""
+
+from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture, line_of
+from xodrcheck.findings import Severity
+
+RULE = "lane-not-continued"
+
+
+def test_pass_fixtures_give_no_finding():
+    assert_passes(RULE)
+
+
+def test_full_width_lane_appearing_at_a_road_link():
+    path = fixture(RULE, "fail.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane, f.s) == ("2", -2, 0.0)
+    assert f.severity is Severity.ERROR
+    assert f.line == line_of(path, '<lane id="-2"')
+    assert "3.50 m wide" in f.message and "no predecessor in road 1" in f.message
+
+
+def test_width_of_a_lane_given_by_borders_comes_from_the_geometry():
+    path = fixture(RULE, "fail_border.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane) == ("2", -2)
+    assert "3.00 m wide" in f.message

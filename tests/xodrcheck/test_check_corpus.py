@@ -1,0 +1,77 @@
+"""``check`` over the 128 third-party corpus maps: no crash, and the findings on a few maps, verified by reading them.
+
+The whole run's time is printed (``-s`` shows it); the acceptance bound (under a minute for all 128) is not asserted,
+tests never depend on timing.
+"""
+
+from __future__ import annotations
+
+import time
+from collections import Counter
+
+import pytest
+
+from tests.conftest import corpus_files
+from xodrcheck.check import check
+
+pytestmark = pytest.mark.corpus
+
+FILES = corpus_files()
+
+
+def test_corpus_is_complete(corpus_dir):
+    assert len(FILES) == 128
+
+
+@pytest.mark.parametrize("path", FILES, ids=lambda p: p.name)
+def test_no_crash(corpus_dir, path):
+    report = check(path)
+    assert [f for f in report.findings if f.code in ("X900", "X901")] == []
+    assert report.rules_run
+
+
+def test_whole_corpus_time(corpus_dir):
+    started = time.perf_counter()
+    counts: Counter[str] = Counter()
+    for path in FILES:
+        counts.update(f.code for f in check(path).findings)
+    elapsed = time.perf_counter() - started
+    print(f"\nxodrcheck check over {len(FILES)} corpus files: {elapsed:.1f} s; findings by code: {dict(sorted(counts.items()))}")
+    assert "X900" not in counts
+
+
+#: The non-geometric rules (schema, reference, road-link and lane topology, junction topology, redundant records).
+TOPOLOGY = ("S", "R", "K0", "L0", "J0", "G9")
+
+#: Codes that fire on a few maps, each checked by reading the map (see the comments).
+EXPECTED = {
+    # Only collinear line pairs and constant elevation records repeated (redundant-record, an info).
+    "carla-towns/OpenDrive/Town01.xodr": {"G901"},
+    # Road 13 (15 µm long) and road 14 both claim junction 678 as predecessor; 678 has no connection from 14 (K001).
+    # Lanes of type none and sidewalks end at full width without links (L010); road 6 lane 2 / road 5 lane 2 one-way
+    # link (L011); road 69 left lanes continue road 70 right lanes end-to-start (L012); road 69 lane 1 (driving) into
+    # junction 793 has no laneLink (J005).
+    "carla-towns/OpenDrive/Town03.xodr": {"G901", "J005", "K001", "L010", "L011", "L012"},
+    # Connection 2: incoming 103, connecting 151 contactPoint "start", but 151 starts at road 101 (J002); lane 1 of
+    # section s=0.1 of road 103 narrows to 1.5 m and has no successor (L010); lanes link across road ends that have no
+    # road link (R015 warnings); <geoReference> stands beside <header>, 1.4 wants it inside (S001); repeated
+    # laneOffset records (G901).
+    "ika-roadgeneration/test/gt/junction_ma.xodr": {"G901", "J002", "L010", "R015", "S001"},
+    # Connection 2 links lane -1 of road 2 to lane -3 of road 4, which has only lane -1 (R012); 1.6 connections list
+    # both directions of bidirectional connecting roads (J004 infos).
+    "esmini/EnvironmentSimulator/Unittest/xodr/highway_merge.xodr": {"J004", "R012"},
+    # A 1.7 file: connecting roads 100 and 101 each in two connections (J007); lane 2 of road 1 closes to zero width
+    # but has a successor, lane 2 of road 2 opens from zero with a predecessor (L013); road 3 lane 2 into the junction
+    # unlinked (J005); laneLinks from lanes leaving the junction (J004).
+    "esmini/resources/xodr/parking_demo.xodr": {"J004", "J005", "J007", "L013"},
+    # Road 2 lane -3's successor is lane 2 of road 1 (should be 3), and road 1 lane 3 is not returned (L011).
+    "esmini/EnvironmentSimulator/Unittest/xodr/straight_2x100m_opposite.xodr": {"L011"},
+    # Centre lanes with <width> records (L002).
+    "esmini/EnvironmentSimulator/Unittest/xodr/mixed_roads.xodr": {"L002"},
+}
+
+
+@pytest.mark.parametrize("name", sorted(EXPECTED))
+def test_rules_that_fire_on_known_maps(corpus_dir, name):
+    report = check(corpus_dir / name, select=TOPOLOGY)
+    assert {f.code for f in report.findings} == EXPECTED[name]

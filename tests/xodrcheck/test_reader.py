@@ -1,0 +1,841 @@
+"""The OpenDRIVE reader on small inline documents: every model field, the standard's defaults, and each reader rule."""
+
+from __future__ import annotations
+
+import dataclasses
+import gzip
+import inspect
+
+import pytest
+
+from xodrcheck import model as m
+from xodrcheck.findings import ReadError, Severity
+from xodrcheck.reader import KNOWN_VERSIONS, ReadResult, read
+from xodrcheck.reader.construct import CONSTRUCTORS
+from xodrcheck.rules import xml as R
+
+DECL = '<?xml version="1.0" encoding="UTF-8"?>\n'
+
+LINE_GEOMETRY = '<geometry s="0" x="1" y="2" hdg="0.5" length="10"><line/></geometry>'
+LANES = (
+    '<lanes><laneSection s="0"><center><lane id="0" type="none"/></center>'
+    '<right><lane id="-1" type="driving"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>'
+    "</laneSection></lanes>"
+)
+
+
+def road(
+    body: str = "",
+    *,
+    attrs: str = 'id="1" length="10" junction="-1"',
+    plan_view: str = f"<planView>{LINE_GEOMETRY}</planView>",
+    lanes: str = LANES,
+) -> str:
+    return f"<road {attrs}>{body}{plan_view}{lanes}</road>"
+
+
+def xodr(*elements: str, version: tuple[int, int] = (1, 8), header: str | None = None) -> bytes:
+    head = f'<header revMajor="{version[0]}" revMinor="{version[1]}"/>' if header is None else header
+    # The header shares line 2 with <OpenDRIVE>, so the first element is on line 3, the next on line 4...
+    return (DECL + "<OpenDRIVE>" + head + "\n" + "\n".join(elements) + "\n</OpenDRIVE>\n").encode()
+
+
+def codes(result: ReadResult) -> list[str]:
+    return [f.code for f in result.findings]
+
+
+def only(result: ReadResult, code: str):
+    found = [f for f in result.findings if f.code == code]
+    assert len(found) == 1, f"expected one {code}, got {[(f.code, f.message) for f in result.findings]}"
+    return found[0]
+
+
+def clean(data: bytes) -> m.Document:
+    result = read(data)
+    assert result.findings == (), [f.message for f in result.findings]
+    assert result.document is not None
+    return result.document
+
+
+def first_road(data: bytes) -> m.Road:
+    return clean(data).roads[0]
+
+
+# ------------------------------------------------------------------------------------------------------------ input
+def test_reads_a_path_and_bytes_alike(tmp_path):
+    data = xodr(road())
+    path = tmp_path / "map.xodr"
+    path.write_bytes(data)
+    from_path = read(path)
+    from_str = read(str(path))
+    from_bytes = read(data)
+    assert from_path.path == from_str.path == str(path)
+    assert from_bytes.path is None
+    assert from_path.document.source == str(path)
+    assert from_bytes.document.source is None
+    assert from_path.document.roads == from_bytes.document.roads == from_str.document.roads
+
+
+def test_missing_file_is_a_read_error(tmp_path):
+    with pytest.raises(ReadError, match="no such file"):
+        read(tmp_path / "absent.xodr")
+
+
+def test_directory_is_a_read_error(tmp_path):
+    with pytest.raises(ReadError, match="directory"):
+        read(tmp_path)
+
+
+def test_size_limit_is_a_read_error(tmp_path):
+    data = xodr(road())
+    path = tmp_path / "map.xodr"
+    path.write_bytes(data)
+    with pytest.raises(ReadError, match="limit"):
+        read(path, max_bytes=len(data) - 1)
+    with pytest.raises(ReadError, match="limit"):
+        read(data, max_bytes=len(data) - 1)
+    assert read(path, max_bytes=len(data)).document is not None
+
+
+def test_gzip_compressed_file_is_read(tmp_path):
+    path = tmp_path / "map.xodrz"
+    path.write_bytes(gzip.compress(xodr(road())))
+    result = read(path)
+    assert result.findings == ()
+    assert [r.id for r in result.document.roads] == ["1"]
+
+
+def test_corrupt_gzip_is_a_finding():
+    result = read(gzip.compress(xodr(road()))[:30])
+    assert result.document is None
+    assert "gzip" in only(result, "X101").message
+
+
+# ------------------------------------------------------------------------------------------------------------ header
+def test_header_fields():
+    header = (
+        '<header revMajor="1" revMinor="7" name="town" version="2.1" date="2024-01-02" vendor="ACME" '
+        'north="10.5" south="-3" east="7" west="-8.25">'
+        "<geoReference><![CDATA[ +proj=utm +zone=32 +datum=WGS84 ]]></geoReference>"
+        '<offset x="100" y="-200.5" z="3" hdg="0.25"/>'
+        "</header>"
+    )
+    h = clean(xodr(road(), header=header)).header
+    assert (h.rev_major, h.rev_minor, h.version_tuple) == (1, 7, (1, 7))
+    assert (h.name, h.version, h.date, h.vendor) == ("town", "2.1", "2024-01-02", "ACME")
+    assert (h.north, h.south, h.east, h.west) == (10.5, -3.0, 7.0, -8.25)
+    assert h.geo_reference == "+proj=utm +zone=32 +datum=WGS84"
+    assert h.offset == m.Offset(100.0, -200.5, 3.0, 0.25)
+    assert h.line == 2
+
+
+def test_header_optional_fields_absent_are_none():
+    h = clean(xodr(road(), version=(1, 4))).header
+    assert (h.name, h.version, h.date, h.vendor, h.north, h.geo_reference, h.offset) == (None,) * 7
+
+
+@pytest.mark.parametrize("version", sorted(KNOWN_VERSIONS))
+def test_known_versions_read_without_findings(version):
+    assert clean(xodr(road(), version=version)).version == version
+
+
+def test_versions_one_to_eight_are_known():
+    assert KNOWN_VERSIONS == {(1, minor) for minor in range(1, 9)}
+
+
+@pytest.mark.parametrize("version", [(1, 9), (2, 0), (0, 4), (1, -1)])
+def test_unknown_version_is_a_warning(version):
+    result = read(xodr(road(), version=version))
+    finding = only(result, "X202")
+    assert finding.severity is Severity.WARNING
+    assert f"{version[0]}.{version[1]}" in finding.message
+    assert result.document.header.version_tuple == version
+
+
+def test_version_that_is_not_an_integer():
+    result = read(xodr(road(), header='<header revMajor="1" revMinor="seven"/>'))
+    finding = only(result, "X206")
+    assert 'revMinor="seven"' in finding.message and finding.line == 2
+    assert result.document.header.rev_minor is None
+    assert result.document.version is None
+
+
+def test_version_missing():
+    result = read(xodr(road(), header='<header revMinor="6"/>'))
+    assert "'revMajor'" in only(result, "X205").message
+    assert result.document.version is None
+
+
+def test_missing_header():
+    result = read(xodr(road(), header=""))
+    finding = only(result, "X203")
+    assert "<header>" in finding.message and finding.severity is Severity.ERROR
+    assert result.document.header is None
+    assert len(result.document.roads) == 1
+
+
+def test_second_header_is_ignored():
+    extra = '<header revMajor="1" revMinor="4"/>'
+    result = read(xodr(road(), extra))
+    assert only(result, "X204").line == 4
+    assert result.document.version == (1, 8)
+
+
+def test_header_bounds_invalid_read_as_absent():
+    result = read(xodr(road(), header='<header revMajor="1" revMinor="6" north="far"/>'))
+    assert 'north="far"' in only(result, "X206").message
+    assert result.document.header.north is None
+
+
+def test_offset_with_invalid_value_is_ignored():
+    header = '<header revMajor="1" revMinor="6"><offset x="1" y="2" z="zero" hdg="0"/></header>'
+    result = read(xodr(road(), header=header))
+    assert "the offset is ignored" in only(result, "X206").message
+    assert result.document.header.offset is None
+
+
+# ------------------------------------------------------------------------------------------------------------ roads
+def test_road_attributes():
+    r = first_road(xodr(road(attrs='id="r7" length="10" junction="-1" name="Main St" rule="LHT"')))
+    assert (r.id, r.length, r.junction, r.name, r.rule) == ("r7", 10.0, None, "Main St", m.TrafficRule.LHT)
+    assert r.line == 3
+
+
+def test_road_defaults():
+    r = first_road(xodr(road()))
+    assert r.rule is m.TrafficRule.RHT  # the standard's default
+    assert r.name is None
+    assert (r.predecessor, r.successor, r.elevation, r.superelevation, r.lane_offset) == (None, None, (), (), ())
+    assert (r.objects, r.signals) == (0, 0)
+
+
+def test_road_in_junction():
+    assert first_road(xodr(road(attrs='id="1" length="10" junction="5"'))).junction == "5"
+
+
+def test_road_without_id_is_skipped():
+    result = read(xodr(road(attrs='length="10" junction="-1"'), road(attrs='id="2" length="10" junction="-1"')))
+    assert "'id'" in only(result, "X205").message
+    assert [r.id for r in result.document.roads] == ["2"]
+
+
+def test_road_length_negative_uses_geometry_sum():
+    result = read(xodr(road(attrs='id="1" length="-10" junction="-1"')))
+    finding = only(result, "X206")
+    assert finding.road == "1" and 'length="-10"' in finding.message and "sum" in finding.message
+    assert result.document.roads[0].length == 10.0
+
+
+def test_road_length_missing_uses_geometry_sum():
+    result = read(xodr(road(attrs='id="1" junction="-1"')))
+    assert "'length'" in only(result, "X205").message
+    assert result.document.roads[0].length == 10.0
+
+
+def test_road_junction_missing():
+    result = read(xodr(road(attrs='id="1" length="10"')))
+    assert "'junction'" in only(result, "X205").message
+    assert result.document.roads[0].junction is None
+
+
+def test_road_rule_invalid_reads_rht():
+    result = read(xodr(road(attrs='id="1" length="10" junction="-1" rule="middle"')))
+    assert 'rule="middle"' in only(result, "X206").message
+    assert result.document.roads[0].rule is m.TrafficRule.RHT
+
+
+def test_objects_signals_and_top_level_counts():
+    body = (
+        '<objects><object id="a"/><object id="b"/><objectReference id="c"/></objects>'
+        '<signals><signal id="s1"/><signal id="s2"/><signal id="s3"/></signals>'
+    )
+    doc = clean(xodr(road(body), '<controller id="c1"/>', '<controller id="c2"/>', '<station id="st"/>'))
+    assert (doc.roads[0].objects, doc.roads[0].signals) == (2, 3)
+    assert doc.controllers == 2
+    assert doc.extras == {"station": 1}
+
+
+# ------------------------------------------------------------------------------------------------------------ links
+def test_road_links():
+    link = (
+        '<link><predecessor elementType="road" elementId="0" contactPoint="end"/>'
+        '<successor elementType="junction" elementId="J1"/></link>'
+    )
+    r = first_road(xodr(road(link)))
+    assert r.predecessor == m.RoadLink(m.ElementType.ROAD, "0", m.ContactPoint.END, line=3)
+    assert r.successor == m.RoadLink(m.ElementType.JUNCTION, "J1", None, line=3)
+
+
+def test_road_link_element_s_and_dir_of_1_8():
+    link = '<link><successor elementType="road" elementId="9" elementS="12.5" elementDir="-"/></link>'
+    succ = first_road(xodr(road(link))).successor
+    assert (succ.element_s, succ.element_dir, succ.contact_point) == (12.5, m.ElementDir.MINUS, None)
+
+
+def test_road_link_invalid_contact_point_reads_absent():
+    link = '<link><predecessor elementType="road" elementId="0" contactPoint="middle"/></link>'
+    result = read(xodr(road(link)))
+    assert 'contactPoint="middle"' in only(result, "X206").message
+    assert result.document.roads[0].predecessor.contact_point is None
+
+
+def test_road_link_invalid_element_type_is_ignored():
+    result = read(xodr(road('<link><predecessor elementType="lane" elementId="0"/></link>')))
+    assert "elementType" in only(result, "X206").message
+    assert result.document.roads[0].predecessor is None
+
+
+def test_road_link_missing_element_id_is_ignored():
+    result = read(xodr(road('<link><successor elementType="road"/></link>')))
+    assert "'elementId'" in only(result, "X205").message
+    assert result.document.roads[0].successor is None
+
+
+def test_repeated_road_predecessor():
+    link = (
+        '<link><predecessor elementType="road" elementId="a"/>\n'
+        '<predecessor elementType="road" elementId="b"/></link>'
+    )
+    result = read(xodr(road(link)))
+    assert only(result, "X204").line == 4
+    assert result.document.roads[0].predecessor.element_id == "a"
+
+
+# ------------------------------------------------------------------------------------------------------------ plan view
+def plan(*geometries: str) -> str:
+    return "<planView>" + "".join(geometries) + "</planView>"
+
+
+def test_line_geometry():
+    g = first_road(xodr(road())).plan_view[0]
+    assert g == m.Line(0.0, 1.0, 2.0, 0.5, 10.0, line=3)
+
+
+def test_every_geometry_kind():
+    pv = plan(
+        '<geometry s="0" x="0" y="0" hdg="0" length="1"><line/></geometry>',
+        '<geometry s="1" x="1" y="0" hdg="0" length="2"><arc curvature="0.05"/></geometry>',
+        '<geometry s="3" x="2" y="0" hdg="0" length="3"><spiral curvStart="0" curvEnd="0.1"/></geometry>',
+        '<geometry s="6" x="3" y="0" hdg="0" length="4"><poly3 a="0" b="0.1" c="0.01" d="-0.001"/></geometry>',
+        '<geometry s="10" x="4" y="0" hdg="0" length="5">'
+        '<paramPoly3 aU="0" bU="1" cU="0" dU="0" aV="0" bV="0" cV="0.2" dV="-0.1" pRange="arcLength"/></geometry>',
+        '<geometry s="15" x="5" y="0" hdg="0" length="6">'
+        '<paramPoly3 aU="1" bU="2" cU="3" dU="4" aV="5" bV="6" cV="7" dV="8" pRange="normalized"/></geometry>',
+    )
+    r = first_road(xodr(road(plan_view=pv, attrs='id="1" length="21" junction="-1"')))
+    line, arc, spiral, poly3, pp_arc, pp_norm = r.plan_view
+    assert isinstance(line, m.Line) and line.length == 1.0
+    assert isinstance(arc, m.Arc) and (arc.s, arc.curvature) == (1.0, 0.05)
+    assert isinstance(spiral, m.Spiral) and (spiral.curv_start, spiral.curv_end) == (0.0, 0.1)
+    assert isinstance(poly3, m.Poly3) and (poly3.a, poly3.b, poly3.c, poly3.d) == (0.0, 0.1, 0.01, -0.001)
+    assert isinstance(pp_arc, m.ParamPoly3) and pp_arc.p_range is m.PRange.ARC_LENGTH
+    assert (pp_arc.cV, pp_arc.dV) == (0.2, -0.1)
+    assert pp_norm.p_range is m.PRange.NORMALIZED
+    assert (pp_norm.aU, pp_norm.bU, pp_norm.cU, pp_norm.dU, pp_norm.aV, pp_norm.bV, pp_norm.cV, pp_norm.dV) == (
+        1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0,
+    )
+
+
+PP3_NO_RANGE = (
+    '<geometry s="0" x="0" y="0" hdg="0" length="10">'
+    '<paramPoly3 aU="0" bU="1" cU="0" dU="0" aV="0" bV="0" cV="0" dV="0"/></geometry>'
+)
+
+
+def test_param_poly3_without_prange_in_1_4_is_normalized_with_a_note():
+    result = read(xodr(road(plan_view=plan(PP3_NO_RANGE)), version=(1, 4)))
+    finding = only(result, "X205")
+    assert finding.severity is Severity.INFO and "normalized" in finding.message and "CARLA" in finding.message
+    assert result.document.roads[0].plan_view[0].p_range is m.PRange.NORMALIZED
+
+
+def test_param_poly3_without_prange_in_1_6_is_an_error_read_as_normalized():
+    result = read(xodr(road(plan_view=plan(PP3_NO_RANGE)), version=(1, 6)))
+    finding = only(result, "X205")
+    assert finding.severity is Severity.ERROR and "required since OpenDRIVE 1.5" in finding.message
+    assert result.document.roads[0].plan_view[0].p_range is m.PRange.NORMALIZED
+
+
+def test_param_poly3_with_unknown_prange_is_skipped():
+    geometry = PP3_NO_RANGE.replace('dV="0"', 'dV="0" pRange="metres"')
+    result = read(xodr(road(plan_view=plan(geometry))))
+    assert 'pRange="metres"' in only(result, "X206").message
+    assert result.document.roads[0].plan_view == ()
+
+
+def test_geometry_missing_x_is_skipped_with_where_and_why():
+    geometry = '<geometry s="0" y="0" hdg="0" length="10"><line/></geometry>'
+    result = read(xodr(road(plan_view=plan(geometry), attrs='id="12" length="10" junction="-1"')))
+    finding = only(result, "X205")
+    assert finding.message == "road 12: <geometry> at line 3 has no 'x' attribute; the geometry is skipped"
+    assert (finding.road, finding.line, finding.severity) == ("12", 3, Severity.ERROR)
+    assert result.document.roads[0].plan_view == ()
+
+
+@pytest.mark.parametrize(
+    ("value", "why"),
+    [("NaN", "not a finite number"), ("inf", "not a finite number"), ("-INF", "not a finite number"),
+     ("seven", "not a number"), ("1,5", "not a number"), ("", "not a number")],
+)
+def test_geometry_invalid_number_is_skipped(value, why):
+    geometry = f'<geometry s="0" x="0" y="0" hdg="{value}" length="10"><line/></geometry>'
+    result = read(xodr(road(plan_view=plan(geometry))))
+    finding = only(result, "X206")
+    assert f'hdg="{value}"' in finding.message and why in finding.message
+    assert result.document.roads[0].plan_view == ()
+
+
+def test_geometry_negative_length_is_skipped():
+    geometry = '<geometry s="0" x="0" y="0" hdg="0" length="-3"><line/></geometry>'
+    result = read(xodr(road(plan_view=plan(geometry))))
+    assert "must be >= 0" in only(result, "X206").message
+
+
+def test_arc_missing_curvature_is_skipped():
+    geometry = '<geometry s="0" x="0" y="0" hdg="0" length="10"><arc/></geometry>'
+    result = read(xodr(road(plan_view=plan(geometry))))
+    assert "'curvature'" in only(result, "X205").message
+    assert result.document.roads[0].plan_view == ()
+
+
+@pytest.mark.parametrize(
+    ("shape", "expect"),
+    [("<clothoid/>", "<clothoid>"), ("", "no shape element"), ("<line/><arc curvature='0'/>", "both <line> and <arc>")],
+)
+def test_unknown_or_missing_geometry_shape(shape, expect):
+    geometry = f'<geometry s="0" x="0" y="0" hdg="0" length="10">{shape}</geometry>'
+    result = read(xodr(road(plan_view=plan(geometry))))
+    assert expect in only(result, "X207").message
+    assert result.document.roads[0].plan_view == ()
+
+
+def test_geometry_user_data_is_not_a_shape():
+    geometry = '<geometry s="0" x="0" y="0" hdg="0" length="10"><userData code="x"/><line/></geometry>'
+    assert isinstance(first_road(xodr(road(plan_view=plan(geometry)))).plan_view[0], m.Line)
+
+
+def test_geometries_out_of_order():
+    pv = plan(
+        '<geometry s="5" x="0" y="0" hdg="0" length="5"><line/></geometry>\n',
+        '<geometry s="0" x="0" y="0" hdg="0" length="5"><line/></geometry>',
+    )
+    result = read(xodr(road(plan_view=pv)))
+    finding = only(result, "X209")
+    assert finding.line == 4 and finding.road == "1"
+    assert [g.s for g in result.document.roads[0].plan_view] == [5.0, 0.0]  # file order kept
+
+
+def test_plan_view_missing_or_empty():
+    result = read(xodr(road(plan_view="")))
+    assert "<planView>" in only(result, "X203").message
+    result = read(xodr(road(plan_view="<planView/>")))
+    assert "no <geometry>" in only(result, "X203").message
+
+
+def test_repeated_plan_view_reads_the_first():
+    pv = plan(LINE_GEOMETRY) + plan('<geometry s="0" x="9" y="9" hdg="0" length="10"><line/></geometry>')
+    result = read(xodr(road(plan_view=pv)))
+    assert only(result, "X204").road == "1"
+    assert result.document.roads[0].plan_view[0].x == 1.0
+
+
+# ------------------------------------------------------------------------------------------------------------ profiles
+def test_elevation_superelevation_and_lane_offset():
+    body = (
+        '<elevationProfile><elevation s="0" a="1" b="0.1" c="0" d="0"/>'
+        '<elevation s="5" a="1.5" b="0" c="0.01" d="0"/></elevationProfile>'
+        '<lateralProfile><superelevation s="0" a="0.02" b="0" c="0" d="0"/>'
+        '<shape s="0" t="0" a="0" b="0" c="0" d="0"/></lateralProfile>'
+    )
+    lanes = LANES.replace("<lanes>", '<lanes><laneOffset s="0" a="-1" b="0" c="0" d="0.001"/>')
+    r = first_road(xodr(road(body, lanes=lanes)))
+    assert r.elevation == (m.Cubic(0.0, 1.0, 0.1, 0.0, 0.0, 3), m.Cubic(5.0, 1.5, 0.0, 0.01, 0.0, 3))
+    assert r.superelevation == (m.Cubic(0.0, 0.02, 0.0, 0.0, 0.0, 3),)
+    assert r.lane_offset == (m.Cubic(0.0, -1.0, 0.0, 0.0, 0.001, 3),)
+
+
+def test_profile_record_missing_coefficient_is_skipped():
+    body = '<elevationProfile><elevation s="0" a="1" b="0" c="0"/></elevationProfile>'
+    result = read(xodr(road(body)))
+    assert "'d'" in only(result, "X205").message and "record is skipped" in only(result, "X205").message
+    assert result.document.roads[0].elevation == ()
+
+
+def test_profile_records_out_of_order():
+    body = (
+        '<elevationProfile><elevation s="50" a="0" b="0" c="0" d="0"/>\n'
+        '<elevation s="0" a="0" b="0" c="0" d="0"/></elevationProfile>'
+    )
+    result = read(xodr(road(body)))
+    assert only(result, "X209").line == 4
+    assert [c.s for c in result.document.roads[0].elevation] == [50.0, 0.0]
+
+
+# ------------------------------------------------------------------------------------------------------------ lanes
+def section(*sides: str, attrs: str = 's="0"') -> str:
+    return f"<laneSection {attrs}>" + "".join(sides) + "</laneSection>"
+
+
+CENTER = '<center><lane id="0" type="none"/></center>'
+
+
+def lanes_of(*sections: str, offsets: str = "") -> str:
+    return "<lanes>" + offsets + "".join(sections) + "</lanes>"
+
+
+def test_lane_sections_and_sides():
+    sec = section(
+        '<left><lane id="2" type="sidewalk"/><lane id="1" type="driving"/></left>',
+        CENTER,
+        '<right><lane id="-1" type="driving"/></right>',
+        attrs='s="0" singleSide="true"',
+    )
+    r = first_road(xodr(road(lanes=lanes_of(sec, section(CENTER, attrs='s="4.5"')))))
+    first, second = r.lane_sections
+    assert (first.s, first.single_side, second.s, second.single_side) == (0.0, True, 4.5, None)
+    assert [lane.id for lane in first.left] == [2, 1]
+    assert [lane.id for lane in first.center] == [0]
+    assert [lane.id for lane in first.right] == [-1]
+    assert [lane.id for lane in first.lanes] == [2, 1, 0, -1]
+    assert first.lane(2).type is m.LaneType.SIDEWALK
+
+
+def test_lane_fields_and_records():
+    lane = (
+        '<lane id="-1" type="driving" level="true">'
+        '<link><predecessor id="-2"/><successor id="-1"/></link>'
+        '<width sOffset="0" a="3" b="0.1" c="0" d="0"/><width sOffset="2" a="3.2" b="0" c="0" d="0"/>'
+        '<roadMark sOffset="0" type="solid" weight="bold" color="white" width="0.15" laneChange="none"/>'
+        '<roadMark sOffset="1.5" type="broken"/>'
+        '<speed sOffset="0" max="13.9" unit="m/s"/>'
+        '<userData><vectorLane travelDir="forward"/></userData>'
+        "</lane>"
+    )
+    r = first_road(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>")))))
+    got = r.lane_sections[0].right[0]
+    assert (got.id, got.type, got.level, got.type_name, got.line) == (-1, m.LaneType.DRIVING, True, "driving", 3)
+    assert (got.predecessors, got.successors) == ((-2,), (-1,))
+    assert got.widths == (m.Cubic(0.0, 3.0, 0.1, 0.0, 0.0, 3), m.Cubic(2.0, 3.2, 0.0, 0.0, 0.0, 3))
+    assert got.borders == ()
+    assert got.road_marks == (
+        m.RoadMark(0.0, "solid", "bold", "white", 0.15, "none", 3),
+        m.RoadMark(1.5, "broken", None, None, None, None, 3),
+    )
+    assert got.speeds == (m.Speed(0.0, 13.9, "m/s", 3),)
+    assert got.side is m.Side.RIGHT and got.drivable
+
+
+def test_lane_defaults():
+    got = first_road(xodr(road())).lane_sections[0].center[0]
+    assert (got.level, got.predecessors, got.successors, got.widths, got.road_marks, got.speeds) == (
+        False, (), (), (), (), (),
+    )
+
+
+def test_lane_border_records():
+    lane = '<lane id="1" type="driving"><border sOffset="0" a="3" b="0" c="0" d="0"/></lane>'
+    got = first_road(xodr(road(lanes=lanes_of(section(f"<left>{lane}</left>", CENTER))))).lane_sections[0].left[0]
+    assert got.borders == (m.Cubic(0.0, 3.0, 0.0, 0.0, 0.0, 3),) and got.widths == ()
+
+
+def test_several_lane_links_of_1_8():
+    lane = (
+        '<lane id="-1" type="driving"><link><predecessor id="-1"/><predecessor id="-2"/>'
+        '<successor id="-1"/><successor id="-3"/></link></lane>'
+    )
+    got = first_road(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>"))))).lane_sections[0].right[0]
+    assert (got.predecessors, got.successors) == ((-1, -2), (-1, -3))
+
+
+@pytest.mark.parametrize(
+    ("spelling", "lane_type"),
+    [("driving", m.LaneType.DRIVING), ("Driving", m.LaneType.DRIVING), ("HOV", m.LaneType.HOV),
+     ("hov", m.LaneType.HOV), ("mwyentry", m.LaneType.MWY_ENTRY), ("roadWorks", m.LaneType.ROAD_WORKS),
+     ("roadworks", m.LaneType.ROAD_WORKS), ("onRamp", m.LaneType.ON_RAMP), ("curb", m.LaneType.CURB),
+     ("slipLane", m.LaneType.SLIP_LANE), ("none", m.LaneType.NONE)],
+)
+def test_lane_types_are_matched_without_case(spelling, lane_type):
+    lane = f'<lane id="-1" type="{spelling}"/>'
+    got = first_road(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>"))))).lane_sections[0].right[0]
+    assert got.type is lane_type and got.type_name == spelling
+
+
+def test_every_lane_type_of_the_model_is_readable():
+    for lane_type in m.LaneType:
+        if lane_type is m.LaneType.UNKNOWN:
+            continue
+        lane = f'<lane id="-1" type="{lane_type.value}"/>'
+        got = first_road(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>"))))).lane_sections[0]
+        assert got.right[0].type is lane_type
+
+
+def test_unknown_lane_type_is_kept_with_its_name():
+    lane = '<lane id="-1" type="carriageway"/>'
+    result = read(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>")))))
+    finding = only(result, "X208")
+    assert finding.severity is Severity.WARNING and '"carriageway"' in finding.message
+    assert (finding.road, finding.section_s, finding.lane) == ("1", 0.0, -1)
+    got = result.document.roads[0].lane_sections[0].right[0]
+    assert (got.type, got.type_name, got.drivable) == (m.LaneType.UNKNOWN, "carriageway", False)
+
+
+def test_lane_without_type():
+    result = read(xodr(road(lanes=lanes_of(section(CENTER, '<right><lane id="-1"/></right>')))))
+    assert "'type'" in only(result, "X205").message
+    assert result.document.roads[0].lane_sections[0].right[0].type is m.LaneType.UNKNOWN
+
+
+def test_lane_with_invalid_level():
+    lane = '<lane id="-1" type="driving" level="maybe"/>'
+    result = read(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>")))))
+    assert 'level="maybe"' in only(result, "X206").message
+    assert result.document.roads[0].lane_sections[0].right[0].level is False
+
+
+@pytest.mark.parametrize("lane_id", ["one", "1.5", ""])
+def test_lane_with_invalid_id_is_skipped(lane_id):
+    lanes = f'<right><lane id="{lane_id}" type="driving"/><lane id="-2" type="driving"/></right>'
+    result = read(xodr(road(lanes=lanes_of(section(CENTER, lanes)))))
+    assert "not an integer" in only(result, "X206").message
+    assert [lane.id for lane in result.document.roads[0].lane_sections[0].right] == [-2]
+
+
+def test_lane_link_with_invalid_id_is_ignored():
+    lane = '<lane id="-1" type="driving"><link><predecessor id="x"/><successor id="-1"/></link></lane>'
+    result = read(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>")))))
+    only(result, "X206")
+    got = result.document.roads[0].lane_sections[0].right[0]
+    assert (got.predecessors, got.successors) == ((), (-1,))
+
+
+def test_lane_records_invalid_or_missing():
+    lane = (
+        '<lane id="-1" type="driving"><width sOffset="-1" a="3" b="0" c="0" d="0"/>'
+        '<roadMark sOffset="0"/><speed sOffset="0" max="fast"/><roadMark sOffset="0" type="solid" width="wide"/></lane>'
+    )
+    result = read(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>")))))
+    assert sorted(codes(result)) == ["X205", "X206", "X206", "X206"]
+    got = result.document.roads[0].lane_sections[0].right[0]
+    assert got.widths == () and got.speeds == ()
+    assert got.road_marks == (m.RoadMark(0.0, "solid", None, None, None, None, 3),)
+
+
+def test_lane_records_out_of_order():
+    lane = (
+        '<lane id="-1" type="driving"><width sOffset="5" a="3" b="0" c="0" d="0"/>'
+        '<width sOffset="1" a="3" b="0" c="0" d="0"/></lane>'
+    )
+    result = read(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>")))))
+    finding = only(result, "X209")
+    assert "<width>" in finding.message and finding.lane == -1
+
+
+def test_lane_sections_out_of_order():
+    result = read(xodr(road(lanes=lanes_of(section(CENTER, attrs='s="5"'), section(CENTER)))))
+    assert "<laneSection>" in only(result, "X209").message
+
+
+def test_lane_section_without_lane_0():
+    result = read(xodr(road(lanes=lanes_of(section('<right><lane id="-1" type="driving"/></right>')))))
+    finding = only(result, "X203")
+    assert "centre lane 0" in finding.message and finding.section_s == 0.0
+    assert [lane.id for lane in result.document.roads[0].lane_sections[0].right] == [-1]
+    result = read(xodr(road(lanes=lanes_of(section('<center><lane id="1" type="none"/></center>')))))
+    assert "centre lane 0" in only(result, "X203").message
+
+
+def test_lane_section_with_invalid_start_is_skipped():
+    result = read(xodr(road(lanes=lanes_of(section(CENTER, attrs='s="x"'), section(CENTER, attrs='s="1"')))))
+    assert "lane section and its lanes are skipped" in only(result, "X206").message
+    assert [s.s for s in result.document.roads[0].lane_sections] == [1.0]
+
+
+def test_lanes_without_lane_section_and_road_without_lanes():
+    result = read(xodr(road(lanes="<lanes/>")))
+    assert "<laneSection>" in only(result, "X203").message
+    result = read(xodr(road(lanes="")))
+    assert "<lanes>" in only(result, "X203").message
+    assert result.document.roads[0].lane_sections == ()
+
+
+def test_repeated_side_reads_the_first():
+    sec = section(CENTER, '<right><lane id="-1" type="driving"/></right><right><lane id="-2" type="driving"/></right>')
+    result = read(xodr(road(lanes=lanes_of(sec))))
+    only(result, "X204")
+    assert [lane.id for lane in result.document.roads[0].lane_sections[0].right] == [-1]
+
+
+# ------------------------------------------------------------------------------------------------------------ junctions
+def test_junction_and_connections():
+    junction = (
+        '<junction id="J1" name="cross" type="default">'
+        '<connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start">'
+        '<laneLink from="-1" to="-1"/><laneLink from="-2" to="-1"/></connection>'
+        '<connection id="1" incomingRoad="2" connectingRoad="11" contactPoint="end"/>'
+        "</junction>"
+    )
+    j = clean(xodr(road(), junction)).junctions[0]
+    assert (j.id, j.name, j.type, j.line) == ("J1", "cross", m.JunctionType.DEFAULT, 4)
+    first, second = j.connections
+    assert first == m.Connection(
+        "0", "1", "10", None, m.ContactPoint.START,
+        (m.JunctionLaneLink(-1, -1, 4), m.JunctionLaneLink(-2, -1, 4)), 4,
+    )
+    assert (second.incoming_road, second.connecting_road, second.contact_point) == ("2", "11", m.ContactPoint.END)
+    assert j.incoming_roads == ("1", "2")
+
+
+@pytest.mark.parametrize("kind", ["default", "direct", "virtual", "crossing"])
+def test_junction_types(kind):
+    assert clean(xodr(road(), f'<junction id="J" type="{kind}"/>')).junctions[0].type is m.JunctionType(kind)
+
+
+def test_junction_type_defaults_to_default():
+    assert clean(xodr(road(), '<junction id="J"/>')).junctions[0].type is m.JunctionType.DEFAULT
+
+
+def test_direct_junction_linked_road():
+    junction = '<junction id="J" type="direct"><connection id="0" incomingRoad="1" linkedRoad="2"/></junction>'
+    c = clean(xodr(road(), junction)).junctions[0].connections[0]
+    assert (c.incoming_road, c.linked_road, c.connecting_road, c.contact_point) == ("1", "2", None, None)
+
+
+def test_junction_problems():
+    junctions = (
+        '<junction name="no id"/>',
+        (
+            '<junction id="J" type="roundabout"><connection incomingRoad="1" connectingRoad="2" contactPoint="side">'
+            '<laneLink from="a" to="-1"/><laneLink to="-1"/><laneLink from="1" to="1"/></connection></junction>'
+        ),
+    )
+    result = read(xodr(road(), *junctions))
+    assert sorted(codes(result)) == ["X205", "X205", "X205", "X206", "X206", "X206"]
+    assert [j.id for j in result.document.junctions] == ["J"]
+    j = result.document.junctions[0]
+    assert j.type is m.JunctionType.DEFAULT
+    assert j.connections[0].id == "" and j.connections[0].contact_point is None
+    assert j.connections[0].lane_links == (m.JunctionLaneLink(1, 1, 5),)
+    assert all(f.message.startswith("junction J:") for f in result.findings if f.line == 5)
+
+
+# ------------------------------------------------------------------------------------------------------------ XML level
+def test_comment_before_declaration_keeps_line_numbers():
+    data = b"<!-- exported by a tool -->\n\n" + xodr(road())
+    result = read(data)
+    finding = only(result, "X103")
+    assert finding.severity is Severity.WARNING and "a comment" in finding.message and "line 3" in finding.message
+    assert result.document.roads[0].line == 5
+
+
+def test_text_before_declaration():
+    result = read(b"garbage\n" + xodr(road()))
+    assert "text ('garbage')" in only(result, "X103").message
+    assert result.document.roads[0].line == 4
+
+
+def test_declaration_missing_is_fine():
+    data = xodr(road()).replace(DECL.encode(), b"")
+    assert clean(data).roads[0].line == 2
+
+
+def test_utf8_bom_is_fine():
+    assert clean(b"\xef\xbb\xbf" + xodr(road())).roads[0].id == "1"
+
+
+@pytest.mark.parametrize("codec", ["utf-16", "utf-16-le", "utf-16-be", "utf-32"])
+def test_wide_encodings_are_read_with_a_warning(codec):
+    text = xodr(road(attrs='id="Straße" length="10" junction="-1"')).decode().replace("UTF-8", codec.upper())
+    result = read(text.encode(codec))
+    assert only(result, "X104").severity is Severity.WARNING
+    assert result.document.roads[0].id == "Straße"
+
+
+def test_declared_latin1_with_non_ascii_is_read_with_a_warning():
+    text = xodr(road(attrs='id="Straße" length="10" junction="-1"')).decode().replace("UTF-8", "ISO-8859-1")
+    result = read(text.encode("latin-1"))
+    assert "ISO-8859-1" in only(result, "X104").message
+    assert result.document.roads[0].id == "Straße"
+
+
+def test_declared_latin1_with_ascii_only_passes():
+    assert clean(xodr(road()).replace(b"UTF-8", b"ISO-8859-1")).roads[0].id == "1"
+
+
+def test_namespaced_document_is_read_by_local_names():
+    data = xodr(road(), version=(1, 1)).replace(b"<OpenDRIVE>", b'<OpenDRIVE xmlns="www.vires.com">')
+    doc = clean(data)
+    assert doc.version == (1, 1) and doc.roads[0].plan_view[0].length == 10.0
+
+
+def test_bare_doctype_is_a_warning():
+    data = xodr(road()).replace(b"<OpenDRIVE>", b"<!DOCTYPE OpenDRIVE>\n<OpenDRIVE>")
+    result = read(data)
+    assert only(result, "X102").severity is Severity.WARNING
+    assert result.document.roads[0].line == 4
+
+
+def test_doctype_with_entities_is_an_error_and_not_expanded():
+    doctype = b'<!DOCTYPE OpenDRIVE [\n<!ENTITY len "10">\n]>\n'
+    data = xodr(road(attrs='id="1" length="&len;" junction="-1"')).replace(b"<OpenDRIVE>", doctype + b"<OpenDRIVE>")
+    result = read(data)
+    assert only(result, "X102").severity is Severity.ERROR
+    assert "X101" in codes(result)  # the undefined entity
+
+
+def test_external_entity_is_never_read(tmp_path):
+    secret = tmp_path / "secret.txt"
+    secret.write_text("MARKER-7f3a9c-SECRET")
+    doctype = f'<!DOCTYPE OpenDRIVE [<!ENTITY s SYSTEM "file://{secret}">]>'.encode()
+    header = '<header revMajor="1" revMinor="6" name="&s;"/>'
+    data = xodr(road(attrs='id="&s;" length="10" junction="-1"'), header=header)
+    data = data.replace(b"<OpenDRIVE>", doctype + b"<OpenDRIVE>")
+    result = read(data)
+    assert "X102" in codes(result)
+    dump = repr(result)
+    assert "MARKER-7f3a9c" not in dump
+
+
+def test_not_well_formed_gives_the_line_and_what_could_be_recovered():
+    data = xodr(road(), road(attrs='id="2" length="10" junction="-1"'))
+    result = read(data[: data.index(b'<road id="2"') + 40])
+    finding = only(result, "X101")
+    assert finding.line == 4 and "may be missing" in finding.message
+    assert [r.id for r in result.document.roads][:1] == ["1"]
+
+
+def test_wrong_root():
+    result = read(DECL.encode() + b"<OpenSCENARIO><FileHeader/></OpenSCENARIO>")
+    assert "<OpenSCENARIO>" in only(result, "X201").message
+    assert result.document is None
+
+
+# ------------------------------------------------------------------------------------------------------------ rules
+def test_every_reader_rule_is_documented_with_a_pass_and_a_fail():
+    assert [r.code for r in R.READER_RULES] == sorted(r.code for r in R.READER_RULES)
+    for rule in R.READER_RULES:
+        assert rule.check is None
+        assert rule.code[0] == "X" and rule.code[1:].isdigit() and len(rule.code) == 4
+        assert rule.name == rule.name.lower() and " " not in rule.name
+        assert "Passes" in rule.doc and "Fails" in rule.doc, rule.code
+
+
+def test_every_finding_names_its_location():
+    lane = '<lane id="-1" type="driving"><width sOffset="0" a="x" b="0" c="0" d="0"/></lane>'
+    result = read(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>")))))
+    finding = only(result, "X206")
+    assert (finding.road, finding.section_s, finding.lane, finding.line) == ("1", 0.0, -1, 3)
+    assert finding.message.startswith("road 1, lane section s=0, lane -1: <width> at line 3 ")
+
+
+# ------------------------------------------------------------------------------------------------------------ internals
+@pytest.mark.parametrize("cls", list(CONSTRUCTORS), ids=lambda c: c.__name__)
+def test_fast_constructors_build_what_the_class_builds(cls):
+    fields = dataclasses.fields(cls)
+    required = [f for f in fields if f.default is dataclasses.MISSING]
+    values = [f"v{i}" for i, _ in enumerate(fields)]
+    make = CONSTRUCTORS[cls]
+    assert make(*values) == cls(*values)
+    assert make(*values[: len(required)]) == cls(*values[: len(required)])
+    assert inspect.signature(make).parameters.keys() == inspect.signature(cls).parameters.keys()
+    with pytest.raises(TypeError):
+        make(*values[: len(required) - 1])

@@ -1,0 +1,234 @@
+"""The checking engine: read a file, run the selected rules, collect their findings in a :class:`Report`.
+
+>>> report = check("map.xodr")                       # doctest: +SKIP
+>>> report.ok, [f.code for f in report.findings]     # doctest: +SKIP
+
+Rules are selected by code (``R010``), code prefix (``R``, ``R01``), name (``link-not-reciprocal``) or category
+(``reference``). A rule that raises is reported as an ``X900 rule-crashed`` finding naming the rule and the exception;
+``check`` itself raises only :class:`~xodrcheck.findings.ReadError` (the input cannot be opened at all) and
+:class:`~xodrcheck.config.ConfigError` (a selector names no rule).
+"""
+
+from __future__ import annotations
+
+import gzip
+import io
+import re
+import time
+import zlib
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from xodrcheck.config import Config, ConfigError
+from xodrcheck.findings import Finding, Severity
+from xodrcheck.rules import load_rules
+from xodrcheck.rules.context import Context
+from xodrcheck.rules.internal import RULE_CRASHED, RULE_OUT_OF_TIME
+from xodrcheck.rules.registry import Rule
+
+
+@dataclass(frozen=True)
+class Report:
+    """What :func:`check` found in one file."""
+
+    path: str | None
+    #: The declared OpenDRIVE version as ``"1.7"`` (``None`` when the header does not say).
+    version: str | None
+    #: Sorted by line, then code.
+    findings: tuple[Finding, ...]
+    #: Codes of the rules applied (reader rules included), in the order they ran.
+    rules_run: tuple[str, ...]
+    strict: bool = False
+
+    @property
+    def ok(self) -> bool:
+        """No error-level finding (with ``strict``: no warning either)."""
+        worst = Severity.WARNING if self.strict else Severity.ERROR
+        return not any(f.severity >= worst for f in self.findings)
+
+    def count(self, severity: Severity) -> int:
+        return sum(1 for f in self.findings if f.severity is severity)
+
+    @property
+    def errors(self) -> int:
+        return self.count(Severity.ERROR)
+
+    @property
+    def warnings(self) -> int:
+        return self.count(Severity.WARNING)
+
+
+# ------------------------------------------------------------------------------------------------------ selection
+_CODE_PREFIX = re.compile(r"^[A-Za-z][0-9]{0,3}$")
+
+
+def _matches(token: str, code: str, name: str, category: str) -> bool:
+    """A selector matches a rule by its name, its category, or as a prefix of its code (``R``, ``R0``, ``R010``)."""
+    token = token.strip()
+    if token in (name, category):
+        return True
+    return _CODE_PREFIX.match(token) is not None and code.startswith(token.upper())
+
+
+def _rule_matches(token: str, rule: Rule) -> bool:
+    return _matches(token, rule.code, rule.name, rule.category.value)
+
+
+def validate_selectors(tokens: Iterable[str], rules: dict[str, Rule] | None = None) -> None:
+    """Raise :class:`ConfigError` for a selector that names no rule (a typo would otherwise select nothing)."""
+    rules = load_rules() if rules is None else rules
+    for token in tokens:
+        if not isinstance(token, str):
+            raise ConfigError(f"rule selectors are strings (codes, prefixes, names, categories), got {token!r}")
+        if not token.strip():
+            raise ConfigError("empty rule selector")
+        if not any(_rule_matches(token, r) for r in rules.values()):
+            raise ConfigError(f"unknown rule, code prefix or category {token!r} (see `xodrcheck rules`)")
+
+
+class Selection:
+    """Which rules apply: those matching ``select`` (all when empty), minus those matching ``ignore``."""
+
+    def __init__(self, select: Sequence[str] = (), ignore: Sequence[str] = ()) -> None:
+        self.rules = load_rules()
+        validate_selectors((*select, *ignore), self.rules)
+        self.select = tuple(select)
+        self.ignore = tuple(ignore)
+
+    def wants(self, code: str, name: str, category: str) -> bool:
+        if self.select and not any(_matches(t, code, name, category) for t in self.select):
+            return False
+        return not any(_matches(t, code, name, category) for t in self.ignore)
+
+    def wants_rule(self, rule: Rule) -> bool:
+        return self.wants(rule.code, rule.name, rule.category.value)
+
+    def wants_finding(self, finding: Finding) -> bool:
+        return self.wants(finding.code, finding.name, finding.category.value)
+
+
+# ------------------------------------------------------------------------------------------------------ running
+def _sort_key(f: Finding):
+    return (f.line or 0, f.code, f.road or "", f.lane if f.lane is not None else 0, f.s if f.s is not None else -1.0)
+
+
+def _run_rule(rule: Rule, ctx: Context) -> list[Finding]:
+    out: list[Finding] = []
+    try:
+        for finding in rule.check(ctx):  # type: ignore[misc]
+            out.append(finding)  # noqa: PERF402 - one by one, so what came before a crash is kept
+    except Exception as exc:  # noqa: BLE001 - a rule's bug must not stop the check; it becomes a finding
+        out.append(
+            RULE_CRASHED.finding(
+                f"rule {rule.code} {rule.name} crashed: {type(exc).__name__}: {exc}; "
+                f"{len(out)} finding(s) it gave before are kept"
+            )
+        )
+    return out
+
+
+def run_rules(ctx: Context, selection: Selection) -> tuple[list[Finding], list[str]]:
+    """Run every selected check rule on a context; return their findings and the codes run."""
+    findings: list[Finding] = []
+    run: list[str] = []
+    for rule in selection.rules.values():
+        if rule.check is None or not selection.wants_rule(rule):
+            continue
+        if ctx.out_of_time():
+            findings.append(RULE_OUT_OF_TIME.finding(f"rule {rule.code} {rule.name} not run: time budget spent"))
+            continue
+        findings.extend(_run_rule(rule, ctx))
+        run.append(rule.code)
+    return findings, run
+
+
+_ENGINE_CODES = frozenset({RULE_CRASHED.code, RULE_OUT_OF_TIME.code})
+
+
+def _version_text(ctx_version: tuple[int, int] | None) -> str | None:
+    return None if ctx_version is None else f"{ctx_version[0]}.{ctx_version[1]}"
+
+
+def check(
+    source: str | Path | bytes,
+    config: Config | None = None,
+    select: Sequence[str] = (),
+    ignore: Sequence[str] = (),
+) -> Report:
+    """Check one OpenDRIVE file (a path, or the file's bytes).
+
+    ``select``/``ignore`` override the configuration's when given. ``config`` defaults to :class:`Config` defaults
+    (the command line loads ``pyproject.toml``/``xodrcheck.toml``; call :func:`~xodrcheck.config.load_config` for
+    that here).
+    """
+    from xodrcheck.reader import read
+
+    config = config or Config()
+    selection = Selection(tuple(select) or config.select, tuple(ignore) or config.ignore)
+    started = time.monotonic()
+    result = read(source, max_bytes=config.tolerances.max_file_bytes)
+    data = _raw(source if isinstance(source, bytes) else _read_bytes(result.path), config.tolerances.max_file_bytes)
+    findings = [f for f in result.findings if selection.wants_finding(f)]
+    run = [
+        r.code
+        for r in selection.rules.values()
+        if r.check is None and r.code not in _ENGINE_CODES and selection.wants_rule(r)
+    ]
+    version = None
+    if result.document is not None:
+        ctx = Context(
+            result.document,
+            config,
+            path=result.path,
+            data=data,
+            deadline=started + config.tolerances.time_budget,
+        )
+        version = _version_text(ctx.version)
+        more, ran = run_rules(ctx, selection)
+        findings.extend(f for f in more if selection.wants_finding(f) or f.code in _ENGINE_CODES)
+        run.extend(ran)
+    return Report(
+        path=result.path,
+        version=version,
+        findings=tuple(sorted(findings, key=_sort_key)),
+        rules_run=tuple(run),
+        strict=config.strict,
+    )
+
+
+def _raw(data: bytes | None, limit: int) -> bytes | None:
+    """The XML bytes the reader parsed: gzip-compressed files (``.xodrz``) are decompressed."""
+    if data is None or not data.startswith(b"\x1f\x8b"):
+        return data
+    try:
+        with gzip.GzipFile(fileobj=io.BytesIO(data)) as stream:
+            out = stream.read(limit + 1)
+    except (OSError, EOFError, zlib.error):
+        return None
+    return out if len(out) <= limit else None
+
+
+def _read_bytes(path: str | None) -> bytes | None:
+    if path is None:
+        return None
+    try:
+        return Path(path).read_bytes()
+    except OSError:
+        return None
+
+
+def is_valid(source: str | Path | bytes, config: Config | None = None) -> bool:
+    """True when :func:`check` finds no error (shapely's ``is_valid``)."""
+    return check(source, config).ok
+
+
+def is_valid_reason(source: str | Path | bytes, config: Config | None = None) -> str:
+    """``"Valid OpenDRIVE"`` or the first failing finding as ``"CODE name: message [where]"``."""
+    report = check(source, config)
+    if report.ok:
+        return "Valid OpenDRIVE"
+    worst = Severity.WARNING if report.strict else Severity.ERROR
+    first = next(f for f in report.findings if f.severity >= worst)
+    where = f" [line {first.line}]" if first.line else ""
+    return f"{first.code} {first.name}: {first.message}{where}"

@@ -1,0 +1,131 @@
+"""``xodrcheck check FILE...``: run the conformance rules and report what they find.
+
+Exit codes: 0 no error-level finding, 1 an error-level finding (``--strict``: a warning too), 2 a usage error (an
+unknown rule selector, a bad ``--tolerance``) or a file that cannot be read at all.
+
+Configuration comes from ``xodrcheck.toml`` or ``[tool.xodrcheck]`` in the nearest ``pyproject.toml`` (keys
+``select``, ``ignore``, ``strict`` and a ``tolerances`` table); ``--select``/``--ignore`` replace the configured lists,
+``--tolerance`` overrides single tolerances. A directory argument stands for the ``*.xodr`` files under it.
+"""
+
+from __future__ import annotations
+
+import argparse
+import dataclasses
+import sys
+from pathlib import Path
+
+from xodrcheck.cli._common import error, output
+from xodrcheck.config import ConfigError, load_config
+from xodrcheck.findings import ReadError
+from xodrcheck.report import FORMATS, render, summary
+
+NAME = "check"
+HELP = "Check OpenDRIVE files against the conformance rules (exit 1 when an error is found)."
+
+
+def _split(values: list[str] | None, flag: str) -> tuple[str, ...] | None:
+    if values is None:
+        return None
+    parts = tuple(part.strip() for value in values for part in value.split(",") if part.strip())
+    if not parts:
+        raise ConfigError(f"{flag} needs at least one rule code, prefix, name or category")
+    return parts
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("files", nargs="+", metavar="FILE", help="OpenDRIVE files or folders of them")
+    parser.add_argument(
+        "--select",
+        action="append",
+        metavar="RULES",
+        help="only these rules: codes, code prefixes, names or categories, comma-separated (repeatable)",
+    )
+    parser.add_argument("--ignore", action="append", metavar="RULES", help="leave these rules out (same forms)")
+    parser.add_argument("--strict", action="store_true", default=None, help="warnings fail the check too")
+    parser.add_argument("--format", choices=FORMATS, default="text", help="report format (default: text)")
+    parser.add_argument("-o", "--output", metavar="FILE", help="write the report to FILE (atomically) instead of stdout")
+    parser.add_argument(
+        "--tolerance",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="override a tolerance, e.g. --tolerance position=0.01 (repeatable; `xodrcheck rules` lists the rules)",
+    )
+
+
+def _tolerance_overrides(items: list[str]) -> dict[str, str]:
+    out: dict[str, str] = {}
+    for item in items:
+        name, sep, value = item.partition("=")
+        if not sep or not name.strip() or not value.strip():
+            raise ConfigError(f"--tolerance expects NAME=VALUE, got {item!r}")
+        out[name.strip()] = value.strip()
+    return out
+
+
+def _expand(files: list[str]) -> list[str]:
+    out: list[str] = []
+    for name in files:
+        p = Path(name)
+        if p.is_dir():
+            found = sorted(str(f) for f in p.rglob("*.xodr") if f.is_file())
+            if not found:
+                raise ReadError(f"{name}: a folder without .xodr files")
+            out.extend(found)
+        else:
+            out.append(name)
+    return out
+
+
+def run(args: argparse.Namespace) -> int:
+    from xodrcheck.check import Selection, check
+
+    try:
+        config = load_config(overrides=_tolerance_overrides(args.tolerance))
+        select, ignore = _split(args.select, "--select"), _split(args.ignore, "--ignore")
+        config = dataclasses.replace(
+            config,
+            select=config.select if select is None else select,
+            ignore=config.ignore if ignore is None else ignore,
+            strict=config.strict if args.strict is None else True,
+        )
+        Selection(config.select, config.ignore)  # validates the selectors before any file is read
+    except ConfigError as exc:
+        error(f"check: {exc}")
+        return 2
+    except (OSError, ValueError) as exc:  # an unreadable or malformed configuration file
+        error(f"check: configuration: {exc}")
+        return 2
+
+    reports = []
+    unreadable = False  # a file that could not be checked: exit 2
+    try:
+        files = _expand(args.files)
+    except ReadError as exc:
+        error(f"cannot read {exc}")
+        return 2
+    for name in files:
+        try:
+            reports.append(check(name, config))
+        except ReadError as exc:
+            error(f"cannot read {name}: {exc}")
+            unreadable = True
+        except Exception as exc:  # noqa: BLE001 - the last line of defence: one line, not a traceback
+            error(f"internal error on {name}: {type(exc).__name__}: {exc}")
+            unreadable = True
+    try:
+        with output(args.output) as stream:
+            stream.write(render(args.format, reports))
+    except OSError as exc:
+        error(f"cannot write {args.output}: {exc}")
+        return 2
+    if args.format == "text" and reports:
+        s = summary(reports)
+        print(
+            f"{s['files']} file(s) checked: {s['errors']} error(s), {s['warnings']} warning(s), {s['infos']} info",
+            file=sys.stderr,
+        )
+    if unreadable:
+        return 2
+    return 0 if all(r.ok for r in reports) else 1

@@ -1,0 +1,50 @@
+"""Poses along a curve: position, heading and curvature as parallel numpy arrays."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+
+@dataclass(frozen=True, slots=True)
+class Pose:
+    """Points of a plane curve parametrised by arc length.
+
+    ``hdg`` is the tangent direction (rad, not wrapped: it grows continuously along an element), ``curvature`` is
+    signed (positive turning left, 1/m) and ``dcurvature`` is its derivative with respect to arc length (1/m^2),
+    which the curvature of offset curves (lane borders) needs.
+    """
+
+    x: np.ndarray
+    y: np.ndarray
+    hdg: np.ndarray
+    curvature: np.ndarray
+    dcurvature: np.ndarray
+
+    def __len__(self) -> int:
+        return len(self.x)
+
+    @staticmethod
+    def empty(n: int) -> Pose:
+        """``n`` poses filled with NaN (to be assigned piecewise)."""
+        return Pose(*(np.full(n, np.nan) for _ in range(5)))
+
+    def assign(self, index: np.ndarray, other: Pose) -> None:
+        """Write ``other`` into the positions ``index`` of this pose's arrays (the arrays are mutable, the fields not)."""
+        self.x[index] = other.x
+        self.y[index] = other.y
+        self.hdg[index] = other.hdg
+        self.curvature[index] = other.curvature
+        self.dcurvature[index] = other.dcurvature
+
+
+def local_to_inertial(g, u: np.ndarray, v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Map local (u, v) coordinates of an element starting at (g.x, g.y) with heading g.hdg to inertial (x, y)."""
+    c, s = np.cos(g.hdg), np.sin(g.hdg)
+    return g.x + c * u - s * v, g.y + s * u + c * v
+
+
+def as_array(ds) -> np.ndarray:
+    """A 1-D float array (scalars become length-1 arrays)."""
+    return np.atleast_1d(np.asarray(ds, dtype=float))

@@ -1,0 +1,320 @@
+"""Lane borders and lane centres of a road, evaluated exactly and vectorised over ``s``.
+
+Conventions and decisions (ASAM OpenDRIVE 1.8 section numbers)
+--------------------------------------------------------------
+* ``t`` is the lateral coordinate of the road reference line's s/t system, positive to the left (8.3). Lane 0 (the
+  centre lane) lies at ``t = laneOffset(s)`` (11.4).
+* Width records accumulate outward from lane 0: the outer border of lane ``+k`` is
+  ``laneOffset + w(1) + ... + w(k)`` and of lane ``-k`` is ``laneOffset - w(-1) - ... - w(-k)`` (11.6.1), over the lanes
+  the section actually has, ordered by ``|id|``. Records are ``sOffset`` from the section start.
+* A ``<border>`` record gives the outer border's ``t`` itself, "independent of the parameters of their inner borders"
+  (11.6.2); ``t`` being measured from the road reference line (8.3), a border is *not* shifted by the laneOffset.
+  When a lane has both ``<width>`` and ``<border>``, the widths are used, as 11.6.1 requires. A lane with neither is
+  zero wide.
+* The centre of a lane is midway (in ``t``) between its inner and outer border.
+* Superelevation rolls the t-axis about the reference line (8.3: "t ... angled relative to the x/y plane according
+  to the road superelevation. Values of t are measured in the superelevated lane. The value of the @width attribute
+  of the lane does not change if superelevation is applied"). A point at lateral ``t`` therefore lies ``t cos(phi)``
+  from the reference line in plan view and ``t sin(phi)`` above it (positive ``phi`` lifts the left side). A lane with
+  ``level="true"`` is not rolled (11.2: "keep lane on level, that is, do not apply superelevation"): it continues
+  horizontally from its inner border, so it keeps its full width in plan view and its inner border's height; lanes
+  outside it are rolled again from its outer border. (esmini moves lanes in plan view by ``t`` and only adds height;
+  CARLA ignores superelevation: neither shortens the projected width as 8.3 says.)
+* ``z`` is the elevation profile (10.5) plus the superelevation height above. The header ``<offset>`` is not applied:
+  it maps the file's local coordinates to world coordinates for georeferencing (8.5) and every lane position here is
+  in the file's own inertial frame, as the geometry is written.
+* ``singleSide="true"`` sections (11.3, Figure 62) describe one side only; the other side continues with the lanes
+  (and records, relative to their own section start) of the last earlier section that had lanes there.
+* The lane section containing ``s`` is the last one starting at or before ``s``: a section boundary belongs to the
+  section that starts there (and ``s`` before the first section to the first).
+
+Lane heading and curvature are those of the offset curve ``P = R(s) + q(s) N(s)`` in plan view (``q`` the projected
+lateral offset), with ``q'`` and ``q''`` carried exactly (:mod:`xodrcheck.geometry.jet`): heading
+``theta + atan2(q', 1 - q k)`` and curvature ``(A^2 k + A q'' + 2 q'^2 k + q q' k') / (A^2 + q'^2)^(3/2)``,
+``A = 1 - q k``; widening lanes therefore contribute their width change.
+"""
+
+from __future__ import annotations
+
+import weakref
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass
+
+import numpy as np
+
+from xodrcheck.config import Tolerances
+from xodrcheck.geometry import profile
+from xodrcheck.geometry.jet import Jet
+from xodrcheck.geometry.planview import ReferenceLine
+from xodrcheck.geometry.pose import Pose, as_array
+from xodrcheck.model import Document, Lane, Road
+from xodrcheck.sampling import sample_section
+
+_WHERE = ("centre", "inner", "outer")
+
+
+@dataclass(frozen=True, slots=True)
+class LanePoints:
+    """Points on a lane line (centre or a border): inertial x, y, z, plan-view heading and curvature, and ``speed``,
+    the plan-view length of the line per metre of reference-line ``s`` (``integral speed ds`` is the line's length)."""
+
+    x: np.ndarray
+    y: np.ndarray
+    z: np.ndarray
+    hdg: np.ndarray
+    curvature: np.ndarray
+    speed: np.ndarray
+
+
+@dataclass(frozen=True, slots=True)
+class SideLanes:
+    """The lanes of one side in effect in a section, inner to outer, with the ``s`` their records are relative to.
+
+    ``laws[i]`` is lane ``i``'s compiled width profile (``is_width[i]``) or border profile, ``None`` for neither."""
+
+    lanes: tuple[Lane, ...]
+    origin: float
+    laws: tuple[profile.Piecewise | None, ...]
+    is_width: tuple[bool, ...]
+
+
+@dataclass(frozen=True, slots=True)
+class _Evaluation:
+    """Everything lane points at one array of ``s`` in one section need, computed once."""
+
+    pose: Pose
+    borders: dict[int, Jet]
+    cos: Jet
+    sin: Jet
+    elevation: np.ndarray
+
+
+class RoadGeometry:
+    """Evaluates one road: reference line, lane offset, lane borders and lane points."""
+
+    _CACHED_EVALUATIONS = 4
+
+    def __init__(self, road: Road):
+        self.road = road
+        self.reference_line = ReferenceLine(road.plan_view)
+        self._starts = np.array([sec.s for sec in road.lane_sections], dtype=float)
+        self._sides: dict[int, tuple[SideLanes, SideLanes]] = {}
+        self._offset = profile.Piecewise(road.lane_offset)
+        self._elevation = profile.Piecewise(road.elevation)
+        self._roll = profile.Piecewise(road.superelevation)
+        self._evaluations: dict[tuple[int, bytes], _Evaluation] = {}
+
+    # ---------------------------------------------------------------------------------------------------------------
+    # Road level
+    # ---------------------------------------------------------------------------------------------------------------
+    def reference(self, s) -> Pose:
+        return self.reference_line.evaluate(s)
+
+    def lane_offset(self, s) -> np.ndarray:
+        return self._offset.jet(s)[0]
+
+    def elevation(self, s) -> np.ndarray:
+        return self._elevation.jet(s)[0]
+
+    def superelevation(self, s) -> np.ndarray:
+        return self._roll.jet(s)[0]
+
+    def section_index(self, s) -> np.ndarray:
+        """Index of the lane section containing each ``s`` (see the module docstring for boundaries)."""
+        s = as_array(s)
+        if len(self._starts) == 0:
+            return np.full(len(s), -1)
+        return np.maximum(np.searchsorted(self._starts, s, side="right") - 1, 0)
+
+    def section_range(self, section_index: int) -> tuple[float, float]:
+        return self.road.lane_sections[section_index].s, self.road.section_end(section_index)
+
+    # ---------------------------------------------------------------------------------------------------------------
+    # Lateral structure
+    # ---------------------------------------------------------------------------------------------------------------
+    def side_lanes(self, section_index: int) -> tuple[SideLanes, SideLanes]:
+        """(left, right) lanes in effect in the section, each inner to outer (``singleSide`` resolved)."""
+        cached = self._sides.get(section_index)
+        if cached is None:
+            cached = (self._side(section_index, +1), self._side(section_index, -1))
+            self._sides[section_index] = cached
+        return cached
+
+    def _side(self, section_index: int, sign: int) -> SideLanes:
+        sections = self.road.lane_sections
+        i = section_index
+        while True:
+            section = sections[i]
+            group = section.left if sign > 0 else section.right
+            lanes = tuple(sorted((lane for lane in group if lane.id * sign > 0), key=lambda lane: abs(lane.id)))
+            if lanes or not section.single_side or i == 0:
+                break
+            i -= 1
+        laws = tuple(
+            profile.Piecewise(lane.widths or lane.borders, section.s) if lane.widths or lane.borders else None
+            for lane in lanes
+        )
+        return SideLanes(lanes, section.s, laws, tuple(bool(lane.widths) for lane in lanes))
+
+    def _evaluate(self, section_index: int, s: np.ndarray) -> _Evaluation:
+        """Reference pose, border jets, superelevation and elevation at ``s`` (a few recent queries are cached, so
+        asking for several lanes at the same ``s`` costs one evaluation)."""
+        key = (section_index, s.tobytes())
+        found = self._evaluations.get(key)
+        if found is None:
+            roll = Jet(*self._roll.jet(s))
+            found = _Evaluation(
+                self.reference(s), self._border_jets(section_index, s), roll.cos(), roll.sin(), self.elevation(s)
+            )
+            if len(self._evaluations) >= self._CACHED_EVALUATIONS:
+                self._evaluations.pop(next(iter(self._evaluations)))
+            self._evaluations[key] = found
+        return found
+
+    def _border_jets(self, section_index: int, s: np.ndarray) -> dict[int, Jet]:
+        """``t`` of every lane's outer border as a jet (lane 0: the laneOffset line)."""
+        centre = Jet(*self._offset.jet(s))
+        jets = {0: centre}
+        for sign, side in zip((+1, -1), self.side_lanes(section_index)):
+            inner = centre
+            for lane, law, is_width in zip(side.lanes, side.laws, side.is_width):
+                if law is None:
+                    outer = inner
+                elif is_width:
+                    width = Jet(*law.jet(s))
+                    outer = inner + width if sign > 0 else inner - width
+                else:
+                    outer = Jet(*law.jet(s))
+                jets[lane.id] = outer
+                inner = outer
+        return jets
+
+    def borders(self, section_index: int, s) -> dict[int, np.ndarray]:
+        """Lateral ``t`` of each lane's outer border at ``s`` (lane 0: the laneOffset line)."""
+        return {lane_id: jet.v for lane_id, jet in self._evaluate(section_index, as_array(s)).borders.items()}
+
+    def inner_outer(self, section_index: int, lane_id: int, s) -> tuple[np.ndarray, np.ndarray]:
+        """Lateral ``t`` of a lane's inner and outer border at ``s``."""
+        jets = self._evaluate(section_index, as_array(s)).borders
+        if lane_id not in jets:
+            raise KeyError(f"road {self.road.id}: no lane {lane_id} in lane section {section_index}")
+        inner = 0
+        for lane in self.side_lanes(section_index)[0 if lane_id > 0 else 1].lanes:
+            if lane.id == lane_id:
+                break
+            inner = lane.id
+        return jets[inner].v, jets[lane_id].v
+
+    # ---------------------------------------------------------------------------------------------------------------
+    # Points
+    # ---------------------------------------------------------------------------------------------------------------
+    def lane_points(self, section_index: int, lane_id: int, s, where: str = "centre") -> LanePoints:
+        """Points of a lane's centre, inner or outer border at ``s`` (lane 0: its line, whatever ``where``)."""
+        if where not in _WHERE:
+            raise ValueError(f"where must be one of {_WHERE}, got {where!r}")
+        evaluation = self._evaluate(section_index, as_array(s))
+        return self._place(evaluation, *self._projected(section_index, evaluation, lane_id, where))
+
+    def border_curves(self, section_index: int, s) -> dict[int, LanePoints]:
+        """Every lane's outer border (and lane 0's line) at ``s``: all the border polylines of the section."""
+        evaluation = self._evaluate(section_index, as_array(s))
+        return {
+            lane_id: self._place(evaluation, *self._projected(section_index, evaluation, lane_id, "outer"))
+            for lane_id in evaluation.borders
+        }
+
+    def _projected(
+        self, section_index: int, evaluation: _Evaluation, lane_id: int, where: str
+    ) -> tuple[Jet, np.ndarray]:
+        """Plan-view lateral offset (jet) and height above the reference line of a lane line, superelevation applied."""
+        jets, cos, sin = evaluation.borders, evaluation.cos, evaluation.sin
+        if lane_id not in jets:
+            raise KeyError(f"road {self.road.id}: no lane {lane_id} in lane section {section_index}")
+        centre = jets[0]
+        lateral, height = centre * cos, centre.v * sin.v
+        if lane_id == 0:
+            return lateral, height
+        side = self.side_lanes(section_index)[0 if lane_id > 0 else 1]
+        inner = centre
+        for lane in side.lanes:
+            outer = jets[lane.id]
+            last = lane.id == lane_id
+            if last:
+                target = {"inner": inner, "outer": outer, "centre": (inner + outer).scale(0.5)}[where]
+                step = target - inner
+            else:
+                step = outer - inner
+            if lane.level:
+                lateral = lateral + step
+            else:
+                lateral = lateral + step * cos
+                height = height + step.v * sin.v
+            if last:
+                break
+            inner = outer
+        return lateral, height
+
+    @staticmethod
+    def _place(evaluation: _Evaluation, lateral: Jet, height: np.ndarray) -> LanePoints:
+        pose = evaluation.pose
+        q, dq, ddq = lateral.v, lateral.d1, lateral.d2
+        k, dk = pose.curvature, pose.dcurvature
+        a = 1.0 - q * k
+        speed = np.hypot(a, dq)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            curvature = (a * a * k + a * ddq + 2.0 * dq * dq * k + q * dq * dk) / speed**3
+        return LanePoints(
+            pose.x - q * np.sin(pose.hdg),
+            pose.y + q * np.cos(pose.hdg),
+            evaluation.elevation + height,
+            pose.hdg + np.arctan2(dq, a),
+            curvature,
+            speed,
+        )
+
+    # ---------------------------------------------------------------------------------------------------------------
+    # Sampling
+    # ---------------------------------------------------------------------------------------------------------------
+    def sample_s(self, section_index: int, chord: float | None = None, max_step: float | None = None) -> np.ndarray:
+        """Sorted ``s`` covering the section with every knot, lane-border chord error under ``chord`` (default:
+        the configured tolerance) and steps of at most ``max_step``; see :mod:`xodrcheck.sampling`."""
+        defaults = Tolerances()
+        return sample_section(
+            self,
+            section_index,
+            defaults.chord if chord is None else chord,
+            defaults.max_step if max_step is None else max_step,
+        )
+
+
+class _LazyGeometries(Mapping[str, RoadGeometry]):
+    def __init__(self, document: Document):
+        self._roads = document.road_by_id
+        self._built: dict[str, RoadGeometry] = {}
+
+    def __getitem__(self, road_id: str) -> RoadGeometry:
+        geometry = self._built.get(road_id)
+        if geometry is None:
+            geometry = RoadGeometry(self._roads[road_id])
+            self._built[road_id] = geometry
+        return geometry
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._roads)
+
+    def __len__(self) -> int:
+        return len(self._roads)
+
+
+_CACHE: dict[int, _LazyGeometries] = {}
+
+
+def geometry_of(document: Document) -> Mapping[str, RoadGeometry]:
+    """Road id -> :class:`RoadGeometry`, built on first access and cached for the document's lifetime."""
+    key = id(document)
+    found = _CACHE.get(key)
+    if found is None:
+        found = _LazyGeometries(document)
+        _CACHE[key] = found
+        weakref.finalize(document, _CACHE.pop, key, None)
+    return found

@@ -1,0 +1,115 @@
+"""Read any OpenDRIVE file into the typed model of :mod:`xodrcheck.model`, with what was found on the way.
+
+``read(path_or_bytes)`` never raises for bad content: a file that is not well-formed, not OpenDRIVE, or full of invalid
+values gives findings (the reader rules of :mod:`xodrcheck.rules.xml`) and as much of the model as could be built.
+Only input that cannot be opened at all (a missing file, a directory, more bytes than the configured limit) raises
+:class:`~xodrcheck.findings.ReadError`.
+
+Gzip-compressed files (``.xodrz``, the standard's compressed form) are decompressed first, within the same size limit.
+"""
+
+from __future__ import annotations
+
+import gzip
+import io
+import os
+import stat
+import zlib
+from dataclasses import dataclass
+from pathlib import Path
+
+from xodrcheck.config import Tolerances
+from xodrcheck.findings import Finding, ReadError
+from xodrcheck.model import Document
+from xodrcheck.reader.context import Context
+from xodrcheck.reader.document import KNOWN_VERSIONS, build_document
+from xodrcheck.reader.xmlsafe import parse
+from xodrcheck.rules import xml as R
+
+__all__ = ["KNOWN_VERSIONS", "ReadResult", "parse", "read"]
+
+_GZIP_MAGIC = b"\x1f\x8b"
+
+
+@dataclass(frozen=True)
+class ReadResult:
+    """The model (``None`` when nothing could be built), the reader's findings in file order, and the path read."""
+
+    document: Document | None
+    findings: tuple[Finding, ...]
+    path: str | None
+
+
+def _size(n: int) -> str:
+    return f"{n / 2**20:.1f} MiB" if n >= 2**20 else f"{n} bytes"
+
+
+def _too_large(n: int, limit: int) -> ReadError:
+    return ReadError(f"it is larger than the limit of {_size(limit)} (tolerance max_file_bytes); raise it to read it")
+
+
+def _load(path: str, limit: int) -> bytes:
+    try:
+        info = os.stat(path)
+    except FileNotFoundError:
+        raise ReadError("no such file") from None
+    except OSError as exc:
+        raise ReadError(exc.strerror or str(exc)) from None
+    if stat.S_ISDIR(info.st_mode):
+        raise ReadError("it is a directory, not a file")
+    if info.st_size > limit:
+        raise _too_large(info.st_size, limit)
+    try:
+        with open(path, "rb") as stream:
+            data = stream.read(limit + 1)  # not a regular file (a pipe): the limit still holds
+    except OSError as exc:
+        raise ReadError(exc.strerror or str(exc)) from None
+    if len(data) > limit:
+        raise _too_large(len(data), limit)
+    return data
+
+
+def _gunzip(data: bytes, limit: int, findings: list[Finding]) -> bytes | None:
+    try:
+        with gzip.GzipFile(fileobj=io.BytesIO(data)) as stream:
+            out = stream.read(limit + 1)
+    except (OSError, EOFError, zlib.error) as exc:
+        findings.append(
+            R.NOT_WELL_FORMED.finding(
+                f"the file is gzip-compressed (.xodrz) but cannot be decompressed ({exc}); nothing could be read",
+                line=None,
+            )
+        )
+        return None
+    if len(out) > limit:
+        raise ReadError(f"decompressed, it is larger than the limit of {_size(limit)} (tolerance max_file_bytes)")
+    return out
+
+
+def read(source: str | os.PathLike[str] | bytes, *, max_bytes: int | None = None) -> ReadResult:
+    """Read an OpenDRIVE file (a path, or the file's bytes).
+
+    ``max_bytes`` defaults to :attr:`Tolerances.max_file_bytes`. Raises :class:`ReadError` only when the input cannot
+    be opened or is over that limit.
+    """
+    limit = Tolerances().max_file_bytes if max_bytes is None else max_bytes
+    if isinstance(source, (bytes, bytearray, memoryview)):
+        data = bytes(source)
+        path = None
+        if len(data) > limit:
+            raise _too_large(len(data), limit)
+    else:
+        path = str(Path(source))
+        data = _load(path, limit)
+    findings: list[Finding] = []
+    if data.startswith(_GZIP_MAGIC):
+        unpacked = _gunzip(data, limit, findings)
+        if unpacked is None:
+            return ReadResult(None, tuple(findings), path)
+        data = unpacked
+    root, parse_findings = parse(data)
+    findings.extend(parse_findings)
+    document = None
+    if root is not None:
+        document = build_document(Context(findings), root, path)
+    return ReadResult(document, tuple(findings), path)

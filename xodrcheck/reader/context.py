@@ -1,0 +1,271 @@
+"""Where the builder is, what it found, and attribute parsing that reports instead of guessing.
+
+Every helper returns ``None`` for a value that is missing or invalid, after recording a finding that names the element,
+its line, the attribute, the raw value and what the builder does about it (``then``). The fast paths convert a whole
+element's attributes in one go and fall back to the attribute-by-attribute path only when something is wrong.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+from itertools import pairwise
+from typing import TypeVar
+
+from lxml import etree
+
+from xodrcheck.findings import Finding, Severity
+from xodrcheck.model import Cubic, Profile
+from xodrcheck.reader.construct import make_cubic
+from xodrcheck.rules import xml as R
+from xodrcheck.rules.registry import Rule
+
+T = TypeVar("T")
+
+_SHOW = 40  # characters of a raw value shown in a message
+_BOOLEANS = {"true": True, "false": False, "1": True, "0": False}
+
+SKIP = "the element is skipped"
+SKIP_RECORD = "the record is skipped"
+
+
+#: libxml2 keeps an element's line in 16 bits. Past this it knows the line only from a neighbouring text node (so
+#: approximately: often the next line), and an element without one (a compact file) reads 65535.
+SATURATED_LINE = 65535
+
+
+def _anchor(el: etree._Element) -> etree._Element | None:
+    """The nearest ancestor whose line is known and past :data:`SATURATED_LINE` (``None`` if there is none)."""
+    parent = el.getparent()
+    while parent is not None:
+        line = parent.sourceline
+        if line != SATURATED_LINE:
+            return parent if line is not None and line > SATURATED_LINE else None
+        parent = parent.getparent()
+    return None
+
+
+def line_of(el: etree._Element) -> int | None:
+    """The element's line, or for an element whose line libxml2 lost (see :data:`SATURATED_LINE`) its nearest
+    ancestor's line past that, which is where to start looking."""
+    line = el.sourceline
+    if line == SATURATED_LINE:
+        anchor = _anchor(el)
+        if anchor is not None:
+            return anchor.sourceline
+    return line
+
+
+def describe(el: etree._Element) -> str:
+    """``<tag> at line N``; past line 65535, where libxml2 knows lines only roughly, ``<tag> at about line N`` or
+    ``<tag> after about line N (in <parent>)``."""
+    line = el.sourceline
+    if line == SATURATED_LINE:
+        anchor = _anchor(el)
+        if anchor is not None:
+            return f"<{el.tag}> after about line {anchor.sourceline} (in <{anchor.tag}>)"
+    elif line is not None and line > SATURATED_LINE:
+        return f"<{el.tag}> at about line {line}"
+    return f"<{el.tag}> at line {line}"
+
+
+def _show(raw: str) -> str:
+    return raw if len(raw) <= _SHOW else raw[:_SHOW] + "..."
+
+
+class Context:
+    """Findings collected while building the model, and the road / junction / lane section / lane being built."""
+
+    __slots__ = ("findings", "junction", "lane", "road", "section_s", "version")
+
+    def __init__(self, findings: list[Finding] | None = None) -> None:
+        self.findings: list[Finding] = [] if findings is None else findings
+        self.version: tuple[int, int] | None = None
+        self.road: str | None = None
+        self.junction: str | None = None
+        self.section_s: float | None = None
+        self.lane: int | None = None
+
+    # ---------------------------------------------------------------------------------------------------- findings
+    def where(self) -> str:
+        parts = []
+        if self.road is not None:
+            parts.append(f"road {self.road}")
+        if self.junction is not None:
+            parts.append(f"junction {self.junction}")
+        if self.section_s is not None:
+            parts.append(f"lane section s={self.section_s:g}")
+        if self.lane is not None:
+            parts.append(f"lane {self.lane}")
+        return ", ".join(parts) + ": " if parts else ""
+
+    def report(
+        self,
+        rule: Rule,
+        message: str,
+        el: etree._Element | None = None,
+        severity: Severity | None = None,
+        line: int | None = None,
+    ) -> None:
+        """Record a finding of ``rule`` located at ``el`` (or ``line``) inside the current road / lane."""
+        self.findings.append(
+            rule.finding(
+                self.where() + message,
+                severity=severity,
+                road=self.road,
+                lane=self.lane,
+                section_s=self.section_s,
+                line=line if el is None else line_of(el),
+            )
+        )
+
+    def missing(self, el: etree._Element, name: str, then: str, severity: Severity | None = None) -> None:
+        self.report(R.MISSING_ATTRIBUTE, f"{describe(el)} has no '{name}' attribute; {then}", el, severity)
+
+    def invalid(self, el: etree._Element, name: str, raw: str, why: str, then: str) -> None:
+        self.report(R.INVALID_ATTRIBUTE, f'{describe(el)} has {name}="{_show(raw)}", {why}; {then}', el)
+
+    # ---------------------------------------------------------------------------------------------------- values
+    def number(
+        self, el: etree._Element, name: str, then: str, *, required: bool = True, nonneg: bool = False
+    ) -> float | None:
+        """A finite float (>= 0 with ``nonneg``), or ``None`` with a finding (none for an absent optional one)."""
+        raw = el.get(name)
+        if raw is None:
+            if required:
+                self.missing(el, name, then)
+            return None
+        try:
+            value = float(raw)
+        except ValueError:
+            self.invalid(el, name, raw, "which is not a number", then)
+            return None
+        if value - value != 0.0:
+            self.invalid(el, name, raw, "which is not a finite number", then)
+            return None
+        if nonneg and value < 0.0:
+            self.invalid(el, name, raw, f"but {name} must be >= 0", then)
+            return None
+        return value
+
+    def floats(
+        self, el: etree._Element, names: Sequence[str], nonneg: Sequence[int], then: str
+    ) -> tuple[float, ...] | None:
+        """All of ``names`` as finite floats (those at indices ``nonneg`` >= 0), or ``None`` with findings."""
+        try:
+            values = tuple(map(float, map(el.get, names)))
+        except (TypeError, ValueError):
+            return self.floats_slowly(el, names, nonneg, then)
+        total = sum(values)
+        if total - total != 0.0:  # a NaN or an infinity somewhere (or a harmless overflow: the slow path decides)
+            return self.floats_slowly(el, names, nonneg, then)
+        for i in nonneg:
+            if values[i] < 0.0:
+                return self.floats_slowly(el, names, nonneg, then)
+        return values
+
+    def floats_slowly(
+        self, el: etree._Element, names: Sequence[str], nonneg: Sequence[int], then: str
+    ) -> tuple[float, ...] | None:
+        absent = [name for name in names if el.get(name) is None]
+        if len(absent) > 1:
+            listed = ", ".join(f"'{name}'" for name in absent)
+            self.report(R.MISSING_ATTRIBUTE, f"{describe(el)} lacks the required attributes {listed}; {then}", el)
+        elif absent:
+            self.missing(el, absent[0], then)
+        values = [
+            self.number(el, name, then, nonneg=i in nonneg) if name not in absent else None
+            for i, name in enumerate(names)
+        ]
+        return None if any(v is None for v in values) else tuple(values)  # type: ignore[arg-type]
+
+    def integer(self, el: etree._Element, name: str, then: str, *, required: bool = True) -> int | None:
+        raw = el.get(name)
+        if raw is None:
+            if required:
+                self.missing(el, name, then)
+            return None
+        try:
+            return int(raw)
+        except ValueError:
+            self.invalid(el, name, raw, "which is not an integer", then)
+            return None
+
+    def choice(self, el: etree._Element, name: str, values: Mapping[str, T], then: str) -> T | None:
+        """An optional enumerated value, matched without regard to case; ``None`` when absent or unknown."""
+        raw = el.get(name)
+        if raw is None:
+            return None
+        value = values.get(raw.strip().lower())
+        if value is None:
+            allowed = ", ".join(sorted({str(getattr(v, "value", v)) for v in values.values()}))
+            self.invalid(el, name, raw, f"which is not one of {allowed}", then)
+        return value
+
+    def boolean(self, el: etree._Element, name: str, then: str) -> bool | None:
+        """An optional ``true``/``false`` (or ``1``/``0``); ``None`` when absent or invalid."""
+        raw = el.get(name)
+        if raw is None:
+            return None
+        value = _BOOLEANS.get(raw.strip().lower())
+        if value is None:
+            self.invalid(el, name, raw, "which is not true or false", then)
+        return value
+
+    # ---------------------------------------------------------------------------------------------------- structure
+    def repeated(self, el: etree._Element, first: etree._Element) -> None:
+        self.report(
+            R.REPEATED_ELEMENT,
+            f"{describe(el)} repeats the {describe(first)}, which may appear only once; "
+            "only the first is read",
+            el,
+        )
+
+    def check_order(self, records: Sequence, what: str, parent: etree._Element) -> None:
+        """Report the first record whose ``s`` is smaller than its predecessor's."""
+        for prev, rec in pairwise(records):
+            if rec.s < prev.s:
+                self.report(
+                    R.OUT_OF_ORDER,
+                    f"{what} at line {rec.line} starts at {rec.s:g}, before the one at line {prev.line} "
+                    f"({prev.s:g}); the standard wants them in ascending order of s (in {describe(parent)}); "
+                    "they are kept in file order",
+                    line=rec.line,
+                )
+                return
+
+
+_CUBIC = ("s", "a", "b", "c", "d")
+_OFFSET_CUBIC = ("sOffset", "a", "b", "c", "d")
+_FIRST = (0,)
+
+
+def cubic(ctx: Context, el: etree._Element, offset: bool = False) -> Cubic | None:
+    """One ``s a b c d`` record (``sOffset a b c d`` with ``offset``), or ``None`` with findings."""
+    get = el.get
+    try:
+        s = float(get("sOffset" if offset else "s"))  # type: ignore[arg-type]
+        a = float(get("a"))  # type: ignore[arg-type]
+        b = float(get("b"))  # type: ignore[arg-type]
+        c = float(get("c"))  # type: ignore[arg-type]
+        d = float(get("d"))  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        pass
+    else:
+        total = s + a + b + c + d
+        if total - total == 0.0 and s >= 0.0:
+            return make_cubic(s, a, b, c, d, el.sourceline)
+    v = ctx.floats_slowly(el, _OFFSET_CUBIC if offset else _CUBIC, _FIRST, SKIP_RECORD)
+    return None if v is None else make_cubic(v[0], v[1], v[2], v[3], v[4], el.sourceline)
+
+
+def cubics(ctx: Context, parent: etree._Element, tag: str) -> Profile:
+    """The ``<tag s a b c d>`` records under ``parent``, checked for order."""
+    out = []
+    for rec in parent:
+        if rec.tag == tag:
+            record = cubic(ctx, rec)
+            if record is not None:
+                out.append(record)
+    if len(out) > 1:
+        ctx.check_order(out, f"<{tag}>", parent)
+    return tuple(out)

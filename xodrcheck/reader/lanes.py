@@ -1,0 +1,232 @@
+"""``<lanes>`` to the laneOffset profile and :class:`~xodrcheck.model.LaneSection` values.
+
+Records inside a lane (width, border, roadMark, speed) keep ``s`` = their ``sOffset``. A lane without a usable integer
+``id`` is skipped (links name lanes by id); a lane whose type is unknown is kept as ``LaneType.UNKNOWN``.
+"""
+
+from __future__ import annotations
+
+from lxml import etree
+
+from xodrcheck.model import Cubic, Lane, LaneSection, LaneType, Profile, RoadMark, Speed
+from xodrcheck.reader.construct import (
+    make_lane,
+    make_lane_section,
+    make_road_mark,
+    make_speed,
+)
+from xodrcheck.reader.context import SKIP_RECORD, Context, cubic, describe
+from xodrcheck.rules import xml as R
+
+#: Lane type spellings (lower case) -> type. Every spelling of every version is the standard's name in lower case.
+LANE_TYPES = {t.value.lower(): t for t in LaneType if t is not LaneType.UNKNOWN}
+
+_BOOLEANS = {"true": True, "false": False}
+_SKIP_LANE = "the lane is skipped"
+
+
+def _lane_links(ctx: Context, el: etree._Element) -> tuple[tuple[int, ...], tuple[int, ...]]:
+    preds: list[int] = []
+    succs: list[int] = []
+    for child in el:
+        tag = child.tag
+        if tag == "predecessor":
+            target = preds
+        elif tag == "successor":
+            target = succs
+        else:
+            continue
+        raw = child.get("id")
+        try:
+            target.append(int(raw))  # type: ignore[arg-type]
+        except (TypeError, ValueError):
+            ctx.integer(child, "id", "the lane link is ignored")
+    return tuple(preds), tuple(succs)
+
+
+def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
+    get = el.get
+    try:
+        s = float(get("sOffset"))  # type: ignore[arg-type]
+        if s - s != 0.0 or s < 0.0:
+            raise ValueError
+    except (TypeError, ValueError):
+        s = ctx.number(el, "sOffset", SKIP_RECORD, nonneg=True)  # type: ignore[assignment]
+        if s is None:
+            return None
+    kind = get("type")
+    if kind is None:
+        ctx.missing(el, "type", SKIP_RECORD)
+        return None
+    width = get("width")
+    if width is not None:
+        width = ctx.number(el, "width", "the width is read as absent", nonneg=True)
+    return make_road_mark(s, kind, get("weight"), get("color"), width, get("laneChange"), el.sourceline)
+
+
+def _speed(ctx: Context, el: etree._Element) -> Speed | None:
+    v = ctx.floats(el, ("sOffset", "max"), (0, 1), SKIP_RECORD)
+    return None if v is None else make_speed(v[0], v[1], el.get("unit"), el.sourceline)
+
+
+def _lane_type(ctx: Context, el: etree._Element, name: str | None) -> LaneType:
+    if name is None:
+        ctx.missing(el, "type", "the lane type is read as unknown")
+        return LaneType.UNKNOWN
+    lane_type = LANE_TYPES.get(name.strip().lower())
+    if lane_type is None:
+        ctx.report(
+            R.UNKNOWN_LANE_TYPE,
+            f'{describe(el)} has type="{name}", which no OpenDRIVE version defines; the lane is kept with type '
+            "unknown and is not treated as drivable",
+            el,
+        )
+        return LaneType.UNKNOWN
+    return lane_type
+
+
+def _lane(ctx: Context, el: etree._Element) -> Lane | None:
+    get = el.get
+    try:
+        lane_id = int(get("id"))  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        ctx.integer(el, "id", _SKIP_LANE)
+        return None
+    ctx.lane = lane_id
+
+    type_name = get("type")
+    lane_type = LANE_TYPES.get(type_name)  # type: ignore[arg-type]
+    if lane_type is None:
+        lane_type = _lane_type(ctx, el, type_name)
+    level = get("level")
+    if level is not None:
+        level = _BOOLEANS.get(level)
+        if level is None:
+            level = bool(ctx.boolean(el, "level", "read as false, the standard's default"))
+    else:
+        level = False
+
+    preds: tuple[int, ...] = ()
+    succs: tuple[int, ...] = ()
+    link = None
+    widths: list[Cubic] = []
+    borders: list[Cubic] = []
+    marks: list[RoadMark] = []
+    speeds: list[Speed] = []
+    for child in el:
+        tag = child.tag
+        if tag == "roadMark":
+            mark = _road_mark(ctx, child)
+            if mark is not None:
+                marks.append(mark)
+        elif tag == "width" or tag == "border":
+            record = cubic(ctx, child, True)
+            if record is not None:
+                (widths if tag == "width" else borders).append(record)
+        elif tag == "link":
+            if link is not None:
+                ctx.repeated(child, link)
+            else:
+                link = child
+                preds, succs = _lane_links(ctx, child)
+        elif tag == "speed":
+            speed = _speed(ctx, child)
+            if speed is not None:
+                speeds.append(speed)
+    if len(widths) > 1:
+        ctx.check_order(widths, "<width>", el)
+    if len(borders) > 1:
+        ctx.check_order(borders, "<border>", el)
+    if len(marks) > 1:
+        ctx.check_order(marks, "<roadMark>", el)
+    if len(speeds) > 1:
+        ctx.check_order(speeds, "<speed>", el)
+    return make_lane(
+        lane_id,
+        lane_type,
+        level,
+        preds,
+        succs,
+        tuple(widths),
+        tuple(borders),
+        tuple(marks),
+        tuple(speeds),
+        "" if type_name is None else type_name,
+        el.sourceline,
+    )
+
+
+def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
+    try:
+        s = float(el.get("s"))  # type: ignore[arg-type]
+        if s - s != 0.0 or s < 0.0:
+            raise ValueError
+    except (TypeError, ValueError):
+        s = ctx.number(el, "s", "the lane section and its lanes are skipped", nonneg=True)  # type: ignore[assignment]
+        if s is None:
+            return None
+    single_side = None
+    if el.get("singleSide") is not None:
+        single_side = ctx.boolean(el, "singleSide", "read as absent")
+    ctx.section_s = s
+    left = center = right = ()
+    seen: dict[str, etree._Element] = {}
+    for child in el:
+        tag = child.tag
+        if tag == "left" or tag == "center" or tag == "right":
+            if tag in seen:
+                ctx.repeated(child, seen[tag])
+                continue
+            seen[tag] = child
+            built = []
+            for lane_el in child:
+                if lane_el.tag == "lane":
+                    lane = _lane(ctx, lane_el)
+                    if lane is not None:
+                        built.append(lane)
+            ctx.lane = None
+            lanes = tuple(built)
+            if tag == "right":
+                right = lanes
+            elif tag == "left":
+                left = lanes
+            else:
+                center = lanes
+    for lane in center:
+        if lane.id == 0:
+            break
+    else:
+        where = "its <center> has none" if "center" in seen else "it has no <center>"
+        ctx.report(
+            R.MISSING_ELEMENT,
+            f"{describe(el)} has no centre lane 0 ({where}); the other lanes are kept, measured from the "
+            "reference line (shifted by laneOffset)",
+            el,
+        )
+    ctx.section_s = None
+    return make_lane_section(s, single_side, left, center, right, el.sourceline)
+
+
+def build_lanes(ctx: Context, el: etree._Element) -> tuple[Profile, tuple[LaneSection, ...]]:
+    """The laneOffset profile and the lane sections of a road's ``<lanes>``."""
+    offsets = []
+    sections = []
+    seen = False
+    for child in el:
+        tag = child.tag
+        if tag == "laneSection":
+            seen = True
+            section = _section(ctx, child)
+            if section is not None:
+                sections.append(section)
+        elif tag == "laneOffset":
+            record = cubic(ctx, child)
+            if record is not None:
+                offsets.append(record)
+    if len(offsets) > 1:
+        ctx.check_order(offsets, "<laneOffset>", el)
+    if not seen:
+        ctx.report(R.MISSING_ELEMENT, f"{describe(el)} has no <laneSection>; the road has no lanes", el)
+    elif len(sections) > 1:
+        ctx.check_order(sections, "<laneSection>", el)
+    return tuple(offsets), tuple(sections)

@@ -1,0 +1,294 @@
+"""``<road>`` elements to :class:`~xodrcheck.model.Road`: attributes, links, plan view and road-level profiles.
+
+Lanes are built by :mod:`xodrcheck.reader.lanes`. What cannot be built is skipped with a finding; a road without an
+``id`` is skipped whole (nothing could refer to it), a road with an unusable ``length`` keeps the sum of its geometry
+lengths (and says so).
+"""
+
+from __future__ import annotations
+
+from lxml import etree
+
+from xodrcheck.findings import Severity
+from xodrcheck.model import (
+    ContactPoint,
+    ElementDir,
+    ElementType,
+    Geometry,
+    PRange,
+    Profile,
+    Road,
+    RoadLink,
+    TrafficRule,
+)
+from xodrcheck.reader.construct import (
+    make_arc,
+    make_line,
+    make_param_poly3,
+    make_poly3,
+    make_road,
+    make_road_link,
+    make_spiral,
+)
+from xodrcheck.reader.context import Context, cubics, describe
+from xodrcheck.reader.lanes import build_lanes
+from xodrcheck.rules import xml as R
+
+ELEMENT_TYPES = {"road": ElementType.ROAD, "junction": ElementType.JUNCTION}
+CONTACT_POINTS = {"start": ContactPoint.START, "end": ContactPoint.END}
+_ELEMENT_DIRS = {"+": ElementDir.PLUS, "-": ElementDir.MINUS}
+_TRAFFIC_RULES = {"rht": TrafficRule.RHT, "lht": TrafficRule.LHT}
+_P_RANGES = {"arclength": PRange.ARC_LENGTH, "normalized": PRange.NORMALIZED}
+
+_GEOMETRY = ("s", "x", "y", "hdg", "length")
+_GEOMETRY_NONNEG = (0, 4)
+_SPIRAL = ("curvStart", "curvEnd")
+_POLY3 = ("a", "b", "c", "d")
+_PARAM_POLY3 = ("aU", "bU", "cU", "dU", "aV", "bV", "cV", "dV")
+_NONE: tuple[int, ...] = ()
+#: Children of ``<geometry>`` that are not its shape.
+_GEOMETRY_EXTRAS = frozenset({"userData", "include", "dataQuality"})
+SKIP_GEOMETRY = "the geometry is skipped"
+
+
+# ---------------------------------------------------------------------------------------------------------- plan view
+def _line(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+    return make_line(head[0], head[1], head[2], head[3], head[4], line)
+
+
+def _arc(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+    k = ctx.number(kind, "curvature", SKIP_GEOMETRY)
+    return None if k is None else make_arc(head[0], head[1], head[2], head[3], head[4], k, line)
+
+
+def _spiral(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+    k = ctx.floats(kind, _SPIRAL, _NONE, SKIP_GEOMETRY)
+    return None if k is None else make_spiral(head[0], head[1], head[2], head[3], head[4], k[0], k[1], line)
+
+
+def _poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+    c = ctx.floats(kind, _POLY3, _NONE, SKIP_GEOMETRY)
+    return None if c is None else make_poly3(head[0], head[1], head[2], head[3], head[4], c[0], c[1], c[2], c[3], line)
+
+
+def _param_poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+    c = ctx.floats(kind, _PARAM_POLY3, _NONE, SKIP_GEOMETRY)
+    if c is None:
+        return None
+    p_range = PRange.NORMALIZED
+    raw = kind.get("pRange")
+    if raw is None:
+        then = (
+            "read as normalized (p in [0, 1]), the OpenDRIVE 1.4 default also used by libOpenDRIVE and esmini; "
+            "CARLA reads arcLength instead"
+        )
+        if ctx.version is not None and ctx.version < (1, 5):
+            ctx.missing(kind, "pRange", then, severity=Severity.INFO)
+        else:
+            ctx.missing(kind, "pRange", "it is required since OpenDRIVE 1.5; " + then)
+    else:
+        p_range = ctx.choice(kind, "pRange", _P_RANGES, SKIP_GEOMETRY)
+        if p_range is None:
+            return None
+    return make_param_poly3(head[0], head[1], head[2], head[3], head[4], *c, p_range=p_range, line=line)
+
+
+_KINDS = {"line": _line, "arc": _arc, "spiral": _spiral, "poly3": _poly3, "paramPoly3": _param_poly3}
+
+
+def _geometry(ctx: Context, el: etree._Element) -> Geometry | None:
+    head = ctx.floats(el, _GEOMETRY, _GEOMETRY_NONNEG, SKIP_GEOMETRY)
+    kind = None
+    unknown = None
+    for child in el:
+        tag = child.tag
+        if tag in _KINDS:
+            if kind is not None:
+                ctx.report(
+                    R.UNKNOWN_GEOMETRY,
+                    f"{describe(el)} has both <{kind.tag}> and <{tag}> (line {child.sourceline}); a geometry has "
+                    f"exactly one shape, so it is skipped",
+                    el,
+                )
+                return None
+            kind = child
+        elif unknown is None and isinstance(tag, str) and tag not in _GEOMETRY_EXTRAS:
+            unknown = child
+    if kind is None:
+        if unknown is not None:
+            why = f"has <{unknown.tag}> (line {unknown.sourceline}), which is not an OpenDRIVE geometry shape"
+        else:
+            why = "has no shape element"
+        ctx.report(
+            R.UNKNOWN_GEOMETRY,
+            f"{describe(el)} {why} (expected one of line, arc, spiral, poly3, paramPoly3); {SKIP_GEOMETRY}, "
+            "leaving a gap in the reference line",
+            el,
+        )
+        return None
+    if head is None:
+        return None
+    return _KINDS[kind.tag](ctx, kind, head, el.sourceline)
+
+
+def _plan_view(ctx: Context, el: etree._Element) -> tuple[Geometry, ...]:
+    out = []
+    seen = False
+    for g in el:
+        if g.tag == "geometry":
+            seen = True
+            geometry = _geometry(ctx, g)
+            if geometry is not None:
+                out.append(geometry)
+    if not seen:
+        ctx.report(R.MISSING_ELEMENT, f"{describe(el)} has no <geometry>; the road has no reference line", el)
+    elif len(out) > 1:
+        ctx.check_order(out, "<geometry>", el)
+    return tuple(out)
+
+
+# ---------------------------------------------------------------------------------------------------------- links
+def _road_link(ctx: Context, el: etree._Element) -> RoadLink | None:
+    then = "the link is ignored"
+    raw_type = el.get("elementType")
+    element_id = el.get("elementId")
+    if raw_type is None:
+        ctx.missing(el, "elementType", then)
+        return None
+    if element_id is None:
+        ctx.missing(el, "elementId", then)
+        return None
+    element_type = ELEMENT_TYPES.get(raw_type.strip().lower())
+    if element_type is None:
+        ctx.invalid(el, "elementType", raw_type, "which is not one of junction, road", then)
+        return None
+    contact = ctx.choice(el, "contactPoint", CONTACT_POINTS, "read as absent")
+    element_s = element_dir = None
+    if el.get("elementS") is not None:
+        element_s = ctx.number(el, "elementS", "read as absent", nonneg=True)
+    if el.get("elementDir") is not None:
+        element_dir = ctx.choice(el, "elementDir", _ELEMENT_DIRS, "read as absent")
+    return make_road_link(element_type, element_id, contact, element_s, element_dir, el.sourceline)
+
+
+def _links(ctx: Context, el: etree._Element) -> tuple[RoadLink | None, RoadLink | None]:
+    found: dict[str, etree._Element] = {}
+    for child in el:
+        tag = child.tag
+        if tag == "predecessor" or tag == "successor":
+            if tag in found:
+                ctx.repeated(child, found[tag])
+            else:
+                found[tag] = child
+    pred = found.get("predecessor")
+    succ = found.get("successor")
+    return (
+        None if pred is None else _road_link(ctx, pred),
+        None if succ is None else _road_link(ctx, succ),
+    )
+
+
+# ---------------------------------------------------------------------------------------------------------- road
+def _count(el: etree._Element, tag: str) -> int:
+    return sum(1 for _ in el.iterchildren(tag))
+
+
+#: Children of ``<road>`` that may appear at most once.
+_ONCE = frozenset({"link", "planView", "elevationProfile", "lateralProfile", "lanes", "objects", "signals"})
+
+
+def build_road(ctx: Context, el: etree._Element) -> Road | None:
+    """The road of ``el``, or ``None`` (with a finding) when it has no id."""
+    get = el.get
+    road_id = get("id")
+    if road_id is None:
+        ctx.missing(el, "id", "the road is skipped (nothing could refer to it)")
+        return None
+    ctx.road = road_id
+    try:
+        return _road(ctx, el, road_id)
+    finally:
+        ctx.road = None
+
+
+def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
+    get = el.get
+    first: dict[str, etree._Element] = {}
+    for child in el:
+        tag = child.tag
+        if tag in _ONCE:
+            if tag in first:
+                ctx.repeated(child, first[tag])
+            else:
+                first[tag] = child
+
+    pv = first.get("planView")
+    if pv is None:
+        ctx.report(R.MISSING_ELEMENT, f"{describe(el)} has no <planView>; the road has no reference line", el)
+        plan_view: tuple[Geometry, ...] = ()
+    else:
+        plan_view = _plan_view(ctx, pv)
+
+    raw = get("length")
+    try:
+        length = float(raw)  # type: ignore[arg-type]
+        valid = length - length == 0.0 and length >= 0.0
+    except (TypeError, ValueError):
+        valid = False
+    if not valid:
+        total = sum(g.length for g in plan_view)
+        length = ctx.number(el, "length", f"the sum of its geometry lengths ({total:g}) is used", nonneg=True)
+        length = total if length is None else length
+
+    raw_junction = get("junction")
+    if raw_junction is None:
+        ctx.missing(el, "junction", 'read as "-1" (not inside a junction)')
+        junction = None
+    else:
+        junction = None if raw_junction.strip() == "-1" else raw_junction
+        if junction is not None and not junction.strip():
+            ctx.invalid(el, "junction", raw_junction, 'which is empty', 'read as "-1" (not inside a junction)')
+            junction = None
+
+    rule = TrafficRule.RHT
+    if get("rule") is not None:
+        rule = ctx.choice(el, "rule", _TRAFFIC_RULES, "read as RHT, the standard's default") or TrafficRule.RHT
+
+    pred = succ = None
+    link = first.get("link")
+    if link is not None:
+        pred, succ = _links(ctx, link)
+
+    elevation = superelevation = ()
+    if "elevationProfile" in first:
+        elevation = cubics(ctx, first["elevationProfile"], "elevation")
+    if "lateralProfile" in first:
+        superelevation = cubics(ctx, first["lateralProfile"], "superelevation")
+
+    lanes = first.get("lanes")
+    if lanes is None:
+        ctx.report(R.MISSING_ELEMENT, f"{describe(el)} has no <lanes>; the road has no lanes", el)
+        lane_offset: Profile = ()
+        sections = ()
+    else:
+        lane_offset, sections = build_lanes(ctx, lanes)
+
+    objects = first.get("objects")
+    signals = first.get("signals")
+    return make_road(
+        road_id,
+        length,
+        junction,
+        get("name"),
+        rule,
+        pred,
+        succ,
+        plan_view,
+        elevation,
+        superelevation,
+        lane_offset,
+        sections,
+        0 if objects is None else _count(objects, "object"),
+        0 if signals is None else _count(signals, "signal"),
+        el.sourceline,
+    )

@@ -1,0 +1,55 @@
+"""JSON: ``{"files": [{"path", "version", "ok", "findings": [...]}], "summary": {...}}``.
+
+Every finding has the keys ``code name category severity message road lane s x y line`` (``null`` where a key does
+not apply), so consumers can rely on the shape.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from collections.abc import Sequence
+
+from xodrcheck.findings import Finding
+from xodrcheck.report import summary
+
+FINDING_KEYS = ("code", "name", "category", "severity", "message", "road", "lane", "s", "x", "y", "line")
+
+
+def _number(v):
+    return None if v is None or (isinstance(v, float) and not math.isfinite(v)) else v
+
+
+def finding_dict(f: Finding) -> dict:
+    return {
+        "code": f.code,
+        "name": f.name,
+        "category": f.category.value,
+        "severity": str(f.severity),
+        "message": f.message,
+        "road": f.road,
+        "lane": f.lane,
+        "s": _number(f.s),
+        "x": _number(f.x),
+        "y": _number(f.y),
+        "line": f.line,
+    }
+
+
+def document(reports: Sequence) -> dict:
+    return {
+        "files": [
+            {
+                "path": r.path,
+                "version": r.version,
+                "ok": r.ok,
+                "findings": [finding_dict(f) for f in r.findings],
+            }
+            for r in reports
+        ],
+        "summary": summary(reports),
+    }
+
+
+def render(reports: Sequence) -> str:
+    return json.dumps(document(reports), indent=2, allow_nan=False) + "\n"

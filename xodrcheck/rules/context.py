@@ -1,0 +1,306 @@
+"""What a check function receives: the document, the configuration, the raw file and cached lookups.
+
+A rule is a function ``rule(ctx: Context) -> Iterable[Finding]``. Everything here is computed on first use and cached
+for the other rules of the same file, so a rule pays only for what it asks.
+"""
+
+from __future__ import annotations
+
+import re
+import time
+from collections.abc import Mapping
+from dataclasses import dataclass
+from functools import cached_property
+from typing import TYPE_CHECKING
+
+from xodrcheck.config import Config, Tolerances
+from xodrcheck.model import (
+    Connection,
+    ContactPoint,
+    Document,
+    ElementType,
+    Junction,
+    JunctionType,
+    Lane,
+    LaneSection,
+    Road,
+    RoadLink,
+    TrafficRule,
+)
+
+if TYPE_CHECKING:  # pragma: no cover
+    from lxml import etree
+
+    from xodrcheck.lanes import RoadGeometry
+
+_XML_DECLARATION = re.compile(rb"<\?xml[^>]*\?>")
+
+
+def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
+    """The road's link at ``end``: its predecessor at the start, its successor at the end."""
+    return road.predecessor if end is ContactPoint.START else road.successor
+
+
+def other_end(end: ContactPoint) -> ContactPoint:
+    return ContactPoint.END if end is ContactPoint.START else ContactPoint.START
+
+
+def travel_direction(road: Road, lane_id: int) -> int:
+    """+1 when traffic on the lane runs along increasing s, -1 against it, 0 for the centre lane.
+
+    Right-hand traffic drives on the right lanes (negative ids) along s; left-hand traffic on the left lanes.
+    """
+    if lane_id == 0:
+        return 0
+    along = (lane_id < 0) == (road.rule is TrafficRule.RHT)
+    return 1 if along else -1
+
+
+@dataclass(frozen=True, slots=True)
+class Neighbour:
+    """A road touching another road's end.
+
+    ``contact`` is the end of ``road`` that touches; ``connection`` is the junction connection through which they
+    touch (``None`` for a direct road link).
+    """
+
+    road: Road
+    contact: ContactPoint
+    connection: Connection | None = None
+    junction: Junction | None = None
+
+
+class Context:
+    """One file being checked. Build it with the reader's document; rules only read from it."""
+
+    def __init__(
+        self,
+        document: Document,
+        config: Config | None = None,
+        path: str | None = None,
+        data: bytes | None = None,
+        deadline: float | None = None,
+    ) -> None:
+        self.document = document
+        self.config = config or Config()
+        self.path = path
+        #: The file's raw bytes (``None`` when the document was built in memory).
+        self.data = data
+        #: ``time.monotonic()`` value after which expensive rules should stop (``None``: no limit).
+        self.deadline = deadline
+        self._geometry: Mapping[str, RoadGeometry] | None = None
+
+    # ---------------------------------------------------------------------------------------------------- basics
+    @property
+    def tolerances(self) -> Tolerances:
+        return self.config.tolerances
+
+    @property
+    def version(self) -> tuple[int, int] | None:
+        return self.document.version
+
+    def version_at_least(self, minor: int) -> bool:
+        """True when the file declares OpenDRIVE 1.``minor`` or later."""
+        v = self.version
+        return v is not None and v >= (1, minor)
+
+    def out_of_time(self) -> bool:
+        return self.deadline is not None and time.monotonic() > self.deadline
+
+    @cached_property
+    def text(self) -> str | None:
+        """The file as text (UTF-8, undecodable bytes replaced)."""
+        return None if self.data is None else self.data.decode("utf-8", errors="replace")
+
+    @cached_property
+    def tree(self) -> etree._ElementTree | None:
+        """The file parsed safely with lxml (no entities resolved, no network), keeping source lines.
+
+        Where something precedes the XML declaration (which strict XML forbids, but CARLA and libOpenDRIVE accept),
+        the declaration is blanked out so the rest parses with unchanged line numbers. ``None`` when the file is not
+        well-formed (the reader reports why).
+        """
+        if self.data is None:
+            return None
+        from lxml import etree
+
+        parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=True)
+        data = self.data
+        match = _XML_DECLARATION.search(data, 0, 4096)
+        if match and match.start() > 0:
+            data = data[: match.start()] + b" " * (match.end() - match.start()) + data[match.end() :]
+        try:
+            return etree.ElementTree(etree.fromstring(data, parser))
+        except (etree.XMLSyntaxError, ValueError):
+            return None
+
+    # ---------------------------------------------------------------------------------------------------- geometry
+    def geometry(self, road_id: str) -> RoadGeometry | None:
+        """The evaluated geometry of a road (lazy, cached per road); ``None`` for an unknown road."""
+        if self._geometry is None:
+            from xodrcheck.lanes import geometry_of
+
+            self._geometry = geometry_of(self.document)
+        return self._geometry.get(road_id)
+
+    def lane_width(self, road: Road, section_index: int, lane_id: int, s: float) -> float | None:
+        """Width of a lane at absolute ``s`` of its section (``None`` when the lane gives neither width nor border).
+
+        Width records are evaluated directly; a lane described by border records needs the road geometry.
+        """
+        section = road.lane_sections[section_index]
+        lane = section.lane(lane_id)
+        if lane is None or lane_id == 0:
+            return None
+        import numpy as np
+
+        if lane.widths:
+            from xodrcheck.geometry import profile
+
+            return float(profile.evaluate(lane.widths, np.array([s]), origin=section.s)[0])
+        if lane.borders:
+            geometry = self.geometry(road.id)
+            if geometry is None:
+                return None
+            inner, outer = geometry.inner_outer(section_index, lane_id, np.array([s]))
+            return float(abs(np.asarray(outer)[0] - np.asarray(inner)[0]))
+        return None
+
+    def width_at_end(self, road: Road, section_index: int, lane_id: int, end: ContactPoint) -> float | None:
+        """Width of a lane at the start or end of its lane section."""
+        s = road.lane_sections[section_index].s if end is ContactPoint.START else road.section_end(section_index)
+        return self.lane_width(road, section_index, lane_id, s)
+
+    def zero_width_at(self, road: Road, section_index: int, lane_id: int, end: ContactPoint) -> bool | None:
+        """Whether a lane has (numerically) zero width at its section's start or end; ``None`` when unknown."""
+        width = self.width_at_end(road, section_index, lane_id, end)
+        return None if width is None else abs(width) < self.tolerances.zero_width
+
+    # ---------------------------------------------------------------------------------------------------- lookups
+    def road(self, road_id: str | None) -> Road | None:
+        return None if road_id is None else self.document.road_by_id.get(road_id)
+
+    def junction(self, junction_id: str | None) -> Junction | None:
+        return None if junction_id is None else self.document.junction_by_id.get(junction_id)
+
+    def junction_of(self, road: Road) -> Junction | None:
+        """The junction a road belongs to (its ``junction`` attribute), if that junction exists."""
+        return self.junction(road.junction)
+
+    @cached_property
+    def roads_in_junction(self) -> dict[str, tuple[Road, ...]]:
+        """Junction id -> roads whose ``junction`` attribute names it."""
+        out: dict[str, list[Road]] = {}
+        for road in self.document.roads:
+            if road.junction is not None:
+                out.setdefault(road.junction, []).append(road)
+        return {k: tuple(v) for k, v in out.items()}
+
+    @cached_property
+    def connections_by_incoming(self) -> dict[tuple[str, str], tuple[Connection, ...]]:
+        """(junction id, incoming road id) -> the junction's connections from that road."""
+        out: dict[tuple[str, str], list[Connection]] = {}
+        for junction in self.document.junctions:
+            for c in junction.connections:
+                if c.incoming_road is not None:
+                    out.setdefault((junction.id, c.incoming_road), []).append(c)
+        return {k: tuple(v) for k, v in out.items()}
+
+    @cached_property
+    def junction_lane_targets(self) -> dict[tuple[str, ContactPoint], frozenset[int]]:
+        """(connecting or linked road id, contact point) -> lanes some junction laneLink leads into there."""
+        out: dict[tuple[str, ContactPoint], set[int]] = {}
+        for junction in self.document.junctions:
+            for c in junction.connections:
+                target = self.connected_road_id(c)
+                if target is not None and c.contact_point is not None:
+                    out.setdefault((target, c.contact_point), set()).update(ll.to_lane for ll in c.lane_links)
+        return {k: frozenset(v) for k, v in out.items()}
+
+    @staticmethod
+    def section_index_at(road: Road, end: ContactPoint) -> int | None:
+        """Index of the lane section at a road's start or end (``None`` when the road has none)."""
+        if not road.lane_sections:
+            return None
+        return 0 if end is ContactPoint.START else len(road.lane_sections) - 1
+
+    def section_at(self, road: Road, end: ContactPoint) -> LaneSection | None:
+        index = self.section_index_at(road, end)
+        return None if index is None else road.lane_sections[index]
+
+    def lane_at(self, road: Road, end: ContactPoint, lane_id: int) -> Lane | None:
+        section = self.section_at(road, end)
+        return None if section is None else section.lane(lane_id)
+
+    @staticmethod
+    def connected_road_id(connection: Connection) -> str | None:
+        """The road a connection leads into: ``connectingRoad`` (default junctions) or ``linkedRoad`` (direct)."""
+        return connection.connecting_road if connection.connecting_road is not None else connection.linked_road
+
+    def incoming_contact(self, junction: Junction, connection: Connection) -> ContactPoint | None:
+        """Which end of the connection's incoming road touches the junction.
+
+        The incoming road's own link to the junction decides; when it links to the junction at both ends (or at
+        neither), the connecting road's link back to the incoming road at the connection's contact point decides.
+        """
+        incoming = self.road(connection.incoming_road)
+        if incoming is None:
+            return None
+        ends = [
+            end
+            for end in (ContactPoint.START, ContactPoint.END)
+            if (link := link_at(incoming, end)) is not None
+            and link.element_type is ElementType.JUNCTION
+            and link.element_id == junction.id
+        ]
+        if len(ends) == 1:
+            return ends[0]
+        connecting = self.road(self.connected_road_id(connection))
+        if connecting is not None and connection.contact_point is not None:
+            back = link_at(connecting, connection.contact_point)
+            if (
+                back is not None
+                and back.element_type is ElementType.ROAD
+                and back.element_id == incoming.id
+                and back.contact_point is not None
+            ):
+                return back.contact_point
+        return ends[0] if ends else None
+
+    def neighbours(self, road: Road, end: ContactPoint) -> tuple[Neighbour, ...]:
+        """The roads touching ``road`` at ``end``.
+
+        A link to a road gives that road at the link's contact point. A link to a junction gives, for each connection
+        whose incoming road is ``road`` (and touches the junction at ``end``), the connecting road (or, in a direct
+        junction, the linked road) at the connection's contact point; a direct junction also gives the incoming road
+        of each connection whose linked road is ``road`` at ``end``. Unknown targets give nothing (the reference rules
+        report them).
+        """
+        link = link_at(road, end)
+        if link is None:
+            return ()
+        if link.element_type is ElementType.ROAD:
+            target = self.road(link.element_id)
+            if target is None or link.contact_point is None:
+                return ()
+            return (Neighbour(target, link.contact_point),)
+        junction = self.junction(link.element_id)
+        if junction is None:
+            return ()
+        out = []
+        for connection in self.connections_by_incoming.get((junction.id, road.id), ()):
+            target = self.road(self.connected_road_id(connection))
+            if target is None or connection.contact_point is None:
+                continue
+            if self.incoming_contact(junction, connection) is not end:
+                continue
+            out.append(Neighbour(target, connection.contact_point, connection, junction))
+        if junction.type is JunctionType.DIRECT:  # a direct junction's links run both ways: also as the linked road
+            for connection in junction.connections:
+                if connection.linked_road != road.id or connection.contact_point is not end:
+                    continue
+                incoming = self.road(connection.incoming_road)
+                contact = self.incoming_contact(junction, connection) if incoming is not None else None
+                if incoming is not None and contact is not None:
+                    out.append(Neighbour(incoming, contact, connection, junction))
+        return tuple(out)

@@ -1,0 +1,425 @@
+"""Junction topology (``J0xx``): connections and their lane links, read from the model alone.
+
+Terms: a connection leads from its *incoming road* into a *connecting road* (default junctions) or a *linked road*
+(direct junctions) at the connection's ``contactPoint`` (the end of the connecting road that touches the incoming
+road). The incoming road touches the junction at the end whose link names the junction
+(:meth:`Context.incoming_contact`). A lane *travels into* the junction when its traffic runs toward that end.
+Whether connection lanes meet or cross in the plane is geometry (``J1xx``, :mod:`xodrcheck.rules.junction_geometry`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from xodrcheck.findings import Category, Severity
+from xodrcheck.model import (
+    Connection,
+    ContactPoint,
+    ElementType,
+    Junction,
+    JunctionLaneLink,
+    JunctionType,
+    LaneType,
+    Road,
+)
+from xodrcheck.rules.context import Context, link_at, travel_direction
+from xodrcheck.rules.registry import rule
+
+
+def _toward(end: ContactPoint) -> int:
+    """The travel direction (+1 along s, -1 against) that runs toward a road's ``end``."""
+    return 1 if end is ContactPoint.END else -1
+
+
+@dataclass(frozen=True, slots=True)
+class Resolved:
+    """A connection whose roads and ends are all known."""
+
+    junction: Junction
+    connection: Connection
+    incoming: Road
+    incoming_end: ContactPoint
+    target: Road
+    contact: ContactPoint
+
+
+def resolved_connections(ctx: Context) -> Iterator[Resolved]:
+    """Connections of default and direct junctions whose incoming and target roads exist, with their ends."""
+    for junction in ctx.document.junctions:
+        if junction.type is JunctionType.VIRTUAL:
+            continue
+        for c in junction.connections:
+            incoming = ctx.road(c.incoming_road)
+            target = ctx.road(ctx.connected_road_id(c))
+            if incoming is None or target is None or c.contact_point is None:
+                continue
+            end = ctx.incoming_contact(junction, c)
+            if end is None or not incoming.lane_sections or not target.lane_sections:
+                continue
+            if not _contact_agrees(junction, c, target):
+                continue  # reported by connection-contact-point; its lanes cannot be told apart
+            yield Resolved(junction, c, incoming, end, target, c.contact_point)
+
+
+def _contact_agrees(junction: Junction, c: Connection, target: Road) -> bool:
+    """Whether the target road's link at the connection's contact point names the incoming road (default junction)
+    or the junction (direct junction)."""
+    link = link_at(target, c.contact_point)
+    if link is None:
+        return False
+    if junction.type is JunctionType.DIRECT:
+        return link.element_type is ElementType.JUNCTION and link.element_id == junction.id
+    return link.element_type is ElementType.ROAD and link.element_id == c.incoming_road
+
+
+def _lanes_of(r: Resolved, ll: JunctionLaneLink, ctx: Context):
+    a = ctx.lane_at(r.incoming, r.incoming_end, ll.from_lane)
+    b = ctx.lane_at(r.target, r.contact, ll.to_lane)
+    return a, b
+
+
+@rule("J001", "junction-incoming-not-linked", Category.JUNCTION, Severity.ERROR)
+def junction_incoming_not_linked(ctx: Context):
+    """A connection's incoming road does not link to the junction.
+
+    Neither its predecessor nor its successor names the junction; in a direct junction the linked road must link to
+    it too.
+
+    Readers that walk from a road into its junction never find this connection.
+
+    Passes::
+
+        <road id="1" ...><link><successor elementType="junction" elementId="100"/></link>...</road>
+        <junction id="100"><connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"/></junction>
+
+    Fails (road 1 ends at road 10 directly)::
+
+        <road id="1" ...><link><successor elementType="road" elementId="10" contactPoint="start"/></link>...</road>
+        <junction id="100"><connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"/></junction>
+    """
+    for junction in ctx.document.junctions:
+        if junction.type is JunctionType.VIRTUAL:
+            continue  # a virtual junction's main road runs through it without linking to it
+        reported: set[str] = set()
+        for c in junction.connections:
+            names = [("incoming", c.incoming_road)]
+            if junction.type is JunctionType.DIRECT:
+                names.append(("linked", c.linked_road))
+            for role, road_id in names:
+                road = ctx.road(road_id)
+                if road is None or road.id in reported:
+                    continue
+                links = [link_at(road, end) for end in (ContactPoint.START, ContactPoint.END)]
+                if any(
+                    link is not None and link.element_type is ElementType.JUNCTION and link.element_id == junction.id
+                    for link in links
+                ):
+                    continue
+                reported.add(road.id)
+                yield junction_incoming_not_linked.finding(
+                    f"junction {junction.id} connection {c.id}: {role} road {road.id} does not link to the junction "
+                    f"(predecessor: {_describe(road.predecessor)}, successor: {_describe(road.successor)})",
+                    road=road.id,
+                    line=c.line or None,
+                )
+
+
+def _describe(link) -> str:
+    return "none" if link is None else f"{link.element_type.value} {link.element_id}"
+
+
+@rule("J002", "connection-contact-point", Category.JUNCTION, Severity.ERROR)
+def connection_contact_point(ctx: Context):
+    """A connection's ``contactPoint`` does not match the connecting road's links.
+
+    ``contactPoint="start"`` says the connecting road starts at the incoming road, so its predecessor must be the
+    incoming road; ``"end"`` says it ends there, so its successor must be (ASAM's
+    ``junctions.connection.start_along_linkage`` and ``end_opposite_linkage``). In a direct junction the linked road's
+    link at the contact point names the junction. A connection without ``contactPoint`` is reported too.
+
+    Passes::
+
+        <road id="10" junction="100"><link><predecessor elementType="road" elementId="1" contactPoint="end"/>...
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"/>
+
+    Fails (road 10 starts at road 1, not ends there)::
+
+        <road id="10" junction="100"><link><predecessor elementType="road" elementId="1" contactPoint="end"/>...
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="end"/>
+    """
+    for junction in ctx.document.junctions:
+        if junction.type is JunctionType.VIRTUAL:
+            continue
+        direct = junction.type is JunctionType.DIRECT
+        for c in junction.connections:
+            target = ctx.road(ctx.connected_road_id(c))
+            if target is None or c.incoming_road is None:
+                continue
+            at = f"junction {junction.id} connection {c.id}"
+            if c.contact_point is None:
+                yield connection_contact_point.finding(
+                    f"{at} has no contactPoint: which end of road {target.id} touches road {c.incoming_road}?",
+                    road=target.id, line=c.line or None,
+                )
+                continue
+            link = link_at(target, c.contact_point)
+            word = "predecessor" if c.contact_point is ContactPoint.START else "successor"
+            if direct:
+                if link is None or link.element_type is not ElementType.JUNCTION or link.element_id != junction.id:
+                    yield connection_contact_point.finding(
+                        f"{at}: contactPoint {c.contact_point.value} says linked road {target.id} meets the junction "
+                        f"at its {c.contact_point.value}, but its {word} is {_describe(link)}",
+                        road=target.id, line=c.line or None,
+                    )
+                continue
+            if link is not None and link.element_type is ElementType.ROAD and link.element_id == c.incoming_road:
+                continue
+            other = link_at(target, ContactPoint.END if c.contact_point is ContactPoint.START else ContactPoint.START)
+            hint = ""
+            if other is not None and other.element_type is ElementType.ROAD and other.element_id == c.incoming_road:
+                hint = f"; its other end is: contactPoint should be {'end' if word == 'predecessor' else 'start'}"
+            yield connection_contact_point.finding(
+                f"{at}: contactPoint {c.contact_point.value} says connecting road {target.id} "
+                f"{'starts' if c.contact_point is ContactPoint.START else 'ends'} at incoming road {c.incoming_road}, "
+                f"but its {word} is {_describe(link)}{hint}",
+                road=target.id, line=c.line or None,
+            )
+
+
+@rule("J003", "junction-lane-link-direction", Category.JUNCTION, Severity.ERROR)
+def junction_lane_link_direction(ctx: Context):
+    """A junction ``laneLink`` joins lanes whose traffic runs in opposite directions.
+
+    Traffic leaving the incoming lane into the junction must continue along the connecting lane away from the contact
+    point (or, for a link describing the other direction, both the other way). Which way a lane runs follows from its
+    side and its road's traffic rule (``RHT``: right lanes along s).
+
+    Passes (road 1 ends at the junction; road 10 starts there)::
+
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start">
+          <laneLink from="-1" to="-1"/></connection>
+
+    Fails::
+
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start">
+          <laneLink from="-1" to="1"/></connection>
+    """
+    for r in resolved_connections(ctx):
+        for ll in r.connection.lane_links:
+            a, b = _lanes_of(r, ll, ctx)
+            if a is None or b is None or a.id == 0 or b.id == 0 or LaneType.BIDIRECTIONAL in (a.type, b.type):
+                continue
+            into = travel_direction(r.incoming, a.id) == _toward(r.incoming_end)
+            onward = travel_direction(r.target, b.id) == -_toward(r.contact)
+            if into == onward:
+                continue
+            yield junction_lane_link_direction.finding(
+                f"junction {r.junction.id} connection {r.connection.id}: laneLink {ll.from_lane} -> {ll.to_lane} "
+                f"joins lane {a.id} of road {r.incoming.id}, which runs {'into' if into else 'out of'} the junction, "
+                f"to lane {b.id} of road {r.target.id}, which runs {'away from' if onward else 'toward'} road "
+                f"{r.incoming.id}: traffic would reverse where they meet",
+                road=r.incoming.id, lane=a.id, line=ll.line or r.connection.line or None,
+            )
+
+
+@rule("J004", "junction-lane-link-outbound", Category.JUNCTION, Severity.WARNING)
+def junction_lane_link_outbound(ctx: Context):
+    """A junction ``laneLink`` starts at a lane whose traffic leaves the junction.
+
+    A connection describes traffic arriving on the incoming road; its lane links go from lanes that travel into the
+    junction to lanes of the connecting road. Links from lanes that carry traffic out of the junction describe the
+    reverse direction, which belongs to the connection whose incoming road is the other end of that connecting road
+    (OpenDRIVE 1.7: "a connecting road shall only have the laneLink element for that direction"). A warning from 1.7
+    on; older files, written before the standard said so and often listing both directions, get an info.
+
+    Passes (right-hand traffic; road 1 ends at the junction, so lane -1 travels into it)::
+
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start">
+          <laneLink from="-1" to="-1"/></connection>
+
+    Fails (lane 1 of road 1 travels out of the junction)::
+
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start">
+          <laneLink from="1" to="1"/></connection>
+    """
+    severity = Severity.WARNING if ctx.version_at_least(7) else Severity.INFO
+    for r in resolved_connections(ctx):
+        for ll in r.connection.lane_links:
+            a = ctx.lane_at(r.incoming, r.incoming_end, ll.from_lane)
+            if a is None or a.id == 0 or a.type is LaneType.BIDIRECTIONAL:
+                continue
+            if travel_direction(r.incoming, a.id) == _toward(r.incoming_end):
+                continue
+            yield junction_lane_link_outbound.finding(
+                f"junction {r.junction.id} connection {r.connection.id}: laneLink {ll.from_lane} -> {ll.to_lane} "
+                f"starts at lane {a.id} of road {r.incoming.id}, whose traffic ({r.incoming.rule.value}) leaves the "
+                "junction; list only lanes that enter it",
+                severity=severity, road=r.incoming.id, lane=a.id, line=ll.line or r.connection.line or None,
+            )
+
+
+@rule("J005", "incoming-lane-unconnected", Category.JUNCTION, Severity.ERROR)
+def incoming_lane_unconnected(ctx: Context):
+    """A drivable lane that travels into a junction has no ``laneLink`` in it: its traffic reaches a dead end.
+
+    Every road linking to the junction is checked, whether or not a connection names it. Roads with a connection
+    that has no laneLink at all are skipped (which lanes such a connection joins is not stated), and so are lanes of
+    zero width at the junction and ``bidirectional`` lanes (shared centre lanes that often end at a junction).
+
+    Passes::
+
+        <road id="1"> <link><successor elementType="junction" elementId="100"/></link>
+          ... <right><lane id="-1" type="driving">...</right>
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"><laneLink from="-1" to="-1"/>
+
+    Fails (road 1 has two lanes into the junction; only lane -1 is linked)::
+
+        <road id="1"> <link><successor elementType="junction" elementId="100"/></link>
+          ... <right><lane id="-1" type="driving">...<lane id="-2" type="driving">...</right>
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"><laneLink from="-1" to="-1"/>
+    """
+    linked: dict[tuple[str, str], set[int]] = {}
+    implicit: set[tuple[str, str]] = set()
+    for junction in ctx.document.junctions:
+        for c in junction.connections:
+            if c.incoming_road is None:
+                continue
+            key = (junction.id, c.incoming_road)
+            if not c.lane_links:
+                implicit.add(key)
+            linked.setdefault(key, set()).update(ll.from_lane for ll in c.lane_links)
+    for road in ctx.document.roads:
+        if road.junction is not None or not road.lane_sections:
+            continue
+        for end in (ContactPoint.START, ContactPoint.END):
+            link = link_at(road, end)
+            if link is None or link.element_type is not ElementType.JUNCTION:
+                continue
+            junction = ctx.junction(link.element_id)
+            if junction is None or junction.type is JunctionType.VIRTUAL or (junction.id, road.id) in implicit:
+                continue
+            index = ctx.section_index_at(road, end)
+            section = road.lane_sections[index]
+            have = linked.get((junction.id, road.id), set())
+            for lane in section.lanes:
+                if lane.id == 0 or not lane.drivable or lane.type is LaneType.BIDIRECTIONAL or lane.id in have:
+                    continue
+                if travel_direction(road, lane.id) != _toward(end):
+                    continue
+                if ctx.zero_width_at(road, index, lane.id, end) is not False:
+                    continue
+                yield incoming_lane_unconnected.finding(
+                    f"road {road.id} lane {lane.id} ({lane.type.value}) runs into junction {junction.id} at the "
+                    f"road's {end.value}, but no laneLink of the junction starts at it",
+                    road=road.id, lane=lane.id, section_s=section.s,
+                    s=section.s if end is ContactPoint.START else road.length, line=lane.line or None,
+                )
+
+
+@rule("J006", "junction-merge", Category.JUNCTION, Severity.ERROR)
+def junction_merge(ctx: Context):
+    """Two different incoming lanes are linked into the same lane of a connecting road at the same end.
+
+    A connecting lane starts at one incoming lane; two lanes cannot both continue into its start. (Connecting lanes
+    from different approaches that end in the same outgoing lane are normal: traffic merges there under the
+    junction's priorities, and is not reported. Connecting lanes of one approach that meet inside the junction are
+    a geometric matter, for the junction geometry rules.)
+
+    Passes::
+
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"><laneLink from="-1" to="-1"/>
+        <connection id="1" incomingRoad="1" connectingRoad="11" contactPoint="start"><laneLink from="-2" to="-1"/>
+
+    Fails (lanes -1 and -2 both into lane -1 of road 10)::
+
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start">
+          <laneLink from="-1" to="-1"/><laneLink from="-2" to="-1"/></connection>
+    """
+    sources: dict[tuple[str, str, ContactPoint, int], list] = {}
+    for r in resolved_connections(ctx):
+        for ll in r.connection.lane_links:
+            key = (r.junction.id, r.target.id, r.contact, ll.to_lane)
+            sources.setdefault(key, []).append((r.connection, ll))
+    for (junction_id, target, contact, lane_id), links in sources.items():
+        distinct = {(c.incoming_road, ll.from_lane) for c, ll in links}
+        if len(distinct) < 2:
+            continue
+        names = ", ".join(f"road {road} lane {lane}" for road, lane in sorted(distinct))
+        c, ll = links[1]
+        yield junction_merge.finding(
+            f"junction {junction_id}: lane {lane_id} of road {target} at its {contact.value} is entered from "
+            f"{len(distinct)} lanes ({names}); give each incoming lane its own connecting lane",
+            road=target, lane=lane_id, line=ll.line or c.line or None,
+        )
+
+
+@rule("J007", "connection-duplicate", Category.JUNCTION, Severity.ERROR)
+def connection_duplicate(ctx: Context):
+    """A connecting road appears in more than one connection from the same incoming road.
+
+    In OpenDRIVE 1.7 files: in more than one connection at all.
+
+    Each connecting road is represented by at most one connection per incoming road (1.8; ASAM's
+    ``junctions.connection.one_link_to_incoming``); 1.7 allowed exactly one connection per connecting road
+    (``one_connection_element``). Readers keep one of the duplicates and lose the other's lane links.
+
+    Passes::
+
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"><laneLink from="-1" to="-1"/>
+
+    Fails::
+
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"><laneLink from="-1" to="-1"/>
+        <connection id="1" incomingRoad="1" connectingRoad="10" contactPoint="start"><laneLink from="-2" to="-2"/>
+    """
+    one_per_road = ctx.version == (1, 7)
+    for junction in ctx.document.junctions:
+        first_pair: dict[tuple[str | None, str], Connection] = {}
+        first_road: dict[str, Connection] = {}
+        for c in junction.connections:
+            if c.connecting_road is None:
+                continue
+            pair = (c.incoming_road, c.connecting_road)
+            if pair in first_pair:
+                yield connection_duplicate.finding(
+                    f"junction {junction.id}: connections {first_pair[pair].id} and {c.id} both lead from road "
+                    f"{c.incoming_road} into connecting road {c.connecting_road}; merge them",
+                    road=c.connecting_road, line=c.line or None,
+                )
+            elif one_per_road and c.connecting_road in first_road:
+                yield connection_duplicate.finding(
+                    f"junction {junction.id}: connecting road {c.connecting_road} is in connections "
+                    f"{first_road[c.connecting_road].id} and {c.id}; OpenDRIVE 1.7 allows one connection per "
+                    "connecting road",
+                    road=c.connecting_road, line=c.line or None,
+                )
+            first_pair.setdefault(pair, c)
+            first_road.setdefault(c.connecting_road, c)
+
+
+@rule("J008", "connecting-road-is-incoming", Category.JUNCTION, Severity.ERROR)
+def connecting_road_is_incoming(ctx: Context):
+    """A road is the connecting road of one connection and the incoming road of another.
+
+    Connecting roads lie inside their junction and join incoming roads; they are never incoming roads themselves
+    (ASAM's ``junctions.connection.connect_road_no_incoming_road``).
+
+    Passes::
+
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"/>
+
+    Fails::
+
+        <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"/>
+        <connection id="1" incomingRoad="10" connectingRoad="11" contactPoint="start"/>
+    """
+    connecting = {c.connecting_road for j in ctx.document.junctions for c in j.connections if c.connecting_road}
+    for junction in ctx.document.junctions:
+        for c in junction.connections:
+            if c.incoming_road is not None and c.incoming_road in connecting:
+                yield connecting_road_is_incoming.finding(
+                    f"junction {junction.id} connection {c.id}: incoming road {c.incoming_road} is also a connecting "
+                    "road",
+                    road=c.incoming_road, line=c.line or None,
+                )

@@ -1,0 +1,424 @@
+"""Lane topology (``L0xx``): centre lanes, lane ids, and lane links across lane sections and road links.
+
+A *joint* is where the lanes of one lane section end and those of another begin: between two lane sections of a
+road, or at a road link between two roads. Seen from one side, a joint is (this road, section, end) touching
+(the other road, section, end); lane links at that end (``predecessor`` at a start, ``successor`` at an end) name
+lanes of the other side. Joints into a junction are the junction's (its ``laneLink`` elements, see
+:mod:`xodrcheck.rules.junction`); a connecting road's own links to the roads it joins are joints like any other.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from xodrcheck.findings import Category, Severity
+from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, LaneType, Road
+from xodrcheck.rules.context import Context, link_at, travel_direction
+from xodrcheck.rules.registry import rule
+
+_WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}
+
+
+@dataclass(frozen=True, slots=True)
+class Side:
+    """One side of a joint: a lane section of a road, at its start or end."""
+
+    road: Road
+    index: int
+    end: ContactPoint
+
+    @property
+    def section(self) -> LaneSection:
+        return self.road.lane_sections[self.index]
+
+    @property
+    def s(self) -> float:
+        return self.section.s if self.end is ContactPoint.START else self.road.section_end(self.index)
+
+    def links(self, lane: Lane) -> tuple[int, ...]:
+        """The lane's links across this end."""
+        return lane.predecessors if self.end is ContactPoint.START else lane.successors
+
+    def describe(self) -> str:
+        return f"road {self.road.id} lane section s={self.section.s:g}"
+
+    def where(self, lane_id: int) -> dict:
+        return {"road": self.road.id, "lane": lane_id, "section_s": self.section.s, "s": self.s}
+
+
+@dataclass(frozen=True, slots=True)
+class Joint:
+    mine: Side
+    other: Side
+    #: Whether the other side's links at this joint point back here (always inside a road; at a road link when the
+    #: other road links back to this one).
+    mutual: bool
+
+    @property
+    def same_orientation(self) -> bool:
+        """Whether the two sides' s run the same way through the joint (an end meeting a start)."""
+        return self.mine.end is not self.other.end
+
+
+def joints(ctx: Context) -> Iterator[Joint]:
+    """Every joint, once from each side that has lanes."""
+    for road in ctx.document.roads:
+        sections = road.lane_sections
+        for i in range(len(sections) - 1):
+            yield Joint(Side(road, i, ContactPoint.END), Side(road, i + 1, ContactPoint.START), True)
+            yield Joint(Side(road, i + 1, ContactPoint.START), Side(road, i, ContactPoint.END), True)
+        if not sections:
+            continue
+        for end in (ContactPoint.START, ContactPoint.END):
+            link = link_at(road, end)
+            if link is None or link.element_type is not ElementType.ROAD or link.contact_point is None:
+                continue
+            target = ctx.road(link.element_id)
+            if target is None or not target.lane_sections:
+                continue
+            back = link_at(target, link.contact_point)
+            mutual = back is not None and back.element_type is ElementType.ROAD and back.element_id == road.id
+            yield Joint(
+                Side(road, ctx.section_index_at(road, end), end),
+                Side(target, ctx.section_index_at(target, link.contact_point), link.contact_point),
+                mutual,
+            )
+
+
+def side_lanes(section: LaneSection) -> tuple[Lane, ...]:
+    return tuple(lane for lane in section.lanes if lane.id != 0)
+
+
+def pair_key(a: Side, a_id: int, b: Side, b_id: int) -> frozenset:
+    return frozenset({(a.road.id, a.index, a.end, a_id), (b.road.id, b.index, b.end, b_id)})
+
+
+# ------------------------------------------------------------------------------------------------ centre lane, ids
+@rule("L001", "centre-lane-invalid", Category.LANE, Severity.ERROR)
+def centre_lane_invalid(ctx: Context):
+    """The ``<center>`` of a lane section does not hold exactly the one lane 0, or lane 0 is on a side.
+
+    Lane 0 is the reference line of the lanes (the standard: "the center lane ... shall have the id 0 and no width").
+    (A lane section without any centre lane is reported while reading, as ``missing-element``.)
+
+    Passes::
+
+        <center><lane id="0" type="none"/></center>
+
+    Fails::
+
+        <center><lane id="0" type="none"/><lane id="1" type="none"/></center>
+    """
+    for road in ctx.document.roads:
+        for section in road.lane_sections:
+            here = f"road {road.id} lane section s={section.s:g}"
+            where = {"road": road.id, "section_s": section.s, "s": section.s}
+            for lane in section.center:
+                if lane.id != 0:
+                    yield centre_lane_invalid.finding(
+                        f"{here}: the centre holds lane {lane.id}; only lane 0 belongs there",
+                        lane=lane.id, line=lane.line or None, **where,
+                    )
+            zeros = [lane for lane in section.center if lane.id == 0]
+            for lane in zeros[1:]:
+                yield centre_lane_invalid.finding(
+                    f"{here}: more than one centre lane 0", lane=0, line=lane.line or None, **where
+                )
+            for lane in (*section.left, *section.right):
+                if lane.id == 0:
+                    yield centre_lane_invalid.finding(
+                        f"{here}: lane 0 is under <left>/<right>; it belongs in <center>",
+                        lane=0, line=lane.line or None, **where,
+                    )
+
+
+@rule("L002", "centre-lane-width", Category.LANE, Severity.ERROR)
+def centre_lane_width(ctx: Context):
+    """The centre lane 0 has ``<width>`` or ``<border>`` records: it has no width by definition.
+
+    Readers ignore them, so the writer's idea of the lane layout and the readers' differ.
+
+    Passes::
+
+        <center><lane id="0" type="none"><roadMark sOffset="0" type="solid"/></lane></center>
+
+    Fails::
+
+        <center><lane id="0" type="none"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></center>
+    """
+    for road in ctx.document.roads:
+        for section in road.lane_sections:
+            for lane in section.center:
+                if lane.id == 0 and (lane.widths or lane.borders):
+                    record = (lane.widths or lane.borders)[0]
+                    kind = "width" if lane.widths else "border"
+                    yield centre_lane_width.finding(
+                        f"road {road.id} lane section s={section.s:g}: the centre lane 0 has a <{kind}> record; "
+                        "remove it (lane 0 has no width)",
+                        road=road.id, lane=0, section_s=section.s, s=section.s + record.s,
+                        line=record.line or lane.line or None,
+                    )
+
+
+@rule("L003", "lane-id-sequence", Category.LANE, Severity.ERROR)
+def lane_id_sequence(ctx: Context):
+    """Lane ids of a side are not 1, 2, 3... (left) or -1, -2, -3... (right) without gaps, or sit on the wrong side.
+
+    Readers number lanes outward from the centre and place each lane outside the previous id; a gap or a positive id
+    under ``<right>`` makes them disagree about where a lane is.
+
+    Passes::
+
+        <left><lane id="2" .../><lane id="1" .../></left> <right><lane id="-1" .../><lane id="-2" .../></right>
+
+    Fails (no lane -1)::
+
+        <right><lane id="-2" type="driving">...</lane></right>
+    """
+    for road in ctx.document.roads:
+        for section in road.lane_sections:
+            here = f"road {road.id} lane section s={section.s:g}"
+            where = {"road": road.id, "section_s": section.s, "s": section.s}
+            for name, lanes, sign in (("left", section.left, 1), ("right", section.right, -1)):
+                wrong = [lane for lane in lanes if lane.id * sign <= 0]
+                for lane in wrong:
+                    if lane.id != 0:  # lane 0 on a side: centre-lane-invalid
+                        yield lane_id_sequence.finding(
+                            f"{here}: lane {lane.id} is under <{name}>; {name} lane ids are "
+                            f"{'positive' if sign > 0 else 'negative'}",
+                            lane=lane.id, line=lane.line or None, **where,
+                        )
+                ids = sorted({abs(lane.id) for lane in lanes if lane.id * sign > 0})
+                missing = [i for i in range(1, (ids[-1] if ids else 0) + 1) if i not in ids]
+                if missing:
+                    first = next(lane for lane in lanes if lane.id * sign > 0)
+                    yield lane_id_sequence.finding(
+                        f"{here}: {name} lanes skip id(s) {', '.join(str(i * sign) for i in missing)}",
+                        lane=missing[0] * sign, line=first.line or None, **where,
+                    )
+
+
+# ------------------------------------------------------------------------------------------------ links at joints
+#: Lane types that carry traffic other than motor vehicles: a break in them is a warning.
+_OTHER_TRAFFIC = frozenset(
+    {LaneType.SIDEWALK, LaneType.WALKING, LaneType.BIKING, LaneType.TRAM, LaneType.RAIL, LaneType.PARKING}
+)
+
+
+def _continuity_severity(lane: Lane) -> Severity:
+    if lane.drivable:
+        return Severity.ERROR
+    return Severity.WARNING if lane.type in _OTHER_TRAFFIC else Severity.INFO
+@rule("L010", "lane-not-continued", Category.LANE, Severity.ERROR)
+def lane_not_continued(ctx: Context):
+    """A lane of non-zero width ends at a joint without a lane link to the other side.
+
+    Where a lane section ends and another begins (inside a road, or at a road link), every lane that has width there
+    must be linked across: by its own ``predecessor``/``successor``, by the other side's link back to it, or, for a
+    connecting road at the road it leaves, by a junction ``laneLink``. A lane may start or end without one only at
+    zero width (a lane that opens or closes). Otherwise a full-width lane appears or vanishes at the joint: traffic on
+    it has nowhere to come from or go to. An error for drivable lanes, a warning for sidewalks, bike, tram, rail and
+    parking lanes, an info for the rest (``none``, ``border``, ``shoulder``...), which carry no traffic.
+
+    Passes (lane -2 opens from zero width)::
+
+        <laneSection s="0"><right><lane id="-1" ...><link><successor id="-1"/></link>...</lane></right></laneSection>
+        <laneSection s="50"><right>
+          <lane id="-1" ...><link><predecessor id="-1"/></link>...</lane>
+          <lane id="-2" ...><width sOffset="0" a="0" b="0.1" c="0" d="0"/></lane>
+        </right></laneSection>
+
+    Fails (lane -2 appears at full width)::
+
+        <laneSection s="50"><right>
+          <lane id="-1" ...><link><predecessor id="-1"/></link>...</lane>
+          <lane id="-2" ...><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
+        </right></laneSection>
+    """
+    for joint in joints(ctx):
+        mine, other = joint.mine, joint.other
+        back_named: set[int] = set()
+        if joint.mutual:
+            for lane in side_lanes(other.section):
+                back_named.update(other.links(lane))
+        from_junction = ctx.junction_lane_targets.get((mine.road.id, mine.end), frozenset()) if (
+            mine.road.junction is not None and mine.index == ctx.section_index_at(mine.road, mine.end)
+        ) else frozenset()
+        for lane in side_lanes(mine.section):
+            if mine.links(lane) or lane.id in back_named or lane.id in from_junction:
+                continue
+            if ctx.zero_width_at(mine.road, mine.index, lane.id, mine.end) is not False:
+                continue  # zero width there (a lane opening or closing), or no width at all
+            width = ctx.width_at_end(mine.road, mine.index, lane.id, mine.end)
+            across = "the next lane section" if mine.road is other.road else f"road {other.road.id}"
+            yield lane_not_continued.finding(
+                f"{mine.describe()}: lane {lane.id} ({lane.type.value}, {width:.2f} m wide at its "
+                f"{mine.end.value}) has no {_WORD[mine.end]} in {across}; link it, or let it "
+                f"{'open' if mine.end is ContactPoint.START else 'close'} at zero width",
+                severity=_continuity_severity(lane),
+                line=lane.line or None,
+                **mine.where(lane.id),
+            )
+
+
+@rule("L011", "lane-link-not-reciprocal", Category.LANE, Severity.ERROR)
+def lane_link_not_reciprocal(ctx: Context):
+    """A lane link is not returned: lane A's successor is lane B, but B's predecessor does not name A.
+
+    Applies between the lane sections of a road and across road links where both roads link to each other (ASAM's
+    ``road.lane.link.lanes_across_lane_sections``). Readers that follow links from one side only see different
+    lane graphs.
+
+    Passes::
+
+        <laneSection s="0">  ... <lane id="-1"><link><successor id="-1"/></link>...
+        <laneSection s="50"> ... <lane id="-1"><link><predecessor id="-1"/></link>...
+
+    Fails::
+
+        <laneSection s="0">  ... <lane id="-1"><link><successor id="-1"/></link>...
+        <laneSection s="50"> ... <lane id="-1"><link/>...
+    """
+    for joint in joints(ctx):
+        if not joint.mutual:
+            continue
+        mine, other = joint.mine, joint.other
+        for lane in side_lanes(mine.section):
+            for target_id in mine.links(lane):
+                target = other.section.lane(target_id)
+                if target is None or target_id == 0 or lane.id in other.links(target):
+                    continue
+                yield lane_link_not_reciprocal.finding(
+                    f"{mine.describe()}: lane {lane.id}'s {_WORD[mine.end]} is lane {target_id} of "
+                    f"{other.describe()}, but that lane's {_WORD[other.end]} does not name lane {lane.id}",
+                    line=target.line or None,
+                    **other.where(target_id),
+                )
+
+
+@rule("L012", "lane-link-direction", Category.LANE, Severity.ERROR)
+def lane_link_direction(ctx: Context):
+    """A lane link joins lanes whose traffic runs in opposite directions.
+
+    Inside a road and where a road's end meets the next road's start, right lanes continue right lanes and left lanes
+    left lanes. Where two starts or two ends meet, the reference lines run against each other and right lanes continue
+    left lanes. Each road's traffic rule (``rule="RHT"``/``"LHT"``) says which side drives along s.
+
+    Passes (road 2 starts at road 1's start)::
+
+        <road id="1"><link><predecessor elementType="road" elementId="2" contactPoint="start"/></link>
+          ... <lane id="-1"><link><predecessor id="1"/></link>...
+
+    Fails::
+
+        <road id="1"><link><predecessor elementType="road" elementId="2" contactPoint="start"/></link>
+          ... <lane id="-1"><link><predecessor id="-1"/></link>...
+    """
+    seen: set = set()
+    for joint in joints(ctx):
+        mine, other = joint.mine, joint.other
+        for lane in side_lanes(mine.section):
+            for target_id in mine.links(lane):
+                target = other.section.lane(target_id)
+                if target is None or target_id == 0:
+                    continue
+                a = travel_direction(mine.road, lane.id)
+                b = travel_direction(other.road, target_id)
+                if (a == b) == joint.same_orientation:
+                    continue
+                key = pair_key(mine, lane.id, other, target_id)
+                if key in seen:
+                    continue
+                seen.add(key)
+                yield lane_link_direction.finding(
+                    f"{mine.describe()}: lane {lane.id}'s {_WORD[mine.end]} is lane {target_id} of "
+                    f"{other.describe()}, whose traffic runs the other way "
+                    f"({'an end meets a start' if joint.same_orientation else f'two {mine.end.value}s meet'})",
+                    line=lane.line or None,
+                    **mine.where(lane.id),
+                )
+
+
+def _zero_width_severity(ctx: Context) -> Severity:
+    return Severity.ERROR if ctx.version_at_least(7) else Severity.WARNING
+
+
+@rule("L013", "zero-width-lane-linked", Category.LANE, Severity.ERROR)
+def zero_width_lane_linked(ctx: Context):
+    """A lane is linked where it has zero width: a lane that opens or closes is linked to a neighbour's lane.
+
+    OpenDRIVE 1.7: "lanes that have a width of zero at the beginning of the lane section shall have no predecessor"
+    (and at the end no successor), and "if a new lane appears besides, only the continuing lane shall be connected to
+    the original lane, not the appearing lane" (ASAM's ``zero_width_at_start``, ``zero_width_at_end``,
+    ``new_lane_appear``). Junction laneLinks count as links. An error from 1.7 on, a warning for older files.
+
+    Passes (lane -1 continues into lane -1; lane -2 opens without a predecessor)::
+
+        <lane id="-1"><link><successor id="-1"/></link>...</lane>
+        ... next section: <lane id="-2"><width sOffset="0" a="0" b="0.1" c="0" d="0"/></lane>
+
+    Fails (lane -1 is linked to the opening lane -2)::
+
+        <lane id="-1"><link><successor id="-2"/></link>...</lane>
+        ... next section: <lane id="-2"><width sOffset="0" a="0" b="0.1" c="0" d="0"/></lane>
+    """
+    severity = _zero_width_severity(ctx)
+    seen: set = set()
+    for joint in joints(ctx):
+        mine, other = joint.mine, joint.other
+        for lane in side_lanes(mine.section):
+            targets = [t for t in mine.links(lane) if t != 0 and other.section.lane(t) is not None]
+            if not targets:
+                continue
+            if ctx.zero_width_at(mine.road, mine.index, lane.id, mine.end):
+                key = (mine.road.id, mine.index, mine.end, lane.id)
+                if key not in seen:
+                    seen.add(key)
+                    yield zero_width_lane_linked.finding(
+                        f"{mine.describe()}: lane {lane.id} has zero width at its {mine.end.value} but a "
+                        f"{_WORD[mine.end]} (lane {', '.join(map(str, targets))}); a lane that "
+                        f"{'opens' if mine.end is ContactPoint.START else 'closes'} has none",
+                        severity=severity, line=lane.line or None, **mine.where(lane.id),
+                    )
+                continue
+            for target_id in targets:
+                key = (other.road.id, other.index, other.end, target_id)
+                if key in seen or not ctx.zero_width_at(other.road, other.index, target_id, other.end):
+                    continue
+                seen.add(key)
+                yield zero_width_lane_linked.finding(
+                    f"{mine.describe()}: lane {lane.id}'s {_WORD[mine.end]} is lane {target_id} of "
+                    f"{other.describe()}, which has zero width there (it "
+                    f"{'opens' if other.end is ContactPoint.START else 'closes'}); link the continuing lane instead",
+                    severity=severity, line=lane.line or None, **mine.where(lane.id),
+                )
+    yield from _zero_width_junction_links(ctx, severity)
+
+
+def _zero_width_junction_links(ctx: Context, severity: Severity):
+    for junction in ctx.document.junctions:
+        for c in junction.connections:
+            incoming = ctx.road(c.incoming_road)
+            target = ctx.road(ctx.connected_road_id(c))
+            if incoming is None or target is None or c.contact_point is None or not target.lane_sections:
+                continue
+            in_end = ctx.incoming_contact(junction, c)
+            if in_end is None or not incoming.lane_sections:
+                continue
+            in_index = ctx.section_index_at(incoming, in_end)
+            to_index = ctx.section_index_at(target, c.contact_point)
+            for ll in c.lane_links:
+                for road, index, end, lane_id in (
+                    (incoming, in_index, in_end, ll.from_lane),
+                    (target, to_index, c.contact_point, ll.to_lane),
+                ):
+                    if lane_id == 0 or road.lane_sections[index].lane(lane_id) is None:
+                        continue
+                    if ctx.zero_width_at(road, index, lane_id, end):
+                        yield zero_width_lane_linked.finding(
+                            f"junction {junction.id} connection {c.id}: laneLink {ll.from_lane} -> {ll.to_lane} "
+                            f"uses lane {lane_id} of road {road.id}, which has zero width at its {end.value}",
+                            severity=severity, road=road.id, lane=lane_id,
+                            section_s=road.lane_sections[index].s, line=ll.line or c.line or None,
+                        )

@@ -1,0 +1,124 @@
+"""Lane attributes (``L014``-``L016``): ``level`` and ``access`` values that contradict each other."""
+
+from __future__ import annotations
+
+from xodrcheck.findings import Category, Severity
+from xodrcheck.rules.context import Context
+from xodrcheck.rules.lane import joints, pair_key, side_lanes
+from xodrcheck.rules.registry import rule
+
+
+@rule("L014", "lane-level-one-side", Category.LANE, Severity.ERROR)
+def lane_level_one_side(ctx: Context):
+    """On one side of a lane section, a lane with ``level="false"`` lies outside a lane with ``level="true"``.
+
+    A level lane is kept out of superelevation; lanes outside it must be level too, or the surface would fold where
+    the level lane meets the tilted one (ASAM's ``road.lane.level.true.one_side``).
+
+    Passes::
+
+        <right><lane id="-1" level="false"/><lane id="-2" level="true"/></right>
+
+    Fails::
+
+        <right><lane id="-1" level="true"/><lane id="-2" level="false"/></right>
+    """
+    for road in ctx.document.roads:
+        for section in road.lane_sections:
+            for lanes in (section.left, section.right):
+                level_seen = None
+                for lane in sorted(lanes, key=lambda lane_: abs(lane_.id)):
+                    if lane.level:
+                        level_seen = level_seen if level_seen is not None else lane.id
+                    elif level_seen is not None:
+                        yield lane_level_one_side.finding(
+                            f"road {road.id} lane section s={section.s:g}: lane {lane.id} is not level but lies "
+                            f"outside lane {level_seen}, which is",
+                            road=road.id, lane=lane.id, section_s=section.s, s=section.s, line=lane.line or None,
+                        )
+
+
+@rule("L015", "lane-level-changes", Category.LANE, Severity.WARNING)
+def lane_level_changes(ctx: Context):
+    """Two linked lanes of consecutive lane sections of a road differ in ``level``: the surface steps at the joint.
+
+    Passes::
+
+        <laneSection s="0">  ... <lane id="-1" level="true"><link><successor id="-1"/></link>...
+        <laneSection s="50"> ... <lane id="-1" level="true">...
+
+    Fails::
+
+        <laneSection s="0">  ... <lane id="-1" level="true"><link><successor id="-1"/></link>...
+        <laneSection s="50"> ... <lane id="-1" level="false">...
+    """
+    seen: set = set()
+    for joint in joints(ctx):
+        mine, other = joint.mine, joint.other
+        if mine.road is not other.road:
+            continue
+        for lane in side_lanes(mine.section):
+            for target_id in mine.links(lane):
+                target = other.section.lane(target_id)
+                if target is None or target.level == lane.level:
+                    continue
+                key = pair_key(mine, lane.id, other, target_id)
+                if key in seen:
+                    continue
+                seen.add(key)
+                yield lane_level_changes.finding(
+                    f"{mine.describe()}: lane {lane.id} (level={str(lane.level).lower()}) is linked to lane "
+                    f"{target_id} of {other.describe()} (level={str(target.level).lower()})",
+                    line=lane.line or None, **mine.where(lane.id),
+                )
+
+
+@rule("L016", "lane-access-mixed", Category.LANE, Severity.ERROR)
+def lane_access_mixed(ctx: Context):
+    """A lane's ``<access>`` records mix ``rule="allow"`` and ``rule="deny"`` at one ``sOffset``.
+
+    At a given position either only allow or only deny values shall be given (ASAM's
+    ``road.lane.access.no_mix_of_deny_or_allow``); mixed, the lane's permissions are undefined.
+
+    Passes::
+
+        <access sOffset="0" rule="allow" restriction="bus"/><access sOffset="0" rule="allow" restriction="taxi"/>
+
+    Fails::
+
+        <access sOffset="0" rule="allow" restriction="bus"/><access sOffset="0" rule="deny" restriction="truck"/>
+    """
+    if ctx.data is None or b"<access" not in ctx.data or ctx.tree is None:
+        return
+    for lane in ctx.tree.iter("lane"):
+        rules: dict[str, tuple[str, int]] = {}
+        for access in lane.iterchildren("access"):
+            rule_ = access.get("rule")
+            offset = (access.get("sOffset") or "").strip()
+            if rule_ is None:
+                continue
+            key = _offset_key(offset)
+            if key in rules and rules[key][0] != rule_:
+                road = next((a for a in access.iterancestors("road")), None)
+                yield lane_access_mixed.finding(
+                    f"lane {lane.get('id')} of road {road.get('id') if road is not None else '?'}: access records at "
+                    f"sOffset {offset} mix rule=\"{rules[key][0]}\" (line {rules[key][1]}) and rule=\"{rule_}\"",
+                    road=road.get("id") if road is not None else None,
+                    lane=_int(lane.get("id")),
+                    line=access.sourceline,
+                )
+            rules.setdefault(key, (rule_, access.sourceline or 0))
+
+
+def _offset_key(text: str) -> str:
+    try:
+        return f"{float(text):.6f}"
+    except ValueError:
+        return text
+
+
+def _int(text: str | None) -> int | None:
+    try:
+        return int(text) if text is not None else None
+    except ValueError:
+        return None

@@ -1,0 +1,76 @@
+"""Adaptive ``s`` sampling of a lane section under a chord tolerance.
+
+The section is first cut at every point where some curve may change its law: the section ends, plan-view element
+joints, laneOffset, elevation and superelevation record starts, and the width/border record starts of the lanes in
+effect. Each piece is split into steps of at most ``max_step``; on each step the largest absolute curvature of the
+reference line, of every lane border in plan view (offset curves, width change included; scaled by the square of the
+border's length per metre of ``s``, since an outer border is longer than the reference line) and of the elevation is
+probed just inside both ends and in the middle, and the step is divided evenly so that the sagitta
+``curvature * h^2 / 8`` of every border polyline stays under ``chord``. (Where a profile jumps, as a laneOffset
+record that does not continue its predecessor, the polyline has a knot at the jump but cannot follow it.) A step never needs to be shorter than
+``2 * chord`` (no arc strays further than half its length from its chord), which also bounds the work near cusps.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from xodrcheck.geometry import profile
+
+if TYPE_CHECKING:
+    from xodrcheck.lanes import RoadGeometry
+
+_PROBE_INSET = 1e-7  # relative inset of the end probes, so each probes the piece it belongs to
+
+
+def knots(geometry: RoadGeometry, section_index: int) -> np.ndarray:
+    """Sorted unique ``s`` where the section's curves may change their law (including the section ends)."""
+    road = geometry.road
+    s0, s1 = geometry.section_range(section_index)
+    candidates = [
+        np.array([s0, s1]),
+        geometry.reference_line.breakpoints,
+        profile.breakpoints(road.lane_offset),
+        profile.breakpoints(road.elevation),
+        profile.breakpoints(road.superelevation),
+    ]
+    for side in geometry.side_lanes(section_index):
+        candidates.extend(law.starts for law in side.laws if law is not None)
+    points = np.concatenate(candidates)
+    return np.unique(points[(points >= s0) & (points <= s1)])
+
+
+def _subdivide(starts: np.ndarray, lengths: np.ndarray, counts: np.ndarray) -> np.ndarray:
+    """Left ends of ``counts[i]`` equal steps over each ``[starts[i], starts[i] + lengths[i]]``."""
+    owner = np.repeat(np.arange(len(starts)), counts)
+    index = np.arange(owner.size) - np.repeat(np.cumsum(counts) - counts, counts)
+    return starts[owner] + lengths[owner] * index / counts[owner]
+
+
+def sample_section(geometry: RoadGeometry, section_index: int, chord: float, max_step: float) -> np.ndarray:
+    """Sorted ``s`` covering the section (ends and every knot included) with border chord error below ``chord``."""
+    if not chord > 0 or not max_step > 0:
+        raise ValueError(f"chord and max_step must be > 0, got {chord} and {max_step}")
+    cuts = knots(geometry, section_index)
+    if len(cuts) < 2:
+        return cuts
+    lengths = np.diff(cuts)
+    coarse = _subdivide(cuts[:-1], lengths, np.maximum(1, np.ceil(lengths / max_step)).astype(np.int64))
+    coarse_ends = np.append(coarse[1:], cuts[-1])
+    steps = coarse_ends - coarse
+    inset = _PROBE_INSET * steps
+    probes = np.stack([coarse + inset, coarse + 0.5 * steps, coarse_ends - inset], axis=1).ravel()
+
+    bending = np.abs(geometry.reference(probes).curvature)
+    for line in geometry.border_curves(section_index, probes).values():
+        bending = np.fmax(bending, np.abs(line.curvature) * line.speed**2)
+    bending = np.fmax(bending, np.abs(profile.second_derivative(geometry.road.elevation, probes)))
+    bending = np.nan_to_num(bending.reshape(-1, 3).max(axis=1), nan=0.0, posinf=np.inf)
+
+    with np.errstate(divide="ignore"):
+        allowed = np.maximum(np.sqrt(8.0 * chord / bending), 2.0 * chord)
+    counts = np.maximum(1, np.ceil(steps / allowed)).astype(np.int64)
+    fine = _subdivide(coarse, steps, counts)
+    return np.unique(np.append(fine, cuts[-1]))
