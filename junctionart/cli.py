@@ -162,15 +162,29 @@ def _render(args: argparse.Namespace) -> int:
     return 0
 
 
+def _add_era(sub: argparse._SubParsersAction) -> None:
+    from .era import add_arguments
+
+    p = sub.add_parser("era", help="expressive range analysis: generate maps, measure intersections, draw figures",
+                       description="Generate maps until N intersections are collected per run, measure them with "
+                       "xodrcheck and write legs.csv, maps.csv, PNG figures and report.md (resumable).")
+    add_arguments(p)
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="junctionart", description="Procedural OpenDRIVE road networks.")
     sub = parser.add_subparsers(dest="command", required=True)
     _add_generate(sub)
     _add_render(sub)
+    _add_era(sub)
     args = parser.parse_args(argv)
     try:
         if args.command == "generate":
             return _generate(args)
+        if args.command == "era":
+            from .era import run as _era
+
+            return _era(args)
         return _render(args)
     except JunctionArtError as exc:
         print(f"junctionart: error: {exc}", file=sys.stderr)

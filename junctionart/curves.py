@@ -146,16 +146,12 @@ def fit_connections(targets: np.ndarray, offsets: tuple[float, ...], min_radius:
     ok &= radius >= min_radius
     score = np.where(ok, radius, -1.0).reshape(n, m)
     best = score.argmax(axis=1)
-    out: list[HermiteFit | None] = []
-    for i in range(n):
-        if score[i, best[i]] < 0:
-            out.append(None)
-            continue
-        j = i * m + best[i]
-        coef = np.array([0.0, k[j], cu[j], du[j], 0.0, 0.0, cv[j], dv[j]])
-        length = float(arc_lengths(coef[None, :])[0])
-        out.append(HermiteFit(tuple(float(x) for x in coef), length, float(radius[j])))
-    return out
+    sel = np.arange(n) * m + best
+    zero = np.zeros(n)
+    coefs = np.column_stack([zero, k[sel], cu[sel], du[sel], zero, zero, cv[sel], dv[sel]])
+    lengths = arc_lengths(coefs)
+    return [HermiteFit(tuple(coefs[i].tolist()), float(lengths[i]), float(radius[sel[i]]))
+            if score[i, best[i]] >= 0 else None for i in range(n)]
 
 
 def fit_connection(u1: float, v1: float, phi: float, offsets: tuple[float, ...], min_radius: float,

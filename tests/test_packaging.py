@@ -28,18 +28,24 @@ def _schema_files() -> set[str]:
 
 
 @pytest.fixture(scope="module")
-def wheel(tmp_path_factory) -> Path:
-    tmp = tmp_path_factory.mktemp("wheel")
-    src = tmp / "src"
+def source(tmp_path_factory) -> Path:
+    """A copy of the checkout's sources (what the wheel is built from)."""
+    src = tmp_path_factory.mktemp("source") / "src"
     shutil.copytree(
         REPO,
         src,
         ignore=shutil.ignore_patterns(".git", ".venv*", "build", "dist", "*.egg-info", "__pycache__", ".pytest_cache",
                                       ".hypothesis", "out"),
     )
+    return src
+
+
+@pytest.fixture(scope="module")
+def wheel(source: Path, tmp_path_factory) -> Path:
+    tmp = tmp_path_factory.mktemp("wheel")
     out = tmp / "dist"
     proc = subprocess.run(
-        [sys.executable, "-m", "pip", "wheel", str(src), "--no-deps", "--no-build-isolation", "-q", "-w", str(out)],
+        [sys.executable, "-m", "pip", "wheel", str(source), "--no-deps", "--no-build-isolation", "-q", "-w", str(out)],
         capture_output=True,
         text=True,
         cwd=tmp,
@@ -58,14 +64,14 @@ def test_wheel_contains_every_schema_and_the_notice(wheel: Path):
     assert not missing, f"not in the wheel: {sorted(missing)}"
 
 
-def test_wheel_contains_every_package_of_the_source_tree(wheel: Path):
+def test_wheel_contains_every_package_of_the_source_tree(wheel: Path, source: Path):
     """A subpackage missing from pyproject's package list would install without its modules."""
     with zipfile.ZipFile(wheel) as zf:
         names = set(zf.namelist())
     modules = {
-        p.relative_to(REPO).as_posix()
+        p.relative_to(source).as_posix()
         for top in ("xodrcheck", "junctionart", "fuzz")
-        for p in (REPO / top).rglob("*.py")
+        for p in (source / top).rglob("*.py")
         if "__pycache__" not in p.parts
     }
     missing = modules - names

@@ -30,6 +30,10 @@ class Tolerances:
     length_abs: float = 1e-3
     #: Smallest curvature radius (m) of reference lines and driving-lane centres.
     min_radius: float = 5.0
+    #: Lane sections shorter than this (m) are reported as degenerate.
+    min_section_length: float = 0.01
+    #: Connection lanes of one incoming road may run together this far (m) from where they start before they part.
+    junction_start: float = 0.05
     #: Chord error (m) for polylines and meshes.
     chord: float = 0.01
     #: Longest step (m) between sampled points along a lane, whatever the chord tolerance allows.

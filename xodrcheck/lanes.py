@@ -18,8 +18,10 @@ Conventions and decisions (ASAM OpenDRIVE 1.8 section numbers)
   from the reference line in plan view and ``t sin(phi)`` above it (positive ``phi`` lifts the left side). A lane with
   ``level="true"`` is not rolled (11.2: "keep lane on level, that is, do not apply superelevation"): it continues
   horizontally from its inner border, so it keeps its full width in plan view and its inner border's height; lanes
-  outside it are rolled again from its outer border. (esmini moves lanes in plan view by ``t`` and only adds height;
-  CARLA ignores superelevation: neither shortens the projected width as 8.3 says.)
+  outside it are rolled again from its outer border. The road's pitch does not enter: the reference line lies in
+  the x/y plane (8.3) and the t-axis is rotated about it by superelevation only. (The two oracle readers disagree here:
+  esmini, judging from its positions, turns the lateral axis by heading, pitch and roll, which adds an along-road
+  shift of about ``t sin(phi) sin(pitch)``; CARLA's lane points carry heading and pitch but no roll.)
 * ``z`` is the elevation profile (10.5) plus the superelevation height above. The header ``<offset>`` is not applied:
   it maps the file's local coordinates to world coordinates for georeferencing (8.5) and every lane position here is
   in the file's own inertial frame, as the geometry is written.
@@ -191,7 +193,7 @@ class RoadGeometry:
 
     def borders(self, section_index: int, s) -> dict[int, np.ndarray]:
         """Lateral ``t`` of each lane's outer border at ``s`` (lane 0: the laneOffset line)."""
-        return {lane_id: jet.v for lane_id, jet in self._evaluate(section_index, as_array(s)).borders.items()}
+        return {lane_id: jet.v.copy() for lane_id, jet in self._evaluate(section_index, as_array(s)).borders.items()}
 
     def inner_outer(self, section_index: int, lane_id: int, s) -> tuple[np.ndarray, np.ndarray]:
         """Lateral ``t`` of a lane's inner and outer border at ``s``."""
@@ -203,7 +205,7 @@ class RoadGeometry:
             if lane.id == lane_id:
                 break
             inner = lane.id
-        return jets[inner].v, jets[lane_id].v
+        return jets[inner].v.copy(), jets[lane_id].v.copy()
 
     # ---------------------------------------------------------------------------------------------------------------
     # Points

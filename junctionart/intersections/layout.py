@@ -59,7 +59,12 @@ def _unit(a: tuple[float, float], b: tuple[float, float]) -> tuple[float, float,
     return dx / L, dy / L, L
 
 
-_P_CROSS = np.linspace(0.0, 1.0, 33)
+_P_CROSS = np.linspace(0.0, 1.0, 129)
+CLEARANCE = 0.1  #: paths from different lanes of one road stay at least this far apart (m)
+PARTED = 0.05  #: paths from one lane are compared from where they are this far apart (m)
+TOUCH = 0.01  #: ... and must then stay this far apart
+WINDOW = 3
+HEAD = 24  #: samples searched for the point where two paths from one lane part
 
 
 def _crossing(rows: list, skip: set[int]) -> set[int]:
@@ -69,8 +74,7 @@ def _crossing(rows: list, skip: set[int]) -> set[int]:
     for n, r in enumerate(rows):
         if n not in skip:
             by_leg.setdefault(r[0], []).append(n)
-    pairs = [(a, b) for group in by_leg.values() for i, a in enumerate(group) for b in group[i + 1:]
-             if rows[a][1] != rows[b][1]]
+    pairs = [(a, b) for group in by_leg.values() for i, a in enumerate(group) for b in group[i + 1:]]
     if not pairs:
         return set()
     idx = sorted({n for pair in pairs for n in pair})
@@ -84,10 +88,50 @@ def _crossing(rows: list, skip: set[int]) -> set[int]:
     h = np.array([rows[n][7] for n in idx])[:, None]
     xy = np.stack([x0 + np.cos(h) * u - np.sin(h) * v, y0 + np.sin(h) * u + np.cos(h) * v], axis=-1)
     lines = shapely.linestrings(xy)
-    a = np.array([pos[x] for x, _ in pairs])
-    b = np.array([pos[y] for _, y in pairs])
-    hit = shapely.intersects(lines[a], lines[b])
+    pa = np.array([pos[x] for x, _ in pairs])
+    pb = np.array([pos[y] for _, y in pairs])
+    same = np.array([rows[x][1] == rows[y][1] for x, y in pairs])
+    hit = np.zeros(len(pairs), dtype=bool)
+    diff = ~same
+    if diff.any():
+        hit[diff] = shapely.dwithin(lines[pa[diff]], lines[pb[diff]], CLEARANCE)
+    if same.any():
+        # two paths from one lane start together: compare them from where they have parted
+        sa, sb = pa[same], pb[same]
+        tail_a, ok_a = _parted(xy[sa], xy[sb])
+        tail_b, ok_b = _parted(xy[sb], xy[sa])
+        ok = ok_a & ok_b
+        res = np.zeros(len(sa), dtype=bool)
+        if ok.any():
+            res[ok] = shapely.dwithin(tail_a[ok], tail_b[ok], TOUCH)
+        hit[same] = res
     return {pairs[k][1] for k in np.flatnonzero(hit)}
+
+
+def _parted(xy: np.ndarray, other: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per row of ``xy`` (paths x samples x 2): the polyline from the first sample further than PARTED from the
+    matching row of ``other`` on, and whether there is one. Distances are to the segments of ``other`` within
+    WINDOW samples (both paths start together, so the nearest point is near the same parameter)."""
+    n, m, _ = xy.shape
+    head = min(m, HEAD)
+    seg0, seg1 = other[:, :-1], other[:, 1:]
+    dist = np.full((n, head), np.inf)
+    base = np.arange(head)
+    near = xy[:, :head]
+    for off in range(-WINDOW, WINDOW + 1):
+        j = np.minimum(np.maximum(base + off, 0), m - 2)
+        a, b = seg0[:, j], seg1[:, j]
+        ab = b - a
+        t = np.minimum(np.maximum(((near - a) * ab).sum(-1) / np.maximum((ab * ab).sum(-1), 1e-300), 0.0), 1.0)
+        d = a + t[..., None] * ab - near
+        dist = np.minimum(dist, np.hypot(d[..., 0], d[..., 1]))
+    far = dist > PARTED
+    # not parted within the head: compare from the end of the head (they run together there: a near-touch)
+    first = np.where(far.any(axis=1), far.argmax(axis=1), head - 1)
+    ok = first <= m - 2
+    first = np.minimum(first, m - 2)
+    keep = np.arange(m)[None, :] >= first[:, None]
+    return shapely.linestrings(xy[keep], indices=np.repeat(np.arange(n), keep.sum(axis=1))), ok
 
 
 class Builder:
@@ -103,6 +147,7 @@ class Builder:
             factor={}, scale={}, growth={}, turn_lane={}, repairs=[],
         )
         self._fits: dict[tuple[float, float, float], HermiteFit | None] = {}
+        self._crossings: dict[tuple, set[int]] = {}
 
     # ---------------------------------------------------------------------------------------------------------------
     # graph helpers
@@ -152,13 +197,20 @@ class Builder:
                     stack.append(y)
         return False
 
+    def _touched(self, nodes) -> bool:
+        return not self.dirty.isdisjoint(nodes)
+
     def _remove_edge(self, eid: int, why: str) -> None:
-        del self.st.edges[eid]
+        u, v, _ = self.st.edges.pop(eid)
+        self.dirty.update((u, v))
         self.st.repairs.append(why)
-        raise _Repair
 
     def _contract(self, eid: int, why: str) -> None:
         u, v, _ = self.st.edges.pop(eid)
+        self.dirty.update((u, v))
+        for a, b, _ in self.st.edges.values():
+            if {a, b} & {u, v}:
+                self.dirty.update((a, b))
         (x0, y0), (x1, y1) = self.st.nodes[u], self.st.nodes[v]
         self.st.nodes[u] = ((x0 + x1) / 2, (y0 + y1) / 2)
         seen: set[tuple[int, int]] = set()
@@ -177,28 +229,28 @@ class Builder:
             a, b, cfg = self.st.edges.pop(k)
             self._insert_planar(a, b, cfg)
         self.st.repairs.append(why)
-        raise _Repair
 
     def _smooth(self, chain: Chain, i: int, why: str) -> None:
         """Repair a bend at interior vertex ``chain.nodes[i]``: cut it open when the map stays connected (one side
         becomes a dead end), otherwise replace its two edges by one straight edge (split where it crosses others)."""
         a, v, b = chain.nodes[i - 1], chain.nodes[i], chain.nodes[i + 1]
         e1, e2 = chain.edges[i - 1], chain.edges[i]
+        self.dirty.update((a, v, b))
         for e in (e2, e1):
             if self._connected_without(e):
                 self._remove_edge(e, why + " (cut open)")
+                return
         cfg = self.st.edges[e1][2] if chain.forward[i - 1] else self.st.edges[e1][2].reversed()  # oriented a -> v
         del self.st.edges[e1], self.st.edges[e2]
         exists = any({x, y} == {a, b} for x, y, _ in self.st.edges.values())
         if a != b and not exists:
             self._insert_planar(a, b, cfg)
-        del v
         self.st.repairs.append(why + " (straightened)")
-        raise _Repair
 
     def _insert_planar(self, a: int, b: int, cfg: LaneConfig) -> None:
         """Add edge a-b; where it crosses an existing edge both are split at a new node (a new intersection)."""
         pa, pb = self.st.nodes[a], self.st.nodes[b]
+        self.dirty.update((a, b))
         new = shapely.LineString([pa, pb])
         cuts = []
         for k in sorted(self.st.edges):
@@ -215,6 +267,7 @@ class Builder:
         for _, k, xy in sorted(cuts):
             u, v, c = self.st.edges.pop(k)
             n = len(self.st.nodes)
+            self.dirty.update((u, v, n))
             self.st.nodes.append((float(xy[0]), float(xy[1])))
             self.st.edges[k] = (u, n, c)
             self.st.edges[next_id] = (n, v, c)
@@ -231,6 +284,7 @@ class Builder:
         for ch in chs:
             if ch.start == ch.end and deg[ch.start] == 2:
                 self._remove_edge(ch.edges[0], f"removed a road forming a closed loop without junction at node {ch.start}")
+                continue
             first = self.st.edges[ch.edges[0]][2]
             cfg = first if ch.forward[0] else first.reversed()
             if deg[ch.start] == 1 or deg[ch.end] == 1:
@@ -408,6 +462,8 @@ class Builder:
                 if node in (chs[road].start, chs[road].end):
                     continue
                 cands = [road]
+            if any(self._touched(chs[c].nodes) for c in cands):
+                continue
             if shapes[i].intersection(shapes[j]).area < 0.01:
                 continue
             for c in cands:
@@ -417,19 +473,24 @@ class Builder:
                 c = cands[0]
             for e in chs[c].edges:
                 del self.st.edges[e]
+            self.dirty.update(chs[c].nodes)
             self.st.repairs.append(f"removed road between nodes {chs[c].start} and {chs[c].end}: it overlapped "
                                    f"another road or junction")
-            raise _Repair
 
     def _drop_leg(self, node: int, keys: list[tuple[int, bool]], chs: list[Chain], prefer: list[int], why: str) -> None:
         """Remove the edge of one leg at ``node``: the first of ``prefer`` (leg indexes) that is not a bridge."""
         cands = []
         for i in prefer:
             c, at_start = keys[i]
-            cands.append(chs[c].edges[0] if at_start else chs[c].edges[-1])
+            e = chs[c].edges[0] if at_start else chs[c].edges[-1]
+            if e in self.st.edges:
+                cands.append(e)
+        if not cands:
+            return
         for e in cands:
             if self._connected_without(e):
                 self._remove_edge(e, why)
+                return
         self._remove_edge(cands[0], why + " (the map loses the part behind it)")
 
     def _fit(self, node: int, plan: linkplan.LinkPlan, contact, median) -> tuple[list, bool]:
@@ -459,7 +520,10 @@ class Builder:
                 self._fits[key] = fit
         out = [(*r[:-1], self._fits[r[-1]]) for r in rows]
         bad = {n for n, r in enumerate(out) if r[-1] is None}
-        bad |= _crossing(out, bad)
+        signature = tuple((r[:6], r[6], r[7], r[8]) for r in rows)
+        if signature not in self._crossings:
+            self._crossings[signature] = _crossing(out, bad)
+        bad |= self._crossings[signature]
         if not bad:
             return out, False
         if self.st.growth.get(node, 0) < 1:
@@ -474,18 +538,25 @@ class Builder:
         return good, False
 
     def run_once(self) -> Layout:
+        """One pass over the whole network. Repairs are applied as they are found; whatever they touched is left
+        alone for the rest of the pass (so independent repairs share a pass), then the pass starts again."""
+        self.dirty: set[int] = set()
         ids, chs = self._chains()
         deg = self._degree()
         self._normalise(chs, deg)
+        if self.dirty:
+            raise _Repair
         legs_at = self._legs(chs, deg)
         for node in sorted(legs_at):
-            if len(legs_at[node]) > MAX_LEGS:
+            if len(legs_at[node]) > MAX_LEGS and not self._touched([node]):
                 keys = legs_at[node]
                 L = [self._leg(chs, k) for k in keys]
                 order = sorted(range(len(L)), key=lambda i: L[i].angle)
                 gaps = [((L[b].angle - L[a].angle) % (2 * math.pi), a) for a, b in zip(order, order[1:] + order[:1])]
                 prefer = [a for _, a in sorted(gaps)]
                 self._drop_leg(node, keys, chs, prefer, f"node {node}: dropped a leg ({len(keys)} legs, at most 7)")
+        if self.dirty:
+            raise _Repair
         self._fix_exits(chs, legs_at)
         plans: dict[int, tuple[list[tuple[int, bool]], list[linkplan.Leg], linkplan.LinkPlan, list[float]]] = {}
         r_at: dict[tuple[int, bool], float] = {}
@@ -504,6 +575,9 @@ class Builder:
                 counts[k] = (plan.n_in_end[idx], plan.n_out_end[idx])
         geoms = []
         for c, ch in enumerate(chs):
+            if self._touched(ch.nodes):
+                geoms.append(None)
+                continue
             cfg = self._chain_cfg(ch)
             r0, r1 = r_at.get((c, True), 0.0), r_at.get((c, False), 0.0)
             fs, bs = (counts[(c, True)][1], counts[(c, True)][0]) if (c, True) in counts else (cfg.forward, cfg.backward)
@@ -513,23 +587,24 @@ class Builder:
                 + (taper if (fe, be) != (cfg.forward, cfg.backward) else 0.0)
             status, g = self._road_geometry(ch, r0, r1, need, cfg)
             if status == "vertex":
-                self._smooth(ch, g, f"straightened a bend at node {ch.nodes[g]} too sharp for its lanes")
-            if status == "short":
+                self._smooth(ch, g, f"bend at node {ch.nodes[g]} too sharp for its lanes")
+            elif status == "short":
                 if len(ch.nodes) > 2:
                     P = [self.st.nodes[n] for n in ch.nodes]
                     turns = [abs(wrap(math.atan2(P[i + 1][1] - P[i][1], P[i + 1][0] - P[i][0])
                                       - math.atan2(P[i][1] - P[i - 1][1], P[i][0] - P[i - 1][0])))
                              for i in range(1, len(P) - 1)]
-                    self._smooth(ch, 1 + int(np.argmax(turns)), f"straightened a bend at a road too short between nodes "
+                    self._smooth(ch, 1 + int(np.argmax(turns)), f"bend on a road too short between nodes "
                                  f"{ch.start} and {ch.end}")
-                e = ch.edges[0]
-                if self._connected_without(e):
-                    self._remove_edge(e, f"removed road between nodes {ch.start} and {ch.end}: too short for its "
-                                         f"intersections")
-                self._contract(e, f"merged nodes {ch.start} and {ch.end} into one intersection: the road between them "
-                                  f"was too short")
-            geoms.append((g, cfg, fs, bs, fe, be))
-        self._overlap_repair(chs, geoms, plans)
+                elif self._connected_without(ch.edges[0]):
+                    self._remove_edge(ch.edges[0], f"removed road between nodes {ch.start} and {ch.end}: too short "
+                                                   f"for its intersections")
+                else:
+                    self._contract(ch.edges[0], f"merged nodes {ch.start} and {ch.end} into one intersection: the "
+                                                f"road between them was too short")
+            geoms.append((g, cfg, fs, bs, fe, be) if status == "ok" else None)
+        if self.dirty:
+            raise _Repair
         # junctions
         junction_of: dict[int, int] = {node: n for n, node in enumerate(sorted(plans))}
         jplans = []
@@ -554,6 +629,7 @@ class Builder:
                     self.st.scale[node] = 1.0
                     self._drop_leg(node, keys, chs, sorted(set(failed)),
                                    f"node {node}: dropped a leg whose turns stay under the radius bound")
+                    continue
                 self.st.scale[node] = self.st.scale.get(node, 1.0) * GROWTH
                 self.st.repairs.append(f"node {node}: moved incident points outward (turn radius)")
                 grown.append(node)
@@ -565,7 +641,10 @@ class Builder:
                 conns.append(ConnectionPlan(ci, "start" if si else "end", lid_in, cj, "start" if sj else "end",
                                             lid_out, connection_geometry(p0[0], p0[1], h0, fit), fit.min_radius))
             jplans.append(JunctionPlan(node, self.st.nodes[node], len(keys), tuple(conns)))
-        if grown:
+        if grown or self.dirty:
+            raise _Repair
+        self._overlap_repair(chs, geoms, plans)
+        if self.dirty:
             raise _Repair
         roads = []
         for c, ch in enumerate(chs):

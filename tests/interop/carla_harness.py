@@ -1,8 +1,8 @@
 """Load a map with CARLA's OpenDRIVE parser (``carla`` 0.9.16) in a separate process and bring back its waypoints.
 
 CARLA is an independent reader: a map that loads in CARLA and whose lane centres agree with ours is evidence for both
-the map and our reader. CARLA can segfault on a bad map, so it never runs in the test process: it runs in the interpreter
-named by ``$CARLA_PYTHON`` (default ``<repo>/.venv-carla/bin/python``, which ``.ci/run`` creates).
+the map and our reader. CARLA can segfault on a bad map, so it never runs in the test process: it runs in the
+interpreter named by ``$CARLA_PYTHON`` (default ``<repo>/.venv-carla/bin/python``, which ``.ci/run`` creates).
 """
 
 from __future__ import annotations
@@ -57,8 +57,8 @@ def carla_python() -> Path:
     python = Path(os.environ.get("CARLA_PYTHON", REPO / ".venv-carla" / "bin" / "python"))
     if not python.is_file():
         raise CarlaUnavailable(
-            f"no CARLA interpreter at {python}: run .ci/run (it creates .venv-carla with carla==0.9.16) "
-            "or set CARLA_PYTHON to a python that has carla installed"
+            f"no CARLA interpreter at {python}: run .ci/run (it creates .venv-carla with carla==0.9.16, as does the "
+            "README's set-up command), or set CARLA_PYTHON to a python that has carla installed"
         )
     return python
 

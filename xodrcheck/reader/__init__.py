@@ -33,7 +33,7 @@ _GZIP_MAGIC = b"\x1f\x8b"
 
 @dataclass(frozen=True)
 class ReadResult:
-    """The model (``None`` when nothing could be built), the reader's findings in file order, and the path read."""
+    """The model (``None`` when nothing could be built), the reader's findings in the order found, and the path read."""
 
     document: Document | None
     findings: tuple[Finding, ...]

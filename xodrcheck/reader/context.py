@@ -24,7 +24,6 @@ T = TypeVar("T")
 _SHOW = 40  # characters of a raw value shown in a message
 _BOOLEANS = {"true": True, "false": False, "1": True, "0": False}
 
-SKIP = "the element is skipped"
 SKIP_RECORD = "the record is skipped"
 
 
@@ -166,6 +165,7 @@ class Context:
     def floats_slowly(
         self, el: etree._Element, names: Sequence[str], nonneg: Sequence[int], then: str
     ) -> tuple[float, ...] | None:
+        """:meth:`floats` attribute by attribute, reporting every missing or invalid one."""
         absent = [name for name in names if el.get(name) is None]
         if len(absent) > 1:
             listed = ", ".join(f"'{name}'" for name in absent)

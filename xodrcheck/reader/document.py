@@ -36,7 +36,7 @@ def build_header(ctx: Context, el: etree._Element) -> Header:
             ctx.report(
                 R.UNKNOWN_VERSION,
                 f"{describe(el)} declares OpenDRIVE {rev_major}.{rev_minor}, which is not one of 1.1 to 1.8; "
-                "it is read like the nearest known version, so newer features may be misread",
+                "it is read as an OpenDRIVE 1.8 file, so what that version changed may be misread",
                 el,
             )
     bounds = [ctx.number(el, name, "read as absent", required=False) for name in _BOUNDS]

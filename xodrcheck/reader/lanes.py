@@ -18,10 +18,11 @@ from xodrcheck.reader.construct import (
 from xodrcheck.reader.context import SKIP_RECORD, Context, cubic, describe
 from xodrcheck.rules import xml as R
 
-#: Lane type spellings (lower case) -> type. Every spelling of every version is the standard's name in lower case.
+#: Lane type names in lower case -> type: the file's spelling is matched without regard to case.
 LANE_TYPES = {t.value.lower(): t for t in LaneType if t is not LaneType.UNKNOWN}
 
-_BOOLEANS = {"true": True, "false": False}
+#: The usual spellings of ``level``; anything else goes through :meth:`Context.boolean`.
+_LEVELS = {"true": True, "false": False}
 _SKIP_LANE = "the lane is skipped"
 
 
@@ -100,7 +101,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         lane_type = _lane_type(ctx, el, type_name)
     level = get("level")
     if level is not None:
-        level = _BOOLEANS.get(level)
+        level = _LEVELS.get(level)
         if level is None:
             level = bool(ctx.boolean(el, "level", "read as false, the standard's default"))
     else:

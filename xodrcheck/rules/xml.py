@@ -136,9 +136,8 @@ UNKNOWN_VERSION = declare(
     """
     The header's ``revMajor.revMinor`` is not an OpenDRIVE version xodrcheck knows (1.1 to 1.8).
 
-    The file is read as the closest known version would be, but features and rules of the declared version may be
-    misunderstood. (A version that is missing or not an integer is reported by ``missing-attribute`` or
-    ``invalid-attribute``.)
+    The file is read as an OpenDRIVE 1.8 file, so whatever the declared version changed may be misunderstood. (A
+    version that is missing or not an integer is reported by ``missing-attribute`` or ``invalid-attribute``.)
 
     Passes::
 

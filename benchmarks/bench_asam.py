@@ -1,0 +1,79 @@
+"""xodrcheck against ASAM's ``asam-qc-opendrive`` on the same files: findings side by side, and time per file.
+
+    python benchmarks/bench_asam.py [--venv .venv-asam] [--corpus ../shared/corpus] [files...]
+
+By default: the corpus's OpenDRIVE 1.7 and 1.8 files plus a few 1.4-1.6 ones. The ASAM virtual environment is created
+when missing. ASAM's time includes its start-up (it is run the way users run it, once per file); xodrcheck's is an
+in-process ``check`` (``xodrcheck check`` on the command line adds its own start-up once per run). Any ASAM
+error-level issue without a corresponding xodrcheck finding is printed as MISSED.
+"""
+
+from __future__ import annotations
+
+import argparse
+import re
+import sys
+import time
+from collections import Counter
+from pathlib import Path
+
+REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(REPO))
+
+from benchmarks.asam_qc import COVERED_BY, covered, ensure_venv, run_asam  # noqa: E402
+from xodrcheck.check import check  # noqa: E402
+
+_MINOR = re.compile(rb'revMinor\s*=\s*"(\d+)"')
+OLDER = ("Town01.xodr", "fabriksgatan.xodr", "junction_ma.xodr", "highway_merge.xodr")
+
+
+def default_files(corpus: Path) -> list[Path]:
+    files = []
+    for path in sorted(corpus.rglob("*.xodr")):
+        match = _MINOR.search(path.read_bytes()[:4096])
+        minor = int(match.group(1)) if match else 0
+        if minor >= 7 or path.name in OLDER:
+            files.append(path)
+    return files
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    parser.add_argument("files", nargs="*", type=Path)
+    parser.add_argument("--venv", type=Path, default=REPO / ".venv-asam")
+    parser.add_argument("--corpus", type=Path, default=REPO.parent / "shared" / "corpus")
+    args = parser.parse_args()
+    command = ensure_venv(args.venv)
+    files = args.files or default_files(args.corpus)
+    check(files[0])  # import and warm up once, as one CLI run over many files would
+    missed_total, asam_total, ours_total = 0, 0.0, 0.0
+    for path in files:
+        started = time.perf_counter()
+        issues = run_asam(command, path)
+        asam_time = time.perf_counter() - started
+        started = time.perf_counter()
+        report = check(path)
+        ours_time = time.perf_counter() - started
+        asam_total += asam_time
+        ours_total += ours_time
+        print(f"\n== {path.name}  (version {report.version})  ASAM {asam_time:.2f} s  xodrcheck {ours_time:.3f} s  "
+              f"ratio {asam_time / max(ours_time, 1e-9):.0f}x")
+        by_rule = Counter((i.rule, i.level) for i in issues)
+        for (rule, level), count in sorted(by_rule.items()):
+            codes = sorted(COVERED_BY.get(rule, ()))
+            ours = sum(1 for f in report.findings if f.code in codes)
+            print(f"   ASAM {rule} (level {level}) x{count}  ->  {', '.join(codes) or '?'}: {ours} finding(s)")
+        for issue in issues:
+            if issue.is_error and not covered(issue, report.findings):
+                missed_total += 1
+                print(f"   !!! MISSED: ASAM error {issue.rule} on roads {sorted(issue.roads)}: {issue.description}")
+        mine = Counter(f.code for f in report.findings)
+        print(f"   xodrcheck: {dict(sorted(mine.items()))}")
+    n = len(files)
+    print(f"\n{n} files: ASAM {asam_total / n:.2f} s/file, xodrcheck {ours_total / n:.3f} s/file, "
+          f"xodrcheck is {asam_total / max(ours_total, 1e-9):.0f}x faster; ASAM error issues missed: {missed_total}")
+    return 1 if missed_total else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,132 @@
+"""The properties the fuzzers check, as plain functions (used by ``tests/fuzz`` and by ``python -m fuzz``).
+
+Each raises :class:`AssertionError` with a readable message when the property fails and counts what it checked in
+:data:`STATS`.
+"""
+
+from __future__ import annotations
+
+import time
+from collections import Counter
+
+import numpy as np
+
+import junctionart as ja
+from junctionart import curves
+from xodrcheck.check import Report, check
+from xodrcheck.findings import ReadError, Severity
+from xodrcheck.geometry.planview import ReferenceLine
+from xodrcheck.reader import read
+
+#: Counters of the inputs each property saw (``maps``, ``documents``, ``damaged``, ``refused``...).
+STATS: Counter = Counter()
+#: A check of one small document that takes longer than this (s) is treated as hanging.
+HANG_SECONDS = 60.0
+#: Largest distance (m) between the generator's curve and the reader's at the same s.
+ROUND_TRIP_TOLERANCE = 1e-9
+_ENGINE = ("X900", "X901")
+
+
+def errors(report: Report) -> list[str]:
+    return [f"{f.code} {f.name}: {f.message}" for f in report.findings if f.severity >= Severity.ERROR]
+
+
+def checked(data: bytes) -> Report:
+    """Check ``data`` and assert the checker itself behaved: no exception, no rule crashed, bounded time."""
+    started = time.monotonic()
+    try:
+        report = check(data)
+    except ReadError:  # the one clear error check() may raise (input cannot be opened at all)
+        STATS["read-errors"] += 1
+        raise
+    elapsed = time.monotonic() - started
+    assert elapsed < HANG_SECONDS, f"check took {elapsed:.1f} s on a {len(data)}-byte document"
+    crashed = [f"{f.code}: {f.message}" for f in report.findings if f.code in _ENGINE]
+    assert not crashed, "the checker failed on this input:\n" + "\n".join(crashed)
+    return report
+
+
+def checker_survives(data: bytes) -> Report:
+    """Any document, however damaged: findings or a clear error, never a crash."""
+    STATS["damaged"] += 1
+    try:
+        return checked(data)
+    except ReadError:
+        return None  # type: ignore[return-value]
+
+
+def document_is_valid(data: bytes) -> Report:
+    """A document of :func:`fuzz.opendrive_documents`: the checker finds no error in it."""
+    STATS["documents"] += 1
+    report = checked(data)
+    assert report.ok, "a valid document was reported:\n" + "\n".join(errors(report))
+    return report
+
+
+def defect_is_found(data: bytes, expected: frozenset[str]) -> Report:
+    """A document with one known defect: at least one of the ``expected`` codes is reported."""
+    STATS["defects"] += 1
+    report = checked(data)
+    found = {f.code for f in report.findings}
+    assert found & expected, f"none of {sorted(expected)} reported; found {sorted(found)}"
+    return report
+
+
+def generated_map_is_valid(params: ja.Params, seed: int, lines=None) -> bytes:
+    """Valid generator input: a map on which the checker finds no error (returned as bytes)."""
+    doc = ja.generate(params, seed, lines)
+    data = ja.to_bytes(doc, params.version)
+    STATS["maps"] += 1
+    report = checked(data)
+    assert report.ok, f"generated map (seed {seed}) has errors:\n" + "\n".join(errors(report)[:20])
+    return data
+
+
+def invalid_input_refused(action, tmp_file=None) -> str:
+    """Invalid generator input: ``action()`` raises the generator's error type with a message (and writes no file
+    at ``tmp_file``). Returns the message."""
+    STATS["invalid-inputs"] += 1
+    try:
+        action()
+    except ja.JunctionArtError as exc:
+        message = str(exc)
+        assert message and "\n" not in message, f"unclear error message {message!r}"
+        if tmp_file is not None:
+            assert not tmp_file.exists(), f"{tmp_file} was written although the input was refused"
+        STATS["refused"] += 1
+        return message
+    raise AssertionError("invalid input was accepted")
+
+
+def finding_keys(report: Report, rename: dict[str, str] | None = None) -> Counter:
+    """What the metamorphic properties compare: (code, road, lane) of every finding, roads renamed by ``rename``."""
+    rename = rename or {}
+    return Counter((f.code, rename.get(f.road, f.road), f.lane) for f in report.findings)
+
+
+def round_trip_exact(doc, samples: int = 17) -> int:
+    """Generator model -> .xodr -> xodrcheck reader: the same plan view, parameters exactly and positions within
+    :data:`ROUND_TRIP_TOLERANCE` at ``samples`` points per element. Returns the number of elements compared."""
+    result = read(ja.to_bytes(doc))
+    assert result.document is not None, "the reader could not read a generated map"
+    by_id = result.document.road_by_id
+    compared = 0
+    for road in doc.roads:
+        other = by_id.get(road.id)
+        assert other is not None, f"road {road.id} was not read back"
+        assert other.length == road.length, f"road {road.id}: length {other.length!r} != {road.length!r}"
+        assert len(other.plan_view) == len(road.geometry), f"road {road.id}: element count differs"
+        ref = ReferenceLine(other.plan_view)
+        for mine, theirs in zip(road.geometry, other.plan_view):
+            for name in ("s", "x", "y", "hdg", "length"):
+                assert getattr(mine, name) == getattr(theirs, name), f"road {road.id}: {name} differs"
+            t = np.linspace(0.0, 1.0, samples)
+            expected = curves.sample(mine, samples)
+            pose = ref.evaluate(mine.s + t * mine.length)
+            gap = float(np.max(np.hypot(pose.x - expected[:, 0], pose.y - expected[:, 1])))
+            assert gap <= ROUND_TRIP_TOLERANCE, (
+                f"road {road.id} {type(mine).__name__} at s={mine.s}: generator and reader differ by {gap:.3g} m")
+            compared += 1
+    STATS["round-trips"] += 1
+    assert compared > 0 or not doc.roads
+    return compared

@@ -1,0 +1,106 @@
+"""The expressive range analysis: results depend on seeds only (worker count, Dask), resuming, the table, the CLI."""
+
+from __future__ import annotations
+
+import csv
+from pathlib import Path
+
+import pytest
+
+import junctionart
+from junctionart import cli, era
+from junctionart.params import Params
+
+SMALL = {"two-lane": Params(width=500.0, height=500.0)}
+
+
+def _selected(folder: Path, n: int) -> list[dict]:
+    rows = era.read_csv(folder / "legs.csv")
+    return era.select(rows, "two-lane", n)
+
+
+def _seeds(folder: Path) -> list[int]:
+    return [int(r["seed"]) for r in era.read_csv(folder / "maps.csv")]
+
+
+def test_results_do_not_depend_on_the_number_of_workers(tmp_path):
+    one = era.collect(SMALL, 12, tmp_path / "one", jobs=1, progress=False)
+    two = era.collect(SMALL, 12, tmp_path / "two", jobs=2, progress=False)
+    assert one.collected("two-lane") >= 12 and two.collected("two-lane") >= 12
+    a, b = _selected(tmp_path / "one", 12), _selected(tmp_path / "two", 12)
+    assert a == b
+    assert len({(r["seed"], r["junction_index"]) for r in a}) == 12  # exactly the first 12 intersections
+    assert all(int(r["legs"]) >= era.MIN_LEGS for r in a)
+
+
+def test_rows_are_the_metrics_of_the_written_map(tmp_path):
+    from xodrcheck.metrics import map_metrics
+    from xodrcheck.reader import read
+
+    params = SMALL["two-lane"]
+    result = era.measure_map("two-lane", params, 3)
+    assert result.status == "ok"
+    path = junctionart.write(junctionart.generate(params, 3), tmp_path / "m.xodr")
+    metrics = map_metrics(read(path).document)
+    assert result.junctions == len(metrics)
+    assert len(result.rows) == sum(max(len(m.leg_metrics), 1) for m in metrics)
+    first = metrics[0]
+    row = result.rows[0]
+    assert float(row["area"]) == pytest.approx(first.area) and int(row["legs"]) == first.legs
+    assert float(row["fov"]) == pytest.approx(first.leg_metrics[0].fov)
+
+
+def test_a_failing_map_is_recorded_not_raised(monkeypatch):
+    def broken(params, seed):
+        raise RuntimeError("boom")
+
+    monkeypatch.setattr(junctionart, "generate", broken)
+    result = era.measure_map("two-lane", SMALL["two-lane"], 0)
+    assert result.status == "failed" and "boom" in result.error and result.rows == ()
+
+
+def test_resume_skips_finished_seeds_and_drops_half_written_maps(tmp_path):
+    folder = tmp_path / "run"
+    era.collect(SMALL, 5, folder, jobs=1, progress=False)
+    first = _seeds(folder)
+    # an interrupted write: rows of a map whose maps.csv line never came
+    with open(folder / "legs.csv", "a", newline="") as stream:
+        csv.DictWriter(stream, era.ROW_COLUMNS).writerow(dict.fromkeys(era.ROW_COLUMNS, "") | {
+            "run": "two-lane", "seed": 999, "junction_index": 0, "legs": 3})
+    era.collect(SMALL, 15, folder, jobs=1, progress=False)
+    seeds = _seeds(folder)
+    assert seeds[: len(first)] == first and len(seeds) == len(set(seeds)) > len(first)
+    assert all(r["seed"] != "999" for r in era.read_csv(folder / "legs.csv"))
+    fresh = tmp_path / "fresh"
+    era.collect(SMALL, 15, fresh, jobs=1, progress=False)
+    assert _selected(folder, 15) == _selected(fresh, 15)
+
+
+def test_dask_local_cluster_gives_the_local_results(tmp_path):
+    distributed = pytest.importorskip("distributed", reason="the [dask] extra is optional")
+    era.collect(SMALL, 10, tmp_path / "local", jobs=2, progress=False)
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        with distributed.Client(cluster) as client:
+            era.collect(SMALL, 10, tmp_path / "dask", scheduler=client, progress=False)
+    assert _selected(tmp_path / "local", 10) == _selected(tmp_path / "dask", 10)
+
+
+def test_cli_writes_table_figures_and_report(tmp_path, corpus_dir):
+    out = tmp_path / "era"
+    compare = corpus_dir / "carla-towns"
+    code = cli.main(["era", "-o", str(out), "-n", "6", "--size", "500x500", "--runs", "two-lane", "-j", "1", "-q",
+                     "--compare", str(compare)])
+    assert code == 0
+    report = (out / "report.md").read_text()
+    assert "complexity (paper Figure 13)" in report and "carla-towns" in report
+    pngs = sorted(p.name for p in out.glob("*.png"))
+    assert len(pngs) == 8 + 7 and all((out / p).stat().st_size > 1000 for p in pngs)
+
+
+def test_cli_bad_options_are_one_line(tmp_path, capsys):
+    assert cli.main(["era", "-o", str(tmp_path), "--runs", "three-lane", "-q"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "three-lane" in err
+    assert cli.main(["era", "-o", str(tmp_path), "--size", "big", "-q"]) == 2
+    assert cli.main(["era", "-o", str(tmp_path), "-n", "0", "-q"]) == 2
+    assert "Traceback" not in capsys.readouterr().err

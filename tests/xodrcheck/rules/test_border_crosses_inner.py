@@ -1,0 +1,19 @@
+"""Rule border-crosses-inner: its pass fixtures give no finding, its fail fixtures one where the defect is."""
+
+import pytest
+
+from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture
+
+RULE = "border-crosses-inner"
+
+
+def test_pass_fixtures_give_no_finding():
+    assert_passes(RULE)
+
+
+def test_border_crosses_the_lane_0_line():
+    path = fixture(RULE, "fail.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane) == ("1", 1)
+    assert f.s == pytest.approx(100.0)
+    assert "6.5 m on the inner side" in f.message

@@ -1,0 +1,16 @@
+"""Rule border-folds: its pass fixtures give no finding, its fail fixtures one where the defect is."""
+
+from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture
+
+RULE = "border-folds"
+
+
+def test_pass_fixtures_give_no_finding():
+    assert_passes(RULE)
+
+
+def test_border_past_the_centre_of_curvature():
+    path = fixture(RULE, "fail.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane) == ("1", 1)
+    assert "3.5 m to the left" in f.message and "radius 2 m" in f.message

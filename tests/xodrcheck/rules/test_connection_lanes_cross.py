@@ -1,0 +1,20 @@
+"""Rule connection-lanes-cross: its pass fixtures give no finding, its fail fixtures one where the defect is."""
+
+import pytest
+
+from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture
+from xodrcheck.findings import Severity
+
+RULE = "connection-lanes-cross"
+
+
+def test_pass_fixtures_give_no_finding():
+    assert_passes(RULE)
+
+
+def test_left_turn_from_the_right_lane_crosses_straight_on():
+    path = fixture(RULE, "fail.xodr")
+    (f,) = findings(path, RULE)
+    assert f.road == "1" and f.severity is Severity.ERROR
+    assert "road 10 lane -1" in f.message and "road 12 lane -1" in f.message
+    assert f.y == pytest.approx(-1.75, abs=0.01)  # on the straight-on path of lane -1

@@ -1,0 +1,31 @@
+"""Rule connection-overlap: a road outside a four-leg junction lying across its connection lanes is found; the
+junction's own conflict areas are not."""
+
+from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture
+from xodrcheck.footprint import conflict_areas, junction_area
+from xodrcheck.reader import read
+
+RULE = "connection-overlap"
+
+
+def test_pass_fixtures_give_no_finding():
+    assert_passes(RULE)
+
+
+def test_conflict_areas_of_the_four_leg_junction_are_normal():
+    path = fixture(RULE, "pass.xodr")
+    assert findings(path, RULE) == []
+    document = read(path).document
+    conflicts, area = conflict_areas(document), junction_area(document)
+    assert set(conflicts) == set(area) == {"100"}
+    # the connection lanes cross (left turns cut the straight paths) but cover at most the 20 m x 20 m box
+    assert 50 < conflicts["100"] < area["100"] <= 400
+
+
+def test_foreign_road_across_connection_lanes():
+    path = fixture(RULE, "fail.xodr")
+    found = findings(path, RULE)
+    assert found
+    assert {f.road for f in found} <= {str(r) for r in range(10, 22)}  # the connecting road is named
+    assert all("and road 50 overlap" in f.message for f in found)
+    assert {f.road for f in found} >= {"13"}  # the straight path from leg 1 runs through road 50's lane

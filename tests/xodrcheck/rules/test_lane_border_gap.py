@@ -1,0 +1,25 @@
+"""Rule lane-border-gap: its pass fixtures give no finding, its fail fixtures one where the defect is."""
+
+from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture, line_of
+
+RULE = "lane-border-gap"
+
+
+def test_pass_fixtures_give_no_finding():
+    assert_passes(RULE)
+
+
+def test_linked_lane_of_another_width():
+    path = fixture(RULE, "fail.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane) == ("1", -1)
+    assert "0.5 m apart" in f.message
+    assert f.line == line_of(path, '<lane id="-1"')
+
+
+def test_junction_connection_lanes_are_compared():
+    assert findings(fixture(RULE, "pass_junction.xodr"), RULE) == []
+    crossed = fixture("junction-lane-links-crossed", "fail.xodr")
+    found = findings(crossed, RULE)
+    assert {(f.road, f.lane) for f in found} == {("1", -1), ("1", -2)}
+    assert all("3.5 m apart" in f.message for f in found)

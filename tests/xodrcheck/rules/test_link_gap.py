@@ -1,0 +1,21 @@
+"""Rule link-gap: its pass fixtures give no finding, its fail fixtures one where the defect is."""
+
+import pytest
+
+from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture, line_of
+from xodrcheck.findings import Severity
+
+RULE = "link-gap"
+
+
+def test_pass_fixtures_give_no_finding():
+    assert_passes(RULE)
+
+
+def test_gap_of_five_millimetres():
+    path = fixture(RULE, "fail.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.severity) == ("1", Severity.ERROR)
+    assert f.line == line_of(path, '<successor elementType="road" elementId="2"')
+    assert "gap of 0.005 m" in f.message
+    assert f.x == pytest.approx(100.0) and f.y == pytest.approx(0.0)

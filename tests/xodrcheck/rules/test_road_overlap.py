@@ -1,0 +1,25 @@
+"""Rule road-overlap: two unlinked roads crossing at one height are found; the same crossing as a 6 m bridge is not."""
+
+import math
+
+from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture, line_of
+
+RULE = "road-overlap"
+
+
+def test_pass_fixtures_give_no_finding():
+    assert_passes(RULE)
+
+
+def test_bridge_six_metres_above_is_no_overlap():
+    (path,) = [fixture(RULE, "pass.xodr")]
+    assert 'a="6.0"' in path.read_text(encoding="utf-8")  # the same plan view as fail.xodr, lifted 6 m
+    assert findings(path, RULE) == []
+
+
+def test_two_unlinked_roads_crossing():
+    path = fixture(RULE, "fail.xodr")
+    (f,) = findings(path, RULE)
+    assert f.road == "1" and f.line == line_of(path, '<road id="1"')
+    assert "road 1 and road 2 overlap by 49.0 m2" in f.message  # two 7 m wide roads crossing square: 7 x 7
+    assert math.hypot(f.x, f.y) < 3.5 * math.sqrt(2) + 1e-6  # inside the crossing square

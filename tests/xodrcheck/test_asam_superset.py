@@ -1,0 +1,52 @@
+"""On the same files, xodrcheck reports every error ASAM's ``asam-qc-opendrive`` reports (matched by kind and road).
+
+ASAM runs from its own virtual environment at ``$ASAM_VENV`` (default ``<repo>/.venv-asam``); ``.ci/run`` creates it.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+from benchmarks.asam_qc import COVERED_BY, covered, run_asam
+from tests.conftest import REPO, corpus_root
+from xodrcheck.check import check
+
+pytestmark = pytest.mark.corpus
+
+FILES = [
+    "esmini/resources/xodr/e6mini.xodr",  # paramPoly3 arcLength whose length is 1.6 mm off
+    "esmini/resources/xodr/parking_demo.xodr",  # 1.7: junction connection semantics, zero-width lane links
+    "esmini/EnvironmentSimulator/Unittest/xodr/straight_2x100m_opposite.xodr",  # 9 mm gaps at a road link
+    "ika-roadgeneration/test/gt/junction_m2a.xodr",  # many gaps, kinks and lane-link problems
+    "esmini/resources/xodr/soderleden.xodr",  # a horizontal gap between linked lanes (ASAM error)
+]
+
+
+@pytest.fixture(scope="module")
+def qc_opendrive() -> Path:
+    venv = Path(os.environ.get("ASAM_VENV", REPO / ".venv-asam"))
+    command = venv / "bin" / "qc_opendrive"
+    if not command.exists():
+        pytest.fail(
+            f"asam-qc-opendrive not found at {command}: .ci/run creates {venv} "
+            "(python -m venv .venv-asam && .venv-asam/bin/pip install asam-qc-opendrive), or set ASAM_VENV"
+        )
+    return command
+
+
+def test_every_asam_rule_is_mapped():
+    assert len(COVERED_BY) == 23
+
+
+@pytest.mark.parametrize("name", FILES)
+def test_asam_errors_are_found_by_xodrcheck(corpus_dir, qc_opendrive, name):
+    path = corpus_root() / name
+    issues = run_asam(qc_opendrive, path)
+    report = check(path)
+    unknown = {i.rule for i in issues} - set(COVERED_BY)
+    assert not unknown, f"ASAM rules without a mapping: {unknown}"
+    missed = [i for i in issues if i.is_error and not covered(i, report.findings)]
+    assert missed == [], "\n".join(f"{i.rule} roads={sorted(i.roads)}: {i.description}" for i in missed)

@@ -1,0 +1,95 @@
+"""``xodrcheck mesh FILE -o OUT.glb|.obj|.ply``: the lane surfaces as a 3D mesh for viewers (Blender, game engines).
+
+Lanes are meshed under a chord tolerance (``--chord``, default the configured ``Tolerances.chord``), elevation and
+superelevation applied; ``--lane-types`` keeps only some lane types. Colours and grouping by lane type, axes and
+atomic writing: :mod:`xodrcheck.mesh_export`. Exit 0 when written, 1 when written but the reader found errors in the
+file (or there was nothing to mesh), 2 for a usage or I/O error (unknown extension, unreadable input, unwritable
+output).
+"""
+
+from __future__ import annotations
+
+import argparse
+import math
+
+from xodrcheck.cli._common import error, guarded, read_file, report_errors
+from xodrcheck.config import ConfigError, load_config
+from xodrcheck.mesh import build_surfaces
+from xodrcheck.mesh_export import FORMATS, ExportError, format_of, write
+from xodrcheck.model import LaneType
+
+NAME = "mesh"
+HELP = "Write the lane surfaces as a 3D mesh (.glb, .obj or .ply), coloured by lane type."
+
+_TYPE_NAMES = sorted(t.value for t in LaneType if t is not LaneType.UNKNOWN)
+
+
+def _chord(text: str) -> float:
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"must be a finite number > 0, got {text!r}")
+    return value
+
+
+def _lane_types(text: str) -> tuple[str, ...]:
+    names = tuple(name.strip() for name in text.split(",") if name.strip())
+    unknown = [n for n in names if n not in _TYPE_NAMES]
+    if unknown or not names:
+        raise argparse.ArgumentTypeError(
+            f"unknown lane type(s) {', '.join(unknown) or '(none given)'}; known: {', '.join(_TYPE_NAMES)}"
+        )
+    return names
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("file", metavar="FILE", help="OpenDRIVE file")
+    parser.add_argument(
+        "-o",
+        "--output",
+        required=True,
+        metavar="OUT",
+        help=f"mesh file; format from the extension ({', '.join(FORMATS)})",
+    )
+    parser.add_argument("--chord", type=_chord, metavar="TOL", help="chord tolerance in metres (default: configured)")
+    parser.add_argument(
+        "--lane-types",
+        type=_lane_types,
+        metavar="T1,T2",
+        help="mesh only these lane types, comma-separated (e.g. driving,sidewalk; default: all)",
+    )
+
+
+def run(args: argparse.Namespace) -> int:
+    try:
+        format_of(args.output)
+    except ExportError as exc:
+        error(str(exc))
+        return 2
+
+    def one() -> int:
+        try:
+            chord = args.chord if args.chord is not None else load_config().tolerances.chord
+        except ConfigError as exc:
+            error(f"configuration: {exc}")
+            return 2
+        result = read_file(args.file)
+        if result is None:
+            return 2
+        failed = report_errors(args.file, result)
+        if result.document is None:
+            return 1
+        surfaces = build_surfaces(result.document, chord=chord, lane_types=args.lane_types)
+        try:
+            write(surfaces, args.output)
+        except ExportError as exc:
+            error(f"{args.file}: {exc}")
+            return 1
+        except OSError as exc:
+            error(f"cannot write {args.output}: {exc.strerror or exc}")
+            return 2
+        return 1 if failed else 0
+
+    return guarded(args.file, one)

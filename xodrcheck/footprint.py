@@ -1,0 +1,291 @@
+"""Plan-view footprints of lanes (shapely 2) and the spatial questions the overlap rules and the metrics ask.
+
+The footprint of a lane strip is the polygon its mesh covers in plan view (:mod:`xodrcheck.mesh`): its inner border
+followed by its outer border reversed, from the same samples as the mesh. A strip whose outline is not a valid polygon
+(zero width over a stretch, a fold) is the union of its mesh triangles instead. Candidate pairs come from a
+:class:`shapely.STRtree` over all footprints, so the work grows with the number of lanes that are near each other, not
+with the square of the number of lanes.
+
+Heights at a plan-view point are read from the mesh (barycentric interpolation in the lane's triangle that contains
+the point, or the nearest one for points on a border).
+"""
+
+from __future__ import annotations
+
+import weakref
+from dataclasses import dataclass
+from functools import cached_property
+
+import numpy as np
+import shapely
+
+from xodrcheck.config import Tolerances
+from xodrcheck.mesh import LaneSurfaces, surfaces_of
+from xodrcheck.model import DRIVABLE_LANE_TYPES, Document, ElementType
+
+DRIVABLE_TYPE_NAMES = frozenset(t.value for t in DRIVABLE_LANE_TYPES)
+#: Most points of an overlap polygon's outline sampled for heights (plus its representative point).
+_HEIGHT_POINTS = 24
+
+
+class Footprints:
+    """Lane footprints of one document with a spatial index (build with :func:`footprints_of`)."""
+
+    def __init__(self, surfaces: LaneSurfaces):
+        self.surfaces = surfaces
+        order, owner = surfaces.outline_order()
+        xy = surfaces.vertices[:, :2]
+        if len(surfaces):
+            rings = shapely.linearrings(xy[order], indices=owner)
+            polygons = shapely.polygons(rings)
+        else:
+            polygons = np.empty(0, dtype=object)
+        invalid = np.flatnonzero(~shapely.is_valid(polygons))
+        for i in invalid:
+            polygons[i] = self._triangle_union(i)
+        #: One (multi)polygon per lane strip of :attr:`surfaces`.
+        self.polygons = polygons
+        #: Lane strips whose outline is not a simple polygon (their footprint is the union of their triangles).
+        self.invalid = invalid
+        self.tree = shapely.STRtree(polygons)
+
+    def triangles(self, lane: int) -> np.ndarray:
+        """Plan-view triangles ``(T, 3, 2)`` of a lane strip."""
+        s = self.surfaces
+        faces = s.faces[s.lane_faces[lane] : s.lane_faces[lane + 1]]
+        return s.vertices[faces][..., :2]
+
+    def _triangle_union(self, lane: int):
+        tris = self.triangles(lane)
+        polys = shapely.polygons(np.concatenate([tris, tris[:, :1]], axis=1))
+        area = shapely.area(polys)
+        return shapely.union_all(polys[area > 0])
+
+    def self_overlap(self, lane: int) -> float:
+        """Plan-view area a lane strip covers more than once (its triangles' areas minus the area of their union)."""
+        tris = self.triangles(lane)
+        u, v = tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0]
+        total = 0.5 * np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]).sum()
+        return float(total - shapely.area(self.polygons[lane]))
+
+    def near_pairs(self) -> np.ndarray:
+        """``(2, P)`` lane-strip index pairs ``i < j`` whose footprints intersect."""
+        pairs = self.tree.query(self.polygons, predicate="intersects")
+        return pairs[:, pairs[0] < pairs[1]]
+
+    def heights(self, lane: int, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Surface height of a lane strip at plan-view ``points`` ``(P, 2)``, and the face index (in the whole mesh)
+        each was read from."""
+        s = self.surfaces
+        first = s.lane_faces[lane]
+        faces = s.faces[first : s.lane_faces[lane + 1]]
+        tri = s.vertices[faces]  # (T, 3, 3)
+        lo, hi = points.min(axis=0), points.max(axis=0)
+        near = np.flatnonzero(
+            (tri[:, :, 0].max(axis=1) >= lo[0])
+            & (tri[:, :, 0].min(axis=1) <= hi[0])
+            & (tri[:, :, 1].max(axis=1) >= lo[1])
+            & (tri[:, :, 1].min(axis=1) <= hi[1])
+        )
+        if near.size == 0:  # the points lie outside every triangle's box: use the nearest triangles
+            near = np.arange(len(tri))
+        t = tri[near]
+        a, b, c = t[:, 0, :2], t[:, 1, :2], t[:, 2, :2]
+        det = (b[:, 0] - a[:, 0]) * (c[:, 1] - a[:, 1]) - (b[:, 1] - a[:, 1]) * (c[:, 0] - a[:, 0])
+        usable = np.abs(det) > 1e-12
+        with np.errstate(divide="ignore", invalid="ignore"):
+            px = points[:, None, 0] - a[None, :, 0]
+            py = points[:, None, 1] - a[None, :, 1]
+            l1 = (px * (c[:, 1] - a[:, 1]) - py * (c[:, 0] - a[:, 0])) / det
+            l2 = ((b[:, 0] - a[:, 0]) * py - (b[:, 1] - a[:, 1]) * px) / det
+        l0 = 1.0 - l1 - l2
+        inside = np.minimum(np.minimum(l0, l1), l2)
+        inside = np.where(usable[None, :], np.nan_to_num(inside, nan=-np.inf), -np.inf)
+        best = inside.argmax(axis=1)
+        rows = np.arange(len(points))
+        w = np.clip(np.stack([l0[rows, best], l1[rows, best], l2[rows, best]], axis=1), 0.0, 1.0)
+        w /= np.maximum(w.sum(axis=1, keepdims=True), 1e-300)
+        z = (w * t[best][:, :, 2]).sum(axis=1)
+        return z, first + near[best]
+
+
+def sample_points(geometry) -> np.ndarray:
+    """Plan-view points of a (multi)polygon for height comparisons: a representative point of each part and up to
+    :data:`_HEIGHT_POINTS` points of its outline."""
+    points = [np.asarray(shapely.get_coordinates(shapely.point_on_surface(geometry)))]
+    outline = shapely.get_coordinates(shapely.boundary(geometry))
+    if len(outline):
+        step = max(1, len(outline) // _HEIGHT_POINTS)
+        points.append(outline[::step])
+    return np.concatenate(points)
+
+
+@dataclass(frozen=True, slots=True)
+class Overlap:
+    """Two lane strips of different roads overlapping in plan view where their surfaces are within the clearance."""
+
+    lane_a: int
+    lane_b: int
+    #: Plan-view area of the intersection (m^2) times the share of its sampled points within the clearance.
+    area: float
+    #: A point of the overlap (x, y), and the height difference there.
+    x: float
+    y: float
+    dz: float
+    #: Reference-line ``s`` of each lane at that point.
+    s_a: float
+    s_b: float
+
+
+class Relations:
+    """Which roads are allowed to overlap: a road with itself, consecutive roads (a road link either way), and roads
+    that share a junction (members of it, roads linking to it, incoming roads of its connections, connecting and
+    linked roads of its connections). Two incoming roads of one junction therefore may overlap near it (their
+    sidewalks meet at the corner), and a connecting road may overlap every incoming road of its junction."""
+
+    def __init__(self, document: Document):
+        links: dict[str, set[str]] = {}
+        groups: dict[str, set[str]] = {}
+        for road in document.roads:
+            mine = groups.setdefault(road.id, set())
+            if road.junction is not None:
+                mine.add(road.junction)
+            for link in (road.predecessor, road.successor):
+                if link is None:
+                    continue
+                if link.element_type is ElementType.JUNCTION:
+                    mine.add(link.element_id)
+                else:
+                    links.setdefault(road.id, set()).add(link.element_id)
+                    links.setdefault(link.element_id, set()).add(road.id)
+        for junction in document.junctions:
+            for c in junction.connections:
+                for road_id in (c.incoming_road, c.connecting_road, c.linked_road):
+                    if road_id is not None:
+                        groups.setdefault(road_id, set()).add(junction.id)
+        self._links = links
+        self._groups = groups
+        self.junction_of = {road.id: road.junction for road in document.roads}
+
+    def related(self, a: str, b: str) -> bool:
+        if a == b or b in self._links.get(a, ()):
+            return True
+        return bool(self._groups.get(a, set()) & self._groups.get(b, set()))
+
+
+class OverlapIndex:
+    """Footprints plus the road relations of one document."""
+
+    def __init__(self, document: Document, chord: float | None = None):
+        self.document = document
+        self.footprints = Footprints(surfaces_of(document, chord))
+        self.relations = Relations(document)
+
+    @property
+    def surfaces(self) -> LaneSurfaces:
+        return self.footprints.surfaces
+
+    @cached_property
+    def unrelated_pairs(self) -> np.ndarray:
+        """``(2, P)`` near lane-strip pairs of roads that are not related (see :class:`Relations`)."""
+        pairs = self.footprints.near_pairs()
+        lanes = self.surfaces.lanes
+        keep = [not self.relations.related(lanes[i].road, lanes[j].road) for i, j in pairs.T]
+        return pairs[:, np.array(keep, dtype=bool)] if pairs.size else pairs
+
+    def overlaps(self, min_area: float, clearance: float, deadline_check=None) -> list[Overlap]:
+        """Overlaps of lane strips of unrelated roads whose surfaces come closer than ``clearance`` in height.
+
+        Intersections smaller than a thousandth of ``min_area`` are ignored (borders that merely touch); callers sum
+        the rest per road pair and compare the sum with ``min_area``."""
+        pairs = self.unrelated_pairs
+        if pairs.size == 0:
+            return []
+        polys = self.footprints.polygons
+        shared = shapely.intersection(polys[pairs[0]], polys[pairs[1]])
+        areas = shapely.area(shared)
+        out: list[Overlap] = []
+        for k in np.flatnonzero(areas > min_area * 1e-3):
+            if deadline_check is not None and deadline_check():
+                break
+            i, j = int(pairs[0, k]), int(pairs[1, k])
+            points = sample_points(shared[k])
+            z_a, face_a = self.footprints.heights(i, points)
+            z_b, face_b = self.footprints.heights(j, points)
+            dz = np.abs(z_a - z_b)
+            close = dz < clearance
+            if not close.any():
+                continue
+            at = int(np.flatnonzero(close)[0])
+            out.append(
+                Overlap(
+                    i,
+                    j,
+                    float(areas[k]) * float(close.mean()),
+                    float(points[at, 0]),
+                    float(points[at, 1]),
+                    float(dz[at]),
+                    float(self.surfaces.face_s[face_a[at]]),
+                    float(self.surfaces.face_s[face_b[at]]),
+                )
+            )
+        return out
+
+
+_CACHE: dict[tuple[int, float], OverlapIndex] = {}
+
+
+def overlap_index(document: Document, chord: float | None = None) -> OverlapIndex:
+    """:class:`OverlapIndex` of a document, cached for its lifetime (per chord)."""
+    chord = Tolerances().chord if chord is None else float(chord)
+    key = (id(document), chord)
+    found = _CACHE.get(key)
+    if found is None:
+        found = OverlapIndex(document, chord)
+        _CACHE[key] = found
+        weakref.finalize(document, _CACHE.pop, key, None)
+    return found
+
+
+# ------------------------------------------------------------------------------------------------------ metrics
+def _junction_lanes(index: OverlapIndex, drivable_only: bool) -> dict[str, np.ndarray]:
+    """Junction id -> lane strips of its connecting roads (default and other non-direct junctions)."""
+    out: dict[str, list[int]] = {}
+    junction_of = index.relations.junction_of
+    for i, (key, lane_type) in enumerate(zip(index.surfaces.lanes, index.surfaces.lane_types)):
+        junction = junction_of.get(key.road)
+        if junction is not None and (not drivable_only or lane_type in DRIVABLE_TYPE_NAMES):
+            out.setdefault(junction, []).append(i)
+    return {j: np.array(v) for j, v in out.items()}
+
+
+def conflict_areas(document: Document, chord: float | None = None) -> dict[str, float]:
+    """Junction id -> plan-view area (m^2) where connection lanes of different connecting roads overlap: the union of
+    the pairwise intersections of the junction's drivable connection lanes (U-turns included: a U-turn lane crossing
+    another path is a conflict like any other). Lanes of one connecting road lie side by side and do not count.
+    Junctions without connecting roads with lanes are absent; junctions whose paths never cross give 0."""
+    index = overlap_index(document, chord)
+    polys = index.footprints.polygons
+    lanes = index.surfaces.lanes
+    out: dict[str, float] = {}
+    for junction, members in _junction_lanes(index, drivable_only=True).items():
+        tree = shapely.STRtree(polys[members])
+        a, b = tree.query(polys[members], predicate="intersects")
+        keep = (a < b) & np.array([lanes[members[i]].road != lanes[members[j]].road for i, j in zip(a, b)], bool)
+        if not keep.any():
+            out[junction] = 0.0
+            continue
+        pieces = shapely.intersection(polys[members[a[keep]]], polys[members[b[keep]]])
+        out[junction] = float(shapely.area(shapely.union_all(pieces)))
+    return out
+
+
+def junction_area(document: Document, chord: float | None = None) -> dict[str, float]:
+    """Junction id -> plan-view area (m^2) of the union of its drivable connection lanes (the surface vehicles use
+    inside the junction; with :func:`conflict_areas`, the share of it where paths conflict)."""
+    index = overlap_index(document, chord)
+    polys = index.footprints.polygons
+    return {
+        junction: float(shapely.area(shapely.union_all(polys[members])))
+        for junction, members in _junction_lanes(index, drivable_only=True).items()
+    }

@@ -1,0 +1,163 @@
+"""Curvature (``C0xx``): curves a vehicle can follow and lane borders that do not fold.
+
+Every lane section is sampled and evaluated once (:func:`xodrcheck.rules.sampled.section_lines`: every knot, and
+steps keeping the chord error under ``chord`` for curves within the radius bound) and the curvature of the lines is evaluated exactly there
+(offset-curve curvature with the lane's width change, :mod:`xodrcheck.lanes`).
+
+Decisions
+---------
+* The bound is ``min_radius`` (5 m by default): a radius under it is reported for the centre line of every drivable
+  lane (``C001``) and for the lane-0 line (the reference line shifted by the laneOffset) where it borders a drivable
+  lane, i.e. where lane 1 or lane -1 is drivable (``C002``). A reference line that runs beside the lanes, away from
+  any drivable lane, is a construction line: its own curvature is no one's path, and the lanes' own curvature is
+  checked by ``C001``.
+* A border at lateral offset ``t`` folds back where ``t * k >= 1`` (``k`` the reference line's curvature): it then
+  reaches or passes the centre of curvature, its length per metre of ``s`` (``1 - t k``) is zero or negative, and the
+  lane turns inside out (``C003``). Only the inner side of a curve folds: on the outer side (``t k <= -1``) a border
+  is a larger circle. ``t`` is taken before superelevation, which can only bring a border closer to the reference
+  line.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from xodrcheck.findings import Category, Severity
+from xodrcheck.model import Road
+from xodrcheck.rules.context import Context
+from xodrcheck.rules.registry import rule
+from xodrcheck.rules.sampled import section_lines, section_samples, usable
+
+
+def _sections(ctx: Context):
+    """(road, section index, geometry, s samples) for every usable road's lane sections."""
+    for road in ctx.document.roads:
+        geometry = usable(ctx, road)
+        if geometry is None:
+            continue
+        for index in range(len(road.lane_sections)):
+            s = section_samples(ctx, road, index)
+            if len(s):
+                yield road, index, geometry, s
+
+
+def _where(road: Road, index: int, lane_id: int | None, s: float, x: float, y: float, line: int) -> dict:
+    return {
+        "road": road.id,
+        "lane": lane_id,
+        "section_s": road.lane_sections[index].s,
+        "s": s,
+        "x": x,
+        "y": y,
+        "line": line or road.lane_sections[index].line or road.line or None,
+    }
+
+
+def _tightest(curvature: np.ndarray, bound: float) -> int | None:
+    """Index of the largest |curvature| above ``bound`` (``None`` when none is)."""
+    k = np.abs(np.nan_to_num(curvature, nan=0.0, posinf=0.0, neginf=0.0))
+    i = int(np.argmax(k)) if len(k) else 0
+    return i if len(k) and k[i] > bound else None
+
+
+@rule("C001", "lane-radius-too-small", Category.CURVATURE, Severity.ERROR)
+def lane_radius_too_small(ctx: Context):
+    """The centre line of a drivable lane curves tighter than ``min_radius`` (5 m by default).
+
+    Reported once per lane and lane section, at the tightest sampled point. Where the lane's border folds
+    (``border-folds``) the curvature is not defined and is not reported here.
+
+    Passes (an arc of radius 50 m)::
+
+        <geometry ... length="20"><arc curvature="0.02"/></geometry>
+
+    Fails (an arc of radius 0.5 m)::
+
+        <geometry ... length="1"><arc curvature="2"/></geometry>
+    """
+    bound = 1.0 / ctx.tolerances.min_radius if ctx.tolerances.min_radius > 0 else math.inf
+    for road, index, geometry, s in _sections(ctx):
+        for lane in road.lane_sections[index].lanes:
+            if lane.id == 0 or not lane.drivable:
+                continue
+            points = geometry.lane_points(index, lane.id, s, "centre")
+            i = _tightest(np.where(points.speed > 0, points.curvature, 0.0), bound)
+            if i is None:
+                continue
+            radius = 1.0 / abs(float(points.curvature[i]))
+            yield lane_radius_too_small.finding(
+                f"road {road.id}: the centre of {lane.type.value} lane {lane.id} has a radius of {radius:.3g} m at "
+                f"s={s[i]:.6g}, under the {ctx.tolerances.min_radius:g} m minimum; widen the curve",
+                **_where(road, index, lane.id, float(s[i]), float(points.x[i]), float(points.y[i]), lane.line),
+            )
+
+
+@rule("C002", "reference-radius-too-small", Category.CURVATURE, Severity.ERROR)
+def reference_radius_too_small(ctx: Context):
+    """The lane-0 line curves tighter than ``min_radius`` where it borders a drivable lane.
+
+    The lane-0 line is the reference line shifted by the laneOffset; it bounds lane 1 and lane -1, and is checked
+    where one of them is drivable (see the module's decisions).
+
+    Passes (radius 50 m, driving lanes on both sides)::
+
+        <geometry ... length="20"><arc curvature="0.02"/></geometry>
+
+    Fails (radius 0.5 m)::
+
+        <geometry ... length="1"><arc curvature="2"/></geometry>
+    """
+    bound = 1.0 / ctx.tolerances.min_radius if ctx.tolerances.min_radius > 0 else math.inf
+    for road, index, geometry, s in _sections(ctx):
+        section = road.lane_sections[index]
+        if not any((lane := section.lane(i)) is not None and lane.drivable for i in (1, -1)):
+            continue
+        points = section_lines(ctx, road, index).borders[0]
+        i = _tightest(np.where(points.speed > 0, points.curvature, 0.0), bound)
+        if i is None:
+            continue
+        radius = 1.0 / abs(float(points.curvature[i]))
+        yield reference_radius_too_small.finding(
+            f"road {road.id}: the lane-0 line (reference line plus laneOffset) has a radius of {radius:.3g} m at "
+            f"s={s[i]:.6g}, under the {ctx.tolerances.min_radius:g} m minimum, beside a drivable lane",
+            **_where(road, index, None, float(s[i]), float(points.x[i]), float(points.y[i]), 0),
+        )
+
+
+@rule("C003", "border-folds", Category.CURVATURE, Severity.ERROR)
+def border_folds(ctx: Context):
+    """A lane border reaches the centre of curvature of the reference line and folds back (``t * k >= 1``).
+
+    A border at lateral offset ``t`` on the inner side of a curve of curvature ``k`` shrinks to a point where
+    ``t k = 1`` and runs backwards beyond: the lane turns inside out. Equivalently, the width outside a tight curve's
+    centre is more than the radius. Any lane type.
+
+    Passes (radius 50 m, lanes 3.5 m wide)::
+
+        <geometry ... length="20"><arc curvature="0.02"/></geometry>
+
+    Fails (radius 2 m, lane 1 reaches 3.5 m to the left, past the centre)::
+
+        <geometry ... length="3"><arc curvature="0.5"/></geometry>
+    """
+    for road, index, geometry, s in _sections(ctx):
+        lines = section_lines(ctx, road, index)
+        k = lines.curvature
+        for lane_id, t in lines.t.items():
+            fold = np.nan_to_num(t * k, nan=0.0)
+            i = int(np.argmax(fold))
+            if not fold[i] >= 1.0:
+                continue
+            lane = road.lane_sections[index].lane(lane_id)
+            points = lines.borders[lane_id]
+            what = "the lane-0 line" if lane_id == 0 else f"the outer border of lane {lane_id}"
+            yield border_folds.finding(
+                f"road {road.id}: {what} lies {abs(float(t[i])):.3g} m to the "
+                f"{'left' if t[i] > 0 else 'right'} of a reference line turning with radius "
+                f"{1.0 / abs(float(k[i])):.3g} m at s={s[i]:.6g}: the border passes the centre of curvature and folds "
+                f"back; widen the curve or narrow the lanes",
+                **_where(road, index, lane_id, float(s[i]), float(points.x[i]), float(points.y[i]),
+                         lane.line if lane is not None else 0),
+            )

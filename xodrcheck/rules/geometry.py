@@ -1,0 +1,477 @@
+"""Plan view and lane-shape geometry (``G0xx``-``G8xx``).
+
+Plan view: consecutive elements must join in position (``G001``) and heading (``G002``), their ``s`` must run on
+without jumps (``G003``) up to the road's length (``G004``); a paramPoly3's declared length must be the curve's length
+over its parameter range (``G005``); elements must not be degenerate (``G006``, ``G007``).
+
+Lane shapes: every lane's outer border stays on the outer side of its inner border over the whole lane section,
+checked exactly rather than at samples. Between consecutive knots (section ends, record starts of every lane, the
+laneOffset and the plan view) every border's ``t`` is one cubic polynomial in ``s``; each lane's signed width
+``sign * (t_outer - t_inner)`` is recovered on each piece from four evaluations and its minimum found from the roots of
+its derivative. A lane given by ``<width>`` records with a negative minimum has a negative width (``G010``); a lane
+given by ``<border>`` records crosses its inner neighbour (``G011``, ASAM's
+``road.lane.border.overlap_with_inner_lanes``). Lane sections must have a length (``G012``).
+"""
+
+from __future__ import annotations
+
+import math
+import weakref
+
+import numpy as np
+
+from xodrcheck.findings import Category, Severity
+from xodrcheck.geometry.parampoly3 import curve_of
+from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
+from xodrcheck.model import Geometry, ParamPoly3, PRange, Road, Spiral
+from xodrcheck.rules.context import Context
+from xodrcheck.rules.registry import rule
+from xodrcheck.rules.sampled import angle_between, usable
+from xodrcheck.sampling import knots
+
+_KIND = {"Line": "line", "Arc": "arc", "Spiral": "spiral", "Poly3": "poly3", "ParamPoly3": "paramPoly3"}
+
+
+def _kind(g: Geometry) -> str:
+    return _KIND.get(type(g).__name__, type(g).__name__)
+
+
+def _finite(*values: float) -> bool:
+    return all(math.isfinite(v) for v in values)
+
+
+def _pairs(road: Road):
+    """Consecutive plan-view elements (sorted by ``s`` as the reference line uses them) with finite attributes."""
+    elements = ReferenceLine(road.plan_view).elements
+    for a, b in zip(elements, elements[1:]):
+        if _finite(a.s, a.x, a.y, a.hdg, a.length, b.s, b.x, b.y, b.hdg) and a.length >= 0:
+            yield a, b
+
+
+def _end_of(g: Geometry):
+    pose = evaluate_element(g, np.array([g.length]))
+    return float(pose.x[0]), float(pose.y[0]), float(pose.hdg[0])
+
+
+@rule("G001", "plan-view-gap", Category.GEOMETRY, Severity.ERROR)
+def plan_view_gap(ctx: Context):
+    """A plan-view element does not start where the previous one ends: the reference line has a gap.
+
+    The end point of each ``<geometry>`` (evaluated exactly) must be the next one's ``x``, ``y`` within the
+    ``position`` tolerance (1 mm by default; ASAM's checker sees only gaps over 1 cm).
+
+    Passes (a 10 m line along x, then the next element at x=10)::
+
+        <geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry>
+        <geometry s="10" x="10" y="0" hdg="0" length="10"><line/></geometry>
+
+    Fails (the second element starts 5 mm further on)::
+
+        <geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry>
+        <geometry s="10" x="10.005" y="0" hdg="0" length="10"><line/></geometry>
+    """
+    tol = ctx.tolerances.position
+    for road in ctx.document.roads:
+        for a, b in _pairs(road):
+            x, y, _ = _end_of(a)
+            gap = math.hypot(b.x - x, b.y - y)
+            if gap > tol:
+                yield plan_view_gap.finding(
+                    f"road {road.id}: the {_kind(a)} at s={a.s:g} ends at ({x:.4f}, {y:.4f}) but the next element "
+                    f"starts at ({b.x:.4f}, {b.y:.4f}), a gap of {gap:.4g} m; correct the x/y of the element at "
+                    f"s={b.s:g} or the previous element's parameters",
+                    road=road.id,
+                    s=b.s,
+                    x=b.x,
+                    y=b.y,
+                    line=b.line or road.line or None,
+                )
+
+
+@rule("G002", "plan-view-kink", Category.GEOMETRY, Severity.ERROR)
+def plan_view_kink(ctx: Context):
+    """A plan-view element does not start in the direction the previous one ends: the reference line has a kink.
+
+    The heading at the end of each ``<geometry>`` must be the next one's ``hdg`` (modulo 2 pi) within the ``heading``
+    tolerance. A kink without a gap is invisible to position checks but makes every lane border jump.
+
+    Passes::
+
+        <geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry>
+        <geometry s="10" x="10" y="0" hdg="0" length="10"><line/></geometry>
+
+    Fails (the second element turns 0.1 rad)::
+
+        <geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry>
+        <geometry s="10" x="10" y="0" hdg="0.1" length="10"><line/></geometry>
+    """
+    tol = ctx.tolerances.heading
+    for road in ctx.document.roads:
+        for a, b in _pairs(road):
+            _, _, hdg = _end_of(a)
+            kink = angle_between(hdg, b.hdg)
+            if kink > tol:
+                yield plan_view_kink.finding(
+                    f"road {road.id}: the {_kind(a)} at s={a.s:g} ends with heading {hdg:.5f} rad but the next "
+                    f"element starts with hdg={b.hdg:.5f}, a kink of {math.degrees(kink):.3g} deg; make the headings "
+                    f"agree",
+                    road=road.id,
+                    s=b.s,
+                    x=b.x,
+                    y=b.y,
+                    line=b.line or road.line or None,
+                )
+
+
+@rule("G003", "plan-view-s-jump", Category.GEOMETRY, Severity.ERROR)
+def plan_view_s_jump(ctx: Context):
+    """The ``s`` of a plan-view element is not the previous element's ``s`` plus its length (or the first is not 0).
+
+    ``s`` is the arc length along the reference line, so it starts at 0 and each element starts where the previous
+    one ends (within the ``length_abs`` tolerance).
+
+    Passes::
+
+        <geometry s="0" ... length="10"><line/></geometry>
+        <geometry s="10" ... length="10"><line/></geometry>
+
+    Fails (s jumps from 10 to 12)::
+
+        <geometry s="0" ... length="10"><line/></geometry>
+        <geometry s="12" ... length="10"><line/></geometry>
+    """
+    tol = ctx.tolerances.length_abs
+    for road in ctx.document.roads:
+        elements = ReferenceLine(road.plan_view).elements
+        if elements and math.isfinite(elements[0].s) and abs(elements[0].s) > tol:
+            first = elements[0]
+            yield plan_view_s_jump.finding(
+                f"road {road.id}: the plan view starts at s={first.s:g}, not at s=0",
+                road=road.id,
+                s=first.s,
+                x=first.x,
+                y=first.y,
+                line=first.line or road.line or None,
+            )
+        for a, b in _pairs(road):
+            expected = a.s + a.length
+            if abs(b.s - expected) > tol:
+                yield plan_view_s_jump.finding(
+                    f"road {road.id}: the element at s={b.s:g} follows a {_kind(a)} at s={a.s:g} of length "
+                    f"{a.length:g}, so it should start at s={expected:.6g} ({'overlap' if b.s < expected else 'gap'} "
+                    f"of {abs(b.s - expected):.4g} m in s)",
+                    road=road.id,
+                    s=b.s,
+                    x=b.x,
+                    y=b.y,
+                    line=b.line or road.line or None,
+                )
+
+
+@rule("G004", "road-length-mismatch", Category.GEOMETRY, Severity.ERROR)
+def road_length_mismatch(ctx: Context):
+    """A road's ``length`` is not where its plan view ends.
+
+    The last element's ``s + length`` must equal the road's ``length`` within ``length_abs + length_rel * length``:
+    lanes, objects and links are placed by ``s`` up to the road's length.
+
+    Passes::
+
+        <road id="1" length="20"> ... <geometry s="0" length="10"/> <geometry s="10" length="10"/>
+
+    Fails (the plan view ends at s=20)::
+
+        <road id="1" length="25"> ... <geometry s="0" length="10"/> <geometry s="10" length="10"/>
+    """
+    tol = ctx.tolerances
+    for road in ctx.document.roads:
+        elements = ReferenceLine(road.plan_view).elements
+        if not elements or not _finite(road.length, elements[-1].s, elements[-1].length):
+            continue
+        end = elements[-1].s + elements[-1].length
+        if abs(end - road.length) > tol.length_abs + tol.length_rel * abs(road.length):
+            yield road_length_mismatch.finding(
+                f"road {road.id}: length is {road.length:g} but its plan view ends at s={end:.6g} "
+                f"(difference {end - road.length:+.4g} m); set the road's length to the sum of its elements' lengths",
+                road=road.id,
+                s=min(end, road.length),
+                line=road.line or None,
+            )
+
+
+@rule("G005", "parampoly3-length-mismatch", Category.GEOMETRY, Severity.ERROR)
+def parampoly3_length_mismatch(ctx: Context):
+    """A paramPoly3's declared ``length`` is not the length of its curve over its parameter range.
+
+    The curve's arc length is integrated (Gauss-Legendre, to 1e-15 relative) over ``p`` in ``[0, 1]`` for
+    ``pRange="normalized"`` and over ``[0, @length]`` for ``pRange="arcLength"``, and compared with ``@length`` within
+    the ``length_abs`` tolerance (1 mm, as ASAM's checker). For ``arcLength`` this is also ASAM's range rule: ``p``
+    runs over ``[0, @length]`` exactly when the curve is that long there; for ``normalized``, ``p`` in ``[0, 1]`` is
+    checked the same way. (ASAM's ``road.geometry.parampoly3.length_match``, ``.arclength_range`` and
+    ``.normalized_range``.)
+
+    Passes (a 10 m straight, normalized)::
+
+        <geometry s="0" x="0" y="0" hdg="0" length="10">
+          <paramPoly3 aU="0" bU="10" cU="0" dU="0" aV="0" bV="0" cV="0" dV="0" pRange="normalized"/></geometry>
+
+    Fails (the same curve declared 12 m long)::
+
+        <geometry s="0" x="0" y="0" hdg="0" length="12">
+          <paramPoly3 aU="0" bU="10" cU="0" dU="0" aV="0" bV="0" cV="0" dV="0" pRange="normalized"/></geometry>
+    """
+    tol = ctx.tolerances.length_abs
+    for road in ctx.document.roads:
+        for g in road.plan_view:
+            if not isinstance(g, ParamPoly3) or not g.length > 0 or not math.isfinite(g.length):
+                continue
+            if not _finite(g.aU, g.bU, g.cU, g.dU, g.aV, g.bV, g.cV, g.dV):
+                continue
+            actual = curve_of(g).total
+            if abs(actual - g.length) > tol:
+                p_range = "[0, 1]" if g.p_range is PRange.NORMALIZED else f"[0, {g.length:g}]"
+                yield parampoly3_length_mismatch.finding(
+                    f"road {road.id}: the paramPoly3 at s={g.s:g} is declared {g.length:.6g} m long but its curve "
+                    f"over p in {p_range} ({g.p_range.value}) is {actual:.6g} m long (difference "
+                    f"{actual - g.length:+.4g} m); fix @length or the coefficients",
+                    road=road.id,
+                    s=g.s,
+                    x=g.x,
+                    y=g.y,
+                    line=g.line or road.line or None,
+                )
+
+
+@rule("G006", "degenerate-geometry", Category.GEOMETRY, Severity.ERROR)
+def degenerate_geometry(ctx: Context):
+    """A plan-view element has no length: zero or negative (an error), or shorter than ``length_abs`` (a warning).
+
+    Such an element has no direction of its own; readers divide by its length.
+
+    Passes::
+
+        <geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry>
+
+    Fails::
+
+        <geometry s="0" x="0" y="0" hdg="0" length="0"><line/></geometry>
+    """
+    tol = ctx.tolerances.length_abs
+    for road in ctx.document.roads:
+        for g in road.plan_view:
+            if not math.isfinite(g.length) or g.length >= tol:
+                continue
+            where = {"road": road.id, "s": g.s, "x": g.x, "y": g.y, "line": g.line or road.line or None}
+            if g.length <= 0:
+                yield degenerate_geometry.finding(
+                    f"road {road.id}: the {_kind(g)} at s={g.s:g} has length {g.length:g}; remove it or give it a "
+                    f"positive length",
+                    **where,
+                )
+            else:
+                yield degenerate_geometry.finding(
+                    f"road {road.id}: the {_kind(g)} at s={g.s:g} is only {g.length:.3g} m long; merge it into a "
+                    f"neighbouring element",
+                    severity=Severity.WARNING,
+                    **where,
+                )
+
+
+@rule("G007", "spiral-constant-curvature", Category.GEOMETRY, Severity.WARNING)
+def spiral_constant_curvature(ctx: Context):
+    """A spiral's start and end curvature are equal: it is a line or an arc written as a degenerate clothoid.
+
+    A clothoid's curvature changes linearly; with no change its parameter is infinite, and readers that compute it
+    divide by zero.
+
+    Passes::
+
+        <geometry ... length="10"><spiral curvStart="0" curvEnd="0.01"/></geometry>
+
+    Fails (write ``<arc curvature="0.01"/>``)::
+
+        <geometry ... length="10"><spiral curvStart="0.01" curvEnd="0.01"/></geometry>
+    """
+    for road in ctx.document.roads:
+        for g in road.plan_view:
+            if isinstance(g, Spiral) and g.curv_start == g.curv_end:
+                shape = "<line/>" if g.curv_start == 0 else f'<arc curvature="{g.curv_start:g}"/>'
+                yield spiral_constant_curvature.finding(
+                    f"road {road.id}: the spiral at s={g.s:g} has curvStart = curvEnd = {g.curv_start:g}; write "
+                    f"{shape} instead",
+                    road=road.id,
+                    s=g.s,
+                    x=g.x,
+                    y=g.y,
+                    line=g.line or road.line or None,
+                )
+
+
+# ------------------------------------------------------------------------------------------------ lane shapes
+_NODES = np.array([0.125, 0.375, 0.625, 0.875])
+_FIT = np.linalg.inv(np.vander(_NODES, 4, increasing=True))  # values at the nodes -> coefficients in u
+
+
+def _cubic_minimum(coef: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Minimum over ``u`` in [0, 1] of ``c0 + c1 u + c2 u^2 + c3 u^3`` for each column of ``coef`` (4, n): the values
+    and where they are reached."""
+    c0, c1, c2, c3 = coef
+    candidates = [np.zeros_like(c0), np.ones_like(c0)]
+    a, b, c = 3.0 * c3, 2.0 * c2, c1  # derivative a u^2 + b u + c; roots by the cancellation-free formula
+    with np.errstate(divide="ignore", invalid="ignore"):
+        disc = np.sqrt(np.maximum(b * b - 4.0 * a * c, 0.0))
+        q = -0.5 * (b + np.where(b >= 0, disc, -disc))
+        r1, r2 = q / a, c / q
+    for r in (r1, r2):
+        candidates.append(np.clip(np.nan_to_num(r, nan=0.0, posinf=0.0, neginf=0.0), 0.0, 1.0))
+    u = np.stack(candidates)
+    values = c0 + u * (c1 + u * (c2 + u * c3))
+    k = np.argmin(values, axis=0)
+    columns = np.arange(values.shape[1])
+    return values[k, columns], u[k, columns]
+
+
+def _lane_minima(ctx: Context, road: Road, index: int):
+    """(lane, minimum signed width, s where reached) for every lane with records in a section, from the exact
+    per-piece cubics (all lanes and pieces of the section in one vectorised pass)."""
+    geometry = ctx.geometry(road.id)
+    cuts = knots(geometry, index)
+    if len(cuts) < 2:
+        return
+    a, b = cuts[:-1], cuts[1:]
+    keep = b - a > 1e-9
+    a, b = a[keep], b[keep]
+    if not len(a):
+        return
+    s = (a[:, None] + (b - a)[:, None] * _NODES[None, :]).ravel()
+    borders = geometry.borders(index, s)
+    lanes, widths = [], []
+    for sign, side in zip((+1, -1), geometry.side_lanes(index)):
+        inner = borders[0]
+        for lane, law in zip(side.lanes, side.laws):
+            outer = borders[lane.id]
+            if law is not None:
+                lanes.append(lane)
+                widths.append((sign * (outer - inner)).reshape(-1, 4))
+            inner = outer
+    if not lanes:
+        return
+    stacked = np.nan_to_num(np.concatenate(widths), nan=0.0, posinf=0.0, neginf=0.0)
+    value, u = _cubic_minimum(_FIT @ stacked.T)
+    value, u = value.reshape(len(lanes), -1), u.reshape(len(lanes), -1)
+    for row, lane in enumerate(lanes):
+        k = int(np.argmin(value[row]))
+        yield lane, float(value[row, k]), float(a[k] + u[row, k] * (b[k] - a[k]))
+
+
+_MINIMA: weakref.WeakKeyDictionary[Context, list] = weakref.WeakKeyDictionary()
+
+
+def _width_findings(ctx: Context, by_widths: bool):
+    """Lanes (with ``<width>`` records when ``by_widths``, else with ``<border>`` records) whose signed width drops
+    under ``-zero_width``; the minima are computed once per file for both rules."""
+    tol = ctx.tolerances.zero_width
+    found = _MINIMA.get(ctx)
+    if found is None:
+        found = []
+        for road in ctx.document.roads:
+            geometry = usable(ctx, road)
+            if geometry is None:
+                continue
+            for index, section in enumerate(road.lane_sections):
+                for lane, minimum, s in _lane_minima(ctx, road, index):
+                    if minimum < -tol:
+                        found.append((road, geometry, index, section, lane, minimum, s))
+        _MINIMA[ctx] = found
+    for road, geometry, index, section, lane, minimum, s in found:
+        if bool(lane.widths) != by_widths:
+            continue
+        point = geometry.lane_points(index, lane.id, np.array([s]), "outer")
+        where = {
+            "road": road.id,
+            "lane": lane.id,
+            "section_s": section.s,
+            "s": s,
+            "x": float(point.x[0]),
+            "y": float(point.y[0]),
+            "line": lane.line or section.line or None,
+        }
+        yield lane, section, minimum, where
+
+
+@rule("G010", "negative-width", Category.GEOMETRY, Severity.ERROR)
+def negative_width(ctx: Context):
+    """A lane's width becomes negative somewhere in its lane section.
+
+    The width polynomials are minimised exactly over each record's interval (not only at sample points), so a cubic
+    that dips below zero between its ends is found. A negative width puts the outer border inside the inner one.
+
+    Passes (3.5 m narrowing linearly to 0 over the 50 m section)::
+
+        <laneSection s="0"> ... <lane id="-1"><width sOffset="0" a="3.5" b="-0.07" c="0" d="0"/>
+
+    Fails (narrowing to -1.5 m)::
+
+        <laneSection s="0"> ... <lane id="-1"><width sOffset="0" a="3.5" b="-0.1" c="0" d="0"/>
+    """
+    for lane, section, minimum, where in _width_findings(ctx, True):
+        yield negative_width.finding(
+            f"road {where['road']}: lane {lane.id} of the lane section at s={section.s:g} is {minimum:.4g} m wide at "
+            f"s={where['s']:.6g}; its width records must stay >= 0 over the section",
+            **where,
+        )
+
+
+@rule("G011", "border-crosses-inner", Category.GEOMETRY, Severity.ERROR)
+def border_crosses_inner(ctx: Context):
+    """A lane given by ``<border>`` records has its outer border on the wrong side of its inner border.
+
+    For a left lane the outer border's ``t`` must stay at or above the inner border's, for a right lane at or below,
+    over the whole section (checked exactly per polynomial piece). ASAM's
+    ``road.lane.border.overlap_with_inner_lanes``.
+
+    Passes (lane 1's border at t=3.5, outside lane 0 at t=0)::
+
+        <left><lane id="1"><border sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left>
+
+    Fails (the border crosses t=0 at s=35)::
+
+        <left><lane id="1"><border sOffset="0" a="3.5" b="-0.1" c="0" d="0"/></lane></left>
+    """
+    for lane, section, minimum, where in _width_findings(ctx, False):
+        yield border_crosses_inner.finding(
+            f"road {where['road']}: lane {lane.id} of the lane section at s={section.s:g}: its outer border lies "
+            f"{-minimum:.4g} m on the inner side of its inner border at s={where['s']:.6g}; the lane's borders cross",
+            **where,
+        )
+
+
+@rule("G012", "short-lane-section", Category.GEOMETRY, Severity.WARNING)
+def short_lane_section(ctx: Context):
+    """A lane section is shorter than ``min_section_length`` (1 cm by default), or has no length at all.
+
+    Such a section describes no road; tools that build lane polylines fail on it (pyxodr does).
+
+    Passes::
+
+        <laneSection s="0"> ... <laneSection s="50"> ...   (road length 100)
+
+    Fails::
+
+        <laneSection s="0"> ... <laneSection s="0.001"> ...
+    """
+    tol = ctx.tolerances.min_section_length
+    for road in ctx.document.roads:
+        if not math.isfinite(road.length):
+            continue
+        for index, section in enumerate(road.lane_sections):
+            length = road.section_end(index) - section.s
+            if math.isfinite(length) and length < tol:
+                yield short_lane_section.finding(
+                    f"road {road.id}: the lane section at s={section.s:g} is {length:.3g} m long; remove it or merge it "
+                    f"with its neighbour",
+                    road=road.id,
+                    section_s=section.s,
+                    s=section.s,
+                    line=section.line or road.line or None,
+                )

@@ -1,0 +1,230 @@
+"""Junction geometry (``J1xx``): the paths a junction offers from one incoming road do not cross.
+
+A *connection lane* is a lane of a connecting road entered from a lane of an incoming road by a junction
+``<laneLink>``; its path is the lane's centre line from the contact point through the connecting road (following the
+lane's links across lane sections), sampled once per lane section (:mod:`xodrcheck.rules.sampled`). Only lanes whose
+traffic enters the junction are followed (``junction-lane-link-outbound`` reports the others).
+
+* The paths leaving one incoming road may share their start (several turns from one lane) but must not meet
+  anywhere else: two turns that cross each other conflict inside the junction (``J101``). Paths from the same lane
+  are compared from where they part (``junction_start`` tolerance); paths from different lanes anywhere.
+* Within one connection, the laneLinks keep the lanes' side-by-side order: the incoming lanes ordered across the
+  road at the contact must enter connecting lanes in the same order (``J102``), or the lanes swap places at the
+  contact point.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import shapely
+
+from xodrcheck.findings import Category, Severity
+from xodrcheck.model import Connection, ContactPoint, Junction, JunctionType, Road
+from xodrcheck.rules.context import Context, travel_direction
+from xodrcheck.rules.registry import rule
+from xodrcheck.rules.sampled import end_s, road_end, section_samples, usable
+
+
+@dataclass(frozen=True)
+class _Path:
+    connection: Connection
+    from_lane: int
+    road: Road
+    lane: int
+    line: int
+    xy: np.ndarray  # (n, 2) from the contact point on
+
+
+def _enters(incoming: Road, end: ContactPoint, lane_id: int) -> bool:
+    """Whether traffic on the lane travels towards the road's ``end`` (into the junction)."""
+    direction = travel_direction(incoming, lane_id)
+    return direction == (1 if end is ContactPoint.END else -1)
+
+
+def _centre_path(ctx: Context, road: Road, lane_id: int, contact: ContactPoint) -> np.ndarray | None:
+    """The lane's centre from ``contact`` through the road, following its lane links across sections."""
+    geometry = ctx.geometry(road.id)
+    sections = road.lane_sections
+    order = range(len(sections)) if contact is ContactPoint.START else range(len(sections) - 1, -1, -1)
+    pieces = []
+    current: int | None = lane_id
+    for index in order:
+        lane = sections[index].lane(current) if current is not None else None
+        if lane is None:
+            break
+        s = section_samples(ctx, road, index)
+        points = geometry.lane_points(index, current, s, "centre")
+        xy = np.column_stack((points.x, points.y))
+        pieces.append(xy if contact is ContactPoint.START else xy[::-1])
+        links = lane.successors if contact is ContactPoint.START else lane.predecessors
+        current = links[0] if len(links) == 1 else None
+    if not pieces:
+        return None
+    xy = np.concatenate(pieces)
+    xy = xy[np.all(np.isfinite(xy), axis=1)]
+    return xy if len(xy) >= 2 else None
+
+
+def _groups(ctx: Context):
+    """(junction, incoming road, its end at the junction, connections from it) for every default junction."""
+    for junction in ctx.document.junctions:
+        if junction.type is JunctionType.DIRECT:
+            continue
+        for incoming_id in junction.incoming_roads:
+            incoming = ctx.road(incoming_id)
+            if incoming is None or usable(ctx, incoming) is None:
+                continue
+            connections = ctx.connections_by_incoming.get((junction.id, incoming_id), ())
+            ends: dict[ContactPoint, list[Connection]] = {}
+            for c in connections:
+                end = ctx.incoming_contact(junction, c)
+                connecting = ctx.road(c.connecting_road)
+                if end is None or connecting is None or c.contact_point is None or usable(ctx, connecting) is None:
+                    continue
+                ends.setdefault(end, []).append(c)
+            for end, group in ends.items():
+                yield junction, incoming, end, group
+
+
+def _paths(ctx: Context, incoming: Road, end: ContactPoint, connections: list[Connection]) -> list[_Path]:
+    out: list[_Path] = []
+    seen: set[tuple[str, int]] = set()
+    for c in connections:
+        connecting = ctx.road(c.connecting_road)
+        for link in c.lane_links:
+            if not _enters(incoming, end, link.from_lane) or (connecting.id, link.to_lane) in seen:
+                continue
+            xy = _centre_path(ctx, connecting, link.to_lane, c.contact_point)
+            if xy is None:
+                continue
+            seen.add((connecting.id, link.to_lane))
+            out.append(_Path(c, link.from_lane, connecting, link.to_lane, link.line or c.line, xy))
+    return out
+
+
+def _parted(a: np.ndarray, b: shapely.LineString, tol: float) -> np.ndarray | None:
+    """The part of polyline ``a`` from its first vertex further than ``tol`` from ``b`` on (``None``: never)."""
+    distance = shapely.distance(shapely.points(a), b)
+    far = np.nonzero(distance > tol)[0]
+    if not len(far) or len(a) - far[0] < 2:
+        return None
+    return a[far[0] :]
+
+
+def _crossing(p: _Path, q: _Path, tol: float) -> np.ndarray | None:
+    """A point where two paths meet other than their shared start (``None`` when they do not)."""
+    a, b = p.xy, q.xy
+    if p.from_lane == q.from_lane:
+        line_a, line_b = shapely.LineString(a), shapely.LineString(b)
+        a, b = _parted(a, line_b, tol), _parted(b, line_a, tol)
+        if a is None or b is None:
+            return None
+    meet = shapely.intersection(shapely.LineString(a), shapely.LineString(b))
+    if meet.is_empty:
+        return None
+    point = shapely.get_coordinates(meet)[0]
+    return point
+
+
+def _describe(p: _Path) -> str:
+    return f"lane {p.from_lane} -> road {p.road.id} lane {p.lane} (connection {p.connection.id})"
+
+
+@rule("J101", "connection-lanes-cross", Category.JUNCTION, Severity.ERROR)
+def connection_lanes_cross(ctx: Context):
+    """Two connection lanes leaving one incoming road cross (or meet) inside the junction.
+
+    The centre lines of the connecting-road lanes entered from one road's lanes must not intersect except where they
+    start together (turns from the same lane part there). A left turn from the right lane crossing the straight-on
+    path from the left lane, or two laneLinks in crossed order, make vehicles of one approach collide.
+
+    Passes (lane -1 goes straight on, lane -2 turns right: the paths part and stay apart)::
+
+        <connection incomingRoad="1" connectingRoad="10" contactPoint="start"><laneLink from="-1" to="-1"/>
+        <connection incomingRoad="1" connectingRoad="11" contactPoint="start"><laneLink from="-2" to="-1"/>
+
+    Fails (lane -2 turns left across the straight-on path of lane -1)::
+
+        <connection incomingRoad="1" connectingRoad="10" contactPoint="start"><laneLink from="-1" to="-1"/>
+        <connection incomingRoad="1" connectingRoad="12" contactPoint="start"><laneLink from="-2" to="-1"/>
+    """
+    tol = ctx.tolerances.junction_start
+    for junction, incoming, end, group in _groups(ctx):
+        paths = _paths(ctx, incoming, end, group)
+        for i, p in enumerate(paths):
+            for q in paths[i + 1 :]:
+                point = _crossing(p, q, tol)
+                if point is None:
+                    continue
+                yield connection_lanes_cross.finding(
+                    f"junction {junction.id}: from road {incoming.id}, {_describe(p)} and {_describe(q)} meet at "
+                    f"({point[0]:.3f}, {point[1]:.3f}): paths leaving one road must not cross; reorder the laneLinks "
+                    f"or reshape the connecting roads",
+                    road=incoming.id,
+                    lane=p.from_lane,
+                    s=end_s(incoming, end),
+                    x=float(point[0]),
+                    y=float(point[1]),
+                    line=q.line or junction.line or None,
+                )
+
+
+def _order_pairs(ctx: Context, junction: Junction, incoming: Road, end: ContactPoint, c: Connection):
+    """(from lane, to lane, lateral position of each at the contact, line) for a connection's laneLinks."""
+    mine = road_end(ctx, incoming, end)
+    theirs = road_end(ctx, ctx.road(c.connecting_road), c.contact_point)
+    axis = mine.border(0, "outer")
+    if axis is None:
+        return []
+    normal = np.array([-np.sin(axis.outward), np.cos(axis.outward)])
+    out = []
+    for link in c.lane_links:
+        a = [mine.border(link.from_lane, w) for w in ("inner", "outer")]
+        b = [theirs.border(link.to_lane, w) for w in ("inner", "outer")]
+        if any(p is None for p in (*a, *b)):
+            continue
+        along_a = float(normal @ [(a[0].x + a[1].x) / 2, (a[0].y + a[1].y) / 2])
+        along_b = float(normal @ [(b[0].x + b[1].x) / 2, (b[0].y + b[1].y) / 2])
+        out.append((link.from_lane, link.to_lane, along_a, along_b, link.line or c.line))
+    return out
+
+
+@rule("J102", "junction-lane-links-crossed", Category.JUNCTION, Severity.ERROR)
+def junction_lane_links_crossed(ctx: Context):
+    """Two laneLinks of one connection swap the lanes' order: the left incoming lane enters the right lane.
+
+    At the contact point, the incoming lanes' centres and the connecting lanes' centres are ordered across the road;
+    the laneLinks of a connection must keep that order.
+
+    Passes::
+
+        <connection incomingRoad="1" connectingRoad="10" contactPoint="start">
+          <laneLink from="-1" to="-1"/><laneLink from="-2" to="-2"/></connection>
+
+    Fails::
+
+        <connection incomingRoad="1" connectingRoad="10" contactPoint="start">
+          <laneLink from="-1" to="-2"/><laneLink from="-2" to="-1"/></connection>
+    """
+    tol = ctx.tolerances.position
+    for junction, incoming, end, group in _groups(ctx):
+        for c in group:
+            pairs = _order_pairs(ctx, junction, incoming, end, c)
+            for i, (fa, ta, xa, ya, _) in enumerate(pairs):
+                for fb, tb, xb, yb, line in pairs[i + 1 :]:
+                    if fa == fb or ta == tb or (xa - xb) * (ya - yb) >= 0 or min(abs(xa - xb), abs(ya - yb)) <= tol:
+                        continue
+                    point = road_end(ctx, incoming, end).border(fb, "outer")
+                    yield junction_lane_links_crossed.finding(
+                        f"junction {junction.id}, connection {c.id}: lanes {fa} and {fb} of road {incoming.id} enter "
+                        f"lanes {ta} and {tb} of road {c.connecting_road} in swapped order (the lane on one side "
+                        f"continues on the other side); link each lane to the connecting lane beside it",
+                        road=incoming.id,
+                        lane=fb,
+                        s=end_s(incoming, end),
+                        x=point.x if point else None,
+                        y=point.y if point else None,
+                        line=line or c.line or None,
+                    )

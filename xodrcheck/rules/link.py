@@ -1,0 +1,292 @@
+"""Positions at contacts (``K1xx``, ``L1xx``): linked road ends and linked lanes really meet.
+
+A *joint* is a pair of road ends that touch: a road link between two roads, or, in a junction, an incoming road's end
+and a connection's connecting (or linked) road at the connection's contact point (:meth:`Context.neighbours`). Each
+joint is checked once.
+
+* The lane-0 line (the reference line shifted by the laneOffset, the line that separates left from right lanes) must
+  leave one road where it enters the other (``K101``) for a road link outside junctions. In a junction a connecting
+  road may carry its reference line anywhere (RoadRunner puts it on a lane border of the incoming road), so there
+  only the lanes are compared.
+* At every joint, the lane-0 lines' headings must agree (``K102``): a start-to-start or end-to-end link means the
+  roads run in opposite directions, so the headings pointing out of the two ends must be opposite.
+* Every pair of lanes linked across the joint (lane ``<link>`` records at a road link, ``<laneLink>`` records of a
+  junction connection) must have coinciding borders: the two border points of one lane equal those of the other, in
+  either order (``K103``).
+* Inside a road, lanes linked across a lane-section boundary keep their borders (``L101``).
+
+Distances use the ``position`` tolerance, angles the ``heading`` tolerance. ASAM's
+``lane.smoothness.contact_point_no_horizontal_gaps`` uses a fixed 1 cm and compares positions only.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+
+import numpy as np
+
+from xodrcheck.findings import Category, Severity
+from xodrcheck.model import ContactPoint, ElementType, Road
+from xodrcheck.rules.context import Context, Neighbour, link_at
+from xodrcheck.rules.registry import rule
+from xodrcheck.rules.sampled import EndPoint, RoadEnd, angle_between, end_s, road_end, section_lines, usable
+
+
+def _joints(ctx: Context, once: bool = True) -> Iterator[tuple[Road, ContactPoint, Neighbour]]:
+    """Pairs of touching road ends (road, its end, the neighbour at the other end): each pair once, or with ``once``
+    false once per way it is declared (a road link, and each junction connection)."""
+    seen: set[tuple] = set()
+    for road in ctx.document.roads:
+        if usable(ctx, road) is None:
+            continue
+        for end in (ContactPoint.START, ContactPoint.END):
+            for neighbour in ctx.neighbours(road, end):
+                if usable(ctx, neighbour.road) is None:
+                    continue
+                pair = frozenset({(road.id, end), (neighbour.road.id, neighbour.contact)})
+                key = (pair, None if once or neighbour.connection is None else neighbour.connection.id)
+                if len(pair) < 2 or key in seen:
+                    continue
+                seen.add(key)
+                yield road, end, neighbour
+
+
+def _where(road: Road, end: ContactPoint, point: EndPoint, line: int, lane: int | None = None) -> dict:
+    index = 0 if end is ContactPoint.START else len(road.lane_sections) - 1
+    return {
+        "road": road.id,
+        "lane": lane,
+        "section_s": road.lane_sections[index].s,
+        "s": end_s(road, end),
+        "x": point.x,
+        "y": point.y,
+        "line": line or road.line or None,
+    }
+
+
+def _joint_line(road: Road, end: ContactPoint, neighbour: Neighbour) -> int:
+    if neighbour.connection is not None:
+        return neighbour.connection.line
+    link = link_at(road, end)
+    return link.line if link is not None else 0
+
+
+def _describe(road: Road, end: ContactPoint, neighbour: Neighbour) -> str:
+    via = f" (junction {neighbour.junction.id}, connection {neighbour.connection.id})" if neighbour.connection else ""
+    return f"the {end.value} of road {road.id} and the {neighbour.contact.value} of road {neighbour.road.id}{via}"
+
+
+def _in_junction(ctx: Context, road: Road) -> bool:
+    return road.junction is not None and ctx.junction(road.junction) is not None
+
+
+@rule("K101", "link-gap", Category.LINK, Severity.ERROR)
+def link_gap(ctx: Context):
+    """Two roads linked outside a junction do not meet: their lane-0 lines are apart at the contact points.
+
+    The lane-0 line is the reference line shifted by the laneOffset; where road A links to road B, A's lane-0 line at
+    its end must be B's at the linked end, within the ``position`` tolerance (1 mm by default: gaps under 1 cm, which
+    ASAM's checker lets through, are reported). Junction connections are checked lane by lane (``lane-border-gap``).
+
+    Passes (road 1 ends at x=100, road 2 starts there)::
+
+        <road id="1" length="100"> ... <geometry s="0" x="0" y="0" hdg="0" length="100"><line/></geometry>
+        <road id="2" length="100"> ... <geometry s="0" x="100" y="0" hdg="0" length="100"><line/></geometry>
+
+    Fails (road 2 starts 5 mm further on)::
+
+        <road id="2" length="100"> ... <geometry s="0" x="100.005" y="0" hdg="0" length="100"><line/></geometry>
+    """
+    tol = ctx.tolerances.position
+    for road, end, neighbour in _joints(ctx):
+        if neighbour.connection is not None or _in_junction(ctx, road) or _in_junction(ctx, neighbour.road):
+            continue
+        mine = road_end(ctx, road, end).border(0, "outer")
+        theirs = road_end(ctx, neighbour.road, neighbour.contact).border(0, "outer")
+        if mine is None or theirs is None:
+            continue
+        gap = math.hypot(mine.x - theirs.x, mine.y - theirs.y)
+        if gap > tol:
+            yield link_gap.finding(
+                f"gap of {gap:.4g} m between {_describe(road, end, neighbour)}: their lane-0 lines (reference line "
+                f"plus laneOffset) are at ({mine.x:.3f}, {mine.y:.3f}) and ({theirs.x:.3f}, {theirs.y:.3f}); move "
+                f"one road's geometry (or fix the laneOffset) so they meet",
+                **_where(road, end, mine, _joint_line(road, end, neighbour)),
+            )
+
+
+@rule("K102", "link-kink", Category.LINK, Severity.ERROR)
+def link_kink(ctx: Context):
+    """Two linked roads meet at an angle: the heading changes abruptly at the contact (a kink, with or without a gap).
+
+    Compared on the lane-0 lines (reference line plus laneOffset) at every road link and every junction connection,
+    with the ``heading`` tolerance. A start-to-start or end-to-end link joins roads running in opposite directions:
+    the heading leaving one road must be the opposite of the heading leaving the other.
+
+    Passes (road 2 continues road 1 straight on)::
+
+        <road id="1"> ... <geometry s="0" x="0" y="0" hdg="0" length="100"><line/></geometry>
+        <road id="2"> ... <geometry s="0" x="100" y="0" hdg="0" length="100"><line/></geometry>
+
+    Fails (road 2 turns 0.1 rad at the joint)::
+
+        <road id="2"> ... <geometry s="0" x="100" y="0" hdg="0.1" length="100"><line/></geometry>
+    """
+    tol = ctx.tolerances.heading
+    for road, end, neighbour in _joints(ctx):
+        mine = road_end(ctx, road, end).border(0, "outer")
+        theirs = road_end(ctx, neighbour.road, neighbour.contact).border(0, "outer")
+        if mine is None or theirs is None:
+            continue
+        kink = angle_between(mine.outward, theirs.outward + math.pi)
+        if kink > tol:
+            yield link_kink.finding(
+                f"heading changes by {math.degrees(kink):.3g} deg ({kink:.3g} rad) between "
+                f"{_describe(road, end, neighbour)}: make the headings at the contact points agree",
+                **_where(road, end, mine, _joint_line(road, end, neighbour)),
+            )
+
+
+def _lane_pairs(road: Road, end: ContactPoint, neighbour: Neighbour) -> list[tuple[int, int, int]]:
+    """(lane of ``road``, lane of the neighbour, source line) for every lane link across the joint."""
+    if neighbour.connection is not None:
+        connection = neighbour.connection
+        if connection.incoming_road == road.id:
+            return [(ll.from_lane, ll.to_lane, ll.line) for ll in connection.lane_links]
+        return [(ll.to_lane, ll.from_lane, ll.line) for ll in connection.lane_links]
+    pairs: dict[tuple[int, int], int] = {}
+    index = 0 if end is ContactPoint.START else len(road.lane_sections) - 1
+    for lane in road.lane_sections[index].lanes:
+        for other in lane.predecessors if end is ContactPoint.START else lane.successors:
+            pairs.setdefault((lane.id, other), lane.line)
+    back = link_at(neighbour.road, neighbour.contact)
+    if back is not None and back.element_type is ElementType.ROAD and back.element_id == road.id:
+        other_index = 0 if neighbour.contact is ContactPoint.START else len(neighbour.road.lane_sections) - 1
+        for lane in neighbour.road.lane_sections[other_index].lanes:
+            links = lane.predecessors if neighbour.contact is ContactPoint.START else lane.successors
+            for mine in links:
+                pairs.setdefault((mine, lane.id), lane.line)
+    return [(a, b, line) for (a, b), line in pairs.items() if a != 0 and b != 0]
+
+
+def _border_gap(mine: RoadEnd, lane: int, theirs: RoadEnd, other: int) -> tuple[float, EndPoint] | None:
+    points = [e.border(lane_id, w) for e, lane_id in ((mine, lane), (theirs, other)) for w in ("inner", "outer")]
+    if any(p is None for p in points):
+        return None
+    inner_a, outer_a, inner_b, outer_b = points
+
+    def d(p: EndPoint, q: EndPoint) -> float:
+        return math.hypot(p.x - q.x, p.y - q.y)
+
+    gap = min(max(d(inner_a, inner_b), d(outer_a, outer_b)), max(d(inner_a, outer_b), d(outer_a, inner_b)))
+    return gap, outer_a
+
+
+@rule("K103", "lane-border-gap", Category.LINK, Severity.ERROR)
+def lane_border_gap(ctx: Context):
+    """Two lanes linked across a road link or a junction connection do not meet: their borders are apart.
+
+    For every lane link across a joint (lane ``<predecessor>``/``<successor>`` at a road link, ``<laneLink>`` of a
+    junction connection), the inner and outer border of one lane at its road's end must coincide with the borders of
+    the other lane at its contact point (in either order), within the ``position`` tolerance. This catches gaps and
+    overlaps between linked lanes (ASAM's ``lane.smoothness.contact_point_no_horizontal_gaps``, which only sees gaps
+    over 1 cm), crossed lane links and lanes linked to a lane of another width.
+
+    Passes (lane -1 of both roads is 3.5 m wide and the roads meet)::
+
+        <road id="1"> ... <lane id="-1"><link><successor id="-1"/></link><width a="3.5" .../></lane>
+        <road id="2"> ... <lane id="-1"><link><predecessor id="-1"/></link><width a="3.5" .../></lane>
+
+    Fails (road 2's lane -1 is 3.0 m wide: its outer border is 0.5 m off)::
+
+        <road id="2"> ... <lane id="-1"><link><predecessor id="-1"/></link><width a="3.0" .../></lane>
+    """
+    tol = ctx.tolerances.position
+    done: set[frozenset] = set()
+    for road, end, neighbour in _joints(ctx, once=False):
+        mine, theirs = road_end(ctx, road, end), road_end(ctx, neighbour.road, neighbour.contact)
+        for lane, other, line in _lane_pairs(road, end, neighbour):
+            key = frozenset({(road.id, end, lane), (neighbour.road.id, neighbour.contact, other)})
+            if key in done:
+                continue
+            done.add(key)
+            found = _border_gap(mine, lane, theirs, other)
+            if found is None or found[0] <= tol:
+                continue
+            gap, point = found
+            yield lane_border_gap.finding(
+                f"lane {lane} of road {road.id} and lane {other} of road {neighbour.road.id} are linked at "
+                f"{_describe(road, end, neighbour)} but their borders are {gap:.4g} m apart: fix the link, the "
+                f"widths or the geometry so the linked lanes meet",
+                **_where(road, end, point, line or _joint_line(road, end, neighbour), lane),
+            )
+
+
+def _inner_pairs(side):
+    """(id of the lane whose outer border is the inner border, lane) for the lanes of one side, inner to outer."""
+    inner = 0
+    for lane in side.lanes:
+        yield inner, lane
+        inner = lane.id
+
+
+@rule("L101", "lane-border-discontinuous", Category.LANE, Severity.ERROR)
+def lane_border_discontinuous(ctx: Context):
+    """Lanes linked across a lane-section boundary inside a road do not meet: a border jumps at the boundary.
+
+    At the start ``s`` of each lane section, every lane linked to a lane of the previous section (by the previous
+    lane's ``<successor>`` or its own ``<predecessor>``) must have the same inner and outer border ``t`` as that lane
+    has at the end of its section, within the ``position`` tolerance. A lane that appears at full width beside a
+    lane it is linked to, or a width record that does not continue the previous section's width, is reported.
+
+    Passes (lane -1 keeps 3.5 m across the boundary at s=50)::
+
+        <laneSection s="0"> ... <lane id="-1"><link><successor id="-1"/></link><width a="3.5" .../>
+        <laneSection s="50"> ... <lane id="-1"><link><predecessor id="-1"/></link><width a="3.5" .../>
+
+    Fails (the width jumps from 3.5 m to 2.5 m at s=50)::
+
+        <laneSection s="50"> ... <lane id="-1"><link><predecessor id="-1"/></link><width a="2.5" .../>
+    """
+    tol = ctx.tolerances.position
+    for road in ctx.document.roads:
+        geometry = usable(ctx, road)
+        if geometry is None:
+            continue
+        sections = road.lane_sections
+        for i in range(1, len(sections)):
+            before, after = sections[i - 1], sections[i]
+            pairs: dict[tuple[int, int], int] = {}
+            for lane in before.lanes:
+                for nxt in lane.successors:
+                    pairs.setdefault((lane.id, nxt), lane.line)
+            for lane in after.lanes:
+                for prev in lane.predecessors:
+                    pairs.setdefault((prev, lane.id), lane.line)
+            if not pairs:
+                continue
+            old, new = section_lines(ctx, road, i - 1), section_lines(ctx, road, i)
+            inner_of = {lane.id: inner for side in geometry.side_lanes(i - 1) for inner, lane in _inner_pairs(side)}
+            inner_new = {lane.id: inner for side in geometry.side_lanes(i) for inner, lane in _inner_pairs(side)}
+            for (a, b), line in sorted(pairs.items()):
+                if a == 0 or b == 0 or a not in old.t or b not in new.t:
+                    continue  # a missing lane is lane-link-missing-lane's
+                inner_a, inner_b = float(old.t[inner_of[a]][-1]), float(new.t[inner_new[b]][0])
+                outer_a, outer_b = float(old.t[a][-1]), float(new.t[b][0])
+                jump = max(abs(inner_a - inner_b), abs(outer_a - outer_b))
+                if not jump > tol:
+                    continue
+                point = new.borders[b]
+                yield lane_border_discontinuous.finding(
+                    f"road {road.id}: lane {a} of the lane section at s={before.s:g} continues as lane {b} at "
+                    f"s={after.s:g}, but its borders jump by {jump:.4g} m (inner {inner_a:.3f} -> {inner_b:.3f}, "
+                    f"outer {outer_a:.3f} -> {outer_b:.3f}); make the widths continue or link the right lanes",
+                    road=road.id,
+                    lane=b,
+                    section_s=after.s,
+                    s=after.s,
+                    x=float(point.x[0]),
+                    y=float(point.y[0]),
+                    line=line or after.line or None,
+                )

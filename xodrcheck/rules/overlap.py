@@ -1,0 +1,196 @@
+"""Overlap rules (``O0xx``): lane surfaces that occupy the same place, from the plan-view footprints of the lane
+meshes (:mod:`xodrcheck.footprint`, sampled under ``Tolerances.chord``).
+
+Two roads may overlap when they are *related*: the same road, consecutive roads (a road link either way), or roads
+sharing a junction (members of it, roads linking to it, incoming roads of its connections); inside a junction the
+connection lanes cross each other by design (the conflict areas, :func:`xodrcheck.footprint.conflict_areas`). Other
+pairs overlap when their footprints share more than ``Tolerances.overlap_area`` square metres where their surfaces are
+closer in height than ``Tolerances.clearance`` (a bridge with clearance is no overlap). Heights are compared at a point
+inside each shared piece and at up to 24 points of its outline; a piece counts in proportion to its points within the
+clearance. Borders that merely touch share no area.
+
+An overlap involving a drivable lane is an error (``O001`` between roads outside junctions, ``O003`` when one of the
+roads is a junction's connecting road); overlaps between roadside lanes only (sidewalks, shoulders, borders, lanes of
+type none...) are ``O004`` warnings.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+
+from xodrcheck.findings import Category, Severity
+from xodrcheck.footprint import DRIVABLE_TYPE_NAMES, Overlap, overlap_index
+from xodrcheck.rules.context import Context
+from xodrcheck.rules.registry import rule
+
+
+@dataclass
+class _Pair:
+    area: float = 0.0
+    largest: Overlap | None = None
+    lanes: set[tuple[int, int]] = field(default_factory=set)
+
+
+def _pairs(ctx: Context, drivable: bool) -> dict[tuple[str, str], _Pair]:
+    """Unrelated road pairs and their shared area within the clearance, counting lane pairs with a drivable lane
+    (``drivable``) or lane pairs of roadside lanes only (``not drivable``). Cached on the context."""
+    cache = ctx.__dict__.setdefault("_overlap_pairs", {})  # per file: O001, O003 and O004 share one pass
+    if drivable in cache:
+        return cache[drivable]
+    tol = ctx.tolerances
+    index = overlap_index(ctx.document, tol.chord)
+    surfaces = index.surfaces
+    both: dict[bool, dict[tuple[str, str], _Pair]] = {True: defaultdict(_Pair), False: defaultdict(_Pair)}
+    for o in index.overlaps(tol.overlap_area, tol.clearance, ctx.out_of_time):
+        a, b = surfaces.lanes[o.lane_a], surfaces.lanes[o.lane_b]
+        types = surfaces.lane_types
+        kind = types[o.lane_a] in DRIVABLE_TYPE_NAMES or types[o.lane_b] in DRIVABLE_TYPE_NAMES
+        if (a.road, a.lane) > (b.road, b.lane):
+            o = Overlap(o.lane_b, o.lane_a, o.area, o.x, o.y, o.dz, o.s_b, o.s_a)
+            a, b = b, a
+        pair = both[kind][(a.road, b.road)]
+        pair.area += o.area
+        pair.lanes.add((a.lane, b.lane))
+        if pair.largest is None or o.area > pair.largest.area:
+            pair.largest = o
+    cache.update({k: {p: v for p, v in d.items() if v.area > tol.overlap_area} for k, d in both.items()})
+    return cache[drivable]
+
+
+def _message(ctx: Context, roads: tuple[str, str], area: float, lanes: list[tuple[int, int]], o: Overlap,
+             what: str) -> str:
+    shown = ", ".join(f"{a}/{b}" for a, b in lanes[:4]) + (" ..." if len(lanes) > 4 else "")
+    return (
+        f"{what}road {roads[0]} and road {roads[1]} overlap by {area:.1f} m2 in plan view (lanes {shown}) with "
+        f"{o.dz:.2f} m between their surfaces (clearance {ctx.tolerances.clearance:g} m), around "
+        f"({o.x:.2f}, {o.y:.2f}); they are neither linked nor in one junction"
+    )
+
+
+def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: str) -> Iterator:
+    surfaces = overlap_index(ctx.document, ctx.tolerances.chord).surfaces
+    for roads, pair in sorted(_pairs(ctx, drivable).items()):
+        members = [ctx.road(r) is not None and ctx.road(r).junction is not None for r in roads]
+        if junction is not None and any(members) is not junction:
+            continue
+        o, lanes = pair.largest, sorted(pair.lanes)
+        if junction and not members[0]:  # name the connecting road first
+            roads = (roads[1], roads[0])
+            o = Overlap(o.lane_b, o.lane_a, o.area, o.x, o.y, o.dz, o.s_b, o.s_a)
+            lanes = sorted((b, a) for a, b in lanes)
+        key = surfaces.lanes[o.lane_a]
+        road = ctx.road(key.road)
+        yield check.finding(
+            _message(ctx, roads, pair.area, lanes, o, what),
+            road=key.road,
+            lane=key.lane,
+            section_s=key.section_s,
+            s=o.s_a,
+            x=o.x,
+            y=o.y,
+            line=road.line if road is not None else None,
+        )
+
+
+@rule("O001", "road-overlap", Category.OVERLAP, Severity.ERROR)
+def road_overlap(ctx: Context):
+    """Two roads outside junctions that are not linked overlap in plan view at the same height.
+
+    The lane surfaces of the two roads (a drivable lane on at least one side) share more than
+    ``Tolerances.overlap_area`` m2 where they are closer in height than ``Tolerances.clearance``: a car could drive
+    from one road onto the other where no link says so. Roads crossing need a junction; a bridge needs clearance.
+
+    Passes (road 2 crosses road 1 six metres above it)::
+
+        <road id="1" junction="-1"> ... <geometry x="-50" y="0" hdg="0" length="100"><line/></geometry> ...
+        <road id="2" junction="-1"> ... <geometry x="0" y="-50" hdg="1.5708" length="100"><line/></geometry> ...
+          <elevationProfile><elevation s="0" a="6" b="0" c="0" d="0"/></elevationProfile>
+
+    Fails (the same roads at one height, no junction)::
+
+        <road id="1" junction="-1"> ... <geometry x="-50" y="0" hdg="0" length="100"><line/></geometry> ...
+        <road id="2" junction="-1"> ... <geometry x="0" y="-50" hdg="1.5708" length="100"><line/></geometry> ...
+    """
+    yield from _findings(ctx, road_overlap, True, False, "")
+
+
+@rule("O002", "lane-fold", Category.OVERLAP, Severity.ERROR)
+def lane_fold(ctx: Context):
+    """A lane's surface folds over itself in plan view.
+
+    The lane's triangles cover some area more than once by more than ``Tolerances.overlap_area`` m2: its outer border
+    runs backwards where the lane is wider than the radius of its inner side's curve (width times curvature past 1),
+    or the lane crosses itself. Reported once per lane and lane section, at the first place it folds.
+
+    Passes (a 3.5 m lane on a 20 m radius)::
+
+        <geometry ... length="30"><arc curvature="-0.05"/></geometry> ... <lane id="-1"><width a="3.5" .../>
+
+    Fails (a 3.5 m lane on the inside of a 2 m radius)::
+
+        <geometry ... length="6"><arc curvature="-0.5"/></geometry> ... <lane id="-1"><width a="3.5" .../>
+    """
+    index = overlap_index(ctx.document, ctx.tolerances.chord)
+    surfaces, footprints = index.surfaces, index.footprints
+    for lane in footprints.invalid:
+        if ctx.out_of_time():
+            return
+        area = footprints.self_overlap(int(lane))
+        if area <= ctx.tolerances.overlap_area:
+            continue
+        key = surfaces.lanes[lane]
+        first, stop = surfaces.lane_faces[lane], surfaces.lane_faces[lane + 1]
+        flipped = [f for f in range(first, stop) if surfaces.plan_areas[f] < 0]
+        face = flipped[0] if flipped else first
+        corner = surfaces.vertices[surfaces.faces[face, 0]]
+        road = ctx.road(key.road)
+        yield lane_fold.finding(
+            f"lane {key.lane} of road {key.road} (lane section at s={key.section_s:g}) covers {area:.1f} m2 of plan "
+            f"view twice: its surface folds over itself"
+            + (f" from s={surfaces.face_s[face]:.2f}" if flipped else ""),
+            road=key.road,
+            lane=key.lane,
+            section_s=key.section_s,
+            s=float(surfaces.face_s[face]),
+            x=float(corner[0]),
+            y=float(corner[1]),
+            line=road.line if road is not None else None,
+        )
+
+
+@rule("O003", "connection-overlap", Category.OVERLAP, Severity.ERROR)
+def connection_overlap(ctx: Context):
+    """A junction's connecting road overlaps a road that belongs neither to its junction nor to its legs.
+
+    Connection lanes of one junction overlap each other on purpose (conflict areas); they must not overlap, at the
+    same height and by more than ``Tolerances.overlap_area`` m2 with a drivable lane involved, a road that is not in
+    the junction, not one of its incoming roads and not linked to it (another junction's connecting road included).
+
+    Passes: a four-leg junction whose left turns cross the straight connections (all in junction 100).
+
+    Fails (road 50, linked to nothing, lies across connecting road 10 of junction 100)::
+
+        <road id="10" junction="100"> ... <geometry x="-10" y="0" hdg="0" length="20"><line/></geometry> ...
+        <road id="50" junction="-1"> ... <geometry x="-7" y="-3" hdg="0" length="6"><line/></geometry> ...
+    """
+    yield from _findings(ctx, connection_overlap, True, True, "connecting ")
+
+
+@rule("O004", "roadside-overlap", Category.OVERLAP, Severity.WARNING)
+def roadside_overlap(ctx: Context):
+    """Roadside lanes (no drivable lane on either side) of two unrelated roads overlap at the same height.
+
+    Sidewalks, shoulders, borders or lanes of type none of two roads that are neither linked nor share a junction
+    cover the same ground (more than ``Tolerances.overlap_area`` m2 within ``Tolerances.clearance``): usually two
+    sidewalks drawn across each other at a corner, or a road of roadside lanes laid over another.
+
+    Passes (two sidewalk roads side by side, 1 m apart).
+
+    Fails (two sidewalk-only roads crossing at one height)::
+
+        <road id="1"> ... <lane id="-1" type="sidewalk"> ... <geometry x="-20" y="0" hdg="0" length="40"> ...
+        <road id="2"> ... <lane id="-1" type="sidewalk"> ... <geometry x="0" y="-20" hdg="1.5708" length="40"> ...
+    """
+    yield from _findings(ctx, roadside_overlap, False, None, "roadside lanes of ")
