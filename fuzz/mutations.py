@@ -420,7 +420,7 @@ def damaged_documents(base: st.SearchStrategy[bytes] | None = None, *, min_mutat
     if base is None:
         from fuzz.documents import opendrive_documents
 
-        base = opendrive_documents()
+        base = opendrive_documents(max_roads_per_chain=2, max_elements=2, max_lanes=2)
     return _damaged(base, document_mutations(defects=defects, damage=damage), min_mutations, max_mutations)
 
 

@@ -19,8 +19,18 @@ from .params import Params
 from .writer import to_bytes
 from .writer import write as _write
 
-__all__ = ["generate", "generate_layout", "write", "to_bytes", "Params", "ParamsError", "InputError",
-           "JunctionArtError", "Document", "ControlLines"]
+__all__ = [
+    "ControlLines",
+    "Document",
+    "InputError",
+    "JunctionArtError",
+    "Params",
+    "ParamsError",
+    "generate",
+    "generate_layout",
+    "to_bytes",
+    "write",
+]
 
 
 @dataclass(frozen=True)

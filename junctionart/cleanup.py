@@ -11,12 +11,23 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from .curves import sample
 from .intersections.model import Layout, RoadPlan
 from .lanegeom import lane_id
-from .opendrive import (Connection, Cubic, Document, Header, Junction, Lane, LaneLink, LaneSection, Link, Road,
-                        RoadMark)
+from .opendrive import (
+    Connection,
+    Cubic,
+    Document,
+    Header,
+    Junction,
+    Lane,
+    LaneLink,
+    LaneSection,
+    Link,
+    Road,
+    RoadMark,
+)
 from .params import Params, TrafficRule
-from .curves import sample
 
 SOLID_NEAR_JUNCTION = 30.0
 ROAD_SPEED = 50.0

@@ -109,8 +109,7 @@ def automatic(params: Params, rng: np.random.Generator) -> ControlLines:
             if min(top - y0, top - y1) < lo or len(lines) >= wanted:
                 break
             y0n, y1n = min(y0n, top), min(y1n, top)  # the last line runs along the top edge
-            if len(lines) + 1 < wanted:
-                wanted = len(lines) + 1
+            wanted = min(wanted, len(lines) + 1)
         y0, y1 = y0n, y1n
     if len(lines) < 2:
         # Height allows a single spacing draw only: put the second line at the top edge.

@@ -22,7 +22,7 @@ class LaneConfig:
     backward: int
     median: bool = False
 
-    def reversed(self) -> "LaneConfig":
+    def reversed(self) -> LaneConfig:
         return LaneConfig(self.backward, self.forward, self.median)
 
 

@@ -10,7 +10,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from shapely import STRtree, LineString
+from shapely import LineString, STRtree
 
 from .controllines import ControlLine, ControlLines
 from .params import Params

@@ -81,12 +81,12 @@ class Params:
     def transition_table(self) -> dict[str, dict[str, float]]:
         return {k: dict(v) for k, v in self.transitions}
 
-    def with_(self, **changes: Any) -> "Params":
+    def with_(self, **changes: Any) -> Params:
         """A copy with some fields changed (validated again)."""
         return replace(self, **changes)
 
     @classmethod
-    def create(cls, **values: Any) -> "Params":
+    def create(cls, **values: Any) -> Params:
         """Build from plain values (strings for enums, a nested dict for ``transitions``), validated."""
         names = {f.name for f in fields(cls)}
         unknown = sorted(set(values) - names)

@@ -15,7 +15,19 @@ from pathlib import Path
 from lxml import etree
 
 from .errors import JunctionArtError
-from .opendrive import Arc, Cubic, Document, Geometry, Junction, Lane, LaneSection, Line, Link, ParamPoly3, Road
+from .opendrive import (
+    Arc,
+    Cubic,
+    Document,
+    Geometry,
+    Junction,
+    Lane,
+    LaneSection,
+    Line,
+    Link,
+    ParamPoly3,
+    Road,
+)
 
 REV_MINOR = {"1.8": 8, "1.7": 7}
 

@@ -112,6 +112,11 @@ class RoadGeometry:
     def reference(self, s) -> Pose:
         return self.reference_line.evaluate(s)
 
+    def section_reference(self, section_index: int, s) -> Pose:
+        """``reference(s)``, taken from (or stored in) the evaluation of the section's lanes at the same ``s``, so that
+        asking for the reference line and the lane lines at one array of ``s`` evaluates the plan view once."""
+        return self._evaluate(section_index, as_array(s)).pose
+
     def lane_offset(self, s) -> np.ndarray:
         return self._offset.jet(s)[0]
 

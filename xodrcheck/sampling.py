@@ -63,8 +63,9 @@ def sample_section(geometry: RoadGeometry, section_index: int, chord: float, max
     inset = _PROBE_INSET * steps
     probes = np.stack([coarse + inset, coarse + 0.5 * steps, coarse_ends - inset], axis=1).ravel()
 
-    bending = np.abs(geometry.reference(probes).curvature)
-    for line in geometry.border_curves(section_index, probes).values():
+    curves = geometry.border_curves(section_index, probes)
+    bending = np.abs(geometry.section_reference(section_index, probes).curvature)  # shared with the borders
+    for line in curves.values():
         bending = np.fmax(bending, np.abs(line.curvature) * line.speed**2)
     bending = np.fmax(bending, np.abs(profile.second_derivative(geometry.road.elevation, probes)))
     bending = np.nan_to_num(bending.reshape(-1, 3).max(axis=1), nan=0.0, posinf=np.inf)

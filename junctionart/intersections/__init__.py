@@ -3,4 +3,4 @@
 from .layout import build
 from .model import ConnectionPlan, JunctionPlan, Layout, RoadPlan
 
-__all__ = ["build", "Layout", "RoadPlan", "JunctionPlan", "ConnectionPlan"]
+__all__ = ["ConnectionPlan", "JunctionPlan", "Layout", "RoadPlan", "build"]

@@ -16,13 +16,22 @@ Each repair removes an edge or a node or enlarges a finite counter, so the loop 
 from __future__ import annotations
 
 import math
+from collections import deque
 from dataclasses import dataclass
 
 import numpy as np
 import shapely
 
-from ..curves import (HermiteFit, connection_geometry, end_pose, fillet_chain, fit_connections, local_target,
-                      sample, wrap)
+from ..curves import (
+    HermiteFit,
+    connection_geometry,
+    end_pose,
+    fillet_chain,
+    fit_connections,
+    local_target,
+    sample,
+    wrap,
+)
 from ..graph import Chain, chains
 from ..lanegeom import border_point, inner_offset, lane_id, side_width
 from ..lanes import LaneConfig, LanedNetwork
@@ -574,6 +583,7 @@ class Builder:
             for idx, k in enumerate(keys):
                 counts[k] = (plan.n_in_end[idx], plan.n_out_end[idx])
         geoms = []
+        need_of: dict[int, float] = {}
         for c, ch in enumerate(chs):
             if self._touched(ch.nodes):
                 geoms.append(None)
@@ -585,6 +595,7 @@ class Builder:
             taper = self.p.taper_length
             need = MIN_ROAD + (taper if (fs, bs) != (cfg.forward, cfg.backward) else 0.0) \
                 + (taper if (fe, be) != (cfg.forward, cfg.backward) else 0.0)
+            need_of[c] = need
             status, g = self._road_geometry(ch, r0, r1, need, cfg)
             if status == "vertex":
                 self._smooth(ch, g, f"bend at node {ch.nodes[g]} too sharp for its lanes")
@@ -605,11 +616,17 @@ class Builder:
             geoms.append((g, cfg, fs, bs, fe, be) if status == "ok" else None)
         if self.dirty:
             raise _Repair
-        # junctions
+        # junctions: a junction whose turns do not fit grows at once (its legs' roads are rebuilt, and a junction
+        # at the other end of a rebuilt road is fitted again), until it fits or a repair is needed
         junction_of: dict[int, int] = {node: n for n, node in enumerate(sorted(plans))}
-        jplans = []
-        grown = []
-        for node in sorted(plans):
+        done: dict[int, tuple] = {}
+        queue = deque(sorted(plans))
+        queued = set(queue)
+        while queue:
+            node = queue.popleft()
+            queued.discard(node)
+            if self._touched([node]):
+                continue
             keys, L, plan, _ = plans[node]
             contact, median = [], []
             for c, at_start in keys:
@@ -621,19 +638,46 @@ class Builder:
                     contact.append((e.x, e.y, e.hdg, False))
                 median.append(geoms[c][1].median)
             fits, grow = self._fit(node, plan, contact, median)
-            if grow:
-                failed = [r[0] for r in fits if r[-1] is None]
-                self.st.growth[node] = self.st.growth.get(node, 0) + 1
-                if self.st.growth[node] > MAX_GROWTH:
-                    self.st.growth[node] = 0
-                    self.st.scale[node] = 1.0
-                    self._drop_leg(node, keys, chs, sorted(set(failed)),
-                                   f"node {node}: dropped a leg whose turns stay under the radius bound")
-                    continue
-                self.st.scale[node] = self.st.scale.get(node, 1.0) * GROWTH
-                self.st.repairs.append(f"node {node}: moved incident points outward (turn radius)")
-                grown.append(node)
+            if not grow:
+                done[node] = (keys, fits)
                 continue
+            done.pop(node, None)
+            self.st.growth[node] = self.st.growth.get(node, 0) + 1
+            if self.st.growth[node] > MAX_GROWTH:
+                failed = [r[0] for r in fits if r[-1] is None]
+                self.st.growth[node] = 0
+                self.st.scale[node] = 1.0
+                self._drop_leg(node, keys, chs, sorted(set(failed)),
+                               f"node {node}: dropped a leg whose turns stay under the radius bound")
+                continue
+            self.st.scale[node] = self.st.scale.get(node, 1.0) * GROWTH
+            self.st.repairs.append(f"node {node}: moved incident points outward (turn radius)")
+            for k, x in zip(keys, self._incident(node, L)):
+                r_at[k] = x
+            rebuilt = []
+            for c in sorted({k[0] for k in keys}):
+                g0, cfg, fs, bs, fe, be = geoms[c]
+                status, g = self._road_geometry(chs[c], r_at.get((c, True), 0.0), r_at.get((c, False), 0.0),
+                                                need_of[c], cfg)
+                if status != "ok":
+                    self.dirty.update(chs[c].nodes)  # the next pass repairs this road
+                    break
+                geoms[c] = (g, cfg, fs, bs, fe, be)
+                rebuilt.append(c)
+            else:
+                for c in rebuilt:
+                    for other in (chs[c].start, chs[c].end):
+                        if other != node and other in plans and other not in queued:
+                            done.pop(other, None)
+                            queue.append(other)
+                            queued.add(other)
+                queue.appendleft(node)
+                queued.add(node)
+        if self.dirty:
+            raise _Repair
+        jplans = []
+        for node in sorted(plans):
+            keys, fits = done[node]
             conns = []
             for i, k, j, m, lid_in, lid_out, p0, h0, fit in fits:
                 ci, si = keys[i]
@@ -641,8 +685,6 @@ class Builder:
                 conns.append(ConnectionPlan(ci, "start" if si else "end", lid_in, cj, "start" if sj else "end",
                                             lid_out, connection_geometry(p0[0], p0[1], h0, fit), fit.min_radius))
             jplans.append(JunctionPlan(node, self.st.nodes[node], len(keys), tuple(conns)))
-        if grown or self.dirty:
-            raise _Repair
         self._overlap_repair(chs, geoms, plans)
         if self.dirty:
             raise _Repair

@@ -11,6 +11,7 @@ import junctionart as ja
 from junctionart.params import Params, TrafficRule
 
 from .geomcheck import measure
+from .overlap import overlaps
 
 TOL_GAP = 1e-6
 TOL_HDG = 1e-6
@@ -31,6 +32,7 @@ def _assert_map(params: Params, seed: int, tmp_path, version: str = "1.8") -> No
     assert m.max_gap < TOL_GAP, f"seed {seed}: contact points {m.max_gap} m apart"
     assert m.max_heading < TOL_HDG, f"seed {seed}: heading kink {m.max_heading} rad"
     assert m.min_radius >= params.min_turn_radius, f"seed {seed}: radius {m.min_radius}"
+    assert overlaps(path) == [], "road bodies overlap where the map does not connect them"
     report = xodrcheck.check(path)
     errors = [f"{f.code} {f.message}" for f in report.findings if f.severity.name == "ERROR"]
     assert report.ok, errors[:5]
@@ -60,3 +62,19 @@ def test_no_discarded_maps():
     legs = {j.legs for r in maps for j in r.layout.junctions}
     assert {3, 4} <= legs
     assert all(math.isfinite(rp.length) for r in maps for rp in r.layout.roads)
+
+
+def test_bytes_do_not_depend_on_the_hash_seed(tmp_path):
+    """The same seed gives the same file in separate processes with different string-hash seeds."""
+    import os
+    import subprocess
+    import sys
+
+    outs = []
+    for hs in ("1", "2"):
+        out = tmp_path / f"h{hs}.xodr"
+        env = dict(os.environ, PYTHONHASHSEED=hs)
+        subprocess.run([sys.executable, "-m", "junctionart", "generate", "--seed", "9", "--randomize-lanes", "true",
+                        "--curved-roads", "true", "-q", "-o", str(out)], check=True, env=env)
+        outs.append(out.read_bytes())
+    assert outs[0] == outs[1]

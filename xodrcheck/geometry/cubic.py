@@ -1,9 +1,14 @@
 """Parametric cubic curves ``(U(p), V(p))`` and their arc length, shared by poly3 and paramPoly3.
 
-The arc length ``L(p) = integral_0^p |C'(q)| dq`` is tabulated at panel boundaries by Gauss-Legendre quadrature (the
-number of panels is doubled until the total length agrees to 1e-15 relative), then inverted pointwise by Newton's
-method, ``p <- p - (L(p) - sigma) / |C'(p)|``, where ``L(p)`` is the tabulated value at the panel start plus one more
-Gauss-Legendre integral over the rest. Everything is vectorised over the query points.
+The arc length ``L(p) = integral_0^p |C'(q)| dq`` is tabulated once per curve at panel boundaries by Gauss-Legendre
+quadrature (the number of panels is doubled until the total length agrees to 1e-15 relative), together with the
+speed ``|C'|`` there. It is inverted, for all query points at once, by Newton's method,
+``p <- p - (L(p) - sigma) / |C'(p)|``, where ``L(p)`` is the tabulated value at the panel start plus one more
+Gauss-Legendre integral over the rest. The first guess is the cubic Hermite interpolant of ``p(sigma)`` on the panel
+(values and slopes ``1 / |C'|`` at both boundaries), typically within 1e-6 of the root, so two Newton steps usually
+reach double precision. Iteration stops as soon as the residual left after the step just taken, predicted from the
+second-order term ``|C'|' dp^2 / 2`` with a wide margin, is under the tolerance (rather than paying one more
+quadrature to measure it), or the measured residual already is.
 """
 
 from __future__ import annotations
@@ -13,9 +18,14 @@ from dataclasses import dataclass
 import numpy as np
 
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(16)
+_UNIT_NODES = 0.5 * (_NODES + 1.0)  # the nodes on [0, 1]
+_FIRST_PANELS = 32  # fine enough for the Hermite first guess to be within ~1e-9 of the root
 _MAX_PANELS = 1 << 14
 _NEWTON_STEPS = 12
 _NEWTON_TOL = 1e-13  # m, residual of L(p) - sigma at which Newton stops
+_PREDICTION_MARGIN = 100.0  # safety factor on the predicted residual after a step
+_SMALL_STEP = 1e-4  # a step counts as small (its Taylor prediction trusted) below this fraction of its panel
+_TINY = 1e-300
 
 
 def _horner(coef: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
@@ -29,6 +39,13 @@ def _horner(coef: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, np
     )
 
 
+def _speed(u: np.ndarray, v: np.ndarray, p: np.ndarray) -> np.ndarray:
+    """``|C'(p)|`` (the same arithmetic as :func:`_horner`'s first derivative)."""
+    du = u[1] + p * (2.0 * u[2] + p * (3.0 * u[3]))
+    dv = v[1] + p * (2.0 * v[2] + p * (3.0 * v[3]))
+    return np.hypot(du, dv)
+
+
 @dataclass(frozen=True, eq=False)
 class CubicCurve:
     """``C(p) = (U(p), V(p))`` with ``U``, ``V`` cubic (coefficients a, b, c, d) and arc-length tables on
@@ -38,12 +55,14 @@ class CubicCurve:
     v: np.ndarray
     breaks: np.ndarray  # panel boundaries in p
     cumulative: np.ndarray  # arc length at each boundary
+    inverse_span: np.ndarray  # 1 / (arc length of each panel), 0 for an empty panel
+    guess: np.ndarray  # (panels, 4): cubic in t = (sigma - cumulative[k]) * inverse_span[k] giving a first p
 
     @classmethod
     def build(cls, u, v, p_max: float) -> CubicCurve:
         u = np.asarray(u, dtype=float)
         v = np.asarray(v, dtype=float)
-        panels = 8
+        panels = _FIRST_PANELS
         lengths = _panel_lengths(u, v, np.linspace(0.0, p_max, panels + 1))
         while panels < _MAX_PANELS:
             finer = _panel_lengths(u, v, np.linspace(0.0, p_max, 2 * panels + 1))
@@ -53,47 +72,79 @@ class CubicCurve:
             if converged:
                 break
         breaks = np.linspace(0.0, p_max, panels + 1)
-        return cls(u, v, breaks, np.concatenate(([0.0], np.cumsum(lengths))))
+        cumulative = np.concatenate(([0.0], np.cumsum(lengths)))
+        return cls(u, v, breaks, cumulative, *_guess_table(breaks, cumulative, _speed(u, v, breaks)))
 
     @property
     def total(self) -> float:
         return float(self.cumulative[-1])
 
     def speed(self, p: np.ndarray) -> np.ndarray:
-        return np.hypot(_horner(self.u, p)[1], _horner(self.v, p)[1])
+        return _speed(self.u, self.v, p)
 
     def parameter_at(self, sigma: np.ndarray) -> np.ndarray:
         """The parameter ``p`` at arc length ``sigma`` from ``p = 0`` (inverse of :meth:`arc_length`)."""
         sigma = np.asarray(sigma, dtype=float)
-        last = len(self.breaks) - 2
-        k = np.clip(np.searchsorted(self.cumulative, sigma, side="right") - 1, 0, last)
-        span = self.cumulative[k + 1] - self.cumulative[k]
-        fraction = np.divide(sigma - self.cumulative[k], span, out=np.zeros_like(sigma), where=span > 0)
-        p = self.breaks[k] + fraction * (self.breaks[k + 1] - self.breaks[k])
-        tiny = 1e-300
+        k, p = self._first_guess(sigma)
+        start = self.breaks[k]
+        width = self.breaks[k + 1] - start
+        base = self.cumulative[k]
+        u, v = self.u, self.v
+        n = len(p)
+        q = np.empty((n, len(_NODES) + 1))
         for _ in range(_NEWTON_STEPS):
-            residual = self._from_panel(k, p) - sigma
-            p = p - residual / np.maximum(self.speed(p), tiny)
+            # Speed at the quadrature nodes of [start, p] and at p itself, in one pass.
+            q[:, :-1] = start[:, None] + (p - start)[:, None] * _UNIT_NODES
+            q[:, -1] = p
+            du = u[1] + q * (2.0 * u[2] + q * (3.0 * u[3]))
+            dv = v[1] + q * (2.0 * v[2] + q * (3.0 * v[3]))
+            speeds = np.hypot(du, dv)
+            residual = base + 0.5 * (p - start) * (speeds[:, :-1] @ _WEIGHTS) - sigma
+            speed = np.maximum(speeds[:, -1], _TINY)
+            step = residual / speed
+            p = p - step
             if not np.any(np.abs(residual) > _NEWTON_TOL):
                 break
+            # d|C'|/dp at the old p; the residual after the step is about |C'|' step^2 / 2.
+            ddu = 2.0 * u[2] + q[:, -1] * (6.0 * u[3])
+            ddv = 2.0 * v[2] + q[:, -1] * (6.0 * v[3])
+            slope = (du[:, -1] * ddu + dv[:, -1] * ddv) / speed
+            predicted = _PREDICTION_MARGIN * 0.5 * np.abs(slope) * step * step
+            if np.all((predicted <= _NEWTON_TOL) & (np.abs(step) <= _SMALL_STEP * width)):
+                break
         return p
+
+    def _first_guess(self, sigma: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Panel index of each ``sigma`` and the first guess of ``p`` there (see :func:`_guess_table`)."""
+        last = len(self.breaks) - 2
+        k = np.minimum(np.maximum(np.searchsorted(self.cumulative, sigma, side="right") - 1, 0), last)
+        a, b, c, d = self.guess[k].T
+        t = (sigma - self.cumulative[k]) * self.inverse_span[k]
+        return k, a + t * (b + t * (c + t * d))
 
     def derivatives(self, p: np.ndarray):
         """``(U, U', U'', U''')`` and ``(V, V', V'', V''')`` at ``p``."""
         return _horner(self.u, p), _horner(self.v, p)
 
-    def _from_panel(self, k: np.ndarray, p: np.ndarray) -> np.ndarray:
-        start = self.breaks[k]
-        half = 0.5 * (p - start)
-        nodes = start[:, None] + half[:, None] * (_NODES[None, :] + 1.0)
-        return self.cumulative[k] + half * (self.speed(nodes) @ _WEIGHTS)
+
+def _guess_table(breaks: np.ndarray, cumulative: np.ndarray, speed: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per panel, ``1 / span`` and the power coefficients in ``t`` (the panel's fraction of arc length) of the cubic
+    Hermite interpolant of ``p(sigma)``: values ``p`` and slopes ``span / |C'|`` at both ends; the straight line
+    between the ends where a boundary speed is zero or the panel has no length."""
+    p0, dp = breaks[:-1], np.diff(breaks)
+    span = np.diff(cumulative)
+    with np.errstate(divide="ignore", invalid="ignore", over="ignore"):
+        inverse_span = np.where(span > 0, 1.0 / span, 0.0)
+        m0, m1 = span / speed[:-1], span / speed[1:]
+    usable = (span > 0) & np.isfinite(m0) & np.isfinite(m1)
+    m0, m1 = np.where(usable, m0, dp), np.where(usable, m1, dp)
+    return inverse_span, np.column_stack([p0, m0, 3.0 * dp - 2.0 * m0 - m1, m0 + m1 - 2.0 * dp])
 
 
 def _panel_lengths(u: np.ndarray, v: np.ndarray, breaks: np.ndarray) -> np.ndarray:
     half = 0.5 * np.diff(breaks)
     nodes = breaks[:-1, None] + half[:, None] * (_NODES[None, :] + 1.0)
-    speed = np.hypot(_horner(u, nodes)[1], _horner(v, nodes)[1])
-    return half * (speed @ _WEIGHTS)
+    return half * (_speed(u, v, nodes) @ _WEIGHTS)
 
 
 def frame(curve: CubicCurve, p: np.ndarray):
