@@ -9,6 +9,7 @@ traced memory, tries and valid maps, with the original JunctionArt's figures mea
 from __future__ import annotations
 
 import argparse
+import math
 import sys
 import tempfile
 import time
@@ -91,7 +92,7 @@ def main(argv: list[str] | None = None) -> int:
           f"{'valid':>6} {'orig tries/map':>14} {'peak MB':>8} {'roads':>7} {'junct.':>7} {'conn.':>7} {'repairs':>8}")
     for label, per, orig, tries, valid, orig_tries, peak, st, n in rows:
         with_retries = orig * orig_tries
-        ratio = per / with_retries if orig == orig else float("nan")
+        ratio = float("nan") if math.isnan(orig) else per / with_retries
         print(f"{label:28} {per:10.3f} {orig:9.3f} {with_retries:10.3f} {ratio:6.2f} {tries:6d} {valid:6d} "
               f"{orig_tries:14.1f} {peak:8.1f} {st['roads'] / n:7.0f} {st['junctions'] / n:7.0f} "
               f"{st['connections'] / n:7.0f} {st['repairs'] / n:8.1f}")

@@ -229,5 +229,6 @@ def _validate(kinds, min_length, max_length, max_roads_per_chain, max_elements, 
         _check_positive(name, value, integer=True)
         if value > top:
             raise InvalidArgument(f"{name}={value!r} must be at most {top}")
-    if isinstance(versions, str) or not versions or any(tuple(v) not in VERSIONS for v in versions):
+    if isinstance(versions, str) or not versions or any(not isinstance(v, (tuple, list)) or tuple(v) not in VERSIONS
+                                                        for v in versions):
         raise InvalidArgument(f"versions={versions!r} must be a non-empty collection of {VERSIONS}")

@@ -45,11 +45,12 @@ def _rotate(points, angle: float, dx: float, dy: float):
 def _line(draw, min_points, max_points, min_length, max_length, max_lanes, lanes):
     n = draw(st.integers(min_points, max_points))
     length = draw(st.floats(min_length, max_length))
-    xs = sorted(draw(st.lists(st.floats(0.05, 0.95), min_size=n - 2, max_size=n - 2, unique=True)))
+    # interior points near even fractions of the length: at least half a step (>= 2.5 m) apart
+    xs = [(k + draw(st.floats(-0.25, 0.25))) / (n - 1) for k in range(1, n - 1)]
     ys = draw(st.lists(st.floats(-0.15, 0.15), min_size=n - 2, max_size=n - 2))
     pts = [[0.0, 0.0], *([x * length, y * length] for x, y in zip(xs, ys)), [length, 0.0]]
     pts = _rotate(pts, draw(st.floats(-math.pi, math.pi)), draw(st.floats(-1e3, 1e3)), draw(st.floats(-1e3, 1e3)))
-    return pts, (draw(_lane_pairs(max_lanes)) if lanes and draw(st.booleans()) else None)
+    return pts, (list(draw(_lane_pairs(max_lanes))) if lanes and draw(st.booleans()) else None)
 
 
 def control_lines(*, min_points: int = 2, max_points: int = 4, min_length: float = 20.0, max_length: float = 500.0,

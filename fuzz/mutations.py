@@ -28,7 +28,7 @@ DEFECTS: dict[str, frozenset[str]] = {
     "road-kink": frozenset({"K101", "K102", "K103"}),
     "planview-gap": frozenset({"G001"}),
     "planview-kink": frozenset({"G002"}),
-    "road-length": frozenset({"G003"}),
+    "road-length": frozenset({"G004"}),
     "link-target-missing": frozenset({"R010"}),
     "link-contact-flipped": frozenset({"K001", "K101"}),
     "duplicate-road-id": frozenset({"R001"}),

@@ -6,6 +6,7 @@ returns the generator's own document model; ``write(document, path, version)`` w
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -20,6 +21,7 @@ from .writer import to_bytes
 from .writer import write as _write
 
 __all__ = [
+    "STAGES",
     "ControlLines",
     "Document",
     "InputError",
@@ -44,16 +46,30 @@ class Result:
     document: Document
 
 
-def generate_layout(params: Params | None = None, seed: int = 0, control_lines: ControlLines | None = None) -> Result:
-    """Run all stages; randomness comes from one ``numpy.random.Generator`` seeded with ``seed``."""
+#: Names of the stages, in order, as passed to ``on_stage``.
+STAGES = ("control lines", "network", "lanes", "intersections", "cleanup")
+
+
+def generate_layout(params: Params | None = None, seed: int = 0, control_lines: ControlLines | None = None,
+                    on_stage: Callable[[str], None] | None = None) -> Result:
+    """Run all stages; randomness comes from one ``numpy.random.Generator`` seeded with ``seed``.
+
+    ``on_stage`` (for progress bars) is called with each name of :data:`STAGES` as that stage starts.
+    """
     params = params if params is not None else Params()
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
         raise ParamsError(f"seed={seed!r}: must be a non-negative integer")
+    step = on_stage or (lambda name: None)
     rng = np.random.default_rng(int(seed))
+    step(STAGES[0])
     lines = control_lines if control_lines is not None else controllines.automatic(params, rng)
+    step(STAGES[1])
     net = network.build(lines, params, rng)
+    step(STAGES[2])
     laned = lanes.assign(net, lines, params, rng)
+    step(STAGES[3])
     layout = intersections.build(laned, params, rng)
+    step(STAGES[4])
     doc = cleanup.document(layout, params, name=f"junctionart seed {int(seed)}")
     return Result(lines, net, laned, layout, doc)
 

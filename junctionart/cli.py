@@ -15,6 +15,9 @@ from pathlib import Path
 
 from .errors import InputError, JunctionArtError, ParamsError
 
+#: Single maps at least this large (m^2) show a progress bar over the stages.
+BIG_MAP_AREA = 4_000_000.0
+
 
 def _size(text: str) -> tuple[float, float]:
     parts = text.lower().split("x")
@@ -38,6 +41,13 @@ def _floats(n: int):
     return parse
 
 
+def _lane_pairs(text: str) -> tuple[tuple[int, int], ...]:
+    try:
+        return tuple((int(a), int(b)) for a, b in (item.split(":") for item in text.split(",")))
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"{text!r}: expected F:B pairs separated by commas, e.g. 2:2,1:1") from None
+
+
 def _bool(text: str) -> bool:
     if text.lower() in ("1", "true", "yes", "on"):
         return True
@@ -58,6 +68,8 @@ OPTIONS = [
     ("--lane-distribution", "lane_distribution_side", _floats(4), "P(0),P(1),P(2),P(3) lanes on a side"),
     ("--control-line-lane-distribution", "lane_distribution_control_lines", _floats(4),
      "the same for roads along control lines"),
+    ("--control-line-lanes", "control_line_lanes", _lane_pairs,
+     "F:B,F:B,... exact forward:backward lanes along automatic control lines 0, 1, ..."),
     ("--lane-width", "lane_width", float, "lane width (m)"),
     ("--median-probability", "median_probability", float, "chance of a median on a two-way road"),
     ("--median-width", "median_width", float, "median width (m)"),
@@ -107,7 +119,7 @@ def _params(args: argparse.Namespace):
 
 
 def _generate(args: argparse.Namespace) -> int:
-    from . import controllines, generate_layout, write
+    from . import STAGES, controllines, generate_layout, write
 
     params = _params(args)
     if args.count < 1:
@@ -122,14 +134,26 @@ def _generate(args: argparse.Namespace) -> int:
     if not folder.is_dir():
         raise InputError(f"-o {out}: folder {folder} does not exist")
     seeds = range(args.seed, args.seed + args.count)
-    bar = None
-    if args.count > 1 and not args.quiet:
+    bar = stage_bar = None
+    big = lines is None and params.width * params.height >= BIG_MAP_AREA
+    if not args.quiet and args.count > 1:
         from tqdm import tqdm
 
         bar = tqdm(total=args.count, unit="map", file=sys.stderr)
     t0 = time.perf_counter()
     for seed in seeds:
-        result = generate_layout(params, seed, lines)
+        on_stage = None
+        if not args.quiet and args.count == 1 and big:
+            from tqdm import tqdm
+
+            stage_bar = tqdm(total=len(STAGES), unit="stage", file=sys.stderr, leave=False)
+
+            def on_stage(name: str, bar_=stage_bar) -> None:
+                bar_.set_description(name)
+                bar_.update(1)
+        result = generate_layout(params, seed, lines, on_stage)
+        if stage_bar is not None:
+            stage_bar.close()
         path = write(result.document, out.replace("{seed}", str(seed)), params.version)
         if bar is not None:
             bar.update(1)

@@ -15,6 +15,7 @@ GeoJSON: a FeatureCollection of LineString features; ``properties`` may hold ``i
 
 from __future__ import annotations
 
+import itertools
 import json
 import math
 from dataclasses import dataclass
@@ -98,7 +99,9 @@ def automatic(params: Params, rng: np.random.Generator) -> ControlLines:
                 xs = 0.2 * W
             else:
                 xe = 0.8 * W
-        lines.append(ControlLine(f"auto{len(lines)}", ((xs, y0), (xe, y1))))
+        k = len(lines)
+        lanes = params.control_line_lanes[k] if k < len(params.control_line_lanes) else None
+        lines.append(ControlLine(f"auto{k}", ((xs, y0), (xe, y1)), lanes=lanes))
         step = rng.uniform(lo, hi)
         if rng.random() < 0.25:
             step += 200.0
@@ -113,7 +116,8 @@ def automatic(params: Params, rng: np.random.Generator) -> ControlLines:
         y0, y1 = y0n, y1n
     if len(lines) < 2:
         # Height allows a single spacing draw only: put the second line at the top edge.
-        lines.append(ControlLine("auto1", ((0.0, H - margin), (W, H - margin))))
+        lanes = params.control_line_lanes[1] if len(params.control_line_lanes) > 1 else None
+        lines.append(ControlLine("auto1", ((0.0, H - margin), (W, H - margin)), lanes=lanes))
     pairs = tuple((i, i + 1) for i in range(len(lines) - 1))
     return ControlLines(tuple(lines), pairs)
 
@@ -186,7 +190,7 @@ def _assemble(source: str, entries: list[tuple[str, tuple, int, Any]], pairs_raw
         for k, ln in enumerate(lines):
             by_group.setdefault(ln.group, []).append(k)
         for members in by_group.values():
-            pairs.extend(zip(members[:-1], members[1:]))
+            pairs.extend(itertools.pairwise(members))
     return ControlLines(lines, tuple(pairs))
 
 

@@ -7,6 +7,7 @@ curve's length.
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -183,7 +184,7 @@ def fillet_chain(start: tuple[float, float], vertices: list[tuple[float, float]]
     """
     pts = [start, *vertices, end]
     dirs = []
-    for a, b in zip(pts[:-1], pts[1:]):
+    for a, b in itertools.pairwise(pts):
         dirs.append(math.atan2(b[1] - a[1], b[0] - a[0]))
     out: list[Geometry] = []
     s = 0.0

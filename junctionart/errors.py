@@ -13,3 +13,7 @@ class ParamsError(JunctionArtError, ValueError):
 
 class InputError(JunctionArtError, ValueError):
     """A control-line file (JSON / GeoJSON) cannot be used; the message names the file and the problem."""
+
+
+class GenerationError(JunctionArtError):
+    """The generator could not finish a map (a bug guard: repairs always converge)."""

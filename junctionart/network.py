@@ -6,6 +6,7 @@ the one ``numpy.random.Generator`` passed in, consumed in a fixed order, so a se
 
 from __future__ import annotations
 
+import itertools
 import math
 from dataclasses import dataclass
 
@@ -295,7 +296,7 @@ def build(lines: ControlLines, params: Params, rng: np.random.Generator) -> Netw
         _mdp_pair(on_line[i], on_line[j], params, rng, builder)
     for k, lp in enumerate(on_line):
         pts = sorted(lp.points)
-        for (_, a), (_, b) in zip(pts[:-1], pts[1:]):
+        for (_, a), (_, b) in itertools.pairwise(pts):
             builder.edge(a, b, k)
     nodes = builder.nodes
     ends = {lp.points[0][1] for lp in on_line} | {lp.points[len(lp.line.points) - 1][1] for lp in on_line}

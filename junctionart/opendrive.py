@@ -8,7 +8,6 @@ here cannot be hidden by a shared data type. Only what the generator writes is m
 from __future__ import annotations
 
 from dataclasses import dataclass
-from typing import Union
 
 
 @dataclass(frozen=True)
@@ -49,7 +48,7 @@ class ParamPoly3:
     dv: float
 
 
-Geometry = Union[Line, Arc, ParamPoly3]
+Geometry = Line | Arc | ParamPoly3
 
 
 @dataclass(frozen=True)

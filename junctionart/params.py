@@ -63,6 +63,8 @@ class Params:
     randomize_lanes: bool = False  #: False: one lane each way everywhere
     lane_distribution_side: tuple[float, float, float, float] = (0.15, 0.6, 0.2, 0.05)  #: P(0..3 lanes on a side)
     lane_distribution_control_lines: tuple[float, float, float, float] = (0.05, 0.45, 0.4, 0.1)
+    #: controlLineLaneConfigurations: exact (forward, backward) lanes of the roads along automatic line i
+    control_line_lanes: tuple[tuple[int, int], ...] = ()
     lane_width: float = 3.5
     median_probability: float = 0.3  #: chance that a two-way road gets a median lane
     median_width: float = 2.0
@@ -103,6 +105,8 @@ class Params:
         for name in ("line_spacing", "gap_scale", "lane_distribution_side", "lane_distribution_control_lines"):
             if name in v and isinstance(v[name], list):
                 v[name] = tuple(v[name])
+        if "control_line_lanes" in v and isinstance(v["control_line_lanes"], list):
+            v["control_line_lanes"] = tuple(tuple(x) if isinstance(x, list) else x for x in v["control_line_lanes"])
         return cls(**v)
 
 
@@ -173,9 +177,10 @@ def validate(p: Params) -> None:
     """Raise :class:`ParamsError` for the first parameter outside its range."""
     _range("width", p.width, 50.0, 100_000.0)
     _range("height", p.height, 50.0, 100_000.0)
-    if p.n_lines is not None:
-        if isinstance(p.n_lines, bool) or not isinstance(p.n_lines, int) or not 2 <= p.n_lines <= 1000:
-            raise ParamsError(f"n_lines={p.n_lines!r}: must be an integer in [2, 1000] or None")
+    if p.n_lines is not None and (
+        isinstance(p.n_lines, bool) or not isinstance(p.n_lines, int) or not 2 <= p.n_lines <= 1000
+    ):
+        raise ParamsError(f"n_lines={p.n_lines!r}: must be an integer in [2, 1000] or None")
     _pair("line_spacing", p.line_spacing, 0.0, 10_000.0)
     if p.line_spacing[0] < 40.0:
         raise ParamsError(f"line_spacing={p.line_spacing!r}: low must be at least 40 m (roads would overlap)")
@@ -190,6 +195,14 @@ def validate(p: Params) -> None:
         raise ParamsError(f"randomize_lanes={p.randomize_lanes!r}: must be true or false")
     _distribution("lane_distribution_side", p.lane_distribution_side)
     _distribution("lane_distribution_control_lines", p.lane_distribution_control_lines)
+    if not isinstance(p.control_line_lanes, tuple):
+        raise ParamsError(f"control_line_lanes={p.control_line_lanes!r}: must be a tuple of (forward, backward) pairs")
+    for i, pair in enumerate(p.control_line_lanes):
+        ok = isinstance(pair, tuple) and len(pair) == 2 and all(
+            isinstance(n, int) and not isinstance(n, bool) and 0 <= n <= 3 for n in pair)
+        if not ok or pair == (0, 0):
+            raise ParamsError(f"control_line_lanes[{i}]={pair!r}: must be (forward, backward) lane counts in [0, 3], "
+                              f"not both 0")
     _range("lane_width", p.lane_width, 2.0, 6.0)
     _range("median_probability", p.median_probability, 0.0, 1.0)
     _range("median_width", p.median_width, 0.5, 10.0)

@@ -73,7 +73,8 @@ def render(source: str | Path, output: str | Path, *, dpi: int = 150, size: floa
             pose = geo.reference(s)
             if not in_junction:
                 refs.append(np.column_stack([pose.x, pose.y]))
-        except Exception:  # a road the geometry cannot evaluate is left out of the picture, never fatal
+        except (ArithmeticError, ValueError, KeyError, IndexError, TypeError):  # a road the geometry cannot
+            # evaluate is left out of the picture, never fatal
             continue
     fig, ax = plt.subplots(figsize=(size, size))
     ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors="none", alpha=0.95))

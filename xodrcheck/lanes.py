@@ -80,15 +80,42 @@ class SideLanes:
     is_width: tuple[bool, ...]
 
 
-@dataclass(frozen=True, slots=True)
 class _Evaluation:
-    """Everything lane points at one array of ``s`` in one section need, computed once."""
+    """Everything lane points at one array of ``s`` in one section need, computed once. ``cos``/``sin`` are the jets
+    of the superelevation's cosine and sine, ``None`` on a road without superelevation (no roll anywhere). The
+    reference pose is evaluated on first use (lateral ``t`` alone does not need it)."""
 
-    pose: Pose
-    borders: dict[int, Jet]
-    cos: Jet
-    sin: Jet
-    elevation: np.ndarray
+    __slots__ = ("_heading", "_pose", "_reference", "_s", "borders", "cos", "elevation", "sin")
+
+    def __init__(
+        self,
+        reference: ReferenceLine,
+        s: np.ndarray,
+        borders: dict[int, Jet],
+        cos: Jet | None,
+        sin: Jet | None,
+        elevation: np.ndarray,
+    ):
+        self._reference = reference
+        self._s = s
+        self.borders = borders
+        self.cos = cos
+        self.sin = sin
+        self.elevation = elevation
+        self._pose: Pose | None = None
+        self._heading: tuple[np.ndarray, np.ndarray] | None = None
+
+    @property
+    def pose(self) -> Pose:
+        if self._pose is None:
+            self._pose = self._reference.evaluate(self._s)
+        return self._pose
+
+    def heading(self) -> tuple[np.ndarray, np.ndarray]:
+        """``sin`` and ``cos`` of the reference line's heading (computed once, shared by every lane line)."""
+        if self._heading is None:
+            self._heading = (np.sin(self.pose.hdg), np.cos(self.pose.hdg))
+        return self._heading
 
 
 class RoadGeometry:
@@ -105,17 +132,13 @@ class RoadGeometry:
         self._elevation = profile.Piecewise(road.elevation)
         self._roll = profile.Piecewise(road.superelevation)
         self._evaluations: dict[tuple[int, bytes], _Evaluation] = {}
+        self._batches: dict[int, profile.Batch] = {}
 
     # ---------------------------------------------------------------------------------------------------------------
     # Road level
     # ---------------------------------------------------------------------------------------------------------------
     def reference(self, s) -> Pose:
         return self.reference_line.evaluate(s)
-
-    def section_reference(self, section_index: int, s) -> Pose:
-        """``reference(s)``, taken from (or stored in) the evaluation of the section's lanes at the same ``s``, so that
-        asking for the reference line and the lane lines at one array of ``s`` evaluates the plan view once."""
-        return self._evaluate(section_index, as_array(s)).pose
 
     def lane_offset(self, s) -> np.ndarray:
         return self._offset.jet(s)[0]
@@ -163,35 +186,52 @@ class RoadGeometry:
         )
         return SideLanes(lanes, section.s, laws, tuple(bool(lane.widths) for lane in lanes))
 
+    def _batch(self, section_index: int) -> profile.Batch:
+        """The section's profiles evaluated together: laneOffset, elevation, then every lane's width or border law
+        (left lanes inner to outer, then right lanes)."""
+        batch = self._batches.get(section_index)
+        if batch is None:
+            laws = [law for side in self.side_lanes(section_index) for law in side.laws if law is not None]
+            batch = profile.Batch((self._offset, self._elevation, *laws))
+            self._batches[section_index] = batch
+        return batch
+
     def _evaluate(self, section_index: int, s: np.ndarray) -> _Evaluation:
         """Reference pose, border jets, superelevation and elevation at ``s`` (a few recent queries are cached, so
         asking for several lanes at the same ``s`` costs one evaluation)."""
         key = (section_index, s.tobytes())
         found = self._evaluations.get(key)
         if found is None:
-            roll = Jet(*self._roll.jet(s))
+            if len(self._roll.starts):
+                roll = Jet(*self._roll.jet(s))
+                cos, sin = roll.cos(), roll.sin()
+            else:
+                cos = sin = None
+            offset, elevation, *laws = self._batch(section_index).jets(s)
             found = _Evaluation(
-                self.reference(s), self._border_jets(section_index, s), roll.cos(), roll.sin(), self.elevation(s)
+                self.reference_line, s.copy(), self._border_jets(section_index, offset, laws), cos, sin, elevation[0]
             )
             if len(self._evaluations) >= self._CACHED_EVALUATIONS:
                 self._evaluations.pop(next(iter(self._evaluations)))
             self._evaluations[key] = found
         return found
 
-    def _border_jets(self, section_index: int, s: np.ndarray) -> dict[int, Jet]:
-        """``t`` of every lane's outer border as a jet (lane 0: the laneOffset line)."""
-        centre = Jet(*self._offset.jet(s))
+    def _border_jets(self, section_index: int, offset: tuple, laws: list[tuple]) -> dict[int, Jet]:
+        """``t`` of every lane's outer border as a jet (lane 0: the laneOffset line), from the laneOffset's jet and
+        the lanes' width or border jets (in :meth:`_batch` order)."""
+        centre = Jet(*offset)
         jets = {0: centre}
+        values = iter(laws)
         for sign, side in zip((+1, -1), self.side_lanes(section_index)):
             inner = centre
             for lane, law, is_width in zip(side.lanes, side.laws, side.is_width):
                 if law is None:
                     outer = inner
                 elif is_width:
-                    width = Jet(*law.jet(s))
+                    width = Jet(*next(values))
                     outer = inner + width if sign > 0 else inner - width
                 else:
-                    outer = Jet(*law.jet(s))
+                    outer = Jet(*next(values))
                 jets[lane.id] = outer
                 inner = outer
         return jets
@@ -225,59 +265,125 @@ class RoadGeometry:
     def border_curves(self, section_index: int, s) -> dict[int, LanePoints]:
         """Every lane's outer border (and lane 0's line) at ``s``: all the border polylines of the section."""
         evaluation = self._evaluate(section_index, as_array(s))
+        ids, lateral, height = self._stacked_border_lines(section_index, evaluation)
+        p = self._place(evaluation, lateral, height)  # every line at once, one row each
+        z = p.z if p.z.ndim == 2 else np.repeat(p.z[None, :], len(ids), axis=0)  # flat road: one z for all
         return {
-            lane_id: self._place(evaluation, *self._projected(section_index, evaluation, lane_id, "outer"))
-            for lane_id in evaluation.borders
+            lane_id: LanePoints(p.x[k], p.y[k], z[k], p.hdg[k], p.curvature[k], p.speed[k])
+            for k, lane_id in enumerate(ids)
         }
+
+    def _stacked_border_lines(
+        self, section_index: int, evaluation: _Evaluation
+    ) -> tuple[list[int], Jet, np.ndarray | float]:
+        """:meth:`_border_lines` as one jet and one height of 2-D arrays, a row per line."""
+        ids, laterals, heights = zip(*self._border_lines(section_index, evaluation))
+        lateral = Jet(
+            np.array([jet.v for jet in laterals]),
+            np.array([jet.d1 for jet in laterals]),
+            np.array([jet.d2 for jet in laterals]),
+        )
+        if all(isinstance(h, float) and h == 0.0 for h in heights):
+            return list(ids), lateral, 0.0
+        n = len(lateral.v[0])
+        return list(ids), lateral, np.array([np.broadcast_to(h, n) for h in heights])
+
+    def _border_lines(
+        self, section_index: int, evaluation: _Evaluation
+    ) -> Iterator[tuple[int, Jet, np.ndarray | float]]:
+        """Lane id, plan-view lateral offset and height of lane 0's line, then of every lane's outer border, in the
+        order of ``evaluation.borders``: one walk outward per side, lane k's line continuing lane k-1's (as
+        :meth:`_projected` computes them one at a time)."""
+        jets = evaluation.borders
+        start = self._centre_line(evaluation)
+        yield 0, *start
+        seen = {0}
+        for side in self.side_lanes(section_index):
+            lateral, height = start
+            inner = jets[0]
+            for lane in side.lanes:
+                outer = jets[lane.id]
+                lateral, height = self._rolled(evaluation, lane, lateral, height, outer - inner)
+                if lane.id not in seen:  # a duplicated id: the first lane with it, as lane_points gives
+                    seen.add(lane.id)
+                    yield lane.id, lateral, height
+                inner = outer
+
+    @staticmethod
+    def _centre_line(evaluation: _Evaluation) -> tuple[Jet, np.ndarray | float]:
+        """Plan-view lateral offset (jet) and height above the reference line of lane 0's line."""
+        centre = evaluation.borders[0]
+        if evaluation.cos is None:
+            return centre, 0.0
+        return centre * evaluation.cos, centre.v * evaluation.sin.v
+
+    @staticmethod
+    def _rolled(
+        evaluation: _Evaluation, lane: Lane, lateral: Jet, height: np.ndarray | float, step: Jet
+    ) -> tuple[Jet, np.ndarray | float]:
+        """Lateral offset and height after moving ``step`` (in ``t``) across ``lane``: rolled by the superelevation
+        unless the lane is level or the road has none."""
+        if lane.level or evaluation.cos is None:
+            return lateral + step, height
+        return lateral + step * evaluation.cos, height + step.v * evaluation.sin.v
 
     def _projected(
         self, section_index: int, evaluation: _Evaluation, lane_id: int, where: str
-    ) -> tuple[Jet, np.ndarray]:
+    ) -> tuple[Jet, np.ndarray | float]:
         """Plan-view lateral offset (jet) and height above the reference line of a lane line, superelevation applied."""
-        jets, cos, sin = evaluation.borders, evaluation.cos, evaluation.sin
+        jets = evaluation.borders
         if lane_id not in jets:
             raise KeyError(f"road {self.road.id}: no lane {lane_id} in lane section {section_index}")
-        centre = jets[0]
-        lateral, height = centre * cos, centre.v * sin.v
+        lateral, height = self._centre_line(evaluation)
         if lane_id == 0:
             return lateral, height
         side = self.side_lanes(section_index)[0 if lane_id > 0 else 1]
-        inner = centre
+        inner = jets[0]
         for lane in side.lanes:
             outer = jets[lane.id]
-            last = lane.id == lane_id
-            if last:
-                target = {"inner": inner, "outer": outer, "centre": (inner + outer).scale(0.5)}[where]
-                step = target - inner
-            else:
-                step = outer - inner
-            if lane.level:
-                lateral = lateral + step
-            else:
-                lateral = lateral + step * cos
-                height = height + step.v * sin.v
-            if last:
-                break
+            if lane.id == lane_id:
+                target = inner if where == "inner" else outer if where == "outer" else (inner + outer).scale(0.5)
+                return self._rolled(evaluation, lane, lateral, height, target - inner)
+            lateral, height = self._rolled(evaluation, lane, lateral, height, outer - inner)
             inner = outer
         return lateral, height
 
     @staticmethod
-    def _place(evaluation: _Evaluation, lateral: Jet, height: np.ndarray) -> LanePoints:
-        pose = evaluation.pose
+    def _bend(pose: Pose, lateral: Jet) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``A = 1 - q k``, the plan-view speed and the curvature of the offset curve at lateral offset ``lateral``."""
         q, dq, ddq = lateral.v, lateral.d1, lateral.d2
         k, dk = pose.curvature, pose.dcurvature
         a = 1.0 - q * k
         speed = np.hypot(a, dq)
+        if np.all(speed > 0):  # the usual case, without the cost of np.errstate
+            return a, speed, (a * a * k + a * ddq + 2.0 * dq * dq * k + q * dq * dk) / speed**3
         with np.errstate(divide="ignore", invalid="ignore"):
-            curvature = (a * a * k + a * ddq + 2.0 * dq * dq * k + q * dq * dk) / speed**3
+            return a, speed, (a * a * k + a * ddq + 2.0 * dq * dq * k + q * dq * dk) / speed**3
+
+    @classmethod
+    def _place(cls, evaluation: _Evaluation, lateral: Jet, height: np.ndarray | float) -> LanePoints:
+        pose = evaluation.pose
+        a, speed, curvature = cls._bend(pose, lateral)
+        q, dq = lateral.v, lateral.d1
+        sin_hdg, cos_hdg = evaluation.heading()
         return LanePoints(
-            pose.x - q * np.sin(pose.hdg),
-            pose.y + q * np.cos(pose.hdg),
+            pose.x - q * sin_hdg,
+            pose.y + q * cos_hdg,
             evaluation.elevation + height,
             pose.hdg + np.arctan2(dq, a),
             curvature,
             speed,
         )
+
+    def border_bending(self, section_index: int, s) -> np.ndarray:
+        """At each ``s``, the largest of ``|curvature| * speed^2`` over the section's border lines (lane 0's line
+        included; see :meth:`border_curves`) and ``|curvature|`` of the reference line: what the sampler bounds.
+        NaN where every one is NaN."""
+        evaluation = self._evaluate(section_index, as_array(s))
+        pose = evaluation.pose
+        _, lateral, _ = self._stacked_border_lines(section_index, evaluation)
+        _, speed, curvature = self._bend(pose, lateral)
+        return np.fmax(np.abs(pose.curvature), np.fmax.reduce(np.abs(curvature) * speed**2, axis=0))
 
     # ---------------------------------------------------------------------------------------------------------------
     # Sampling

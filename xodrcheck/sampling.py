@@ -13,6 +13,7 @@ record that does not continue its predecessor, the polyline has a knot at the ju
 
 from __future__ import annotations
 
+import weakref
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -25,8 +26,21 @@ if TYPE_CHECKING:
 _PROBE_INSET = 1e-7  # relative inset of the end probes, so each probes the piece it belongs to
 
 
+_KNOTS: weakref.WeakKeyDictionary[RoadGeometry, dict[int, np.ndarray]] = weakref.WeakKeyDictionary()
+
+
 def knots(geometry: RoadGeometry, section_index: int) -> np.ndarray:
     """Sorted unique ``s`` where the section's curves may change their law (including the section ends)."""
+    per_section = _KNOTS.get(geometry)
+    if per_section is None:
+        per_section = _KNOTS[geometry] = {}
+    found = per_section.get(section_index)
+    if found is None:
+        found = per_section[section_index] = _knots(geometry, section_index)
+    return found.copy()  # callers own their array
+
+
+def _knots(geometry: RoadGeometry, section_index: int) -> np.ndarray:
     road = geometry.road
     s0, s1 = geometry.section_range(section_index)
     candidates = [
@@ -63,15 +77,13 @@ def sample_section(geometry: RoadGeometry, section_index: int, chord: float, max
     inset = _PROBE_INSET * steps
     probes = np.stack([coarse + inset, coarse + 0.5 * steps, coarse_ends - inset], axis=1).ravel()
 
-    curves = geometry.border_curves(section_index, probes)
-    bending = np.abs(geometry.section_reference(section_index, probes).curvature)  # shared with the borders
-    for line in curves.values():
-        bending = np.fmax(bending, np.abs(line.curvature) * line.speed**2)
+    bending = geometry.border_bending(section_index, probes)
     bending = np.fmax(bending, np.abs(profile.second_derivative(geometry.road.elevation, probes)))
     bending = np.nan_to_num(bending.reshape(-1, 3).max(axis=1), nan=0.0, posinf=np.inf)
 
-    with np.errstate(divide="ignore"):
-        allowed = np.maximum(np.sqrt(8.0 * chord / bending), 2.0 * chord)
+    # 8 chord / bending, infinite where nothing bends.
+    ratio = np.divide(8.0 * chord, bending, out=np.full_like(bending, np.inf), where=bending != 0)
+    allowed = np.maximum(np.sqrt(ratio), 2.0 * chord)
     counts = np.maximum(1, np.ceil(steps / allowed)).astype(np.int64)
     fine = _subdivide(coarse, steps, counts)
     return np.unique(np.append(fine, cuts[-1]))

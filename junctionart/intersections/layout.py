@@ -1,26 +1,30 @@
 """Stage 3: incident points, road geometry and connection lanes, repairing until every intersection fits.
 
 The loop never discards a map. When something does not fit it changes the network, always towards a state that
-fits, and records what it did:
+fits, and records what it did (``Layout.repairs``):
 
 * a node with more than 7 legs loses a leg;
-* a bend (2-leg node) too sharp for its roads' lanes is straightened (the vertex is removed);
-* a road too short for its two incident points and lane tapers is removed when the map stays connected without it,
-  otherwise its two nodes are merged into one intersection;
-* an intersection whose turns do not meet the radius bound gets its incident points moved outward, and after
-  :data:`MAX_GROWTH` attempts loses the leg that still fails.
+* a bend (2-leg node) too sharp for its roads' lanes is cut open when the map stays connected (one side becomes a dead
+  end), otherwise straightened (split into a new intersection where the straight road crosses another);
+* a road too short for its two incident points and lane tapers merges its two junctions into one when that has at
+  most 7 legs, otherwise it is removed when the map stays connected without it, otherwise merged anyway;
+* an intersection whose turns do not meet the radius bound, or whose connection lanes from one road would cross,
+  gets its incident points moved outward (its roads are rebuilt at once); after one step, links that still fail are
+  dropped where every incoming lane keeps a link and every outgoing lane a feeder; after :data:`MAX_GROWTH` steps the
+  leg that still fails is dropped;
+* roads or junction areas that overlap where the map does not connect them lose a road.
 
-Each repair removes an edge or a node or enlarges a finite counter, so the loop ends.
+Each repair removes an edge or a node or enlarges a bounded counter, so the loop ends. Repairs that touch different
+parts of the network share one pass.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections import deque
-from dataclasses import dataclass
 
 import numpy as np
-import shapely
 
 from ..curves import (
     HermiteFit,
@@ -29,15 +33,18 @@ from ..curves import (
     fillet_chain,
     fit_connections,
     local_target,
-    sample,
     wrap,
 )
+from ..errors import GenerationError
 from ..graph import Chain, chains
 from ..lanegeom import border_point, inner_offset, lane_id, side_width
 from ..lanes import LaneConfig, LanedNetwork
 from ..params import Params, TrafficRule
 from . import links as linkplan
+from .crossing import LinkFit, crossing
 from .model import ConnectionPlan, JunctionPlan, Layout, RoadPlan
+from .overlap import overlaps
+from .state import NetworkState
 
 MAX_LEGS = 7
 MAX_GROWTH = 6
@@ -51,96 +58,10 @@ class _Repair(Exception):
     """Raised inside one pass when the network was changed; the pass starts again."""
 
 
-@dataclass
-class _State:
-    nodes: list[tuple[float, float]]
-    edges: dict[int, tuple[int, int, LaneConfig]]
-    factor: dict[int, float]
-    scale: dict[int, float]
-    growth: dict[int, int]
-    turn_lane: dict[tuple[int, bool], bool]
-    repairs: list[str]
-
-
 def _unit(a: tuple[float, float], b: tuple[float, float]) -> tuple[float, float, float]:
     dx, dy = b[0] - a[0], b[1] - a[1]
     L = math.hypot(dx, dy)
     return dx / L, dy / L, L
-
-
-_P_CROSS = np.linspace(0.0, 1.0, 129)
-CLEARANCE = 0.1  #: paths from different lanes of one road stay at least this far apart (m)
-PARTED = 0.05  #: paths from one lane are compared from where they are this far apart (m)
-TOUCH = 0.01  #: ... and must then stay this far apart
-WINDOW = 3
-HEAD = 24  #: samples searched for the point where two paths from one lane part
-
-
-def _crossing(rows: list, skip: set[int]) -> set[int]:
-    """Links whose centre line crosses that of a link leaving another lane of the same incoming leg (the one of each
-    crossing pair that comes later in the plan's order)."""
-    by_leg: dict[int, list[int]] = {}
-    for n, r in enumerate(rows):
-        if n not in skip:
-            by_leg.setdefault(r[0], []).append(n)
-    pairs = [(a, b) for group in by_leg.values() for i, a in enumerate(group) for b in group[i + 1:]]
-    if not pairs:
-        return set()
-    idx = sorted({n for pair in pairs for n in pair})
-    pos = {n: k for k, n in enumerate(idx)}
-    coef = np.array([rows[n][-1].coef for n in idx])
-    p = _P_CROSS[None, :]
-    u = coef[:, 0:1] + p * (coef[:, 1:2] + p * (coef[:, 2:3] + p * coef[:, 3:4]))
-    v = coef[:, 4:5] + p * (coef[:, 5:6] + p * (coef[:, 6:7] + p * coef[:, 7:8]))
-    x0 = np.array([rows[n][6][0] for n in idx])[:, None]
-    y0 = np.array([rows[n][6][1] for n in idx])[:, None]
-    h = np.array([rows[n][7] for n in idx])[:, None]
-    xy = np.stack([x0 + np.cos(h) * u - np.sin(h) * v, y0 + np.sin(h) * u + np.cos(h) * v], axis=-1)
-    lines = shapely.linestrings(xy)
-    pa = np.array([pos[x] for x, _ in pairs])
-    pb = np.array([pos[y] for _, y in pairs])
-    same = np.array([rows[x][1] == rows[y][1] for x, y in pairs])
-    hit = np.zeros(len(pairs), dtype=bool)
-    diff = ~same
-    if diff.any():
-        hit[diff] = shapely.dwithin(lines[pa[diff]], lines[pb[diff]], CLEARANCE)
-    if same.any():
-        # two paths from one lane start together: compare them from where they have parted
-        sa, sb = pa[same], pb[same]
-        tail_a, ok_a = _parted(xy[sa], xy[sb])
-        tail_b, ok_b = _parted(xy[sb], xy[sa])
-        ok = ok_a & ok_b
-        res = np.zeros(len(sa), dtype=bool)
-        if ok.any():
-            res[ok] = shapely.dwithin(tail_a[ok], tail_b[ok], TOUCH)
-        hit[same] = res
-    return {pairs[k][1] for k in np.flatnonzero(hit)}
-
-
-def _parted(xy: np.ndarray, other: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Per row of ``xy`` (paths x samples x 2): the polyline from the first sample further than PARTED from the
-    matching row of ``other`` on, and whether there is one. Distances are to the segments of ``other`` within
-    WINDOW samples (both paths start together, so the nearest point is near the same parameter)."""
-    n, m, _ = xy.shape
-    head = min(m, HEAD)
-    seg0, seg1 = other[:, :-1], other[:, 1:]
-    dist = np.full((n, head), np.inf)
-    base = np.arange(head)
-    near = xy[:, :head]
-    for off in range(-WINDOW, WINDOW + 1):
-        j = np.minimum(np.maximum(base + off, 0), m - 2)
-        a, b = seg0[:, j], seg1[:, j]
-        ab = b - a
-        t = np.minimum(np.maximum(((near - a) * ab).sum(-1) / np.maximum((ab * ab).sum(-1), 1e-300), 0.0), 1.0)
-        d = a + t[..., None] * ab - near
-        dist = np.minimum(dist, np.hypot(d[..., 0], d[..., 1]))
-    far = dist > PARTED
-    # not parted within the head: compare from the end of the head (they run together there: a near-touch)
-    first = np.where(far.any(axis=1), far.argmax(axis=1), head - 1)
-    ok = first <= m - 2
-    first = np.minimum(first, m - 2)
-    keep = np.arange(m)[None, :] >= first[:, None]
-    return shapely.linestrings(xy[keep], indices=np.repeat(np.arange(n), keep.sum(axis=1))), ok
 
 
 class Builder:
@@ -150,11 +71,7 @@ class Builder:
         self.rng = rng
         self.w = params.lane_width
         self.mw = params.median_width
-        self.st = _State(
-            nodes=list(net.nodes),
-            edges={k: (e.u, e.v, laned.lanes[k]) for k, e in enumerate(net.edges)},
-            factor={}, scale={}, growth={}, turn_lane={}, repairs=[],
-        )
+        self.st = NetworkState(list(net.nodes), {k: (e.u, e.v, laned.lanes[k]) for k, e in enumerate(net.edges)})
         self._fits: dict[tuple[float, float, float], HermiteFit | None] = {}
         self._crossings: dict[tuple, set[int]] = {}
 
@@ -164,126 +81,11 @@ class Builder:
     def _ids(self) -> list[int]:
         return sorted(self.st.edges)
 
-    def _chains(self) -> tuple[list[int], list[Chain]]:
+    def _chains(self) -> list[Chain]:
+        """Chains of the current network, naming edges by their ids."""
         ids = self._ids()
         ch = chains(len(self.st.nodes), [self.st.edges[k][:2] for k in ids])
-        # map local edge positions back to edge ids
-        out = [Chain(c.nodes, tuple(ids[e] for e in c.edges), c.forward) for c in ch]
-        return ids, out
-
-    def _degree(self) -> list[int]:
-        deg = [0] * len(self.st.nodes)
-        for u, v, _ in self.st.edges.values():
-            deg[u] += 1
-            deg[v] += 1
-        return deg
-
-    def _connected_without(self, eid: int | set[int]) -> bool:
-        """Whether the ends of edge ``eid`` (or of a chain given as a set of edges, first and last node) stay
-        connected without it."""
-        drop = {eid} if isinstance(eid, int) else set(eid)
-        if isinstance(eid, int):
-            u, v, _ = self.st.edges[eid]
-        else:
-            ends = [n for e in drop for n in self.st.edges[e][:2]]
-            odd = sorted({n for n in ends if ends.count(n) == 1})
-            if len(odd) != 2:
-                return True  # a closed chain: removing it cannot disconnect the rest
-            u, v = odd
-        adj: dict[int, list[int]] = {}
-        for k, (a, b, _) in self.st.edges.items():
-            if k not in drop:
-                adj.setdefault(a, []).append(b)
-                adj.setdefault(b, []).append(a)
-        seen, stack = {u}, [u]
-        while stack:
-            x = stack.pop()
-            if x == v:
-                return True
-            for y in adj.get(x, ()):
-                if y not in seen:
-                    seen.add(y)
-                    stack.append(y)
-        return False
-
-    def _touched(self, nodes) -> bool:
-        return not self.dirty.isdisjoint(nodes)
-
-    def _remove_edge(self, eid: int, why: str) -> None:
-        u, v, _ = self.st.edges.pop(eid)
-        self.dirty.update((u, v))
-        self.st.repairs.append(why)
-
-    def _contract(self, eid: int, why: str) -> None:
-        u, v, _ = self.st.edges.pop(eid)
-        self.dirty.update((u, v))
-        for a, b, _ in self.st.edges.values():
-            if {a, b} & {u, v}:
-                self.dirty.update((a, b))
-        (x0, y0), (x1, y1) = self.st.nodes[u], self.st.nodes[v]
-        self.st.nodes[u] = ((x0 + x1) / 2, (y0 + y1) / 2)
-        seen: set[tuple[int, int]] = set()
-        for k in sorted(self.st.edges):
-            a, b, cfg = self.st.edges[k]
-            a, b = (u if a == v else a), (u if b == v else b)
-            key = (min(a, b), max(a, b))
-            if a == b or key in seen:
-                del self.st.edges[k]
-                continue
-            seen.add(key)
-            self.st.edges[k] = (a, b, cfg)
-        self.st.scale.pop(u, None)
-        self.st.growth.pop(u, None)
-        for k in [k for k in sorted(self.st.edges) if u in self.st.edges[k][:2]]:
-            a, b, cfg = self.st.edges.pop(k)
-            self._insert_planar(a, b, cfg)
-        self.st.repairs.append(why)
-
-    def _smooth(self, chain: Chain, i: int, why: str) -> None:
-        """Repair a bend at interior vertex ``chain.nodes[i]``: cut it open when the map stays connected (one side
-        becomes a dead end), otherwise replace its two edges by one straight edge (split where it crosses others)."""
-        a, v, b = chain.nodes[i - 1], chain.nodes[i], chain.nodes[i + 1]
-        e1, e2 = chain.edges[i - 1], chain.edges[i]
-        self.dirty.update((a, v, b))
-        for e in (e2, e1):
-            if self._connected_without(e):
-                self._remove_edge(e, why + " (cut open)")
-                return
-        cfg = self.st.edges[e1][2] if chain.forward[i - 1] else self.st.edges[e1][2].reversed()  # oriented a -> v
-        del self.st.edges[e1], self.st.edges[e2]
-        exists = any({x, y} == {a, b} for x, y, _ in self.st.edges.values())
-        if a != b and not exists:
-            self._insert_planar(a, b, cfg)
-        self.st.repairs.append(why + " (straightened)")
-
-    def _insert_planar(self, a: int, b: int, cfg: LaneConfig) -> None:
-        """Add edge a-b; where it crosses an existing edge both are split at a new node (a new intersection)."""
-        pa, pb = self.st.nodes[a], self.st.nodes[b]
-        self.dirty.update((a, b))
-        new = shapely.LineString([pa, pb])
-        cuts = []
-        for k in sorted(self.st.edges):
-            u, v, c = self.st.edges[k]
-            if {u, v} & {a, b}:
-                continue
-            seg = shapely.LineString([self.st.nodes[u], self.st.nodes[v]])
-            if new.crosses(seg):
-                pt = new.intersection(seg)
-                if pt.geom_type == "Point":
-                    cuts.append((math.hypot(pt.x - pa[0], pt.y - pa[1]), k, (pt.x, pt.y)))
-        prev = a
-        next_id = max(self.st.edges, default=-1) + 1
-        for _, k, xy in sorted(cuts):
-            u, v, c = self.st.edges.pop(k)
-            n = len(self.st.nodes)
-            self.dirty.update((u, v, n))
-            self.st.nodes.append((float(xy[0]), float(xy[1])))
-            self.st.edges[k] = (u, n, c)
-            self.st.edges[next_id] = (n, v, c)
-            self.st.edges[next_id + 1] = (prev, n, cfg)
-            next_id += 2
-            prev = n
-        self.st.edges[next_id] = (prev, b, cfg)
+        return [Chain(c.nodes, tuple(ids[e] for e in c.edges), c.forward) for c in ch]
 
     # ---------------------------------------------------------------------------------------------------------------
     # one pass
@@ -292,7 +94,7 @@ class Builder:
         """Give every chain one configuration (its first edge's); break pure cycles."""
         for ch in chs:
             if ch.start == ch.end and deg[ch.start] == 2:
-                self._remove_edge(ch.edges[0], f"removed a road forming a closed loop without junction at node {ch.start}")
+                self.st.remove_edge(ch.edges[0], f"removed a road forming a closed loop without junction at node {ch.start}")
                 continue
             first = self.st.edges[ch.edges[0]][2]
             cfg = first if ch.forward[0] else first.reversed()
@@ -332,7 +134,8 @@ class Builder:
         else:
             a, b = self.st.nodes[ch.nodes[-1]], self.st.nodes[ch.nodes[-2]]
             n_in, n_out = cfg.forward, cfg.backward
-        return linkplan.Leg(key, math.atan2(b[1] - a[1], b[0] - a[0]), n_in, n_out, cfg.median)
+        node, edge = (ch.nodes[0], ch.edges[0]) if at_start else (ch.nodes[-1], ch.edges[-1])
+        return linkplan.Leg((node, edge), math.atan2(b[1] - a[1], b[0] - a[0]), n_in, n_out, cfg.median)
 
     def _fix_exits(self, chs: list[Chain], legs: dict[int, list[tuple[int, bool]]]) -> None:
         """Every leg with lanes in has another leg with lanes out, and the other way round (opening one-way roads)."""
@@ -388,7 +191,7 @@ class Builder:
     def _road_geometry(self, ch: Chain, r0: float, r1: float, need: float, cfg: LaneConfig):
         """Geometry of a chain trimmed by r0 / r1, or ("vertex", i) / ("short", None) when it does not fit."""
         P = [self.st.nodes[n] for n in ch.nodes]
-        segs = [_unit(a, b) for a, b in zip(P[:-1], P[1:])]
+        segs = [_unit(a, b) for a, b in itertools.pairwise(P)]
         if any(s[2] < 1e-6 for s in segs):
             return "short", None
         n = len(segs)
@@ -431,58 +234,27 @@ class Builder:
             return "short", None
         return "ok", geom
 
+    def _merge_instead(self, ch: Chain, deg: list[int]) -> bool:
+        """A road too short for its two junctions merges them into one when that has at most 7 legs (more varied
+        intersections than removing the road); otherwise the road is removed if the map stays connected."""
+        return ch.start != ch.end and deg[ch.start] + deg[ch.end] - 2 <= MAX_LEGS
+
     def _overlap_repair(self, chs: list[Chain], geoms: list, plans: dict) -> None:
         """Roads and junction areas may only touch where the map connects them; otherwise a road is removed
         (one whose removal keeps the map connected when there is one)."""
-        shapes, owners = [], []
-        for c, (g, cfg, *_rest) in enumerate(geoms):
-            half = max(side_width(cfg.forward, cfg.median, self.w, self.mw),
-                       side_width(cfg.backward, cfg.median, self.w, self.mw))
-            pts = np.concatenate([sample(e, max(2, int(e.length / 5.0) + 2)) for e in g])
-            shapes.append(shapely.LineString(pts).buffer(half, cap_style="flat"))
-            owners.append(("road", c))
-        for node, (keys, L, _, _) in plans.items():
-            corners = []
-            for c, at_start in keys:
-                g, cfg = geoms[c][0], geoms[c][1]
-                pose = (g[0].x, g[0].y, g[0].hdg) if at_start else (lambda e: (e.x, e.y, e.hdg))(end_pose(g[-1]))
-                left = side_width(cfg.backward if self.p.traffic_rule is TrafficRule.RHT else cfg.forward,
-                                  cfg.median, self.w, self.mw)
-                right = side_width(cfg.forward if self.p.traffic_rule is TrafficRule.RHT else cfg.backward,
-                                   False, self.w, self.mw)
-                corners.append(border_point(*pose, left))
-                corners.append(border_point(*pose, -right))
-            shapes.append(shapely.MultiPoint(corners).convex_hull.buffer(-0.5))
-            owners.append(("junction", node))
-        tree = shapely.STRtree(shapes)
-        left_i, right_i = tree.query(shapes, predicate="intersects")
-        for i, j in sorted(zip(left_i.tolist(), right_i.tolist())):
-            if i >= j:
-                continue
-            (ka, a), (kb, b) = owners[i], owners[j]
-            if ka == "road" and kb == "road":
-                if {chs[a].start, chs[a].end} & {chs[b].start, chs[b].end}:
-                    continue
-                cands = [a, b]
-            elif ka == "junction" and kb == "junction":
-                cands = [c for c, ch in enumerate(chs) if {ch.start, ch.end} & {a, b}]
-            else:
-                road, node = (a, b) if ka == "road" else (b, a)
-                if node in (chs[road].start, chs[road].end):
-                    continue
-                cands = [road]
-            if any(self._touched(chs[c].nodes) for c in cands):
-                continue
-            if shapes[i].intersection(shapes[j]).area < 0.01:
+        ends = {node: [(geoms[c][0], geoms[c][1], at_start) for c, at_start in keys]
+                for node, (keys, *_rest) in plans.items()}
+        for cands in overlaps(chs, [(g[0], g[1]) for g in geoms], ends, self.p):
+            if any(self.st.touched(chs[c].nodes) for c in cands):
                 continue
             for c in cands:
-                if self._connected_without(set(chs[c].edges)):
+                if self.st.connected_without(set(chs[c].edges)):
                     break
             else:
                 c = cands[0]
             for e in chs[c].edges:
                 del self.st.edges[e]
-            self.dirty.update(chs[c].nodes)
+            self.st.dirty.update(chs[c].nodes)
             self.st.repairs.append(f"removed road between nodes {chs[c].start} and {chs[c].end}: it overlapped "
                                    f"another road or junction")
 
@@ -497,12 +269,12 @@ class Builder:
         if not cands:
             return
         for e in cands:
-            if self._connected_without(e):
-                self._remove_edge(e, why)
+            if self.st.connected_without(e):
+                self.st.remove_edge(e, why)
                 return
-        self._remove_edge(cands[0], why + " (the map loses the part behind it)")
+        self.st.remove_edge(cands[0], why + " (the map loses the part behind it)")
 
-    def _fit(self, node: int, plan: linkplan.LinkPlan, contact, median) -> tuple[list, bool]:
+    def _fit(self, node: int, plan: linkplan.LinkPlan, contact, median) -> tuple[list[LinkFit], bool]:
         """Connection geometry for every link (one vectorised fit for the links not seen before).
 
         Returns the links that fit and whether the junction must grow: a link that cannot meet the radius bound is
@@ -512,7 +284,7 @@ class Builder:
         rule = self.p.traffic_rule
         sign = -1.0 if rule is TrafficRule.RHT else 1.0
         offsets = (sign * self.w / 2, sign * self.w)
-        rows = []
+        rows, keys = [], []
         for i, k, j, m in plan.links:
             xi, yi, hi, at_start_i = contact[i]
             xj, yj, hj, at_start_j = contact[j]
@@ -522,49 +294,50 @@ class Builder:
             p1 = border_point(xj, yj, hj, inner_offset(lid_out, median[j], self.w, self.mw))
             h0 = hi + (math.pi if at_start_i else 0.0)
             h1 = hj + (0.0 if at_start_j else math.pi)
-            rows.append((i, k, j, m, lid_in, lid_out, p0, wrap(h0), local_target(p0[0], p0[1], h0, p1[0], p1[1], h1)))
-        todo = sorted({r[-1] for r in rows if r[-1] not in self._fits})
+            rows.append(LinkFit(i, k, j, m, lid_in, lid_out, p0, wrap(h0), None))
+            keys.append(local_target(p0[0], p0[1], h0, p1[0], p1[1], h1))
+        todo = sorted({key for key in keys if key not in self._fits})
         if todo:
             for key, fit in zip(todo, fit_connections(np.array(todo), offsets, self.p.min_turn_radius + 0.5, SCALES)):
                 self._fits[key] = fit
-        out = [(*r[:-1], self._fits[r[-1]]) for r in rows]
-        bad = {n for n, r in enumerate(out) if r[-1] is None}
-        signature = tuple((r[:6], r[6], r[7], r[8]) for r in rows)
+        out = [r._replace(fit=self._fits[key]) for r, key in zip(rows, keys)]
+        bad = {n for n, r in enumerate(out) if r.fit is None}
+        signature = (tuple(rows), tuple(keys))
         if signature not in self._crossings:
-            self._crossings[signature] = _crossing(out, bad)
+            self._crossings[signature] = crossing(out, bad)
         bad |= self._crossings[signature]
         if not bad:
             return out, False
+        marked = [r._replace(fit=None) if n in bad else r for n, r in enumerate(out)]
         if self.st.growth.get(node, 0) < 1:
-            return [r if n not in bad else (*r[:-1], None) for n, r in enumerate(out)], True
+            return marked, True
         good = [r for n, r in enumerate(out) if n not in bad]
-        lanes_ok = {(r[0], r[1]) for r in good}
-        fed_ok = {(r[2], r[3]) for r in good}
+        lanes_ok = {(r.leg_in, r.lane_in) for r in good}
+        fed_ok = {(r.leg_out, r.lane_out) for r in good}
         for n in bad:
-            r = out[n]
-            if (r[0], r[1]) not in lanes_ok or (r[2], r[3]) not in fed_ok:
-                return [r if n not in bad else (*r[:-1], None) for n, r in enumerate(out)], True
+            if (out[n].leg_in, out[n].lane_in) not in lanes_ok or (out[n].leg_out, out[n].lane_out) not in fed_ok:
+                return marked, True
         return good, False
 
     def run_once(self) -> Layout:
         """One pass over the whole network. Repairs are applied as they are found; whatever they touched is left
         alone for the rest of the pass (so independent repairs share a pass), then the pass starts again."""
-        self.dirty: set[int] = set()
-        ids, chs = self._chains()
-        deg = self._degree()
+        self.st.dirty = set()
+        chs = self._chains()
+        deg = self.st.degree()
         self._normalise(chs, deg)
-        if self.dirty:
+        if self.st.dirty:
             raise _Repair
         legs_at = self._legs(chs, deg)
         for node in sorted(legs_at):
-            if len(legs_at[node]) > MAX_LEGS and not self._touched([node]):
+            if len(legs_at[node]) > MAX_LEGS and not self.st.touched([node]):
                 keys = legs_at[node]
                 L = [self._leg(chs, k) for k in keys]
                 order = sorted(range(len(L)), key=lambda i: L[i].angle)
                 gaps = [((L[b].angle - L[a].angle) % (2 * math.pi), a) for a, b in zip(order, order[1:] + order[:1])]
                 prefer = [a for _, a in sorted(gaps)]
                 self._drop_leg(node, keys, chs, prefer, f"node {node}: dropped a leg ({len(keys)} legs, at most 7)")
-        if self.dirty:
+        if self.st.dirty:
             raise _Repair
         self._fix_exits(chs, legs_at)
         plans: dict[int, tuple[list[tuple[int, bool]], list[linkplan.Leg], linkplan.LinkPlan, list[float]]] = {}
@@ -572,7 +345,7 @@ class Builder:
         for node in sorted(legs_at):
             keys = sorted(legs_at[node])
             L = [self._leg(chs, k) for k in keys]
-            plan = linkplan.plan(L, self.p, self.rng, self.st.turn_lane)
+            plan = linkplan.plan(L, self.p, self.rng, self.st.drawn)
             r = self._incident(node, L)
             plans[node] = (keys, L, plan, r)
             for k, x in zip(keys, r):
@@ -585,7 +358,7 @@ class Builder:
         geoms = []
         need_of: dict[int, float] = {}
         for c, ch in enumerate(chs):
-            if self._touched(ch.nodes):
+            if self.st.touched(ch.nodes):
                 geoms.append(None)
                 continue
             cfg = self._chain_cfg(ch)
@@ -598,23 +371,23 @@ class Builder:
             need_of[c] = need
             status, g = self._road_geometry(ch, r0, r1, need, cfg)
             if status == "vertex":
-                self._smooth(ch, g, f"bend at node {ch.nodes[g]} too sharp for its lanes")
+                self.st.smooth(ch, g, f"bend at node {ch.nodes[g]} too sharp for its lanes")
             elif status == "short":
                 if len(ch.nodes) > 2:
                     P = [self.st.nodes[n] for n in ch.nodes]
                     turns = [abs(wrap(math.atan2(P[i + 1][1] - P[i][1], P[i + 1][0] - P[i][0])
                                       - math.atan2(P[i][1] - P[i - 1][1], P[i][0] - P[i - 1][0])))
                              for i in range(1, len(P) - 1)]
-                    self._smooth(ch, 1 + int(np.argmax(turns)), f"bend on a road too short between nodes "
+                    self.st.smooth(ch, 1 + int(np.argmax(turns)), f"bend on a road too short between nodes "
                                  f"{ch.start} and {ch.end}")
-                elif self._connected_without(ch.edges[0]):
-                    self._remove_edge(ch.edges[0], f"removed road between nodes {ch.start} and {ch.end}: too short "
+                elif not self._merge_instead(ch, deg) and self.st.connected_without(ch.edges[0]):
+                    self.st.remove_edge(ch.edges[0], f"removed road between nodes {ch.start} and {ch.end}: too short "
                                                    f"for its intersections")
                 else:
-                    self._contract(ch.edges[0], f"merged nodes {ch.start} and {ch.end} into one intersection: the "
+                    self.st.contract(ch.edges[0], f"merged nodes {ch.start} and {ch.end} into one intersection: the "
                                                 f"road between them was too short")
             geoms.append((g, cfg, fs, bs, fe, be) if status == "ok" else None)
-        if self.dirty:
+        if self.st.dirty:
             raise _Repair
         # junctions: a junction whose turns do not fit grows at once (its legs' roads are rebuilt, and a junction
         # at the other end of a rebuilt road is fitted again), until it fits or a repair is needed
@@ -625,7 +398,7 @@ class Builder:
         while queue:
             node = queue.popleft()
             queued.discard(node)
-            if self._touched([node]):
+            if self.st.touched([node]):
                 continue
             keys, L, plan, _ = plans[node]
             contact, median = [], []
@@ -639,12 +412,17 @@ class Builder:
                 median.append(geoms[c][1].median)
             fits, grow = self._fit(node, plan, contact, median)
             if not grow:
+                used = {r.leg_in for r in fits} | {r.leg_out for r in fits}
+                lost = [i for i in range(len(keys)) if i not in used]
+                if lost:  # a leg no lane enters or leaves the junction by: it cannot be linked, so it goes
+                    self._drop_leg(node, keys, chs, lost, f"node {node}: dropped a leg without any lane link")
+                    continue
                 done[node] = (keys, fits)
                 continue
             done.pop(node, None)
             self.st.growth[node] = self.st.growth.get(node, 0) + 1
             if self.st.growth[node] > MAX_GROWTH:
-                failed = [r[0] for r in fits if r[-1] is None]
+                failed = [r.leg_in for r in fits if r.fit is None]
                 self.st.growth[node] = 0
                 self.st.scale[node] = 1.0
                 self._drop_leg(node, keys, chs, sorted(set(failed)),
@@ -656,11 +434,11 @@ class Builder:
                 r_at[k] = x
             rebuilt = []
             for c in sorted({k[0] for k in keys}):
-                g0, cfg, fs, bs, fe, be = geoms[c]
+                _, cfg, fs, bs, fe, be = geoms[c]
                 status, g = self._road_geometry(chs[c], r_at.get((c, True), 0.0), r_at.get((c, False), 0.0),
                                                 need_of[c], cfg)
                 if status != "ok":
-                    self.dirty.update(chs[c].nodes)  # the next pass repairs this road
+                    self.st.dirty.update(chs[c].nodes)  # the next pass repairs this road
                     break
                 geoms[c] = (g, cfg, fs, bs, fe, be)
                 rebuilt.append(c)
@@ -673,7 +451,7 @@ class Builder:
                             queued.add(other)
                 queue.appendleft(node)
                 queued.add(node)
-        if self.dirty:
+        if self.st.dirty:
             raise _Repair
         jplans = []
         for node in sorted(plans):
@@ -686,7 +464,7 @@ class Builder:
                                             lid_out, connection_geometry(p0[0], p0[1], h0, fit), fit.min_radius))
             jplans.append(JunctionPlan(node, self.st.nodes[node], len(keys), tuple(conns)))
         self._overlap_repair(chs, geoms, plans)
-        if self.dirty:
+        if self.st.dirty:
             raise _Repair
         roads = []
         for c, ch in enumerate(chs):
@@ -703,7 +481,8 @@ class Builder:
                 return self.run_once()
             except _Repair:
                 continue
-        raise RuntimeError("stage 3 did not converge")  # every repair shrinks the network: unreachable
+        # every repair shrinks the network or spends a bounded budget, so this is a guard, not an outcome
+        raise GenerationError(f"stage 3 did not settle after {limit} passes; please report the seed and parameters")
 
 
 def build(laned: LanedNetwork, params: Params, rng: np.random.Generator) -> Layout:

@@ -23,7 +23,7 @@ SHARPEST_TURN = math.radians(150.0)
 
 @dataclass(frozen=True)
 class Leg:
-    key: tuple[int, bool]  #: (chain index, the chain starts here)
+    key: tuple[int, int]  #: (node, edge of the leg at the node): stable while repairs change the network
     angle: float  #: heading of the leg leaving the node
     n_in: int  #: lanes travelling into the node
     n_out: int  #: lanes travelling away from the node
@@ -42,34 +42,48 @@ def turn(legs: list[Leg], i: int, j: int) -> float:
     return wrap(legs[j].angle - (legs[i].angle + math.pi))
 
 
-def _targets(legs: list[Leg], i: int, rule: TrafficRule) -> list[int]:
-    others = [j for j in range(len(legs)) if j != i and legs[j].n_out > 0]
-    usable = [j for j in others if abs(turn(legs, i, j)) <= SHARPEST_TURN] or others
+def _targets(legs: list[Leg], rule: TrafficRule) -> list[list[int]]:
+    """Per incoming leg, the legs it feeds, in enumeration order. Turns sharper than SHARPEST_TURN are left out, unless
+    a leg would then have no exit at all, or an outgoing leg no feeder (it is then fed by the least sharp turn)."""
+    n = len(legs)
+    out: list[list[int]] = []
+    for i in range(n):
+        others = [j for j in range(n) if j != i and legs[j].n_out > 0] if legs[i].n_in else []
+        out.append([j for j in others if abs(turn(legs, i, j)) <= SHARPEST_TURN] or others)
+    for j in range(n):
+        if legs[j].n_out and not any(j in t for t in out):
+            feeders = [i for i in range(n) if i != j and legs[i].n_in]
+            if feeders:
+                out[min(feeders, key=lambda i: abs(turn(legs, i, j)))].append(j)
     sign = 1.0 if rule is TrafficRule.RHT else -1.0
-    return sorted(usable, key=lambda j: sign * turn(legs, i, j))
+    return [sorted(t, key=lambda j, i=i: sign * turn(legs, i, j)) for i, t in enumerate(out)]
 
 
-def plan(legs: list[Leg], params: Params, rng: np.random.Generator, turn_lane: dict[tuple[int, bool], bool]) -> LinkPlan:
-    """Lane links for one junction; ``turn_lane`` remembers per leg whether it got a turn lane (stable over repairs)."""
+def plan(legs: list[Leg], params: Params, rng: np.random.Generator, drawn: dict[tuple[int, int], tuple[bool, bool]]
+         ) -> LinkPlan:
+    """Lane links for one junction. ``drawn`` remembers per leg what was drawn for it (a turn lane? split first?),
+    so a leg keeps its choices while repairs elsewhere make the junction be planned again."""
     n = len(legs)
     n_in_end = [0] * n
     fed: list[set[int]] = [set() for _ in range(n)]
     links: list[tuple[int, int, int, int]] = []
+    feeds = _targets(legs, params.traffic_rule)
     for i, leg in enumerate(legs):
         if leg.n_in == 0:
             continue
-        targets = [(j, m) for j in _targets(legs, i, params.traffic_rule) for m in range(legs[j].n_out, 0, -1)]
+        targets = [(j, m) for j in feeds[i] for m in range(legs[j].n_out, 0, -1)]
         if not targets:
             continue
         count = min(leg.n_in, len(targets))
-        if leg.key not in turn_lane:
-            turn_lane[leg.key] = bool(rng.random() < params.turn_lane_probability)
-        if turn_lane[leg.key] and count == leg.n_in and leg.n_in < 3 and len(targets) > count:
+        if leg.key not in drawn:
+            drawn[leg.key] = (bool(rng.random() < params.turn_lane_probability), bool(rng.random() < 0.5))
+        turn_lane, first = drawn[leg.key]
+        if turn_lane and count == leg.n_in and leg.n_in < 3 and len(targets) > count:
             count += 1  # a turn lane appears before the junction on the kerb side
         n_in_end[i] = count
         strategy = params.split_strategy
         if strategy is SplitStrategy.RANDOM:
-            strategy = SplitStrategy.SPLIT_FIRST if rng.random() < 0.5 else SplitStrategy.SPLIT_LAST
+            strategy = SplitStrategy.SPLIT_FIRST if first else SplitStrategy.SPLIT_LAST
         extra = len(targets) - count
         # incoming lanes from the kerb (k = count) to the centre (k = 1), each taking a block of targets
         pos = 0

@@ -37,7 +37,7 @@ def bodies(path):
 
 def overlaps(path, min_area: float = 0.5):
     """(road a, road b, area) for road bodies overlapping where the map does not connect them."""
-    doc, items = bodies(path)
+    _, items = bodies(path)
     junction_of = {}
     touches: dict[str, set[str]] = {}
     for road, _ in items:

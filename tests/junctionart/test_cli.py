@@ -71,6 +71,14 @@ def test_render_bad_file(tmp_path, capsys):
 
 def test_console_script_entry_point(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "junctionart", "generate", "--size", "10x10", "-o",
-                           str(tmp_path / "a.xodr")], capture_output=True, text=True)
+                           str(tmp_path / "a.xodr")], capture_output=True, text=True, check=False)
     assert proc.returncode == 2
     assert "width=10.0" in proc.stderr and "Traceback" not in proc.stderr
+
+
+def test_stages_are_reported_in_order():
+    import junctionart as ja
+
+    seen = []
+    ja.generate_layout(ja.Params(), 0, on_stage=seen.append)
+    assert tuple(seen) == ja.STAGES

@@ -43,8 +43,8 @@ def _features(size: float, seeds: range) -> dict:
                 lanes = sorted(k[3] for k in per_lane if k[:3] == (node, road, contact))
                 if len(lanes) > 1:
                     strategies.add("first" if lane == lanes[0] else "last" if lane == lanes[-1] else "?")
-    return dict(legs=legs, lane_counts=lane_counts, one_way=one_way, splits=splits, merges=merges,
-                turn_lanes=turn_lanes, strategies=strategies)
+    return {"legs": legs, "lane_counts": lane_counts, "one_way": one_way, "splits": splits, "merges": merges,
+            "turn_lanes": turn_lanes, "strategies": strategies}
 
 
 def _assert(f: dict, legs: set[int]) -> None:
@@ -62,4 +62,4 @@ def test_features_on_1km_maps():
 
 @pytest.mark.slow
 def test_features_on_100_maps_of_2km():
-    _assert(_features(2000.0, range(100)), {3, 4, 5, 6})
+    _assert(_features(2000.0, range(100)), {3, 4, 5, 6, 7})

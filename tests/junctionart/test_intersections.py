@@ -31,6 +31,12 @@ def _check_links(layout, params):
             assert all((c.out_road, c.out_contact) != (r, contact) for c in conns), "no U-turn"
         for c in jp.connections:
             assert c.min_radius >= params.min_turn_radius
+        # every leg is linked: some lane enters or leaves the junction by it
+        linked = {(c.in_road, c.in_contact) for c in jp.connections} | {(c.out_road, c.out_contact) for c in jp.connections}
+        for rp in roads:
+            for contact, j in (("start", rp.start_junction), ("end", rp.end_junction)):
+                if j is not None and layout.junctions[j] is jp:
+                    assert (rp.index, contact) in linked
         # every outgoing lane is fed
         fed = {(c.out_road, c.out_contact, c.out_lane) for c in jp.connections}
         for rp in roads:
@@ -149,3 +155,16 @@ def test_repairs_never_discard_a_map():
         _check_links(result.layout, params)
         repairs += len(result.layout.repairs)
     assert repairs > 0
+
+
+def test_link_plan_feeds_a_leg_reachable_only_by_a_sharp_turn():
+    """An outgoing-only leg at a sharp angle to the only incoming leg is still fed (no unlinked leg)."""
+    from junctionart.intersections.links import Leg, plan
+
+    legs = [Leg((0, 0), 0.0, 1, 1, False),  # two-way leg to the east
+            Leg((0, 1), math.radians(10.0), 0, 1, False),  # one-way out, 10 degrees from the first
+            Leg((0, 2), math.pi, 0, 1, False)]  # one-way out to the west
+    p = plan(legs, Params(turn_lane_probability=0.0), np.random.default_rng(0), {})
+    assert {j for _, _, j, _ in p.links} == {1, 2}
+    assert p.n_out_end == (0, 1, 1)
+    assert p.n_in_end == (1, 0, 0)

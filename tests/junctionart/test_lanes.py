@@ -55,3 +55,11 @@ def test_control_line_lane_configuration_is_used():
     _, ln = _laned(Params(randomize_lanes=True), 1, cl)
     on_lines = [c for e, c in zip(ln.network.edges, ln.lanes) if e.line >= 0]
     assert on_lines and all((c.forward, c.backward) == (2, 2) for c in on_lines)
+
+
+def test_control_line_lane_configurations_for_automatic_lines():
+    params = Params(randomize_lanes=True, control_line_lanes=((3, 0), (2, 2)))
+    cl, ln = _laned(params, 5)
+    assert cl.lines[0].lanes == (3, 0) and cl.lines[1].lanes == (2, 2)
+    along = {e.line: c for e, c in zip(ln.network.edges, ln.lanes) if e.line in (0, 1)}
+    assert along and all(sorted((c.forward, c.backward)) == sorted(cl.lines[e].lanes) for e, c in along.items())

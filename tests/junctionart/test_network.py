@@ -1,3 +1,4 @@
+import itertools
 import math
 
 import numpy as np
@@ -35,7 +36,7 @@ def test_connected_planar_and_spread(params, seed):
     net = _net(params, seed)
     assert _components(net) == 1
     geoms = [LineString([net.nodes[e.u], net.nodes[e.v]]) for e in net.edges]
-    left, right = STRtree(geoms).query(geoms, predicate="crosses")
+    left, _ = STRtree(geoms).query(geoms, predicate="crosses")
     assert len(left) == 0, "two roads cross without a junction"
     pts = np.asarray(net.nodes)
     d = np.hypot(pts[:, None, 0] - pts[None, :, 0], pts[:, None, 1] - pts[None, :, 1])
@@ -79,7 +80,7 @@ def test_common_end_makes_triangles():
     p = Params.create(transitions=t, snap_distance=10.0)
     net = _net(p, 1, _two_lines(2000.0))
     rungs = [e for e in net.edges if e.line == -1]
-    shared = sum(1 for a, b in zip(rungs, rungs[1:]) if {a.u, a.v} & {b.u, b.v})
+    shared = sum(1 for a, b in itertools.pairwise(rungs) if {a.u, a.v} & {b.u, b.v})
     assert shared >= 1
 
 

@@ -65,3 +65,11 @@ def test_params_are_checked_before_drawing():
     # the error comes from the constructor: no Params value (hence no map) can exist with a bad field
     with pytest.raises(ParamsError):
         Params().with_(taper_length=1.0)
+
+
+def test_control_line_lanes_validated():
+    assert Params.create(control_line_lanes=[[2, 1], [0, 3]]).control_line_lanes == ((2, 1), (0, 3))
+    with pytest.raises(ParamsError, match=r"control_line_lanes\[1\]=\(0, 0\)"):
+        Params(control_line_lanes=((1, 1), (0, 0)))
+    with pytest.raises(ParamsError, match=r"control_line_lanes\[0\]=\(4, 1\).*\[0, 3\]"):
+        Params(control_line_lanes=((4, 1),))

@@ -5,8 +5,8 @@ quadrature (the number of panels is doubled until the total length agrees to 1e-
 speed ``|C'|`` there. It is inverted, for all query points at once, by Newton's method,
 ``p <- p - (L(p) - sigma) / |C'(p)|``, where ``L(p)`` is the tabulated value at the panel start plus one more
 Gauss-Legendre integral over the rest. The first guess is the cubic Hermite interpolant of ``p(sigma)`` on the panel
-(values and slopes ``1 / |C'|`` at both boundaries), typically within 1e-6 of the root, so two Newton steps usually
-reach double precision. Iteration stops as soon as the residual left after the step just taken, predicted from the
+(values and slopes ``1 / |C'|`` at both boundaries; the tables start at 32 panels, so that this guess is typically
+within 1e-9 of the root), and one Newton step usually reaches double precision. Iteration stops as soon as the residual left after the step just taken, predicted from the
 second-order term ``|C'|' dp^2 / 2`` with a wide margin, is under the tolerance (rather than paying one more
 quadrature to measure it), or the measured residual already is.
 """
@@ -153,12 +153,23 @@ def frame(curve: CubicCurve, p: np.ndarray):
     Returns ``(U, V, angle, curvature, dcurvature)`` with ``angle = atan2(V', U')`` in (-pi, pi], curvature
     ``(U'V'' - V'U'') / |C'|^3`` and its derivative with respect to arc length (chain rule through ``|C'|``).
     """
-    (u0, u1, u2, u3), (v0, v1, v2, v3) = curve.derivatives(p)
+    (ua, ub, uc, ud), (va, vb, vc, vd) = curve.u, curve.v
+    # _horner's arithmetic, with the constant third derivatives kept scalar.
+    u0, v0 = ua + p * (ub + p * (uc + p * ud)), va + p * (vb + p * (vc + p * vd))
+    u1, v1 = ub + p * (2.0 * uc + p * (3.0 * ud)), vb + p * (2.0 * vc + p * (3.0 * vd))
+    u2, v2 = 2.0 * uc + p * (6.0 * ud), 2.0 * vc + p * (6.0 * vd)
+    u3, v3 = 6.0 * ud, 6.0 * vd
     speed2 = u1 * u1 + v1 * v1
     speed = np.sqrt(speed2)
     cross = u1 * v2 - v1 * u2
     dcross = u1 * v3 - v1 * u3
-    dspeed = (u1 * u2 + v1 * v2) / np.where(speed > 0, speed, np.inf)
+    moving = speed > 0
+    if np.all(moving):  # the usual case, without the cost of np.errstate
+        dspeed = (u1 * u2 + v1 * v2) / speed
+        curvature = cross / (speed2 * speed)
+        dcurvature = (dcross / (speed2 * speed) - 3.0 * cross * dspeed / (speed2 * speed2)) / speed
+        return u0, v0, np.arctan2(v1, u1), curvature, dcurvature
+    dspeed = (u1 * u2 + v1 * v2) / np.where(moving, speed, np.inf)
     with np.errstate(divide="ignore", invalid="ignore"):
         curvature = cross / (speed2 * speed)
         dcurvature = (dcross / (speed2 * speed) - 3.0 * cross * dspeed / (speed2 * speed2)) / speed

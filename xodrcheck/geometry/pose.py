@@ -47,4 +47,6 @@ def local_to_inertial(g, u: np.ndarray, v: np.ndarray) -> tuple[np.ndarray, np.n
 
 def as_array(ds) -> np.ndarray:
     """A 1-D float array (scalars become length-1 arrays)."""
+    if type(ds) is np.ndarray and ds.dtype == np.float64 and ds.ndim == 1:
+        return ds  # the common case, without the conversion calls
     return np.atleast_1d(np.asarray(ds, dtype=float))

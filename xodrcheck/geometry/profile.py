@@ -30,34 +30,110 @@ from xodrcheck.model import Profile
 class Piecewise:
     """A profile compiled for fast repeated evaluation (record starts shifted by ``origin``, sorted)."""
 
-    __slots__ = ("coefficients", "starts")
+    __slots__ = ("_single", "coefficients", "starts")
 
     def __init__(self, profile: Profile, origin: float = 0.0):
-        records = sorted(profile, key=lambda r: r.s)  # stable: equal starts keep file order
+        # Stable sort: equal starts keep file order.
+        records = sorted(profile, key=lambda r: r.s) if len(profile) > 1 else profile
         self.starts = np.array([r.s + origin for r in records], dtype=float)
         self.coefficients = np.array([[r.a, r.b, r.c, r.d] for r in records], dtype=float).reshape(-1, 4)
+        # One record (the common case): its start and coefficients as plain floats, for the fast path of jet().
+        self._single = (float(self.starts[0]), *map(float, self.coefficients[0])) if len(records) == 1 else None
 
     def jet(self, s) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Value, first and second derivative at ``s``."""
         s = as_array(s)
+        if self._single is not None:
+            start, a, b, c, d = self._single
+            return _cubic_jet(a, b, c, d, s - start, None)
         if len(self.starts) == 0:
             return np.zeros_like(s), np.zeros_like(s), np.zeros_like(s)
-        if len(self.starts) == 1:
-            ds = s - self.starts[0]
-            a, b, c, d = self.coefficients[0]
-            active = ds >= 0
-        else:
-            index = np.searchsorted(self.starts, s, side="right") - 1
-            active = index >= 0
-            index = np.maximum(index, 0)
-            ds = s - self.starts[index]
-            a, b, c, d = self.coefficients[index].T
-        value = a + ds * (b + ds * (c + ds * d))
-        first = b + ds * (2.0 * c + ds * 3.0 * d)
-        second = 2.0 * c + 6.0 * d * ds
-        if active.all():
-            return value, first, second
-        return np.where(active, value, 0.0), np.where(active, first, 0.0), np.where(active, second, 0.0)
+        index = np.searchsorted(self.starts, s, side="right") - 1
+        active = index >= 0
+        index = np.maximum(index, 0)
+        return _cubic_jet(*self.coefficients[index].T, s - self.starts[index], active)
+
+
+#: Profiles with at most this many records are batched by counting starts (cost: records x points comparisons).
+_BATCHED_RECORDS = 32
+
+
+class Batch:
+    """Several compiled profiles evaluated together at one array of ``s``, with exactly :meth:`Piecewise.jet`'s
+    arithmetic: the single-record ones (the common case: one ``<width>`` per lane) as rows of one array computation,
+    those with a few records likewise after finding each point's record by counting the starts at or before it (what
+    ``searchsorted`` finds; done per profile instead when an ``s`` is NaN), the empty ones as zeros and the rest one
+    by one."""
+
+    __slots__ = (
+        "_coefficients",
+        "_laws",
+        "_multi",
+        "_offsets",
+        "_record_coefficients",
+        "_record_starts",
+        "_rows",
+        "_starts",
+    )
+
+    def __init__(self, laws: tuple[Piecewise, ...]):
+        self._laws = laws
+        single = [i for i, law in enumerate(laws) if law._single is not None]
+        self._rows = {i: row for row, i in enumerate(single)}
+        self._starts = np.array([laws[i]._single[0] for i in single], dtype=float)[:, None]
+        self._coefficients = np.array([laws[i]._single[1:] for i in single], dtype=float).reshape(-1, 4).T[..., None]
+        multi = [
+            i
+            for i, law in enumerate(laws)
+            if 2 <= len(law.starts) <= _BATCHED_RECORDS and not np.isnan(law.starts).any()
+        ]
+        self._multi = {i: row for row, i in enumerate(multi)}
+        sizes = [len(laws[i].starts) for i in multi]
+        self._offsets = np.concatenate(([0], np.cumsum(sizes)[:-1])).astype(np.intp) if multi else None
+        self._record_starts = np.concatenate([laws[i].starts for i in multi]) if multi else None
+        self._record_coefficients = np.concatenate([laws[i].coefficients for i in multi]).T.copy() if multi else None
+
+    def jets(self, s) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+        """``laws[i].jet(s)`` for every law, in order (read-only: arrays may be shared between laws)."""
+        s = as_array(s)
+        rows, multi = self._rows, self._multi
+        if rows:
+            single = _cubic_jet(*self._coefficients, s - self._starts, None)
+        if multi and np.isnan(s).any():
+            multi = {}
+        if multi:
+            counts = np.add.reduceat(s >= self._record_starts[:, None], self._offsets, axis=0, dtype=np.intp)
+            index = self._offsets[:, None] + np.maximum(counts - 1, 0)
+            ds = s - self._record_starts[index]
+            several = _cubic_jet(*(column[index] for column in self._record_coefficients), ds, counts > 0)
+        out = []
+        zero = None
+        for i, law in enumerate(self._laws):
+            row = rows.get(i)
+            if row is not None:
+                out.append((single[0][row], single[1][row], single[2][row]))
+                continue
+            row = multi.get(i)
+            if row is not None:
+                out.append((several[0][row], several[1][row], several[2][row]))
+            elif len(law.starts) == 0:
+                zero = np.zeros_like(s) if zero is None else zero
+                out.append((zero, zero, zero))
+            else:
+                out.append(law.jet(s))
+        return out
+
+
+def _cubic_jet(a, b, c, d, ds: np.ndarray, active: np.ndarray | None):
+    """:meth:`Piecewise.jet`'s arithmetic on arrays of coefficients (``active``: where a record is in force; ``None``
+    for ``ds >= 0``)."""
+    value = a + ds * (b + ds * (c + ds * d))
+    first = b + ds * (2.0 * c + ds * 3.0 * d)
+    second = 2.0 * c + 6.0 * d * ds
+    active = ds >= 0 if active is None else active
+    if active.all():
+        return value, first, second
+    return np.where(active, value, 0.0), np.where(active, first, 0.0), np.where(active, second, 0.0)
 
 
 @lru_cache(maxsize=16384)

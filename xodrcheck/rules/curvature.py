@@ -26,7 +26,7 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Road
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.context import Context, placed_lane_ids
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import section_lines, section_samples, usable
 
@@ -79,9 +79,10 @@ def lane_radius_too_small(ctx: Context):
     """
     bound = 1.0 / ctx.tolerances.min_radius if ctx.tolerances.min_radius > 0 else math.inf
     for road, index, geometry, s in _sections(ctx):
+        placed = placed_lane_ids(geometry, index)
         for lane in road.lane_sections[index].lanes:
-            if lane.id == 0 or not lane.drivable:
-                continue
+            if lane.id not in placed or not lane.drivable:
+                continue  # lane 0, and lanes filed on the wrong side (lane-id-sequence reports those)
             points = geometry.lane_points(index, lane.id, s, "centre")
             i = _tightest(np.where(points.speed > 0, points.curvature, 0.0), bound)
             if i is None:

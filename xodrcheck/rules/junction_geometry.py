@@ -22,7 +22,7 @@ import shapely
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Connection, ContactPoint, Junction, JunctionType, Road
-from xodrcheck.rules.context import Context, travel_direction
+from xodrcheck.rules.context import Context, placed_lane_ids, travel_direction
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import end_s, road_end, section_samples, usable
 
@@ -52,7 +52,7 @@ def _centre_path(ctx: Context, road: Road, lane_id: int, contact: ContactPoint) 
     current: int | None = lane_id
     for index in order:
         lane = sections[index].lane(current) if current is not None else None
-        if lane is None:
+        if lane is None or current not in placed_lane_ids(geometry, index):
             break
         s = section_samples(ctx, road, index)
         points = geometry.lane_points(index, current, s, "centre")

@@ -215,10 +215,14 @@ def lane_not_continued(ctx: Context):
     """A lane of non-zero width ends at a joint without a lane link to the other side.
 
     Where a lane section ends and another begins (inside a road, or at a road link), every lane that has width there
-    must be linked across: by its own ``predecessor``/``successor``, by the other side's link back to it, or, for a
-    connecting road at the road it leaves, by a junction ``laneLink``. A lane may start or end without one only at
-    zero width (a lane that opens or closes). Otherwise a full-width lane appears or vanishes at the joint: traffic on
-    it has nowhere to come from or go to. An error for drivable lanes, a warning for sidewalks, bike, tram, rail and
+    must be linked across: by its own ``predecessor``/``successor``, or by the other side's link back to it. A lane may
+    start or end without one only at zero width (a lane that opens or closes). Otherwise a full-width lane appears or
+    vanishes at the joint: traffic on it has nowhere to come from or go to.
+
+    A connecting road's lanes need their own links at both ends, as in the standard's junction example (12.4): the
+    junction's ``laneLink`` says which incoming lane leads into a connecting lane, but readers that follow lane links
+    (routing, lane graphs) walk from the connecting lane through its ``predecessor``; the laneLink does not stand in
+    for it (the incoming road links to the junction, not back to the connecting road). An error for drivable lanes, a warning for sidewalks, bike, tram, rail and
     parking lanes, an info for the rest (``none``, ``border``, ``shoulder``...), which carry no traffic.
 
     Passes (lane -2 opens from zero width)::
@@ -242,11 +246,8 @@ def lane_not_continued(ctx: Context):
         if joint.mutual:
             for lane in side_lanes(other.section):
                 back_named.update(other.links(lane))
-        from_junction = ctx.junction_lane_targets.get((mine.road.id, mine.end), frozenset()) if (
-            mine.road.junction is not None and mine.index == ctx.section_index_at(mine.road, mine.end)
-        ) else frozenset()
         for lane in side_lanes(mine.section):
-            if mine.links(lane) or lane.id in back_named or lane.id in from_junction:
+            if mine.links(lane) or lane.id in back_named:
                 continue
             if ctx.zero_width_at(mine.road, mine.index, lane.id, mine.end) is not False:
                 continue  # zero width there (a lane opening or closing), or no width at all

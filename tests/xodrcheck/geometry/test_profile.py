@@ -56,3 +56,26 @@ def test_origin_shifts_record_starts():
         [_cubic(RECORDS[0], 2.0), _cubic(RECORDS[1], 11.0)]
     )
     assert profile.breakpoints(RECORDS, origin=100.0).tolist() == [102.0, 110.0]
+
+
+def _random_profile(rng, records: int, origin: float) -> profile.Piecewise:
+    starts = np.sort(rng.uniform(0.0, 50.0, records))
+    if records > 2:
+        starts[2] = starts[1]  # equal starts: the later record holds
+    cubics = tuple(Cubic(float(st), *map(float, rng.normal(size=4))) for st in rng.permutation(starts))
+    return profile.Piecewise(cubics, origin)
+
+
+@pytest.mark.parametrize("with_nan", [False, True])
+def test_batch_gives_exactly_each_profiles_own_jet(with_nan):
+    rng = np.random.default_rng(7)
+    # Empty, single-record, few-record and many-record profiles, some starting after the first s.
+    laws = tuple(_random_profile(rng, n, origin) for n in (0, 1, 1, 3, 5, 40, 2, 0, 1) for origin in (0.0, 7.5))
+    s = np.concatenate([[-1.0, 0.0, 60.0, np.inf], rng.uniform(-5.0, 70.0, 200)])
+    if with_nan:
+        s[5] = np.nan
+    batched = profile.Batch(laws).jets(s)
+    assert len(batched) == len(laws)
+    for law, got in zip(laws, batched):
+        for part, expected in zip(got, law.jet(s)):
+            np.testing.assert_array_equal(part, expected)

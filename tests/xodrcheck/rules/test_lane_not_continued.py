@@ -24,3 +24,13 @@ def test_width_of_a_lane_given_by_borders_comes_from_the_geometry():
     (f,) = findings(path, RULE)
     assert (f.road, f.lane) == ("2", -2)
     assert "3.00 m wide" in f.message
+
+
+def test_connecting_lane_without_predecessor_is_not_excused_by_the_junction_lane_link():
+    """Regression (found by fuzzing the generator with a dropped lane link): the junction's laneLink from road 1 does
+    not stand in for the connecting lane's own predecessor."""
+    path = fixture(RULE, "fail_junction.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane, f.s) == ("10", -1, 0.0)
+    assert f.severity is Severity.ERROR
+    assert "no predecessor in road 1" in f.message

@@ -1,6 +1,9 @@
 """Rule zero-width-lane-linked: its pass fixtures give no finding, its fail fixtures one where the defect is."""
 
+from lxml import etree
+
 from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture
+from xodrcheck.check import check
 from xodrcheck.findings import Severity
 
 RULE = "zero-width-lane-linked"
@@ -22,3 +25,19 @@ def test_before_17_it_is_a_warning():
     path = fixture(RULE, "fail_14.xodr")
     (f,) = findings(path, RULE)
     assert f.severity is Severity.WARNING
+
+
+def test_border_lanes_filed_on_the_wrong_side_are_no_crash(tmp_path):
+    """Regression (found by fuzzing): a lane described by <border> records and filed in the wrong side's group has
+    no place in the road; the rule skips it instead of failing with a KeyError."""
+    root = etree.parse(str(fixture(RULE, "fail.xodr"))).getroot()
+    for record in root.iter("width"):
+        record.tag = "border"
+    for section in root.iter("laneSection"):
+        right = section.find("right")
+        for lane in list(section.find("left")):
+            right.append(lane)
+    path = tmp_path / "wrong_side.xodr"
+    path.write_bytes(etree.tostring(root))
+    assert check(path).findings
+    assert [f for f in check(path).findings if f.code == "X900"] == []

@@ -1,0 +1,105 @@
+"""Connection lanes leaving one incoming road must not cross (xodrcheck's J101 rule, checked here before writing).
+
+Paths from different lanes keep :data:`CLEARANCE` apart; two paths from the same lane start together and are compared
+from where they have parted by :data:`PARTED`, after which they must stay :data:`TOUCH` apart.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+import shapely
+
+from ..curves import HermiteFit
+
+
+class LinkFit(NamedTuple):
+    """One lane link of a junction with its fitted connection geometry (``fit`` None: no curve met the bound)."""
+
+    leg_in: int
+    lane_in: int  #: k, 1 = next to the centre
+    leg_out: int
+    lane_out: int
+    id_in: int  #: lane id on the incoming road
+    id_out: int  #: lane id on the outgoing road
+    start: tuple[float, float]
+    hdg: float
+    fit: HermiteFit | None
+
+
+_P_CROSS = np.linspace(0.0, 1.0, 129)
+CLEARANCE = 0.1  #: paths from different lanes of one road stay at least this far apart (m)
+PARTED = 0.05  #: paths from one lane are compared from where they are this far apart (m)
+TOUCH = 0.01  #: ... and must then stay this far apart
+WINDOW = 2
+HEAD = 16  #: samples searched for the point where two paths from one lane part
+
+
+def crossing(rows: list[LinkFit], skip: set[int]) -> set[int]:
+    """Links whose centre line crosses that of a link leaving another lane of the same incoming leg (the one of each
+    crossing pair that comes later in the plan's order)."""
+    by_leg: dict[int, list[int]] = {}
+    for n, r in enumerate(rows):
+        if n not in skip:
+            by_leg.setdefault(r.leg_in, []).append(n)
+    pairs = [(a, b) for group in by_leg.values() for i, a in enumerate(group) for b in group[i + 1:]]
+    if not pairs:
+        return set()
+    idx = sorted({n for pair in pairs for n in pair})
+    pos = {n: k for k, n in enumerate(idx)}
+    coef = np.array([rows[n].fit.coef for n in idx])
+    p = _P_CROSS[None, :]
+    u = coef[:, 0:1] + p * (coef[:, 1:2] + p * (coef[:, 2:3] + p * coef[:, 3:4]))
+    v = coef[:, 4:5] + p * (coef[:, 5:6] + p * (coef[:, 6:7] + p * coef[:, 7:8]))
+    x0 = np.array([rows[n].start[0] for n in idx])[:, None]
+    y0 = np.array([rows[n].start[1] for n in idx])[:, None]
+    h = np.array([rows[n].hdg for n in idx])[:, None]
+    xy = np.stack([x0 + np.cos(h) * u - np.sin(h) * v, y0 + np.sin(h) * u + np.cos(h) * v], axis=-1)
+    lines = shapely.linestrings(xy)
+    pa = np.array([pos[x] for x, _ in pairs])
+    pb = np.array([pos[y] for _, y in pairs])
+    same = np.array([rows[x].lane_in == rows[y].lane_in for x, y in pairs])
+    hit = np.zeros(len(pairs), dtype=bool)
+    diff = ~same
+    if diff.any():
+        hit[diff] = shapely.dwithin(lines[pa[diff]], lines[pb[diff]], CLEARANCE)
+    if same.any():
+        # two paths from one lane start together: compare them from where they have parted
+        sa, sb = pa[same], pb[same]
+        tail_a, ok_a = _parted(xy[sa], xy[sb])
+        tail_b, ok_b = _parted(xy[sb], xy[sa])
+        ok = ok_a & ok_b
+        res = np.zeros(len(sa), dtype=bool)
+        if ok.any():
+            res[ok] = shapely.dwithin(tail_a[ok], tail_b[ok], TOUCH)
+        hit[same] = res
+    return {pairs[k][1] for k in np.flatnonzero(hit)}
+
+
+def _parted(xy: np.ndarray, other: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per row of ``xy`` (paths x samples x 2): the polyline from the first sample further than PARTED from the
+    matching row of ``other`` on, and whether there is one. Distances are to the segments of ``other`` within
+    WINDOW samples (both paths start together, so the nearest point is near the same parameter)."""
+    n, m, _ = xy.shape
+    head = min(m, HEAD)
+    seg0, seg1 = other[:, :-1], other[:, 1:]
+    dist = np.full((n, head), np.inf)
+    base = np.arange(head)
+    near = xy[:, :head]
+    for off in range(-WINDOW, WINDOW + 1):
+        j = np.minimum(np.maximum(base + off, 0), m - 2)
+        a, b = seg0[:, j], seg1[:, j]
+        ab = b - a
+        t = np.minimum(np.maximum(((near - a) * ab).sum(-1) / np.maximum((ab * ab).sum(-1), 1e-300), 0.0), 1.0)
+        d = a + t[..., None] * ab - near
+        dist = np.minimum(dist, np.hypot(d[..., 0], d[..., 1]))
+    far = dist > PARTED
+    # not parted within the head: compare from the end of the head (they run together there: a near-touch)
+    first = np.where(far.any(axis=1), far.argmax(axis=1), head - 1)
+    ok = first <= m - 2
+    first = np.minimum(first, m - 2)
+    keep = np.arange(m)[None, :] >= first[:, None]
+    return shapely.linestrings(xy[keep], indices=np.repeat(np.arange(n), keep.sum(axis=1))), ok
+
+

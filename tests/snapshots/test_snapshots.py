@@ -1,0 +1,197 @@
+"""Map invariants: ``xodrcheck snapshot``/``diff``, the pytest plugin, and golden snapshots.
+
+Golden snapshots of corpus maps live in ``tests/snapshots/corpus/`` (refresh them with
+``pytest tests/snapshots --xodr-snapshot-update`` after a deliberate change of the reader or the rules, and read the
+diff in review). The generator's output is still changing, so its seeds are checked for determinism here (the same
+seed gives the same snapshot); golden snapshots of generator seeds belong here once its output is settled.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+import json
+from pathlib import Path
+
+import pytest
+
+import junctionart as ja
+from tests.conftest import corpus_root
+from xodrcheck.cli import main
+from xodrcheck.snapshot import Snapshot, SnapshotError, differences, lane_links, snapshot_of, topology_hash
+from xodrcheck.reader import read
+
+pytest_plugins = ("pytester",)
+
+HERE = Path(__file__).parent
+FIXTURES = HERE.parent / "xodrcheck" / "rules" / "fixtures"
+JUNCTION = FIXTURES / "link-not-reciprocal" / "pass_junction.xodr"
+DROPPED = FIXTURES / "lane-not-continued" / "fail_junction.xodr"  # the same map without one lane predecessor
+GOLDEN = {
+    "connected_junctions_simple": "esmini/EnvironmentSimulator/Unittest/xodr/connected_junctions_simple.xodr",
+    "direct_junction_simple": "esmini/EnvironmentSimulator/Unittest/xodr/direct_junction_simple.xodr",
+    "highway_exit": "esmini/EnvironmentSimulator/Unittest/xodr/highway_exit.xodr",
+    "junction_ma": "ika-roadgeneration/test/gt/junction_ma.xodr",
+    "road_straight_curve_junction": "esmini/EnvironmentSimulator/Unittest/xodr/road_straight_curve_junction.xodr",
+}
+
+
+# ------------------------------------------------------------------------------------------------------ snapshot
+def test_snapshot_counts_a_small_junction():
+    snap = snapshot_of(JUNCTION)
+    assert (snap.roads, snap.junction_roads, snap.junctions, snap.lane_sections, snap.lanes) == (4, 2, 1, 4, 6)
+    assert snap.legs == {"2": 1} and snap.junctions_by_type == {"default": 1}
+    assert snap.lanes_by_type == {"driving": 6}
+    assert snap.lane_length == pytest.approx(4 * 50.0 + 2 * 20.0, abs=1e-3)
+    # 2 connecting lanes x (predecessor + successor) + 2 junction laneLinks
+    assert snap.lane_links == 6
+    assert snap.bbox == pytest.approx((0.0, -3.5, 120.0, 3.5))
+    assert snap.findings == {}
+
+
+def test_snapshot_round_trips_through_json():
+    snap = snapshot_of(JUNCTION)
+    assert Snapshot.from_json(json.loads(json.dumps(snap.to_json()))) == snap
+
+
+def test_topology_hash_ignores_file_order_but_not_links():
+    doc = read(JUNCTION).document
+    edges = lane_links(doc)
+    shuffled = dataclasses.replace(doc, roads=tuple(reversed(doc.roads)))
+    assert topology_hash(lane_links(shuffled)) == topology_hash(edges)
+    assert topology_hash(lane_links(read(DROPPED).document)) != topology_hash(edges)
+
+
+def test_differences_are_readable_and_tolerant():
+    old = snapshot_of(JUNCTION)
+    assert list(differences(old, old)) == []
+    noise = dataclasses.replace(old, lane_length=old.lane_length + 4e-4, bbox=tuple(v + 4e-4 for v in old.bbox))
+    assert list(differences(old, noise)) == []
+    lines = list(differences(old, snapshot_of(DROPPED)))
+    assert "lane links: 6 -> 5 (-1)" in lines
+    assert "findings L010: 0 -> 1" in lines
+    assert any(line.startswith("lane graph topology changed") for line in lines)
+    moved = dataclasses.replace(old, bbox=(old.bbox[0] - 1.0, *old.bbox[1:]), roads=5, legs={"3": 1})
+    lines = list(differences(old, moved))
+    assert "roads: 4 -> 5 (+1)" in lines
+    assert "junctions with 2 legs: 1 -> 0" in lines and "junctions with 3 legs: 0 -> 1" in lines
+    assert any(line.startswith("bounding box: x 0.000..120.000") for line in lines)
+
+
+@pytest.mark.parametrize("data", [[], {"format": 99}, {"format": 1, "roads": 1}, {**{"format": 1}, "roads": "x"}])
+def test_malformed_snapshots_are_refused(data):
+    with pytest.raises(SnapshotError):
+        Snapshot.from_json(data)
+
+
+# ------------------------------------------------------------------------------------------------------ command line
+def test_snapshot_then_diff_on_the_command_line(tmp_path, capsys):
+    out = tmp_path / "snap.json"
+    assert main(["snapshot", str(JUNCTION), "-o", str(out)]) == 0
+    assert json.loads(out.read_text())["roads"] == 4
+    capsys.readouterr()
+    assert main(["diff", str(out), str(JUNCTION)]) == 0
+    assert "no change" in capsys.readouterr().out
+    assert main(["diff", str(out), str(DROPPED)]) == 1
+    printed = capsys.readouterr().out.splitlines()
+    assert f"{DROPPED}: findings L010: 0 -> 1" in printed
+
+
+def test_snapshot_to_standard_output(capsys):
+    assert main(["snapshot", str(JUNCTION)]) == 0
+    assert json.loads(capsys.readouterr().out)["lane_links"] == 6
+
+
+@pytest.mark.parametrize("case", ["missing-map", "not-xml", "missing-snapshot", "bad-snapshot"])
+def test_command_line_errors_exit_2_with_one_line(case, tmp_path, capsys):
+    snap = tmp_path / "snap.json"
+    snap.write_text(json.dumps(snapshot_of(JUNCTION).to_json()))
+    junk = tmp_path / "junk.xodr"
+    junk.write_text("this is not XML")
+    args = {
+        "missing-map": ["diff", str(snap), str(tmp_path / "none.xodr")],
+        "not-xml": ["snapshot", str(junk)],
+        "missing-snapshot": ["diff", str(tmp_path / "none.json"), str(JUNCTION)],
+        "bad-snapshot": ["diff", str(junk), str(JUNCTION)],
+    }[case]
+    assert main(args) == 2
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and err[0].startswith("xodrcheck: ")
+
+
+# ------------------------------------------------------------------------------------------------------ golden
+@pytest.mark.corpus
+@pytest.mark.parametrize("name", sorted(GOLDEN))
+def test_corpus_maps_match_their_golden_snapshots(name, xodr_snapshot):
+    path = corpus_root() / GOLDEN[name]
+    if not path.is_file():
+        pytest.skip(f"corpus not available at {corpus_root()}")
+    xodr_snapshot(path, snapshot=HERE / "corpus" / f"{name}.json")
+
+
+@pytest.mark.parametrize("seed", [1, 7, 42])
+def test_generator_seeds_give_the_same_snapshot_twice(seed):
+    params = ja.Params.create(width=250, height=250)
+    first = ja.to_bytes(ja.generate(params, seed), params.version)
+    again = ja.to_bytes(ja.generate(params, seed), params.version)
+    assert first == again
+    snap = snapshot_of(first)
+    assert snap.roads > 0 and snap.lane_links > 0
+    assert list(differences(snap, snapshot_of(again))) == []
+
+
+# ------------------------------------------------------------------------------------------------------ plugin
+def test_the_plugin_is_declared_as_a_pytest11_entry_point():
+    text = (HERE.parent.parent / "pyproject.toml").read_text(encoding="utf-8")
+    assert '[project.entry-points.pytest11]\nxodrcheck = "xodrcheck.pytest_plugin"' in text
+
+
+#: The plugin is loaded explicitly in the inner runs, whether or not the package's entry points are installed.
+PLUGIN = ("-p", "xodrcheck.pytest_plugin")
+
+
+@pytest.fixture
+def pytester(pytester, monkeypatch):
+    monkeypatch.setenv("PYTEST_DISABLE_PLUGIN_AUTOLOAD", "1")
+    return pytester
+
+
+def test_plugin_fixture_writes_compares_and_reports(pytester):
+    pytester.makepyfile(
+        test_map=f"""
+        from pathlib import Path
+
+        def test_map(xodr_snapshot):
+            xodr_snapshot(Path({str(JUNCTION)!r}), snapshot=Path("snaps") / "map.json")
+        """
+    )
+    result = pytester.runpytest_subprocess(*PLUGIN)
+    result.assert_outcomes(failed=1)
+    result.stdout.fnmatch_lines(["*no snapshot*--xodr-snapshot-update*"])
+
+    result = pytester.runpytest_subprocess(*PLUGIN, "--xodr-snapshot-update")
+    result.assert_outcomes(passed=1)
+    written = pytester.path / "snaps" / "map.json"
+    assert json.loads(written.read_text())["roads"] == 4
+
+    result = pytester.runpytest_subprocess(*PLUGIN)
+    result.assert_outcomes(passed=1)
+
+    data = json.loads(written.read_text())
+    data["findings"] = {"L010": 1}
+    data["roads"] = 3
+    written.write_text(json.dumps(data))
+    result = pytester.runpytest_subprocess(*PLUGIN)
+    result.assert_outcomes(failed=1)
+    result.stdout.fnmatch_lines(["*differs from*", "*roads: 3 -> 4 (+1)*", "*findings L010: 1 -> 0*"])
+
+
+def test_plugin_default_snapshot_path_is_beside_the_test(pytester):
+    pytester.makepyfile(
+        test_default=f"""
+        def test_map(xodr_snapshot):
+            xodr_snapshot({str(JUNCTION)!r})
+        """
+    )
+    pytester.runpytest_subprocess(*PLUGIN, "--xodr-snapshot-update").assert_outcomes(passed=1)
+    assert (pytester.path / "snapshots" / "pass_junction.json").is_file()
+    pytester.runpytest_subprocess(*PLUGIN).assert_outcomes(passed=1)

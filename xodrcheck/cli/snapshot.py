@@ -1,0 +1,51 @@
+"""``xodrcheck snapshot FILE.xodr [-o SNAP.json]``: write the invariants of a map as JSON (see
+:mod:`xodrcheck.snapshot`). Exit 0 when the snapshot was written, 2 when the file or the configuration cannot be read.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+
+from xodrcheck.cli._common import error, guarded, output
+from xodrcheck.config import ConfigError, load_config
+from xodrcheck.findings import ReadError
+from xodrcheck.snapshot import snapshot_of
+
+NAME = "snapshot"
+HELP = ("Write the invariants of a map as JSON: counts of roads, junctions and lanes, legs, lane length, lane graph "
+        "hash, bounding box and findings.")
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("file", metavar="FILE", help="OpenDRIVE file")
+    parser.add_argument("-o", "--output", metavar="SNAP", help="write to this file instead of standard output")
+
+
+def dumps(data: dict) -> str:
+    """The snapshot's JSON text: one key per line, sorted, so that a committed snapshot diffs readably."""
+    return json.dumps(data, indent=1, sort_keys=True) + "\n"
+
+
+def run(args: argparse.Namespace) -> int:
+    try:
+        config = load_config()
+    except (OSError, ValueError, ConfigError) as exc:
+        error(f"configuration: {exc}")
+        return 2
+
+    def one() -> int:
+        try:
+            snap = snapshot_of(args.file, config)
+        except (ReadError, ValueError) as exc:
+            error(f"cannot snapshot {args.file}: {exc}")
+            return 2
+        try:
+            with output(args.output) as stream:
+                stream.write(dumps(snap.to_json()))
+        except OSError as exc:
+            error(f"cannot write {args.output}: {exc}")
+            return 2
+        return 0
+
+    return guarded(args.file, one)
