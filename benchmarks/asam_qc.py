@@ -95,11 +95,27 @@ def run_asam(command: Path, path: Path) -> list[AsamIssue]:
     with tempfile.TemporaryDirectory() as tmp:
         result = Path(tmp) / "result.xqar"
         config = Path(tmp) / "config.xml"
-        config.write_text(_CONFIG.format(input=path.resolve(), result=result), encoding="utf-8")
+        config.write_text(config_text(path, result), encoding="utf-8")
         subprocess.run([str(Path(command).absolute()), "-c", str(config)], cwd=tmp, capture_output=True, check=False, timeout=600)
         if not result.exists():
             raise RuntimeError(f"asam-qc-opendrive wrote no result for {path}")
-        results = etree.parse(str(result), etree.XMLParser(resolve_entities=False, no_network=True))
+        return read_result(result, path)
+
+
+def config_text(input_file: Path, result_file: Path) -> str:
+    """The configuration ``qc_opendrive -c`` reads: check ``input_file``, write the result to ``result_file``."""
+    return _CONFIG.format(input=Path(input_file).resolve(), result=Path(result_file).resolve())
+
+
+def checker_statuses(result: Path) -> dict[str, str]:
+    """Each checker's id -> its status in a ``result.xqar`` ("completed", "skipped" or "error")."""
+    results = etree.parse(str(result), etree.XMLParser(resolve_entities=False, no_network=True))
+    return {c.get("checkerId", ""): c.get("status", "") for c in results.iter("Checker")}
+
+
+def read_result(result: Path, path: Path) -> list[AsamIssue]:
+    """The issues of a ``result.xqar`` written for the file ``path`` (whose roads the issues' locations name)."""
+    results = etree.parse(str(result), etree.XMLParser(resolve_entities=False, no_network=True))
     source = etree.parse(str(path), etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True))
     issues = []
     for issue in results.iter("Issue"):

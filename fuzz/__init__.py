@@ -8,7 +8,10 @@ Strategies (plural nouns, keyword bounds, arguments validated before anything is
 * :func:`document_mutations`, :func:`damaged_documents`, :func:`defective_documents` - known defects and random
   damage to any OpenDRIVE file.
 
-``python -m fuzz --minutes N --profile long`` runs every property until the time is up and prints figures.
+The properties (:mod:`fuzz.properties`) and the strategies that feed them form the runs of :mod:`fuzz.campaign`, shared
+by the test suite (``tests/fuzz``, profile ``ci``) and ``python -m fuzz --minutes N [--profile long]``, which repeats
+every run until the time is up and prints figures. Profiles, example budgets, the example database and the explicit
+regressions are in :mod:`fuzz.profiles`.
 """
 
 from fuzz.documents import document_specs, opendrive_documents

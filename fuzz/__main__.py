@@ -1,7 +1,8 @@
 """``python -m fuzz [--minutes N] [--profile ci|long] [--runs NAME,...]``: run the fuzzing campaign until time is up.
 
-Every run of :mod:`fuzz.campaign` is repeated in rounds (one round: the run's example budget under the profile),
-round-robin, until ``--minutes`` have passed; stored failing examples are replayed first. A run that fails is
+Every run of :mod:`fuzz.campaign` is repeated in rounds, round-robin, until ``--minutes`` have passed (one round: a
+tenth of the run's example budget under the profile, so that no round overruns the time by much); stored failing
+examples are replayed first. A run that fails is
 reported and left out of the later rounds. Prints the figures at the end (inputs tried per run, generated maps,
 damaged documents, failures, time) and exits 1 if any run failed.
 """
@@ -11,10 +12,15 @@ from __future__ import annotations
 import argparse
 import sys
 import time
+import warnings
 
+from hypothesis import settings
 
 from fuzz import campaign, profiles
 from fuzz import properties as P
+
+#: A round runs this fraction of each run's example budget.
+ROUND_PARTS = 10
 
 
 def _parser() -> argparse.ArgumentParser:
@@ -38,6 +44,8 @@ def main(argv: list[str] | None = None) -> int:
     if not args.minutes > 0:
         print("python -m fuzz: --minutes must be positive", file=sys.stderr)
         return 2
+    # damaged files overflow numpy on purpose (1e308, NaN); the checker turns that into findings
+    warnings.simplefilter("ignore", RuntimeWarning)
     started = time.monotonic()
     deadline = started + 60.0 * args.minutes
     failed: dict[str, str] = {}
@@ -46,7 +54,8 @@ def main(argv: list[str] | None = None) -> int:
         for name in names:
             if name in failed or time.monotonic() >= deadline:
                 continue
-            config = profiles.budget(campaign.RUNS[name].budget, args.profile)
+            budget = profiles.budget(campaign.RUNS[name].budget, args.profile)
+            config = settings(budget, max_examples=max(1, budget.max_examples // ROUND_PARTS))
             try:
                 campaign.hypothesis_test(name, config)()
             except Exception as exc:  # noqa: BLE001 - a failing property, reported with its example below
@@ -61,7 +70,8 @@ def main(argv: list[str] | None = None) -> int:
         status = "FAILED" if name in failed else "ok"
         print(f"  {name:15} {campaign.TRIED[name]:8d} inputs  {status}  ({campaign.RUNS[name].doc})")
     print(f"inputs tried: {sum(campaign.TRIED.values())}; generated maps: {P.STATS['maps']}; "
-          f"damaged documents: {P.STATS['damaged']}; failures: {len(failed)}; time: {elapsed:.0f} s")
+          f"damaged documents: {P.STATS['damaged']}; failures: {len(failed)}; "
+          f"known faults tolerated: {P.STATS['tolerated']}; time: {elapsed:.0f} s")
     return 1 if failed else 0
 
 

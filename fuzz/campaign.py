@@ -17,6 +17,7 @@ from hypothesis import strategies as st
 
 from fuzz import properties as P
 from fuzz.mutations import DEFECTS, damaged_documents, defective_documents
+from fuzz.profiles import tolerated
 from fuzz.transform import move_and_rotate, renumber_roads, road_ids
 
 #: Examples each run has checked in this process.
@@ -94,14 +95,13 @@ def _maps() -> st.SearchStrategy:
 
 def _check_map(case) -> None:
     params, lines, seed = case
-    P.generated_map_is_valid(params, seed, lines)
+    P.generated_map_is_valid(params, seed, lines, tolerated("generated-map"))
 
 
 def _invalid_lines() -> st.SearchStrategy:
     from fuzz.generator import invalid_control_line_files
 
-    # overlapping control lines: a known generator fault, kept as an explicit regression (fuzz/regressions.json)
-    return st.tuples(invalid_control_line_files().filter(lambda c: c[1] != "overlapping"), SEEDS)
+    return st.tuples(invalid_control_line_files(), SEEDS)
 
 
 def _check_invalid_lines(case) -> None:
@@ -144,7 +144,7 @@ RUNS: dict[str, Run] = {
     for run in (
         Run("documents", "documents", _documents, P.document_is_valid,
             "valid documents built without the generator: no error"),
-        Run("damaged", "damaged", damaged_documents, P.checker_survives,
+        Run("damaged", "damaged", damaged_documents, lambda data: P.checker_survives(data, tolerated("damaged")),
             "damaged documents: findings or a clear error, never a crash, in bounded time"),
         Run("defects", "defects", defective_documents, _check_defect,
             "documents with one known defect: the defect is reported"),
@@ -162,9 +162,11 @@ RUNS: dict[str, Run] = {
 }
 
 
-def hypothesis_test(name: str, config: settings) -> Callable[[], None]:
-    """The Hypothesis test of run ``name`` under ``config``. Its database key is the run's own (the same for the test
-    suite and ``python -m fuzz``), so stored failures are replayed wherever the run goes next."""
+def hypothesis_test(name: str, config: settings, strategy: st.SearchStrategy | None = None,
+                    key: str | None = None) -> Callable[[], None]:
+    """The Hypothesis test of run ``name`` under ``config`` (``strategy``: a narrower strategy than the run's own,
+    e.g. one defect kind, stored under ``key``). Its database key is the run's own (the same for the test suite and
+    ``python -m fuzz``), so stored failures are replayed wherever the run goes next."""
     run = RUNS[name]
 
     def example(case) -> None:
@@ -174,5 +176,5 @@ def hypothesis_test(name: str, config: settings) -> Callable[[], None]:
     example.__name__ = example.__qualname__ = f"fuzz_{name.replace('-', '_')}"
     # Every run shares this function's source, which Hypothesis hashes into the database key; the run's name keeps
     # the keys apart (the attribute Hypothesis itself uses to separate parametrized tests).
-    example._hypothesis_internal_add_digest = name.encode()
-    return config(given(run.strategy())(example))
+    example._hypothesis_internal_add_digest = (key or name).encode()
+    return config(given(strategy if strategy is not None else run.strategy())(example))

@@ -144,7 +144,7 @@ def _document_specs(
     jroads = [next(ids) for _ in range(4)]
     right_only = _lanes(0, n_right, widths, outer, True, True)
     reverse_only = _lanes(0, n_left, widths, outer, True, True, flip=True)
-    back = lambda q: xb.Pose(q.x, q.y, q.hdg + math.pi)  # noqa: E731 - the same point facing the other way
+    back = lambda q: xb.Pose(q.x, q.y, q.hdg + math.pi)
     quarter = TURN_RADIUS * math.pi / 2
     a_end, b_start, c_start = xb.LinkSpec("road", names_a[-1], "end"), xb.LinkSpec("road", names_b[0], "start"), \
         xb.LinkSpec("road", names_c[0], "start")

@@ -328,7 +328,7 @@ def _swap(m: Mutation, root) -> bool:
 
 
 def _attributed(root):
-    return [(el, name) for el in _elements(root) for name in el.keys()]
+    return [(el, name) for el in _elements(root) for name in el.keys()]  # noqa: SIM118 - lxml: attribute names
 
 
 def _attribute(m: Mutation, root) -> bool:

@@ -23,23 +23,24 @@ DATABASE_DIR = Path(__file__).resolve().parent / ".examples"
 REGRESSIONS = Path(__file__).resolve().parent / "regressions.json"
 PROFILES = ("ci", "long")
 
-#: Examples per property and profile. ``ci`` meets the acceptance budget (>= 200 generated maps and >= 2,000 damaged
-#: documents per run) in about five minutes for the whole of ``tests/fuzz`` on two shared cores (measured: a
-#: generated map costs ~0.6 s to generate and check, a damaged document ~0.05 s). ``long`` is the size of one round of
-#: ``python -m fuzz --profile long``, which repeats rounds until its time is up.
+#: Examples per property and profile. ``ci`` exceeds the acceptance budget (>= 200 generated maps and >= 2,000
+#: damaged documents per run) and keeps the whole of ``tests/fuzz`` to about four minutes on two shared cores
+#: (measured: a generated map of the ``maps`` run costs ~0.13 s to generate and check on average, a damaged document
+#: ~0.04 s); ``faults`` bounds the search of the fault-injection tests, which find their fault within a few examples.
+#: ``long`` sizes the rounds of ``python -m fuzz --profile long``, which repeats them until its time is up.
 BUDGETS: dict[str, dict[str, int]] = {
-    "ci": {"maps": 200, "damaged": 2000, "documents": 100, "defects": 200, "metamorphic": 30, "invalid": 100,
-           "round-trip": 30, "faults": 30},
+    "ci": {"maps": 500, "damaged": 3000, "documents": 200, "defects": 280, "metamorphic": 60, "invalid": 200,
+           "round-trip": 100, "faults": 30},
     "long": {"maps": 200, "damaged": 2000, "documents": 200, "defects": 500, "metamorphic": 100, "invalid": 500,
              "round-trip": 100, "faults": 200},
 }
 
-_COMMON = dict(
-    deadline=None,
-    suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large, HealthCheck.filter_too_much,
-                           HealthCheck.function_scoped_fixture],
-    print_blob=True,
-)
+_COMMON = {
+    "deadline": None,
+    "suppress_health_check": [HealthCheck.too_slow, HealthCheck.data_too_large, HealthCheck.filter_too_much,
+                              HealthCheck.function_scoped_fixture],
+    "print_blob": True,
+}
 
 
 def database() -> DirectoryBasedExampleDatabase:
@@ -71,3 +72,12 @@ def regressions() -> list[dict]:
     if not REGRESSIONS.is_file():
         return []
     return json.loads(REGRESSIONS.read_text(encoding="utf-8"))["regressions"]
+
+
+def tolerated(prop: str) -> frozenset[str]:
+    """What the open known faults of property ``prop`` (``known_fault`` entries of :data:`REGRESSIONS`) let pass:
+    finding codes for ``generated-map``, substrings of a rule's crash message for ``damaged``. The property counts
+    them in ``STATS["tolerated"]`` instead of failing, while the entry's own regression test tracks the fault (and
+    fails as soon as it is fixed, so that the tolerance goes with it)."""
+    return frozenset(t for e in regressions() if e.get("known_fault") and e["property"] == prop
+                     for t in e.get("tolerate", ()))

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 from .curves import sample
 from .intersections.model import Layout, RoadPlan
-from .lanegeom import lane_id
+from .lanegeom import lane_id, taper_length
 from .opendrive import (
     Connection,
     Cubic,
@@ -49,11 +49,11 @@ class _Span:
     end: tuple[int, int]
 
 
-def _spans(rp: RoadPlan, taper: float) -> list[_Span]:
+def _spans(rp: RoadPlan, params: Params) -> list[_Span]:
     mid = (rp.lanes.forward, rp.lanes.backward)
     first, last = (rp.fwd_start, rp.bwd_start), (rp.fwd_end, rp.bwd_end)
-    s1 = taper if first != mid else 0.0
-    s2 = rp.length - taper if last != mid else rp.length
+    s1 = taper_length(params, first, mid)
+    s2 = rp.length - taper_length(params, last, mid)
     spans = []
     if s1 > 0:
         spans.append(_Span(0.0, s1, first, mid))
@@ -109,7 +109,7 @@ def _section(rp: RoadPlan, span: _Span, params: Params, prev: _Span | None, nxt:
 
 
 def _road(rp: RoadPlan, rid: str, junction_ids: list[str], params: Params) -> Road:
-    spans = _spans(rp, params.taper_length)
+    spans = _spans(rp, params)
     sections = tuple(
         _section(rp, sp, params, spans[i - 1] if i > 0 else None, spans[i + 1] if i + 1 < len(spans) else None)
         for i, sp in enumerate(spans)

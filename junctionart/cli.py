@@ -96,7 +96,7 @@ def _add_generate(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--transitions", help="JSON object (or @file) of MDP transition probabilities")
     p.add_argument("-q", "--quiet", action="store_true", help="no summary line, no progress bar")
     for opt, field, typ, help_ in OPTIONS:
-        p.add_argument(opt, dest=field, type=typ, default=None, help=help_)
+        p.add_argument(opt, dest=field, type=typ, default=None, help=help_, metavar=opt[2:].upper().replace("-", "_"))
 
 
 def _params(args: argparse.Namespace):
@@ -195,8 +195,15 @@ def _add_era(sub: argparse._SubParsersAction) -> None:
     add_arguments(p)
 
 
+class _Parser(argparse.ArgumentParser):
+    """Usage errors as one line and exit code 2 (``junctionart generate -h`` still shows the full help)."""
+
+    def error(self, message: str) -> None:  # type: ignore[override]
+        self.exit(2, f"{self.prog}: error: {message}\n")
+
+
 def main(argv: Sequence[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="junctionart", description="Procedural OpenDRIVE road networks.")
+    parser = _Parser(prog="junctionart", description="Procedural OpenDRIVE road networks.")
     sub = parser.add_subparsers(dest="command", required=True)
     _add_generate(sub)
     _add_render(sub)

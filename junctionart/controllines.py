@@ -23,6 +23,7 @@ from pathlib import Path
 from typing import Any
 
 import numpy as np
+import shapely
 
 from .errors import InputError
 from .params import Params
@@ -191,6 +192,11 @@ def _assemble(source: str, entries: list[tuple[str, tuple, int, Any]], pairs_raw
             by_group.setdefault(ln.group, []).append(k)
         for members in by_group.values():
             pairs.extend(itertools.pairwise(members))
+    for a, b in pairs:
+        shared = shapely.LineString(lines[a].points).intersection(shapely.LineString(lines[b].points)).length
+        if shared > 1.0:
+            raise InputError(f"{source}: lines {lines[a].id!r} and {lines[b].id!r} of a pair overlap along "
+                             f"{shared:.1f} m; the two lines of a pair must be apart")
     return ControlLines(lines, tuple(pairs))
 
 

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 
-from .params import TrafficRule
+from .params import Params, TrafficRule
 
 
 def forward_side(rule: TrafficRule) -> int:
@@ -37,3 +37,18 @@ def side_width(n: int, median: bool, width: float, median_width: float) -> float
 
 def border_point(x: float, y: float, hdg: float, t: float) -> tuple[float, float]:
     return x - t * math.sin(hdg), y + t * math.cos(hdg)
+
+
+def taper_length(params: Params, end: tuple[int, int], middle: tuple[int, int]) -> float:
+    """Length of the lane split / merge between lane counts ``middle`` and ``end`` ((forward, backward) each), 0 when
+    they are equal.
+
+    A lane whose inner border moves by ``d`` along a smooth cubic over ``L`` bends with curvature up to ``6 d / L^2``;
+    the length keeps that under a quarter of ``1 / min_turn_radius`` for every lane centre (the rest of the budget
+    belongs to the road's own curve), and is never shorter than ``params.taper_length``.
+    """
+    changed = max(abs(a - b) for a, b in zip(end, middle))
+    if changed == 0:
+        return 0.0
+    shift = (changed - 0.5) * params.lane_width
+    return max(params.taper_length, math.sqrt(24.0 * shift * params.min_turn_radius))

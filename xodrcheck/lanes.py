@@ -355,7 +355,7 @@ class RoadGeometry:
         k, dk = pose.curvature, pose.dcurvature
         a = 1.0 - q * k
         speed = np.hypot(a, dq)
-        if np.all(speed > 0):  # the usual case, without the cost of np.errstate
+        if (speed > 0).all():  # the usual case, without the cost of np.errstate
             return a, speed, (a * a * k + a * ddq + 2.0 * dq * dq * k + q * dq * dk) / speed**3
         with np.errstate(divide="ignore", invalid="ignore"):
             return a, speed, (a * a * k + a * ddq + 2.0 * dq * dq * k + q * dq * dk) / speed**3

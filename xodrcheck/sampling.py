@@ -75,7 +75,11 @@ def sample_section(geometry: RoadGeometry, section_index: int, chord: float, max
     coarse_ends = np.append(coarse[1:], cuts[-1])
     steps = coarse_ends - coarse
     inset = _PROBE_INSET * steps
-    probes = np.stack([coarse + inset, coarse + 0.5 * steps, coarse_ends - inset], axis=1).ravel()
+    probes = np.empty((len(coarse), 3))
+    probes[:, 0] = coarse + inset
+    probes[:, 1] = coarse + 0.5 * steps
+    probes[:, 2] = coarse_ends - inset
+    probes = probes.ravel()
 
     bending = geometry.border_bending(section_index, probes)
     bending = np.fmax(bending, np.abs(profile.second_derivative(geometry.road.elevation, probes)))

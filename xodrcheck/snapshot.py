@@ -257,4 +257,4 @@ def differences(old: Snapshot, new: Snapshot, tolerances: Tolerances | None = No
 def _box(box) -> str:
     if box is None:
         return "none"
-    return "x {:.3f}..{:.3f}, y {:.3f}..{:.3f}".format(box[0], box[2], box[1], box[3])
+    return f"x {box[0]:.3f}..{box[2]:.3f}, y {box[1]:.3f}..{box[3]:.3f}"

@@ -37,7 +37,7 @@ from ..curves import (
 )
 from ..errors import GenerationError
 from ..graph import Chain, chains
-from ..lanegeom import border_point, inner_offset, lane_id, side_width
+from ..lanegeom import border_point, inner_offset, lane_id, side_width, taper_length
 from ..lanes import LaneConfig, LanedNetwork
 from ..params import Params, TrafficRule
 from . import links as linkplan
@@ -200,7 +200,8 @@ class Builder:
         avail[-1] -= r1
         widest = max(side_width(cfg.forward, cfg.median, self.w, self.mw),
                      side_width(cfg.backward, cfg.median, self.w, self.mw))
-        r_min = widest + self.p.min_turn_radius + 0.5
+        # lane centres on the inside keep 3/4 of the curvature budget; a lane taper on the curve may use the rest
+        r_min = widest + self.p.min_turn_radius * 4.0 / 3.0 + 0.5
         r_pref = max(r_min, 60.0)
         radii = []
         tangents = []
@@ -365,9 +366,8 @@ class Builder:
             r0, r1 = r_at.get((c, True), 0.0), r_at.get((c, False), 0.0)
             fs, bs = (counts[(c, True)][1], counts[(c, True)][0]) if (c, True) in counts else (cfg.forward, cfg.backward)
             fe, be = (counts[(c, False)][0], counts[(c, False)][1]) if (c, False) in counts else (cfg.forward, cfg.backward)
-            taper = self.p.taper_length
-            need = MIN_ROAD + (taper if (fs, bs) != (cfg.forward, cfg.backward) else 0.0) \
-                + (taper if (fe, be) != (cfg.forward, cfg.backward) else 0.0)
+            mid = (cfg.forward, cfg.backward)
+            need = MIN_ROAD + taper_length(self.p, (fs, bs), mid) + taper_length(self.p, (fe, be), mid)
             need_of[c] = need
             status, g = self._road_geometry(ch, r0, r1, need, cfg)
             if status == "vertex":

@@ -4,11 +4,12 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import given, settings
 
 from fuzz import campaign
 from fuzz import properties as P
 from fuzz.documents import opendrive_documents
-from fuzz.mutations import DEFECTS
+from fuzz.mutations import DEFECTS, defective_documents
 from fuzz.profiles import budget, regressions
 from fuzz.transform import move_and_rotate, renumber_roads, road_ids
 from xodrcheck.rules import load_rules
@@ -25,6 +26,9 @@ def test_valid_documents_have_no_error():
     assert _run("documents") >= budget("documents").max_examples
 
 
+# Numbers like 1e308 and NaN in damaged files overflow inside numpy (RuntimeWarning); the checker turns them into
+# findings, which is what is asserted here, so the warnings are noise for this property.
+@pytest.mark.filterwarnings("ignore::RuntimeWarning")
 def test_damaged_documents_never_crash_the_checker():
     tried = _run("damaged")
     assert tried >= min(2000, budget("damaged").max_examples)
@@ -32,6 +36,12 @@ def test_damaged_documents_never_crash_the_checker():
 
 @pytest.mark.parametrize("entry", [e for e in regressions() if e["property"] == "damaged"], ids=lambda e: e["note"])
 def test_damaged_regressions(entry):
+    if entry.get("known_fault"):
+        with pytest.raises(AssertionError) as crash:
+            P.checker_survives(entry["document"].encode())
+        if any(t in str(crash.value) for t in entry["tolerate"]):
+            pytest.xfail(entry["note"])  # strict: fails below once the crash is gone
+        pytest.fail(f"known fault fixed or changed ({crash.value}): set known_fault to false in fuzz/regressions.json")
     report = P.checker_survives(entry["document"].encode())
     assert report is None or report.findings
 
@@ -41,11 +51,15 @@ def test_every_defect_kind_has_its_rule():
     assert {kind for kind, codes in DEFECTS.items() if not codes <= rules} == set()
 
 
-def test_defects_are_found():
-    before = dict(campaign.DEFECT_KINDS)
-    assert _run("defects") >= budget("defects").max_examples
-    drawn = {kind for kind, n in campaign.DEFECT_KINDS.items() if n > before.get(kind, 0)}
-    assert drawn == set(DEFECTS)
+@pytest.mark.parametrize("kind", sorted(DEFECTS))
+def test_defects_are_found(kind):
+    """Each defect kind is reported on its share of the ``defects`` budget (one kind at a time, so every kind gets
+    its share whatever order Hypothesis draws kinds in)."""
+    share = -(-budget("defects").max_examples // len(DEFECTS))
+    before = campaign.DEFECT_KINDS[kind]
+    config = settings(budget("defects"), max_examples=share)
+    campaign.hypothesis_test("defects", config, defective_documents(defects=(kind,)), key=f"defects:{kind}")()
+    assert campaign.DEFECT_KINDS[kind] - before >= share
 
 
 def test_moving_and_rotating_changes_no_finding():
@@ -57,8 +71,6 @@ def test_renumbering_roads_changes_no_finding_but_ids():
 
 
 def test_metamorphic_transforms_are_not_identities():
-    from hypothesis import given, settings
-
     @settings(max_examples=5, database=None)
     @given(opendrive_documents(max_roads_per_chain=1))
     def prop(doc):

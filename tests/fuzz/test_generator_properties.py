@@ -8,7 +8,7 @@ import dataclasses
 import json
 
 import pytest
-from hypothesis import Phase, given, settings
+from hypothesis import Phase, settings
 
 from fuzz import campaign
 from fuzz.profiles import budget, regressions
@@ -34,6 +34,14 @@ def test_invalid_params_are_refused():
     assert _run("invalid-params") >= 1  # a small space: Hypothesis may exhaust it before the budget
 
 
+def _known_fault(entry: dict, still_there: bool) -> None:
+    """A strict expected failure: xfail while the known fault is there, fail once it is fixed (so that the entry, and
+    the tolerance it grants the maps property, are updated)."""
+    if still_there:
+        pytest.xfail(entry["note"])
+    pytest.fail(f"known fault {entry['what']!r} is fixed: set known_fault to false in fuzz/regressions.json")
+
+
 @pytest.mark.parametrize("entry", [e for e in regressions() if e["property"] == "invalid-input"],
                          ids=lambda e: e["what"])
 def test_invalid_input_regressions(entry, tmp_path, capsys):
@@ -42,8 +50,8 @@ def test_invalid_input_regressions(entry, tmp_path, capsys):
     source.write_text(json.dumps(entry["control_lines"]))
     out = tmp_path / "map.xodr"
     code = junctionart_main(["generate", "--control-lines", str(source), "-o", str(out), "-q"])
-    if entry.get("known_fault") and code == 0:
-        pytest.xfail(entry["note"])  # strict: once the generator refuses it, the checks below must hold
+    if entry.get("known_fault"):
+        _known_fault(entry, still_there=code == 0)
     assert code == 2
     assert not out.exists()
     assert len(capsys.readouterr().err.strip().splitlines()) == 1
@@ -116,6 +124,25 @@ def test_min_turn_radius_regressions(entry):
     data = ja.to_bytes(ja.generate(params, entry["seed"]), params.version)
     report = check(data, Config(tolerances=Tolerances(min_radius=params.min_turn_radius)))
     tight = [f.message for f in report.findings if f.code in ("C001", "C002")]
-    if entry.get("known_fault") and tight:
-        pytest.xfail(entry["note"])  # strict: once fixed, the assertion below must hold
+    if entry.get("known_fault"):
+        _known_fault(entry, still_there=bool(tight))
     assert tight == []
+
+
+@pytest.mark.parametrize("entry", [e for e in regressions() if e["property"] == "generated-map"],
+                         ids=lambda e: e["what"])
+def test_generated_map_regressions(entry):
+    """Maps the fuzzer found errors in: no error any more (known faults: xfail while the error is there)."""
+    import junctionart as ja
+    from fuzz import properties as P
+
+    params = ja.Params.create(**{k: tuple(v) if isinstance(v, list) else v for k, v in entry["params"].items()})
+    if entry.get("known_fault"):
+        try:
+            P.generated_map_is_valid(params, entry["seed"])
+        except AssertionError as exc:
+            if any(f"\n{code} " in str(exc) for code in entry["tolerate"]):
+                pytest.xfail(entry["note"])
+            raise
+        _known_fault(entry, still_there=False)
+    P.generated_map_is_valid(params, entry["seed"])

@@ -23,6 +23,7 @@ class Measures:
     max_heading: float
     min_radius: float
     read_errors: tuple[str, ...]
+    min_lane_radius: float = math.inf  #: over every driving lane centre of every road (tapers and bends included)
 
 
 def _wrap(a: float) -> float:
@@ -71,4 +72,14 @@ def measure(path) -> Measures:
             flip = (my_contact == "start") == (link.contact_point.value == "start")
             head = max(head, abs(_wrap(h_conn - h_other - (math.pi if flip else 0.0))))
             n += 1
-    return Measures(n, gap, head, rmin, errors)
+    lane_r = math.inf
+    for road in doc.roads:
+        geo = geos[road.id]
+        for idx, sec in enumerate(road.lane_sections):
+            s0, s1 = sec.s, road.section_end(idx)
+            s = np.linspace(s0, s1, max(3, int((s1 - s0) / 0.5) + 2))
+            for lane in (*sec.left, *sec.right):
+                if lane.type.value == "driving":
+                    k = float(np.abs(geo.lane_points(idx, lane.id, s).curvature).max())
+                    lane_r = min(lane_r, 1.0 / max(k, 1e-12))
+    return Measures(n, gap, head, rmin, errors, lane_r)

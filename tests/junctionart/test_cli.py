@@ -82,3 +82,11 @@ def test_stages_are_reported_in_order():
     seen = []
     ja.generate_layout(ja.Params(), 0, on_stage=seen.append)
     assert tuple(seen) == ja.STAGES
+
+
+def test_usage_errors_are_one_line(capsys):
+    with pytest.raises(SystemExit) as ex:
+        main(["generate", "--size", "10x"])
+    assert ex.value.code == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--size '10x'" in err

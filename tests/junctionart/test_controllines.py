@@ -75,6 +75,8 @@ def test_examples_load(name):
         ('{"lines": [{"id": "a", "points": [[0, 0], [50, 0]], "lanes": [4, 1]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}', ["[0, 3]"]),
         ('{"lines": [{"id": "a", "points": [[0, 0], [50, 0]]}, {"id": "b", "points": [[0, 9], [9, 9]]}], "pairs": [["a", "z"]]}', ["pair", "'z'"]),
         ('{"type": "FeatureCollection", "features": [{"type": "Feature", "geometry": {"type": "Point", "coordinates": [0, 0]}}]}', ["LineString"]),
+        ('{"lines": [{"id": "a", "points": [[0, 0], [400, 0]]}, {"id": "b", "points": [[0, 0], [400, 0]]}]}', ["'a' and 'b'", "overlap along 400.0 m"]),
+        ('{"lines": [{"id": "a", "points": [[0, 0], [400, 0]]}, {"id": "b", "points": [[200, 0], [600, 0]]}]}', ["overlap along 200.0 m"]),
     ],
 )
 def test_bad_files_name_the_file_and_the_problem(tmp_path, content, words):

@@ -32,6 +32,7 @@ def _assert_map(params: Params, seed: int, tmp_path, version: str = "1.8") -> No
     assert m.max_gap < TOL_GAP, f"seed {seed}: contact points {m.max_gap} m apart"
     assert m.max_heading < TOL_HDG, f"seed {seed}: heading kink {m.max_heading} rad"
     assert m.min_radius >= params.min_turn_radius, f"seed {seed}: radius {m.min_radius}"
+    assert m.min_lane_radius >= params.min_turn_radius, f"seed {seed}: lane centre radius {m.min_lane_radius}"
     assert overlaps(path) == [], "road bodies overlap where the map does not connect them"
     report = xodrcheck.check(path)
     errors = [f"{f.code} {f.message}" for f in report.findings if f.severity.name == "ERROR"]
@@ -78,3 +79,14 @@ def test_bytes_do_not_depend_on_the_hash_seed(tmp_path):
                         "--curved-roads", "true", "-q", "-o", str(out)], check=True, env=env)
         outs.append(out.read_bytes())
     assert outs[0] == outs[1]
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_short_tapers_and_big_turn_radius_keep_every_lane_centre_above_the_bound(seed, tmp_path):
+    """Lane splits and merges are lengthened until no lane centre bends tighter than min_turn_radius."""
+    params = Params(randomize_lanes=True, curved_roads=True, taper_length=5.0, min_turn_radius=12.0,
+                    turn_lane_probability=0.8, lane_distribution_side=(0.1, 0.2, 0.3, 0.4))
+    path = ja.write(ja.generate(params, seed), tmp_path / "t.xodr")
+    m = measure(path)
+    assert m.min_lane_radius >= 12.0
+    assert m.min_radius >= 12.0

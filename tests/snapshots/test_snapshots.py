@@ -17,8 +17,8 @@ import pytest
 import junctionart as ja
 from tests.conftest import corpus_root
 from xodrcheck.cli import main
-from xodrcheck.snapshot import Snapshot, SnapshotError, differences, lane_links, snapshot_of, topology_hash
 from xodrcheck.reader import read
+from xodrcheck.snapshot import Snapshot, SnapshotError, differences, lane_links, snapshot_of, topology_hash
 
 pytest_plugins = ("pytester",)
 
@@ -77,7 +77,7 @@ def test_differences_are_readable_and_tolerant():
     assert any(line.startswith("bounding box: x 0.000..120.000") for line in lines)
 
 
-@pytest.mark.parametrize("data", [[], {"format": 99}, {"format": 1, "roads": 1}, {**{"format": 1}, "roads": "x"}])
+@pytest.mark.parametrize("data", [[], {"format": 99}, {"format": 1, "roads": 1}, {"format": 1, "roads": "x"}])
 def test_malformed_snapshots_are_refused(data):
     with pytest.raises(SnapshotError):
         Snapshot.from_json(data)

@@ -103,14 +103,14 @@ class CubicCurve:
             speed = np.maximum(speeds[:, -1], _TINY)
             step = residual / speed
             p = p - step
-            if not np.any(np.abs(residual) > _NEWTON_TOL):
+            if not (np.abs(residual) > _NEWTON_TOL).any():
                 break
             # d|C'|/dp at the old p; the residual after the step is about |C'|' step^2 / 2.
             ddu = 2.0 * u[2] + q[:, -1] * (6.0 * u[3])
             ddv = 2.0 * v[2] + q[:, -1] * (6.0 * v[3])
             slope = (du[:, -1] * ddu + dv[:, -1] * ddv) / speed
             predicted = _PREDICTION_MARGIN * 0.5 * np.abs(slope) * step * step
-            if np.all((predicted <= _NEWTON_TOL) & (np.abs(step) <= _SMALL_STEP * width)):
+            if ((predicted <= _NEWTON_TOL) & (np.abs(step) <= _SMALL_STEP * width)).all():
                 break
         return p
 
@@ -164,7 +164,7 @@ def frame(curve: CubicCurve, p: np.ndarray):
     cross = u1 * v2 - v1 * u2
     dcross = u1 * v3 - v1 * u3
     moving = speed > 0
-    if np.all(moving):  # the usual case, without the cost of np.errstate
+    if moving.all():  # the usual case, without the cost of np.errstate
         dspeed = (u1 * u2 + v1 * v2) / speed
         curvature = cross / (speed2 * speed)
         dcurvature = (dcross / (speed2 * speed) - 3.0 * cross * dspeed / (speed2 * speed2)) / speed

@@ -1,0 +1,160 @@
+"""Interoperability acceptance of the generator: its maps load cleanly in the tools people use.
+
+52 maps (seeds) across 500 m, 1 km and 2 km, two-lane and random-lane (some with curved roads, every fourth written
+as OpenDRIVE 1.7, the rest 1.8), generated once per module. Each must pass:
+
+* ``xodrcheck.check``: no error-level finding;
+* ASAM ``asam-qc-opendrive``: no error-level issue and no checker ending in status "error";
+* SUMO ``netconvert --opendrive-files MAP -o out.net.xml``: exit code 0;
+* CARLA's parser: loads it and yields waypoints on every driving lane of every road.
+
+Each tool runs from its own virtual environment (``scripts/setup`` creates them); a missing one fails the test.
+"""
+
+from __future__ import annotations
+
+import os
+import subprocess
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+
+import junctionart as ja
+from junctionart.params import Params
+from tests.interop.asam_harness import AsamUnavailable, run_asam_many
+from tests.interop.carla_harness import CarlaUnavailable, carla_waypoints
+from xodrcheck.check import check
+from xodrcheck.model import LaneType
+from xodrcheck.reader import read
+
+REPO = Path(__file__).resolve().parents[2]
+
+#: (size in m, randomize lanes, number of maps): most at 500 m and 1 km, a few at 2 km.
+PLAN = [(500, False, 15), (500, True, 15), (1000, False, 9), (1000, True, 9), (2000, False, 2), (2000, True, 2)]
+
+
+@dataclass(frozen=True)
+class Map:
+    path: Path
+    size: int
+    random_lanes: bool
+    seed: int
+    version: str
+
+    @property
+    def label(self) -> str:
+        lanes = "random lanes" if self.random_lanes else "two lanes"
+        return f"{self.path.name} ({self.size} m, {lanes}, seed {self.seed}, OpenDRIVE {self.version})"
+
+
+@pytest.fixture(scope="module")
+def maps(tmp_path_factory) -> list[Map]:
+    folder = tmp_path_factory.mktemp("generated")
+    out = []
+    n = 0
+    for size, random_lanes, count in PLAN:
+        for k in range(count):
+            seed = 1000 * size // 500 + 100 * random_lanes + k
+            version = "1.7" if n % 4 == 3 else "1.8"
+            params = Params(width=size, height=size, randomize_lanes=random_lanes,
+                            curved_roads=random_lanes and k % 2 == 1, version=version)
+            path = folder / f"{size}-{'random' if random_lanes else 'two'}-{seed}.xodr"
+            ja.write(ja.generate(params, seed), path, version)
+            out.append(Map(path, size, random_lanes, seed, version))
+            n += 1
+    return out
+
+
+def test_plan_covers_sizes_lane_modes_and_at_least_50_seeds(maps):
+    assert len(maps) >= 50
+    assert len({(m.size, m.seed) for m in maps}) == len(maps)
+    assert {(m.size, m.random_lanes) for m in maps} == {(s, r) for s in (500, 1000, 2000) for r in (False, True)}
+    assert {m.version for m in maps} == {"1.7", "1.8"}
+
+
+def test_xodrcheck_finds_no_error(maps):
+    bad = []
+    for m in maps:
+        report = check(m.path)
+        errors = [f for f in report.findings if f.severity.name == "ERROR"]
+        assert report.version == m.version
+        if errors:
+            bad.append(f"{m.label}: " + "; ".join(f"{f.code} road {f.road}: {f.message}" for f in errors[:3]))
+    assert bad == []
+
+
+@pytest.fixture(scope="module")
+def asam_reports(maps, tmp_path_factory):
+    try:
+        return run_asam_many([m.path for m in maps], tmp_path_factory.mktemp("asam"))
+    except AsamUnavailable as exc:
+        pytest.fail(str(exc))
+
+
+def test_asam_reports_no_error_and_no_checker_error(maps, asam_reports):
+    bad = []
+    for m in maps:
+        report = asam_reports[m.path]
+        if report.errors or report.failed_checkers:
+            issues = "; ".join(f"{i.rule} roads {sorted(i.roads)}: {i.description}" for i in report.errors[:3])
+            bad.append(f"{m.label}: {issues} checkers in error: {report.failed_checkers}")
+    assert bad == []
+
+
+def test_asam_ran_its_checks(maps, asam_reports):
+    """Guard against a vacuous pass: every check ran to completion, except the one ASAM limits to 1.7 files."""
+    for m in maps:
+        statuses = asam_reports[m.path].statuses
+        assert len(statuses) == 23, m.label
+        skipped = {c for c, status in statuses.items() if status != "completed"}
+        expected = set() if m.version == "1.7" else {"check_asam_xodr_junctions_connection_one_connection_element"}
+        assert skipped == expected, m.label
+
+
+def _netconvert() -> Path:
+    venv = Path(os.environ.get("SUMO_VENV", REPO / ".venv-sumo"))
+    command = venv / "bin" / "netconvert"
+    if not command.is_file():
+        pytest.fail(f"SUMO netconvert not found at {command}: run scripts/setup (it creates .venv-sumo with "
+                    "eclipse-sumo==1.28.0), or set SUMO_VENV to an environment that has it")
+    return command
+
+
+def test_sumo_netconvert_converts_every_map(maps, tmp_path):
+    command = _netconvert()
+    bad = []
+    for m in maps:
+        out = tmp_path / f"{m.path.stem}.net.xml"
+        proc = subprocess.run([str(command), "--opendrive-files", str(m.path), "-o", str(out)], capture_output=True,
+                              text=True, timeout=300, stdin=subprocess.DEVNULL, check=False)
+        if proc.returncode != 0 or not out.is_file():
+            tail = "\n".join(proc.stderr.strip().splitlines()[-3:])
+            bad.append(f"{m.label}: exit {proc.returncode}: {tail}")
+    assert bad == []
+
+
+def _driving_lanes(path: Path) -> set[tuple[str, int]]:
+    doc = read(path).document
+    assert doc is not None
+    return {(road.id, lane.id) for road in doc.roads for sec in road.lane_sections for lane in sec.lanes
+            if lane.type is LaneType.DRIVING}
+
+
+def test_carla_loads_every_map_with_waypoints_on_every_driving_lane(maps):
+    bad = []
+    for m in maps:
+        try:
+            result = carla_waypoints(m.path)
+        except CarlaUnavailable as exc:
+            pytest.fail(f"{exc} (scripts/setup creates .venv-carla)")
+        if not result.loaded:
+            bad.append(f"{m.label}: CARLA did not load it (exit {result.returncode}): {result.error}")
+            continue
+        lanes = _driving_lanes(m.path)
+        seen = {(w.road_id, w.lane_id) for w in result.waypoints}
+        missing = sorted(lanes - seen)
+        if missing:
+            bad.append(f"{m.label}: no CARLA waypoint on {len(missing)} of {len(lanes)} driving lanes, e.g. "
+                       f"{missing[:5]}")
+    assert bad == []
