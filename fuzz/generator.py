@@ -65,9 +65,10 @@ def control_lines(*, min_points: int = 2, max_points: int = 4, min_length: float
     _bounds("min_length", min_length, "max_length", max_length, 5.0 * (max_points - 1))
     if not isinstance(max_lanes, int) or not 1 <= max_lanes <= 3:
         raise InvalidArgument(f"max_lanes={max_lanes!r} must be 1, 2 or 3 (the generator's lane limit)")
+    # parsed as a control-line file (its validation applies); the file needs a second line, kept far away
     return _line(min_points, max_points, float(min_length), float(max_length), max_lanes, lanes).map(
         lambda v: parse({"lines": [{"id": "l", "points": v[0], "lanes": v[1]},
-                                   {"id": "m", "points": [[0, 0], [100, 0]]}]}).lines[0])
+                                   {"id": "m", "points": [[0, 2e4], [100, 2e4]]}]}).lines[0])
 
 
 @st.composite

@@ -78,6 +78,8 @@ OPTIONS = [
     ("--curved-roads", "curved_roads", _bool, "bend long connections (true/false)"),
     ("--curve-probability", "curve_probability", float, "chance an eligible connection is bent"),
     ("--turn-lane-probability", "turn_lane_probability", float, "chance of a turn lane before a junction"),
+    ("--u-turn-probability", "u_turn_probability", float,
+     "chance of a U-turn lane on a leg wide enough for one within the radius bound"),
     ("--min-turn-radius", "min_turn_radius", float, "smallest radius of any lane centre line (m)"),
     ("--taper-length", "taper_length", float, "length of lane splits and merges (m)"),
 ]

@@ -73,6 +73,9 @@ class Params:
     curved_roads: bool = False  #: bend long connections through an extra vertex
     curve_probability: float = 0.5  #: chance that an eligible connection is bent (with curved_roads)
     turn_lane_probability: float = 0.2  #: chance of a turn lane before a junction where the exits allow it
+    #: chance that a leg gets a U-turn lane where one fits (lane-centre radius >= min_turn_radius: a median or
+    #: several outgoing lanes)
+    u_turn_probability: float = 0.3
     min_turn_radius: float = 5.0  #: smallest radius of any reference line or lane centre line written
     taper_length: float = 25.0  #: length of a lane split / merge
     version: str = "1.8"  #: OpenDRIVE version written: "1.8" or "1.7"
@@ -214,6 +217,7 @@ def validate(p: Params) -> None:
         raise ParamsError(f"curved_roads={p.curved_roads!r}: must be true or false")
     _range("curve_probability", p.curve_probability, 0.0, 1.0)
     _range("turn_lane_probability", p.turn_lane_probability, 0.0, 1.0)
+    _range("u_turn_probability", p.u_turn_probability, 0.0, 1.0)
     _range("min_turn_radius", p.min_turn_radius, 1.0, 50.0)
     _range("taper_length", p.taper_length, 5.0, 200.0)
     if p.version not in VERSIONS:

@@ -25,6 +25,23 @@ COLOURS = {
 }
 JUNCTION_COLOUR = "#f0a04b"
 OTHER_COLOUR = "#c8b48a"
+REFERENCE_COLOUR = "#f5d76e"
+
+
+def _legend_entries(used: list[str]) -> list[tuple[str, str]]:
+    """(label, colour) for each colour drawn: lane types in the order of ``COLOURS``, then junctions, then others."""
+    seen = set(used)
+    entries, taken = [], set()
+    for name, colour in COLOURS.items():
+        if colour in seen and colour not in taken:
+            label = " / ".join(n for n, c in COLOURS.items() if c == colour)
+            entries.append((f"{label} lane", colour))
+            taken.add(colour)
+    if JUNCTION_COLOUR in seen:
+        entries.append(("junction (connecting road lanes)", JUNCTION_COLOUR))
+    if OTHER_COLOUR in seen:
+        entries.append(("other lane type", OTHER_COLOUR))
+    return entries
 
 
 def render(source: str | Path, output: str | Path, *, dpi: int = 150, size: float = 10.0,
@@ -35,6 +52,8 @@ def render(source: str | Path, output: str | Path, *, dpi: int = 150, size: floa
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     from matplotlib.collections import LineCollection, PolyCollection
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
 
     from xodrcheck.findings import ReadError
     from xodrcheck.lanes import geometry_of
@@ -77,8 +96,11 @@ def render(source: str | Path, output: str | Path, *, dpi: int = 150, size: floa
             # evaluate is left out of the picture, never fatal
             continue
     fig, ax = plt.subplots(figsize=(size, size))
+    legend = [Patch(color=c, label=name) for name, c in _legend_entries(colours)]
+    if refs:
+        legend.append(Line2D([], [], color=REFERENCE_COLOUR, linewidth=1.5, label="reference line"))
     ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors="none", alpha=0.95))
-    ax.add_collection(LineCollection(refs, colors="#f5d76e", linewidths=0.4))
+    ax.add_collection(LineCollection(refs, colors=REFERENCE_COLOUR, linewidths=0.4))
     pts = np.concatenate(polys) if polys else np.zeros((1, 2))
     pad = 10.0
     ax.set_xlim(pts[:, 0].min() - pad, pts[:, 0].max() + pad)
@@ -87,6 +109,7 @@ def render(source: str | Path, output: str | Path, *, dpi: int = 150, size: floa
     ax.set_facecolor("#f7f7f2")
     n_j = len(doc.junctions)
     ax.set_title(title or f"{Path(str(source)).name}: {sum(r.junction is None for r in doc.roads)} roads, {n_j} junctions")
+    ax.legend(handles=legend, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False, fontsize=9)
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
     out = Path(output)

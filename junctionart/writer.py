@@ -164,6 +164,20 @@ def to_bytes(doc: Document, version: str = "1.8") -> bytes:
     return b'<?xml version="1.0" encoding="UTF-8"?>\n' + etree.tostring(tree, encoding="UTF-8", pretty_print=True)
 
 
+def _umask() -> int:
+    """The process's umask (read from /proc where it can be, so that it is never changed, even briefly)."""
+    try:
+        with open("/proc/self/status", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("Umask:"):
+                    return int(line.split()[1], 8)
+    except (OSError, ValueError):
+        pass
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
+
+
 def write(doc: Document, path: str | os.PathLike[str], version: str = "1.8") -> Path:
     """Write ``doc`` to ``path`` atomically; on any error no file (and no temporary file) is left behind."""
     data = to_bytes(doc, version)
@@ -173,6 +187,7 @@ def write(doc: Document, path: str | os.PathLike[str], version: str = "1.8") -> 
         raise JunctionArtError(f"{target}: folder {folder} does not exist")
     fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
     try:
+        os.fchmod(fd, 0o666 & ~_umask())  # mkstemp makes the file 0600; give it the mode of any new file
         with os.fdopen(fd, "wb") as fh:
             fh.write(data)
             fh.flush()

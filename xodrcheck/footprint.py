@@ -12,16 +12,15 @@ the point, or the nearest one for points on a border).
 
 from __future__ import annotations
 
-import weakref
+from collections.abc import Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
 import shapely
 
-from xodrcheck.config import Tolerances
-from xodrcheck.mesh import LaneSurfaces, surfaces_of
-from xodrcheck.model import DRIVABLE_LANE_TYPES, Document, ElementType
+from xodrcheck.mesh import LaneSurfaces, cached_per_chord, surfaces_of
+from xodrcheck.model import DRIVABLE_LANE_TYPES, Document, ElementType, LaneKey
 
 DRIVABLE_TYPE_NAMES = frozenset(t.value for t in DRIVABLE_LANE_TYPES)
 #: Most points of an overlap polygon's outline sampled for heights (plus its representative point).
@@ -186,6 +185,14 @@ class OverlapIndex:
         return self.footprints.surfaces
 
     @cached_property
+    def strip_of(self) -> dict[LaneKey, int]:
+        """Lane key -> index of its lane strip (the first road's, when road ids repeat)."""
+        out: dict[LaneKey, int] = {}
+        for i, key in enumerate(self.surfaces.lanes):
+            out.setdefault(key, i)
+        return out
+
+    @cached_property
     def unrelated_pairs(self) -> np.ndarray:
         """``(2, P)`` near lane-strip pairs of roads that are not related (see :class:`Relations`)."""
         pairs = self.footprints.near_pairs()
@@ -237,14 +244,7 @@ _CACHE: dict[tuple[int, float], OverlapIndex] = {}
 
 def overlap_index(document: Document, chord: float | None = None) -> OverlapIndex:
     """:class:`OverlapIndex` of a document, cached for its lifetime (per chord)."""
-    chord = Tolerances().chord if chord is None else float(chord)
-    key = (id(document), chord)
-    found = _CACHE.get(key)
-    if found is None:
-        found = OverlapIndex(document, chord)
-        _CACHE[key] = found
-        weakref.finalize(document, _CACHE.pop, key, None)
-    return found
+    return cached_per_chord(_CACHE, document, chord, OverlapIndex)
 
 
 # ------------------------------------------------------------------------------------------------------ metrics
@@ -259,33 +259,44 @@ def _junction_lanes(index: OverlapIndex, drivable_only: bool) -> dict[str, np.nd
     return {j: np.array(v) for j, v in out.items()}
 
 
+def area_and_conflict(polygons: np.ndarray, roads: Sequence[str], min_overlap: float = 0.0) -> tuple[float, float]:
+    """(area of the union, area of the union of the pairwise overlaps) of lane footprints, each tagged with its road
+    id: pairs on the same road (lanes side by side) and overlaps smaller than ``min_overlap`` are not conflicts."""
+    if len(polygons) == 0:
+        return 0.0, 0.0
+    polygons = np.asarray(polygons, dtype=object)
+    roads = np.asarray(roads, dtype=object)
+    area = float(shapely.area(shapely.union_all(polygons)))
+    left, right = shapely.STRtree(polygons).query(polygons, predicate="intersects")
+    keep = (left < right) & (roads[left] != roads[right])
+    if not keep.any():
+        return area, 0.0
+    overlaps = shapely.intersection(polygons[left[keep]], polygons[right[keep]])
+    overlaps = overlaps[shapely.area(overlaps) >= min_overlap]
+    conflict = float(shapely.area(shapely.union_all(overlaps))) if len(overlaps) else 0.0
+    return area, conflict
+
+
+def _junction_areas(document: Document, chord: float | None) -> dict[str, tuple[float, float]]:
+    """Junction id -> :func:`area_and_conflict` of its drivable connection lanes (U-turns included)."""
+    index = overlap_index(document, chord)
+    polys = index.footprints.polygons
+    lanes = index.surfaces.lanes
+    return {
+        junction: area_and_conflict(polys[members], [lanes[i].road for i in members])
+        for junction, members in _junction_lanes(index, drivable_only=True).items()
+    }
+
+
 def conflict_areas(document: Document, chord: float | None = None) -> dict[str, float]:
     """Junction id -> plan-view area (m^2) where connection lanes of different connecting roads overlap: the union of
     the pairwise intersections of the junction's drivable connection lanes (U-turns included: a U-turn lane crossing
     another path is a conflict like any other). Lanes of one connecting road lie side by side and do not count.
     Junctions without connecting roads with lanes are absent; junctions whose paths never cross give 0."""
-    index = overlap_index(document, chord)
-    polys = index.footprints.polygons
-    lanes = index.surfaces.lanes
-    out: dict[str, float] = {}
-    for junction, members in _junction_lanes(index, drivable_only=True).items():
-        tree = shapely.STRtree(polys[members])
-        a, b = tree.query(polys[members], predicate="intersects")
-        keep = (a < b) & np.array([lanes[members[i]].road != lanes[members[j]].road for i, j in zip(a, b)], bool)
-        if not keep.any():
-            out[junction] = 0.0
-            continue
-        pieces = shapely.intersection(polys[members[a[keep]]], polys[members[b[keep]]])
-        out[junction] = float(shapely.area(shapely.union_all(pieces)))
-    return out
+    return {junction: conflict for junction, (_, conflict) in _junction_areas(document, chord).items()}
 
 
 def junction_area(document: Document, chord: float | None = None) -> dict[str, float]:
     """Junction id -> plan-view area (m^2) of the union of its drivable connection lanes (the surface vehicles use
     inside the junction; with :func:`conflict_areas`, the share of it where paths conflict)."""
-    index = overlap_index(document, chord)
-    polys = index.footprints.polygons
-    return {
-        junction: float(shapely.area(shapely.union_all(polys[members])))
-        for junction, members in _junction_lanes(index, drivable_only=True).items()
-    }
+    return {junction: area for junction, (area, _) in _junction_areas(document, chord).items()}

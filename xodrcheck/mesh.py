@@ -16,7 +16,7 @@ from __future__ import annotations
 
 import math
 import weakref
-from collections.abc import Collection, Mapping
+from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -232,14 +232,19 @@ def build_surfaces(
 _CACHE: dict[tuple[int, float], LaneSurfaces] = {}
 
 
+def cached_per_chord(cache: dict, document: Document, chord: float | None, build: Callable):
+    """``build(document, chord)`` (chord defaulting to the configured tolerance), kept in ``cache`` for the document's
+    lifetime, per chord."""
+    chord = Tolerances().chord if chord is None else float(chord)
+    key = (id(document), chord)
+    found = cache.get(key)
+    if found is None:
+        found = cache[key] = build(document, chord)
+        weakref.finalize(document, cache.pop, key, None)
+    return found
+
+
 def surfaces_of(document: Document, chord: float | None = None) -> LaneSurfaces:
     """:func:`build_surfaces` of every lane, cached per document and chord for the document's lifetime (the overlap
     rules and the metrics share one mesh)."""
-    chord = Tolerances().chord if chord is None else chord
-    key = (id(document), float(chord))
-    found = _CACHE.get(key)
-    if found is None:
-        found = build_surfaces(document, chord)
-        _CACHE[key] = found
-        weakref.finalize(document, _CACHE.pop, key, None)
-    return found
+    return cached_per_chord(_CACHE, document, chord, build_surfaces)

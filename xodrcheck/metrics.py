@@ -40,7 +40,8 @@ Per-junction metrics
   A direct junction has no connecting roads: its count is the number of lane links.
 * ``area``: area (m^2) of the union of the connection-lane polygons, U-turn lanes excluded as in the paper. Each
   polygon is a lane piece (one lane of one lane section) bounded by its exact inner and outer borders, sampled under the
-  chord tolerance (:attr:`Tolerances.chord`), not 11 points per lane.
+  chord tolerance (:attr:`Tolerances.chord`), not 11 points per lane: its footprint in the lane mesh the overlap rules
+  use (:mod:`xodrcheck.footprint`, which also computes the union and the overlaps).
 * ``conflict_area``: area of the union of the pairwise intersections of those lane pieces, over pairs on different
   connecting roads whose intersection is at least :attr:`Tolerances.overlap_area` (smaller ones are lanes touching
   side by side, whose sampled borders cross by the chord error).
@@ -53,15 +54,24 @@ Per-junction metrics
 from __future__ import annotations
 
 import math
-from collections.abc import Iterable, Mapping
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
 import shapely
 
 from xodrcheck.config import Tolerances
+from xodrcheck.footprint import area_and_conflict, overlap_index
 from xodrcheck.lanes import RoadGeometry, geometry_of
-from xodrcheck.model import ContactPoint, Document, ElementType, Junction, JunctionType, Road
+from xodrcheck.model import (
+    ContactPoint,
+    Document,
+    ElementType,
+    Junction,
+    JunctionType,
+    LaneKey,
+    Road,
+)
 
 #: Distance (m) back along a leg at which its look-back point p0 is taken.
 LOOKBACK = 50.0
@@ -261,61 +271,26 @@ def _drivable_lane_count(road: Road) -> int:
     return max((sum(1 for lane in sec.lanes if lane.id != 0 and lane.drivable) for sec in road.lane_sections), default=0)
 
 
-def lane_polygons(geometry: RoadGeometry, chord: float) -> list[shapely.Geometry]:
-    """One polygon per drivable lane piece (lane x lane section) of a road, from its exact borders."""
-    out = []
-    road = geometry.road
-    for index, section in enumerate(road.lane_sections):
-        start, end = geometry.section_range(index)
-        if end - start <= 0:
+def _junction_footprints(document: Document, roads: list[Road], chord: float) -> tuple[list, list[str]]:
+    """Plan-view footprints of the drivable lane pieces (lane x lane section) of ``roads``, U-turns left out, from the
+    shared lane mesh (:mod:`xodrcheck.footprint`), with the road id of each."""
+    index = overlap_index(document, chord)
+    strip_of = index.strip_of
+    polygons = index.footprints.polygons
+    chosen: list = []
+    owners: list[str] = []
+    for road in roads:
+        if is_u_turn(road):
             continue
-        lanes = [lane.id for lane in section.lanes if lane.id != 0 and lane.drivable]
-        if not lanes:
-            continue
-        s = geometry.sample_s(index, chord=chord)
-        for lane_id in lanes:
-            inner = geometry.lane_points(index, lane_id, s, where="inner")
-            outer = geometry.lane_points(index, lane_id, s, where="outer")
-            ring = np.concatenate(
-                [np.column_stack([inner.x, inner.y]), np.column_stack([outer.x, outer.y])[::-1]]
-            )
-            if not np.isfinite(ring).all():
-                continue
-            polygon = shapely.make_valid(shapely.Polygon(ring))
-            polygon = _polygonal(polygon)
-            if polygon is not None and polygon.area > 0:
-                out.append(polygon)
-    return out
-
-
-def _polygonal(geometry: shapely.Geometry) -> shapely.Geometry | None:
-    """The polygonal part of a (made valid) geometry, or ``None``."""
-    if geometry.is_empty:
-        return None
-    if isinstance(geometry, (shapely.Polygon, shapely.MultiPolygon)):
-        return geometry
-    parts = [g for g in getattr(geometry, "geoms", ()) if isinstance(g, (shapely.Polygon, shapely.MultiPolygon))]
-    return shapely.union_all(parts) if parts else None
-
-
-def area_and_conflict(pieces: Iterable[tuple[str, shapely.Geometry]], min_overlap: float) -> tuple[float, float]:
-    """(area of the union, area of the union of pairwise overlaps) of lane pieces tagged with their road id; pairs on
-    the same road, and overlaps smaller than ``min_overlap``, do not count as conflicts."""
-    pieces = list(pieces)
-    if not pieces:
-        return 0.0, 0.0
-    roads = np.array([r for r, _ in pieces], dtype=object)
-    polygons = np.array([p for _, p in pieces], dtype=object)
-    area = float(shapely.union_all(polygons).area)
-    left, right = shapely.STRtree(polygons).query(polygons, predicate="intersects")
-    keep = (left < right) & (roads[left] != roads[right])
-    left, right = left[keep], right[keep]
-    if len(left) == 0:
-        return area, 0.0
-    overlaps = shapely.intersection(polygons[left], polygons[right])
-    overlaps = overlaps[shapely.area(overlaps) >= min_overlap]
-    conflict = float(shapely.union_all(overlaps).area) if len(overlaps) else 0.0
-    return area, conflict
+        for section in road.lane_sections:
+            for lane in section.lanes:
+                if lane.id == 0 or not lane.drivable:
+                    continue
+                strip = strip_of.get(LaneKey(road.id, section.s, lane.id))
+                if strip is not None and shapely.area(polygons[strip]) > 0:
+                    chosen.append(polygons[strip])
+                    owners.append(road.id)
+    return chosen, owners
 
 
 # --------------------------------------------------------------------------------------------------------------------
@@ -340,13 +315,7 @@ def junction_metrics(
     roads = connecting_roads(document, junction)
     n_lanes = sum(_drivable_lane_count(r) for r in roads)
     n_u_turn = sum(_drivable_lane_count(r) for r in roads if is_u_turn(r))
-    pieces = [
-        (road.id, polygon)
-        for road in roads
-        if not is_u_turn(road)
-        for polygon in lane_polygons(geometries[road.id], tol.chord)
-    ]
-    area, conflict = area_and_conflict(pieces, tol.overlap_area)
+    area, conflict = area_and_conflict(*_junction_footprints(document, roads, tol.chord), tol.overlap_area)
     ratio = conflict / area if area > 0 else None
     return JunctionMetrics(
         junction.id, junction.name, junction.type, len(legs), n_lanes, n_u_turn, area, conflict, ratio, per_leg

@@ -24,6 +24,7 @@ if TYPE_CHECKING:
     from xodrcheck.lanes import RoadGeometry
 
 _PROBE_INSET = 1e-7  # relative inset of the end probes, so each probes the piece it belongs to
+_MAX_COUNT = 2.0**53  # more steps than this over one piece cannot be told apart in s
 
 
 _KNOTS: weakref.WeakKeyDictionary[RoadGeometry, dict[int, np.ndarray]] = weakref.WeakKeyDictionary()
@@ -63,6 +64,14 @@ def _subdivide(starts: np.ndarray, lengths: np.ndarray, counts: np.ndarray) -> n
     return starts[owner] + lengths[owner] * index / counts[owner]
 
 
+def step_counts(lengths: np.ndarray, step) -> np.ndarray:
+    """Number of equal steps of at most ``step`` covering each length (at least 1). A count beyond ``2**53`` (a damaged
+    section, astronomically long: its steps would be below the resolution of its ``s``) or not a number gives 1."""
+    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
+        counts = np.ceil(lengths / step)
+    return np.where((counts >= 1) & (counts <= _MAX_COUNT), counts, 1).astype(np.int64)
+
+
 def sample_section(geometry: RoadGeometry, section_index: int, chord: float, max_step: float) -> np.ndarray:
     """Sorted ``s`` covering the section (ends and every knot included) with border chord error below ``chord``."""
     if not chord > 0 or not max_step > 0:
@@ -71,7 +80,7 @@ def sample_section(geometry: RoadGeometry, section_index: int, chord: float, max
     if len(cuts) < 2:
         return cuts
     lengths = np.diff(cuts)
-    coarse = _subdivide(cuts[:-1], lengths, np.maximum(1, np.ceil(lengths / max_step)).astype(np.int64))
+    coarse = _subdivide(cuts[:-1], lengths, step_counts(lengths, max_step))
     coarse_ends = np.append(coarse[1:], cuts[-1])
     steps = coarse_ends - coarse
     inset = _PROBE_INSET * steps
@@ -88,6 +97,5 @@ def sample_section(geometry: RoadGeometry, section_index: int, chord: float, max
     # 8 chord / bending, infinite where nothing bends.
     ratio = np.divide(8.0 * chord, bending, out=np.full_like(bending, np.inf), where=bending != 0)
     allowed = np.maximum(np.sqrt(ratio), 2.0 * chord)
-    counts = np.maximum(1, np.ceil(steps / allowed)).astype(np.int64)
-    fine = _subdivide(coarse, steps, counts)
+    fine = _subdivide(coarse, steps, step_counts(steps, allowed))
     return np.unique(np.append(fine, cuts[-1]))

@@ -41,6 +41,7 @@ from ..lanegeom import border_point, inner_offset, lane_id, side_width, taper_le
 from ..lanes import LaneConfig, LanedNetwork
 from ..params import Params, TrafficRule
 from . import links as linkplan
+from . import uturn
 from .crossing import LinkFit, crossing
 from .model import ConnectionPlan, JunctionPlan, Layout, RoadPlan
 from .overlap import overlaps
@@ -320,6 +321,44 @@ class Builder:
                 return marked, True
         return good, False
 
+    @staticmethod
+    def _contacts(keys: list[tuple[int, bool]], geoms: list) -> tuple[list[tuple[float, float, float, bool]], list[bool]]:
+        """Per leg: the pose where its road meets the junction (and whether that is the road's start), and whether
+        the road has a median."""
+        contact, median = [], []
+        for c, at_start in keys:
+            g = geoms[c][0]
+            if at_start:
+                contact.append((g[0].x, g[0].y, g[0].hdg, True))
+            else:
+                e = end_pose(g[-1])
+                contact.append((e.x, e.y, e.hdg, False))
+            median.append(geoms[c][1].median)
+        return contact, median
+
+    def _u_turns(self, node: int, keys: list[tuple[int, bool]], plan: linkplan.LinkPlan, geoms: list,
+                 fits: list[LinkFit]) -> list[ConnectionPlan]:
+        """U-turn lanes of a finished junction: on legs where one meets the radius bound and crosses none of its
+        road's other connection lanes, each with probability ``u_turn_probability``. Drawn last in stage 3, so the
+        rest of the map does not depend on them."""
+        if self.p.u_turn_probability <= 0.0:
+            return []
+        contact, median = self._contacts(keys, geoms)
+        sign = -1.0 if self.p.traffic_rule is TrafficRule.RHT else 1.0
+        out = []
+        for i, (c, at_start) in enumerate(keys):
+            if plan.n_in_end[i] == 0:
+                continue
+            turn = uturn.candidate(i, contact[i], median[i], plan.n_out_end[i], self.p)
+            if turn is None or uturn.crosses(turn, 1, fits, self.p):
+                continue
+            if self.rng.random() >= self.p.u_turn_probability:
+                continue
+            side = "start" if at_start else "end"
+            out.append(ConnectionPlan(c, side, turn.id_in, c, side, turn.id_out, turn.geometry, turn.radius,
+                                      sign * -self.w / 2))
+        return out
+
     def run_once(self) -> Layout:
         """One pass over the whole network. Repairs are applied as they are found; whatever they touched is left
         alone for the rest of the pass (so independent repairs share a pass), then the pass starts again."""
@@ -401,15 +440,7 @@ class Builder:
             if self.st.touched([node]):
                 continue
             keys, L, plan, _ = plans[node]
-            contact, median = [], []
-            for c, at_start in keys:
-                g = geoms[c][0]
-                if at_start:
-                    contact.append((g[0].x, g[0].y, g[0].hdg, True))
-                else:
-                    e = end_pose(g[-1])
-                    contact.append((e.x, e.y, e.hdg, False))
-                median.append(geoms[c][1].median)
+            contact, median = self._contacts(keys, geoms)
             fits, grow = self._fit(node, plan, contact, median)
             if not grow:
                 used = {r.leg_in for r in fits} | {r.leg_out for r in fits}
@@ -462,6 +493,7 @@ class Builder:
                 cj, sj = keys[j]
                 conns.append(ConnectionPlan(ci, "start" if si else "end", lid_in, cj, "start" if sj else "end",
                                             lid_out, connection_geometry(p0[0], p0[1], h0, fit), fit.min_radius))
+            conns.extend(self._u_turns(node, keys, plans[node][2], geoms, fits))
             jplans.append(JunctionPlan(node, self.st.nodes[node], len(keys), tuple(conns)))
         self._overlap_repair(chs, geoms, plans)
         if self.st.dirty:

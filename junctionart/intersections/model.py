@@ -5,7 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from ..lanes import LaneConfig
-from ..opendrive import Geometry, ParamPoly3
+from ..opendrive import Geometry
 
 
 @dataclass(frozen=True)
@@ -32,8 +32,9 @@ class ConnectionPlan:
     out_road: int
     out_contact: str
     out_lane: int
-    geometry: ParamPoly3
+    geometry: Geometry  #: a paramPoly3 (reference line on the lane's inner border), or a U-turn's arc
     min_radius: float  #: smallest radius of the reference line, lane centre and outer border
+    lane_offset: float = 0.0  #: laneOffset of the connecting road (a U-turn's reference line is its lane centre)
 
 
 @dataclass(frozen=True)

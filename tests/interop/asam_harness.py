@@ -50,24 +50,48 @@ def asam_python() -> Path:
     return python
 
 
-def run_asam_many(paths: list[Path], work: Path, timeout: float = 600) -> dict[Path, AsamReport]:
+class AsamRun:
+    """ASAM running over a batch of files in ``workers`` background processes; :meth:`reports` waits for them."""
+
+    def __init__(self, paths: list[Path], work: Path, workers: int = 2) -> None:
+        python = asam_python()
+        work.mkdir(parents=True, exist_ok=True)
+        self.paths = list(paths)
+        self.results: list[Path] = []
+        configs = []
+        for n, path in enumerate(self.paths):
+            result = work / f"{n}-{path.stem}.xqar"
+            config = work / f"{n}-{path.stem}.config.xml"
+            config.write_text(config_text(path, result), encoding="utf-8")
+            result.unlink(missing_ok=True)
+            configs.append(config)
+            self.results.append(result)
+        # largest files first, dealt round-robin, so the workers finish at about the same time
+        order = sorted(range(len(configs)), key=lambda n: -self.paths[n].stat().st_size)
+        batches = [[configs[n] for n in order[w::workers]] for w in range(workers)]
+        self.procs = [subprocess.Popen([str(python), "-I", str(WORKER), *map(str, batch)], cwd=work,
+                                       stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                                       text=True) for batch in batches if batch]
+
+    def reports(self, timeout: float = 900) -> dict[Path, AsamReport]:
+        """ASAM's report on each file (waits for the workers)."""
+        errors = []
+        for proc in self.procs:
+            try:
+                _, err = proc.communicate(timeout=timeout)
+            except subprocess.TimeoutExpired:
+                proc.kill()
+                _, err = proc.communicate()
+            errors.append("\n".join(err.strip().splitlines()[-5:]))
+        out = {}
+        for path, result in zip(self.paths, self.results):
+            if not result.is_file():
+                codes = [p.returncode for p in self.procs]
+                raise RuntimeError(f"asam-qc-opendrive wrote no result for {path} (exits {codes}): {errors}")
+            out[path] = AsamReport(path, tuple(read_result(result, path)), checker_statuses(result))
+        return out
+
+
+def run_asam_many(paths: list[Path], work: Path, workers: int = 2) -> dict[Path, AsamReport]:
     """ASAM's report on each of ``paths`` (config and result files go to the folder ``work``)."""
-    python = asam_python()
-    work.mkdir(parents=True, exist_ok=True)
-    configs, results = [], []
-    for n, path in enumerate(paths):
-        result = work / f"{n}-{path.stem}.xqar"
-        config = work / f"{n}-{path.stem}.config.xml"
-        config.write_text(config_text(path, result), encoding="utf-8")
-        result.unlink(missing_ok=True)
-        configs.append(config)
-        results.append(result)
-    proc = subprocess.run([str(python), "-I", str(WORKER), *map(str, configs)], capture_output=True, text=True,
-                          timeout=timeout, stdin=subprocess.DEVNULL, cwd=work, check=False)
-    reports = {}
-    for path, result in zip(paths, results):
-        if not result.is_file():
-            tail = "\n".join(proc.stderr.strip().splitlines()[-5:])
-            raise RuntimeError(f"asam-qc-opendrive wrote no result for {path} (exit {proc.returncode}): {tail}")
-        reports[path] = AsamReport(path, tuple(read_result(result, path)), checker_statuses(result))
-    return reports
+    return AsamRun(paths, work, workers).reports()

@@ -1,4 +1,6 @@
 import math
+import os
+import stat
 
 import pytest
 from lxml import etree
@@ -42,6 +44,19 @@ def test_atomic_write_replaces_whole_file(tmp_path):
     assert sorted(p.name for p in tmp_path.iterdir()) == ["m.xodr"]
     with pytest.raises(JunctionArtError, match="does not exist"):
         write(_tiny(), tmp_path / "missing" / "m.xodr")
+
+
+@pytest.mark.parametrize("mask", [0o022, 0o027, 0o002])
+def test_written_file_gets_the_mode_of_a_new_file_under_the_umask(tmp_path, mask):
+    old = os.umask(mask)
+    try:
+        write(_tiny(), tmp_path / "m.xodr")
+        (tmp_path / "plain.txt").write_text("x")  # what any new file gets
+    finally:
+        os.umask(old)
+    mode = stat.S_IMODE((tmp_path / "m.xodr").stat().st_mode)
+    assert mode == 0o666 & ~mask
+    assert mode == stat.S_IMODE((tmp_path / "plain.txt").stat().st_mode)
 
 
 @pytest.mark.parametrize("seed", [0, 1, 2])

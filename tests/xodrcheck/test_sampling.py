@@ -2,6 +2,7 @@ import numpy as np
 import pytest
 
 from tests.xodrcheck.roadbuild import lane, section, straight, width
+from xodrcheck.check import check
 from xodrcheck.config import Tolerances
 from xodrcheck.geometry import arc, spiral
 from xodrcheck.lanes import RoadGeometry
@@ -101,3 +102,22 @@ def test_non_positive_tolerances_are_refused():
         g.sample_s(0, chord=0.0)
     with pytest.raises(ValueError):
         g.sample_s(0, max_step=-1.0)
+
+
+HUGE_ROAD = b"""<?xml version="1.0"?>
+<OpenDRIVE><header revMajor="1" revMinor="6"/>
+<road id="1" junction="-1" length="1e300"><planView>
+<geometry s="0" x="1e300" y="0" hdg="0" length="1e300"><line/></geometry></planView>
+<lanes><laneSection s="0"><center><lane id="0" type="none"/></center><right><lane id="-1" type="driving">
+<width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right></laneSection></lanes></road>
+</OpenDRIVE>"""
+
+
+@pytest.mark.filterwarnings("error")
+def test_astronomical_coordinates_give_no_numpy_warning():
+    g = straight([section(0.0, [], [lane(-1, width(3.5))])], length=1e300)
+    s = g.sample_s(0)
+    assert s[0] == 0.0 and s[-1] == 1e300
+    report = check(HUGE_ROAD)  # every rule evaluates the damaged road
+    assert report.version == "1.6" and len(report.rules_run) > 50
+    assert not [f.message for f in report.findings if f.name == "rule-crashed"]

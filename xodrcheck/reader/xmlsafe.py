@@ -232,8 +232,14 @@ def _strip_namespaces(root: etree._Element) -> None:
             el.tag = tag.split("}", 1)[1]
 
 
-def parse(data: bytes) -> tuple[etree._Element | None, list[Finding]]:
-    """Parse ``data`` safely. Returns the root element (``None`` when nothing could be built) and the findings."""
+def parse(
+    data: bytes, *, recover: bool = True, strip_namespaces: bool = True
+) -> tuple[etree._Element | None, list[Finding]]:
+    """Parse ``data`` safely. Returns the root element (``None`` when nothing could be built) and the findings.
+
+    ``recover=False`` gives no root for a file that is not well-formed (instead of what a recovering parser keeps);
+    ``strip_namespaces=False`` keeps a default namespace on the tags (schema validation of 1.1/1.2 needs it).
+    """
     findings: list[Finding] = []
     data = data.removeprefix(_UTF8_BOM)
     wide = _decode_wide(data, findings)
@@ -255,10 +261,12 @@ def parse(data: bytes) -> tuple[etree._Element | None, list[Finding]]:
     except etree.XMLSyntaxError:
         errors = [e for e in parser.error_log if e.level >= etree.ErrorLevels.ERROR]
         message, line = _syntax_message(errors[0] if errors else None, data)
-        try:
-            root = etree.fromstring(data, _parser(recover=True)) if data.strip() else None
-        except etree.XMLSyntaxError:
-            root = None
+        root = None
+        if recover and data.strip():
+            try:
+                root = etree.fromstring(data, _parser(recover=True))
+            except etree.XMLSyntaxError:
+                pass
         where = f" at line {line}" if line else ""
         then = (
             "xodrcheck read what a recovering parser could build, so parts of the map may be missing"
@@ -266,7 +274,7 @@ def parse(data: bytes) -> tuple[etree._Element | None, list[Finding]]:
             else "nothing could be read"
         )
         findings.append(R.NOT_WELL_FORMED.finding(f"not well-formed XML{where}: {message}; {then}", line=line))
-    if root is not None:
+    if root is not None and strip_namespaces:
         tag = root.tag
         if isinstance(tag, str) and tag[0] == "{":
             _strip_namespaces(root)

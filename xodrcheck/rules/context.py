@@ -6,7 +6,6 @@ for the other rules of the same file, so a rule pays only for what it asks.
 
 from __future__ import annotations
 
-import re
 import time
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -32,9 +31,6 @@ if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree
 
     from xodrcheck.lanes import RoadGeometry
-
-_XML_DECLARATION = re.compile(rb"<\?xml[^>]*\?>")
-
 
 def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
     """The road's link at ``end``: its predecessor at the start, its successor at the end."""
@@ -89,6 +85,7 @@ class Context:
         #: ``time.monotonic()`` value after which expensive rules should stop (``None``: no limit).
         self.deadline = deadline
         self._geometry: Mapping[str, RoadGeometry] | None = None
+        self._widths: dict[tuple[int, int, int, float], float | None] = {}
 
     # ---------------------------------------------------------------------------------------------------- basics
     @property
@@ -114,25 +111,18 @@ class Context:
 
     @cached_property
     def tree(self) -> etree._ElementTree | None:
-        """The file parsed safely with lxml (no entities resolved, no network), keeping source lines.
-
-        Where something precedes the XML declaration (which strict XML forbids, but CARLA and libOpenDRIVE accept),
-        the declaration is blanked out so the rest parses with unchanged line numbers. ``None`` when the file is not
-        well-formed (the reader reports why).
+        """The file parsed safely with the reader's parser (:func:`xodrcheck.reader.parse`: no entities, no network, a
+        prefix before the XML declaration and a DOCTYPE blanked out, source lines unchanged), namespaces kept for
+        schema validation. ``None`` when the file is not well-formed (the reader reports why).
         """
         if self.data is None:
             return None
         from lxml import etree
 
-        parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=True)
-        data = self.data
-        match = _XML_DECLARATION.search(data, 0, 4096)
-        if match and match.start() > 0:
-            data = data[: match.start()] + b" " * (match.end() - match.start()) + data[match.end() :]
-        try:
-            return etree.ElementTree(etree.fromstring(data, parser))
-        except (etree.XMLSyntaxError, ValueError):
-            return None
+        from xodrcheck.reader import parse
+
+        root, _ = parse(self.data, recover=False, strip_namespaces=False)
+        return None if root is None else etree.ElementTree(root)
 
     # ---------------------------------------------------------------------------------------------------- geometry
     def geometry(self, road_id: str) -> RoadGeometry | None:
@@ -146,8 +136,15 @@ class Context:
     def lane_width(self, road: Road, section_index: int, lane_id: int, s: float) -> float | None:
         """Width of a lane at absolute ``s`` of its section (``None`` when the lane gives neither width nor border).
 
-        Width records are evaluated directly; a lane described by border records needs the road geometry.
+        Width records are evaluated directly; a lane described by border records needs the road geometry. Cached
+        per (road, section, lane, ``s``): the lane rules ask for the same lane ends many times.
         """
+        key = (id(road), section_index, lane_id, s)
+        if key not in self._widths:
+            self._widths[key] = self._lane_width(road, section_index, lane_id, s)
+        return self._widths[key]
+
+    def _lane_width(self, road: Road, section_index: int, lane_id: int, s: float) -> float | None:
         section = road.lane_sections[section_index]
         lane = section.lane(lane_id)
         if lane is None or lane_id == 0:

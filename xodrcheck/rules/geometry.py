@@ -323,7 +323,7 @@ def _cubic_minimum(coef: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         q = -0.5 * (b + np.where(b >= 0, disc, -disc))
         r1, r2 = q / a, c / q
     for r in (r1, r2):
-        candidates.append(np.clip(np.nan_to_num(r, nan=0.0, posinf=0.0, neginf=0.0), 0.0, 1.0))
+        candidates.append(np.clip(np.where(np.isfinite(r), r, 0.0), 0.0, 1.0))
     u = np.stack(candidates)
     values = c0 + u * (c1 + u * (c2 + u * c3))
     k = np.argmin(values, axis=0)
@@ -356,8 +356,11 @@ def _lane_minima(ctx: Context, road: Road, index: int):
             inner = outer
     if not lanes:
         return
-    stacked = np.nan_to_num(np.concatenate(widths), nan=0.0, posinf=0.0, neginf=0.0)
-    value, u = _cubic_minimum(_FIT @ stacked.T)
+    stacked = np.concatenate(widths)
+    stacked = np.where(np.isfinite(stacked), stacked, 0.0)
+    with np.errstate(over="ignore", invalid="ignore"):  # damaged widths near the float limit
+        coefficients = _FIT @ stacked.T
+    value, u = _cubic_minimum(coefficients)
     value, u = value.reshape(len(lanes), -1), u.reshape(len(lanes), -1)
     for row, lane in enumerate(lanes):
         k = int(np.argmin(value[row]))

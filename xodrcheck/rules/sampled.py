@@ -16,7 +16,7 @@ import numpy as np
 from xodrcheck.lanes import LanePoints, RoadGeometry
 from xodrcheck.model import ContactPoint, Road
 from xodrcheck.rules.context import Context
-from xodrcheck.sampling import knots
+from xodrcheck.sampling import knots, step_counts
 
 
 def usable(ctx: Context, road: Road) -> RoadGeometry | None:
@@ -61,7 +61,7 @@ def _grid(ctx: Context, geometry: RoadGeometry, section_index: int) -> np.ndarra
     step = min(tol.max_step, math.sqrt(8.0 * tol.chord * max(tol.min_radius, tol.chord)))
     cuts = knots(geometry, section_index)
     lengths = np.diff(cuts)
-    counts = np.maximum(1, np.ceil(lengths / step)).astype(np.int64)
+    counts = step_counts(lengths, step)
     owner = np.repeat(np.arange(len(lengths)), counts)
     offset = np.arange(owner.size) - np.repeat(np.cumsum(counts) - counts, counts)
     s = np.append(cuts[owner] + lengths[owner] * offset / counts[owner], left_of(end))

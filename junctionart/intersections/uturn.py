@@ -1,0 +1,99 @@
+"""U-turn connection lanes: only where the road is wide enough for a lane-centre radius within the bound.
+
+A U-turn leaves a leg's innermost incoming lane and comes back on the same leg's outgoing lane ``m``. Its lane centre
+is a half circle whose diameter is the lateral distance between the two lane centres, ``median + m * lane_width``, so
+its radius meets ``min_turn_radius`` only with a median or several outgoing lanes; the smallest such ``m`` that the
+junction already feeds is used, and never a tighter turn. The connecting road's reference line is the lane centre
+(its lane is shifted by a laneOffset of half a lane width), so the reference line has the same radius.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+import shapely
+
+from ..lanegeom import border_point, inner_offset, lane_id
+from ..opendrive import Arc
+from ..params import Params, TrafficRule
+from .crossing import CLEARANCE, PARTED, TOUCH, LinkFit
+
+_SAMPLES = 129
+
+
+@dataclass(frozen=True)
+class UTurn:
+    leg: int  #: index of the leg (incoming and outgoing)
+    id_in: int  #: lane id on the incoming road
+    id_out: int  #: lane id on the same road, travelling away
+    geometry: Arc  #: the lane centre, which is also the connecting road's reference line
+    radius: float
+
+
+def _centre_offset(lid: int, median: bool, p: Params) -> float:
+    """Lateral offset t of the centre of driving lane ``lid``."""
+    return inner_offset(lid, median, p.lane_width, p.median_width) + math.copysign(p.lane_width / 2, lid)
+
+
+def candidate(leg: int, contact: tuple[float, float, float, bool], median: bool, n_out_end: int, p: Params
+              ) -> UTurn | None:
+    """The U-turn of one leg, from its innermost incoming lane to the nearest outgoing lane fed at the junction whose
+    half circle meets the radius bound; None when no such lane exists."""
+    x, y, h, at_start = contact
+    rule = p.traffic_rule
+    lid_in = lane_id(not at_start, 1, median, rule)
+    h0 = h + (math.pi if at_start else 0.0)  # driving into the junction
+    x0, y0 = border_point(x, y, h, _centre_offset(lid_in, median, p))
+    for m in range(1, n_out_end + 1):
+        lid_out = lane_id(at_start, m, median, rule)
+        x1, y1 = border_point(x, y, h, _centre_offset(lid_out, median, p))
+        radius = math.hypot(x1 - x0, y1 - y0) / 2
+        if radius >= p.min_turn_radius:
+            left = 1.0 if rule is TrafficRule.RHT else -1.0  # RHT turns back to the left
+            arc = Arc(0.0, x0, y0, h0, math.pi * radius, left / radius)
+            return UTurn(leg, lid_in, lid_out, arc, radius)
+    return None
+
+
+def _arc_points(a: Arc) -> np.ndarray:
+    d = np.linspace(0.0, a.length, _SAMPLES)
+    hdg = a.hdg + a.curvature * d
+    return np.column_stack([a.x + (np.sin(hdg) - math.sin(a.hdg)) / a.curvature,
+                            a.y - (np.cos(hdg) - math.cos(a.hdg)) / a.curvature])
+
+
+def _hermite_centre(row: LinkFit, t: float) -> np.ndarray:
+    """Lane-centre polyline of a fitted link (its reference line is the lane's inner border, ``t`` from the centre)."""
+    c = row.fit.coef
+    p = np.linspace(0.0, 1.0, _SAMPLES)
+    u = c[0] + p * (c[1] + p * (c[2] + p * c[3]))
+    v = c[4] + p * (c[5] + p * (c[6] + p * c[7]))
+    hdg = row.hdg + np.arctan2(c[5] + p * (2 * c[6] + 3 * c[7] * p), c[1] + p * (2 * c[2] + 3 * c[3] * p))
+    ch, sh = math.cos(row.hdg), math.sin(row.hdg)
+    x = row.start[0] + ch * u - sh * v - t * np.sin(hdg)
+    y = row.start[1] + sh * u + ch * v + t * np.cos(hdg)
+    return np.column_stack([x, y])
+
+
+def crosses(turn: UTurn, lane_in: int, rows: list[LinkFit], p: Params) -> bool:
+    """Whether the U-turn's lane centre meets that of another link leaving the same incoming road: links from other
+    lanes must stay :data:`CLEARANCE` away; links from the same lane, once parted by :data:`PARTED`, :data:`TOUCH`."""
+    t = (-1.0 if p.traffic_rule is TrafficRule.RHT else 1.0) * p.lane_width / 2
+    pts = _arc_points(turn.geometry)
+    mine = shapely.LineString(pts)
+    for row in rows:
+        if row.leg_in != turn.leg:
+            continue
+        other = shapely.LineString(_hermite_centre(row, t))
+        if row.lane_in != lane_in:
+            if shapely.dwithin(mine, other, CLEARANCE):
+                return True
+            continue
+        far = np.flatnonzero(shapely.distance(shapely.points(pts), other) > PARTED)
+        if len(far) == 0 or far[0] > _SAMPLES - 2:
+            return True
+        if shapely.dwithin(shapely.LineString(pts[far[0]:]), other, TOUCH):
+            return True
+    return False
