@@ -139,11 +139,10 @@ def document(layout: Layout, params: Params, name: str = "junctionart") -> Docum
                         cp.in_lane, cp.out_lane)
             centre = Lane(0, "none", (), (RoadMark(0.0, "none", "standard"),))
             sec = LaneSection(0.0, (lane,) if conn_lane > 0 else (), centre, (lane,) if conn_lane < 0 else ())
-            offset = (Cubic(0.0, cp.lane_offset),) if cp.lane_offset else ()
             roads.append(Road(rid, cp.geometry.length, junction_ids[jn], (cp.geometry,), (sec,),
                               params.traffic_rule.value,
                               Link("road", road_ids[cp.in_road], cp.in_contact),
-                              Link("road", road_ids[cp.out_road], cp.out_contact), offset,
+                              Link("road", road_ids[cp.out_road], cp.out_contact),
                               name=f"junction {junction_ids[jn]} connection {cn + 1}", speed_kmh=JUNCTION_SPEED))
             conns.append(Connection(str(cn + 1), road_ids[cp.in_road], rid, "start",
                                     (LaneLink(cp.in_lane, conn_lane),)))

@@ -344,7 +344,6 @@ class Builder:
         if self.p.u_turn_probability <= 0.0:
             return []
         contact, median = self._contacts(keys, geoms)
-        sign = -1.0 if self.p.traffic_rule is TrafficRule.RHT else 1.0
         out = []
         for i, (c, at_start) in enumerate(keys):
             if plan.n_in_end[i] == 0:
@@ -355,8 +354,7 @@ class Builder:
             if self.rng.random() >= self.p.u_turn_probability:
                 continue
             side = "start" if at_start else "end"
-            out.append(ConnectionPlan(c, side, turn.id_in, c, side, turn.id_out, turn.geometry, turn.radius,
-                                      sign * -self.w / 2))
+            out.append(ConnectionPlan(c, side, turn.id_in, c, side, turn.id_out, turn.geometry, turn.radius))
         return out
 
     def run_once(self) -> Layout:

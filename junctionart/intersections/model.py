@@ -32,9 +32,8 @@ class ConnectionPlan:
     out_road: int
     out_contact: str
     out_lane: int
-    geometry: Geometry  #: a paramPoly3 (reference line on the lane's inner border), or a U-turn's arc
+    geometry: Geometry  #: the lane's inner border: a paramPoly3, or a U-turn's half circle
     min_radius: float  #: smallest radius of the reference line, lane centre and outer border
-    lane_offset: float = 0.0  #: laneOffset of the connecting road (a U-turn's reference line is its lane centre)
 
 
 @dataclass(frozen=True)

@@ -1,10 +1,11 @@
 """U-turn connection lanes: only where the road is wide enough for a lane-centre radius within the bound.
 
-A U-turn leaves a leg's innermost incoming lane and comes back on the same leg's outgoing lane ``m``. Its lane centre
-is a half circle whose diameter is the lateral distance between the two lane centres, ``median + m * lane_width``, so
-its radius meets ``min_turn_radius`` only with a median or several outgoing lanes; the smallest such ``m`` that the
-junction already feeds is used, and never a tighter turn. The connecting road's reference line is the lane centre
-(its lane is shifted by a laneOffset of half a lane width), so the reference line has the same radius.
+A U-turn leaves a leg's innermost incoming lane and comes back on the same leg's outgoing lane ``m``. The connecting
+road's reference line is the lane's inner border (as for every connection lane): a half circle whose diameter is the
+lateral distance between the two lanes' inner borders, ``median + (m - 1) * lane_width``. Its radius, the smallest of
+the lane (the centre and outer border lie outside it), must meet ``min_turn_radius``: only a wide median or several
+outgoing lanes allow it (with the defaults, 3.5 m lanes and a 2 m median, never). The nearest such ``m`` that the
+junction already feeds is used, never a tighter turn.
 """
 
 from __future__ import annotations
@@ -28,27 +29,22 @@ class UTurn:
     leg: int  #: index of the leg (incoming and outgoing)
     id_in: int  #: lane id on the incoming road
     id_out: int  #: lane id on the same road, travelling away
-    geometry: Arc  #: the lane centre, which is also the connecting road's reference line
-    radius: float
-
-
-def _centre_offset(lid: int, median: bool, p: Params) -> float:
-    """Lateral offset t of the centre of driving lane ``lid``."""
-    return inner_offset(lid, median, p.lane_width, p.median_width) + math.copysign(p.lane_width / 2, lid)
+    geometry: Arc  #: the reference line (the lane's inner border)
+    radius: float  #: of the reference line; the lane centre's is half a lane width larger
 
 
 def candidate(leg: int, contact: tuple[float, float, float, bool], median: bool, n_out_end: int, p: Params
               ) -> UTurn | None:
     """The U-turn of one leg, from its innermost incoming lane to the nearest outgoing lane fed at the junction whose
-    half circle meets the radius bound; None when no such lane exists."""
+    half circle meets the radius bound; None when there is none."""
     x, y, h, at_start = contact
     rule = p.traffic_rule
     lid_in = lane_id(not at_start, 1, median, rule)
     h0 = h + (math.pi if at_start else 0.0)  # driving into the junction
-    x0, y0 = border_point(x, y, h, _centre_offset(lid_in, median, p))
+    x0, y0 = border_point(x, y, h, inner_offset(lid_in, median, p.lane_width, p.median_width))
     for m in range(1, n_out_end + 1):
         lid_out = lane_id(at_start, m, median, rule)
-        x1, y1 = border_point(x, y, h, _centre_offset(lid_out, median, p))
+        x1, y1 = border_point(x, y, h, inner_offset(lid_out, median, p.lane_width, p.median_width))
         radius = math.hypot(x1 - x0, y1 - y0) / 2
         if radius >= p.min_turn_radius:
             left = 1.0 if rule is TrafficRule.RHT else -1.0  # RHT turns back to the left
@@ -57,7 +53,11 @@ def candidate(leg: int, contact: tuple[float, float, float, bool], median: bool,
     return None
 
 
-def _arc_points(a: Arc) -> np.ndarray:
+def _centre_points(ref: Arc, w: float) -> np.ndarray:
+    """The lane centre of a U-turn: half a lane width outside its reference arc."""
+    radius = 1.0 / abs(ref.curvature) + w / 2
+    x, y = border_point(ref.x, ref.y, ref.hdg, -math.copysign(w / 2, ref.curvature))
+    a = Arc(0.0, x, y, ref.hdg, math.pi * radius, math.copysign(1.0 / radius, ref.curvature))
     d = np.linspace(0.0, a.length, _SAMPLES)
     hdg = a.hdg + a.curvature * d
     return np.column_stack([a.x + (np.sin(hdg) - math.sin(a.hdg)) / a.curvature,
@@ -81,7 +81,7 @@ def crosses(turn: UTurn, lane_in: int, rows: list[LinkFit], p: Params) -> bool:
     """Whether the U-turn's lane centre meets that of another link leaving the same incoming road: links from other
     lanes must stay :data:`CLEARANCE` away; links from the same lane, once parted by :data:`PARTED`, :data:`TOUCH`."""
     t = (-1.0 if p.traffic_rule is TrafficRule.RHT else 1.0) * p.lane_width / 2
-    pts = _arc_points(turn.geometry)
+    pts = _centre_points(turn.geometry, p.lane_width)
     mine = shapely.LineString(pts)
     for row in rows:
         if row.leg_in != turn.leg:

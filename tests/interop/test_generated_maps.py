@@ -1,7 +1,7 @@
 """Interoperability acceptance of the generator: its maps load cleanly in the tools people use.
 
-52 maps (seeds) across 500 m, 1 km and 2 km, two-lane and random-lane (some with curved roads, every fourth written
-as OpenDRIVE 1.7, the rest 1.8), generated once per module. Each must pass:
+53 maps (seeds) across 500 m, 1 km and 2 km, two-lane and random-lane (some with curved roads, three with wide
+medians and U-turns, every fourth written as OpenDRIVE 1.7, the rest 1.8), generated once per module. Each must pass:
 
 * ``xodrcheck.check``: no error-level finding;
 * ASAM ``asam-qc-opendrive``: no error-level issue and no checker ending in status "error";
@@ -30,11 +30,15 @@ from xodrcheck.reader import read
 
 REPO = Path(__file__).resolve().parents[2]
 
-#: (size in m, randomize lanes, number of maps): most at 500 m and 1 km, a few at 2 km.
 #: The ASAM check each version skips (its rule applies to the other version only).
 SKIPPED = {"1.7": "one_link_to_incoming", "1.8": "one_connection_element"}
 
-PLAN = [(500, False, 18), (500, True, 18), (1000, False, 7), (1000, True, 7), (2000, False, 1), (2000, True, 1)]
+#: Wide medians and U-turns on every leg where one fits (the defaults leave no room for a U-turn).
+U_TURNS = {"median_width": 4.0, "median_probability": 0.7, "u_turn_probability": 1.0}
+
+#: (size in m, randomize lanes, number of maps, other parameters): most at 500 m and 1 km, a few at 2 km.
+PLAN = [(500, False, 18, {}), (500, True, 16, {}), (1000, False, 7, {}), (1000, True, 7, {}), (1000, True, 3, U_TURNS),
+        (2000, False, 1, {}), (2000, True, 1, {})]
 
 
 @dataclass(frozen=True)
@@ -56,13 +60,13 @@ def maps(tmp_path_factory) -> list[Map]:
     folder = tmp_path_factory.mktemp("generated")
     out = []
     n = 0
-    for size, random_lanes, count in PLAN:
+    for size, random_lanes, count, extra in PLAN:
         for k in range(count):
-            seed = 1000 * size // 500 + 100 * random_lanes + k
+            seed = 1000 * size // 500 + 100 * random_lanes + 50 * bool(extra) + k
             version = "1.7" if n % 4 == 3 else "1.8"
             params = Params(width=size, height=size, randomize_lanes=random_lanes,
-                            curved_roads=random_lanes and k % 2 == 1, version=version)
-            path = folder / f"{size}-{'random' if random_lanes else 'two'}-{seed}.xodr"
+                            curved_roads=random_lanes and k % 2 == 1, version=version, **extra)
+            path = folder / f"{size}-{'random' if random_lanes else 'two'}{'-uturn' if extra else ''}-{seed}.xodr"
             ja.write(ja.generate(params, seed), path, version)
             out.append(Map(path, size, random_lanes, seed, version))
             n += 1
@@ -84,6 +88,19 @@ def test_plan_covers_sizes_lane_modes_and_at_least_50_seeds(maps, asam_run):
     assert len({(m.size, m.seed) for m in maps}) == len(maps)
     assert {(m.size, m.random_lanes) for m in maps} == {(s, r) for s in (500, 1000, 2000) for r in (False, True)}
     assert {m.version for m in maps} == {"1.7", "1.8"}
+    assert sum(_u_turns(m.path) for m in maps) >= 5, "the plan covers U-turn connection lanes"
+
+
+def _same_end(road) -> bool:
+    """A U-turn: the connecting road leaves and enters the same end of one road."""
+    a, b = road.predecessor, road.successor
+    return a.element_id == b.element_id and a.contact_point == b.contact_point
+
+
+def _u_turns(path: Path) -> int:
+    """Connecting roads that lead back to the road end they come from."""
+    doc = read(path).document
+    return sum(1 for r in doc.roads if r.junction is not None and _same_end(r))
 
 
 def test_xodrcheck_finds_no_error(maps):

@@ -28,7 +28,9 @@ def _check_links(layout, params):
             assert {c.in_lane for c in conns} == expect, "every incoming lane reaches an outgoing lane"
             targets = [(c.out_road, c.out_contact, c.out_lane) for c in conns]
             assert len(targets) == len(set(targets)), "two lanes of one road merge into one lane"
-            assert all((c.out_road, c.out_contact) != (r, contact) for c in conns), "no U-turn"
+            back = [c for c in conns if (c.out_road, c.out_contact) == (r, contact)]
+            assert len(back) <= 1 and all(c.in_lane == lane_id(contact == "end", 1, median, rule) for c in back), \
+                "U-turns only from the innermost lane"
         for c in jp.connections:
             assert c.min_radius >= params.min_turn_radius
         # every leg is linked: some lane enters or leaves the junction by it
