@@ -32,7 +32,7 @@ def _legend_entries(used: list[str]) -> list[tuple[str, str]]:
     """(label, colour) for each colour drawn: lane types in the order of ``COLOURS``, then junctions, then others."""
     seen = set(used)
     entries, taken = [], set()
-    for name, colour in COLOURS.items():
+    for colour in COLOURS.values():
         if colour in seen and colour not in taken:
             label = " / ".join(n for n, c in COLOURS.items() if c == colour)
             entries.append((f"{label} lane", colour))

@@ -46,6 +46,9 @@ class Tolerances:
     clearance: float = 4.5
     #: Wall-clock budget (s) for one file's expensive rules; rules past it report that they stopped.
     time_budget: float = 120.0
+    #: Most ``s`` samples one lane section gets per sampling stage (checker grid, mesh, info). A longer section (a road
+    #: of 1e9 m) is sampled with proportionally longer steps, so time and memory stay bounded; rule G013 reports it.
+    max_samples_per_section: int = 200_000
     #: Files larger than this many bytes are refused with a clear error.
     max_file_bytes: int = 512 * 1024 * 1024
 

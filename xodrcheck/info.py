@@ -28,6 +28,7 @@ from xodrcheck.model import (
     Spiral,
 )
 from xodrcheck.reader import ReadResult
+from xodrcheck.sampling import step_counts
 
 #: OpenDRIVE element names of the plan-view geometry kinds.
 GEOMETRY_NAMES = {Line: "line", Arc: "arc", Spiral: "spiral", Poly3: "poly3", ParamPoly3: "paramPoly3"}
@@ -135,7 +136,9 @@ def _road_points(rg: RoadGeometry, tolerances: Tolerances) -> tuple[list[np.ndar
     for index, section in enumerate(road.lane_sections):
         if road.section_end(index) < section.s:
             continue  # sections out of order: the reader reports them; nothing to place
-        s = rg.sample_s(index, chord=tolerances.chord, max_step=tolerances.max_step)
+        s = rg.sample_s(
+            index, chord=tolerances.chord, max_step=tolerances.max_step, budget=tolerances.max_samples_per_section
+        )
         left, right = (tuple(lane.id for lane in side.lanes) for side in rg.side_lanes(index))
         if not left and not right:
             pose = rg.reference(s)
@@ -158,7 +161,7 @@ def _road_points(rg: RoadGeometry, tolerances: Tolerances) -> tuple[list[np.ndar
 def _reference_s(rg: RoadGeometry, tolerances: Tolerances) -> np.ndarray:
     """Samples of a road without lane sections: element starts, the road end, and steps of at most ``max_step``."""
     length = max(rg.road.length, 0.0)
-    count = int(np.ceil(length / tolerances.max_step)) + 1
+    count = int(step_counts(np.array([length]), tolerances.max_step, tolerances.max_samples_per_section)[0]) + 1
     return np.unique(np.concatenate([np.linspace(0.0, length, count), rg.reference_line.breakpoints]))
 
 

@@ -388,15 +388,23 @@ class RoadGeometry:
     # ---------------------------------------------------------------------------------------------------------------
     # Sampling
     # ---------------------------------------------------------------------------------------------------------------
-    def sample_s(self, section_index: int, chord: float | None = None, max_step: float | None = None) -> np.ndarray:
+    def sample_s(
+        self,
+        section_index: int,
+        chord: float | None = None,
+        max_step: float | None = None,
+        budget: int | None = None,
+    ) -> np.ndarray:
         """Sorted ``s`` covering the section with every knot, lane-border chord error under ``chord`` (default:
-        the configured tolerance) and steps of at most ``max_step``; see :mod:`xodrcheck.sampling`."""
+        the configured tolerance) and steps of at most ``max_step``, within a sample ``budget`` (default
+        ``max_samples_per_section``: past it the steps grow); see :mod:`xodrcheck.sampling`."""
         defaults = Tolerances()
         return sample_section(
             self,
             section_index,
             defaults.chord if chord is None else chord,
             defaults.max_step if max_step is None else max_step,
+            defaults.max_samples_per_section if budget is None else budget,
         )
 
 

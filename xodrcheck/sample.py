@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck.config import Tolerances
 from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, geometry_of
 from xodrcheck.model import Document
@@ -38,12 +39,15 @@ class LaneLine:
         return len(self.s)
 
 
-def section_s_values(start: float, end: float, step: float) -> np.ndarray:
+def section_s_values(start: float, end: float, step: float, budget: int | None = None) -> np.ndarray:
     """``start``, then every ``step``, then ``end`` (a grid point that only rounding separates from ``end`` is left
-    out, so the last interval is never a sliver of a few ulps)."""
+    out, so the last interval is never a sliver of a few ulps). With a ``budget``, a section needing more steps than
+    that is stepped by ``length / budget`` instead (bounded output on absurdly long sections; the ``s`` column shows it)."""
     if not (math.isfinite(step) and step > 0):
         raise ValueError(f"step must be a finite number > 0, got {step!r}")
     length = end - start
+    if budget is not None and length / step > budget:
+        step = length / max(budget, 1)
     count = math.ceil(length / step) if length > 0 else 0
     grid = start + step * np.arange(count, dtype=float)
     grid = grid[grid < end - length * 1e-12]
@@ -78,7 +82,7 @@ def sample_lanes(
             end = road.section_end(index)
             if not end > section.s:
                 continue
-            s = section_s_values(section.s, end, step)
+            s = section_s_values(section.s, end, step, Tolerances().max_samples_per_section)
             left, right = rg.side_lanes(index)  # the lanes in effect (a singleSide section keeps the other side's)
             for lane in (*reversed(left.lanes), *right.lanes):
                 for kind in kinds:

@@ -9,6 +9,11 @@ probed just inside both ends and in the middle, and the step is divided evenly s
 ``curvature * h^2 / 8`` of every border polyline stays under ``chord``. (Where a profile jumps, as a laneOffset
 record that does not continue its predecessor, the polyline has a knot at the jump but cannot follow it.) A step never needs to be shorter than
 ``2 * chord`` (no arc strays further than half its length from its chord), which also bounds the work near cusps.
+
+Each stage keeps at most about ``budget`` samples per section (``Tolerances.max_samples_per_section``): past it the
+steps of the stage grow in proportion so that an absurdly long section (a road of 1e12 m) or an absurd bend (a lane
+1e9 m wide on a curve) costs bounded time and memory. Below the budget nothing changes; rule ``G013``
+(``sampling-capped``) reports the sections whose checker grid is capped.
 """
 
 from __future__ import annotations
@@ -64,23 +69,37 @@ def _subdivide(starts: np.ndarray, lengths: np.ndarray, counts: np.ndarray) -> n
     return starts[owner] + lengths[owner] * index / counts[owner]
 
 
-def step_counts(lengths: np.ndarray, step) -> np.ndarray:
+def step_counts(lengths: np.ndarray, step, budget: int | None = None) -> np.ndarray:
     """Number of equal steps of at most ``step`` covering each length (at least 1). A count beyond ``2**53`` (a damaged
-    section, astronomically long: its steps would be below the resolution of its ``s``) or not a number gives 1."""
+    section, astronomically long: its steps would be below the resolution of its ``s``) or not a number gives 1.
+
+    With a ``budget``, counts whose total exceeds it are scaled down together (each kept at least 1), so the total stays
+    within ``budget`` plus the number of lengths: the steps then exceed ``step``."""
     with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
         counts = np.ceil(lengths / step)
-    return np.where((counts >= 1) & (counts <= _MAX_COUNT), counts, 1).astype(np.int64)
+    counts = np.where((counts >= 1) & (counts <= _MAX_COUNT), counts, 1)
+    if budget is not None and counts.sum() > budget:
+        counts = np.maximum(np.floor(counts * (max(budget, 1) / counts.sum())), 1)
+    return counts.astype(np.int64)
 
 
-def sample_section(geometry: RoadGeometry, section_index: int, chord: float, max_step: float) -> np.ndarray:
-    """Sorted ``s`` covering the section (ends and every knot included) with border chord error below ``chord``."""
+def capped(lengths: np.ndarray, step, budget: int) -> bool:
+    """Whether :func:`step_counts` of ``lengths`` at ``step`` goes over ``budget`` (and so takes longer steps)."""
+    return bool(step_counts(lengths, step).sum() > budget)
+
+
+def sample_section(
+    geometry: RoadGeometry, section_index: int, chord: float, max_step: float, budget: int | None = None
+) -> np.ndarray:
+    """Sorted ``s`` covering the section (ends and every knot included) with border chord error below ``chord``, at
+    most about ``2 * budget`` of them plus the knots (each stage within ``budget``; ``None``: no bound)."""
     if not chord > 0 or not max_step > 0:
         raise ValueError(f"chord and max_step must be > 0, got {chord} and {max_step}")
     cuts = knots(geometry, section_index)
     if len(cuts) < 2:
         return cuts
     lengths = np.diff(cuts)
-    coarse = _subdivide(cuts[:-1], lengths, step_counts(lengths, max_step))
+    coarse = _subdivide(cuts[:-1], lengths, step_counts(lengths, max_step, budget))
     coarse_ends = np.append(coarse[1:], cuts[-1])
     steps = coarse_ends - coarse
     inset = _PROBE_INSET * steps
@@ -97,5 +116,5 @@ def sample_section(geometry: RoadGeometry, section_index: int, chord: float, max
     # 8 chord / bending, infinite where nothing bends.
     ratio = np.divide(8.0 * chord, bending, out=np.full_like(bending, np.inf), where=bending != 0)
     allowed = np.maximum(np.sqrt(ratio), 2.0 * chord)
-    fine = _subdivide(coarse, steps, step_counts(steps, allowed))
+    fine = _subdivide(coarse, steps, step_counts(steps, allowed, budget))
     return np.unique(np.append(fine, cuts[-1]))

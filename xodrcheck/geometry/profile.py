@@ -127,9 +127,10 @@ class Batch:
 def _cubic_jet(a, b, c, d, ds: np.ndarray, active: np.ndarray | None):
     """:meth:`Piecewise.jet`'s arithmetic on arrays of coefficients (``active``: where a record is in force; ``None``
     for ``ds >= 0``)."""
-    value = a + ds * (b + ds * (c + ds * d))
-    first = b + ds * (2.0 * c + ds * 3.0 * d)
-    second = 2.0 * c + 6.0 * d * ds
+    with np.errstate(over="ignore", invalid="ignore"):  # s or a coefficient near 1e308: inf/nan, as the reader allows
+        value = a + ds * (b + ds * (c + ds * d))
+        first = b + ds * (2.0 * c + ds * 3.0 * d)
+        second = 2.0 * c + 6.0 * d * ds
     active = ds >= 0 if active is None else active
     if active.all():
         return value, first, second

@@ -39,6 +39,9 @@ _J_FACT = np.array([math.factorial(j) for j in _J], dtype=float)
 _N_FACT = np.array([math.factorial(n) for n in _N], dtype=float)
 _SERIES_WEIGHTS = 1.0 / (_J[:, None] + 2 * _N[None, :] + 1)
 _SQRT_2_OVER_PI = math.sqrt(2.0 / math.pi)
+_MAX_PIECES = 1024  # most series pieces per point; past it (no real road) the b-expansion below takes over
+_MOMENT_TERMS = 14
+_CHUNK_PIECES = 1 << 16  # series pieces evaluated at once
 _SQRT_PI_OVER_2 = math.sqrt(math.pi / 2.0)
 
 
@@ -67,9 +70,35 @@ def phase_integral(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     if use_fresnel.any():
         out[use_fresnel] = _by_fresnel(a[use_fresnel], b[use_fresnel])
     rest = ~use_fresnel
+    # Far from curvature 0 with a tiny curvature change over an absurd length (a > 2048 rad of turning): the series
+    # would need over a thousand pieces per point; expand in b instead (or take Fresnel when b is not small).
+    long = rest & (np.abs(a) * 0.5 > _MAX_PIECES)
+    if long.any():
+        small_b = long & (abs_b <= 1.0)
+        out[small_b] = _by_moments(a[small_b], b[small_b])
+        big_b = long & ~small_b
+        out[big_b] = _by_fresnel(a[big_b], b[big_b])
+        rest &= ~long
     if rest.any():
         out[rest] = _by_series(a[rest], b[rest])
     return out
+
+
+def _by_moments(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``I(a, b) = sum_n (i b)^n / n! * M_2n(a)`` with ``M_m(a) = integral_0^1 t^m exp(i a t) dt`` by the recurrence
+    ``M_m = (exp(i a) - m M_(m-1)) / (i a)``, stable for ``|a| > 2048`` and the few ``m`` needed; for ``|b| <= 1`` the
+    series after ``_MOMENT_TERMS`` terms is below 1e-10 relative."""
+    e = np.exp(1j * a)
+    ia = 1j * a
+    moment = (e - 1.0) / ia
+    total = moment.copy()
+    term = np.ones_like(total)
+    for n in range(1, _MOMENT_TERMS):
+        moment = (e - (2 * n - 1) * moment) / ia
+        moment = (e - 2 * n * moment) / ia
+        term = term * (1j * b) / n
+        total += term * moment
+    return total
 
 
 def _by_fresnel(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -87,6 +116,14 @@ def _by_fresnel(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 def _by_series(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     pieces = np.maximum(1, np.ceil(2.0 * (np.abs(a) + 2.0 * np.abs(b)))).astype(np.int64)
+    if pieces.sum() > _CHUNK_PIECES:  # bounded memory: a few points at a time (each point's sum unchanged)
+        group = np.cumsum(pieces) // _CHUNK_PIECES
+        cuts = np.flatnonzero(np.diff(group)) + 1
+        return np.concatenate([_series_of(a[i], b[i], pieces[i]) for i in np.split(np.arange(len(a)), cuts)])
+    return _series_of(a, b, pieces)
+
+
+def _series_of(a: np.ndarray, b: np.ndarray, pieces: np.ndarray) -> np.ndarray:
     owner = np.repeat(np.arange(len(a)), pieces)
     first = np.cumsum(pieces) - pieces
     index = np.arange(owner.size) - first[owner]

@@ -10,7 +10,8 @@ laneOffset and the plan view) every border's ``t`` is one cubic polynomial in ``
 ``sign * (t_outer - t_inner)`` is recovered on each piece from four evaluations and its minimum found from the roots of
 its derivative. A lane given by ``<width>`` records with a negative minimum has a negative width (``G010``); a lane
 given by ``<border>`` records crosses its inner neighbour (``G011``, ASAM's
-``road.lane.border.overlap_with_inner_lanes``). Lane sections must have a length (``G012``).
+``road.lane.border.overlap_with_inner_lanes``). Lane sections must have a length (``G012``). A section so long that
+the geometric rules' samples would exceed ``max_samples_per_section`` is sampled more coarsely, and says so (``G013``).
 """
 
 from __future__ import annotations
@@ -26,8 +27,8 @@ from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
 from xodrcheck.model import Geometry, ParamPoly3, PRange, Road, Spiral
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import angle_between, usable
-from xodrcheck.sampling import knots
+from xodrcheck.rules.sampled import angle_between, grid_step, usable
+from xodrcheck.sampling import capped, knots
 
 _KIND = {"Line": "line", "Arc": "arc", "Spiral": "spiral", "Poly3": "poly3", "ParamPoly3": "paramPoly3"}
 
@@ -478,3 +479,42 @@ def short_lane_section(ctx: Context):
                     s=section.s,
                     line=section.line or road.line or None,
                 )
+
+
+@rule("G013", "sampling-capped", Category.GEOMETRY, Severity.WARNING)
+def sampling_capped(ctx: Context):
+    """A lane section is too long to sample at the geometric rules' step within ``max_samples_per_section``.
+
+    The sampled rules (lane joints, curvature, overlaps) then step proportionally further apart, so that an absurdly
+    long road (1e9 m) still costs bounded time and memory; what they find there is less precise. Raise the budget
+    (``max_samples_per_section``) to check such a road at full resolution.
+
+    Passes (100 m)::
+
+        <road id="1" length="100"> ... <laneSection s="0">
+
+    Fails (1e9 m: 1.6e9 steps of 0.63 m)::
+
+        <road id="1" length="1e9"> ... <laneSection s="0">
+    """
+    tol = ctx.tolerances
+    step = grid_step(tol)
+    budget = tol.max_samples_per_section
+    for road in ctx.document.roads:
+        geometry = usable(ctx, road)
+        if geometry is None:
+            continue
+        for index, section in enumerate(road.lane_sections):
+            cuts = knots(geometry, index)
+            if not capped(np.diff(cuts), step, budget):
+                continue
+            length = road.section_end(index) - section.s
+            yield sampling_capped.finding(
+                f"road {road.id}: the lane section at s={section.s:g} is {length:.4g} m long; the geometric rules "
+                f"sample it with about {budget:,} points, a {length / max(budget, 1):.4g} m step instead of "
+                f"{step:.3g} m (max_samples_per_section): their findings there are less precise",
+                road=road.id,
+                section_s=section.s,
+                s=section.s,
+                line=section.line or road.line or None,
+            )

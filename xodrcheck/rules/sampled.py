@@ -13,6 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck.config import Tolerances
 from xodrcheck.lanes import LanePoints, RoadGeometry
 from xodrcheck.model import ContactPoint, Road
 from xodrcheck.rules.context import Context
@@ -53,15 +54,20 @@ class SectionLines:
 _LINES: weakref.WeakKeyDictionary[Context, dict[tuple[str, int], SectionLines]] = weakref.WeakKeyDictionary()
 
 
+def grid_step(tol: Tolerances) -> float:
+    """The longest step of :func:`section_samples` (within the sample budget)."""
+    return min(tol.max_step, math.sqrt(8.0 * tol.chord * max(tol.min_radius, tol.chord)))
+
+
 def _grid(ctx: Context, geometry: RoadGeometry, section_index: int) -> np.ndarray:
     start, end = geometry.section_range(section_index)
     if not end > start:
         return np.array([start], dtype=float)
     tol = ctx.tolerances
-    step = min(tol.max_step, math.sqrt(8.0 * tol.chord * max(tol.min_radius, tol.chord)))
+    step = grid_step(tol)
     cuts = knots(geometry, section_index)
     lengths = np.diff(cuts)
-    counts = step_counts(lengths, step)
+    counts = step_counts(lengths, step, tol.max_samples_per_section)
     owner = np.repeat(np.arange(len(lengths)), counts)
     offset = np.arange(owner.size) - np.repeat(np.cumsum(counts) - counts, counts)
     s = np.append(cuts[owner] + lengths[owner] * offset / counts[owner], left_of(end))
