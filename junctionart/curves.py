@@ -7,6 +7,7 @@ curve's length.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import math
 from dataclasses import dataclass
@@ -42,9 +43,17 @@ def end_pose(g: Geometry) -> Pose:
     return Pose(g.x + c * u - s * v, g.y + s * u + c * v, g.hdg + math.atan2(dv, du))
 
 
+@functools.lru_cache(maxsize=64)
+def _steps(n: int) -> np.ndarray:
+    """``n`` even steps from 0 to 1 (read-only: shared by every call)."""
+    t = np.linspace(0.0, 1.0, n)
+    t.flags.writeable = False
+    return t
+
+
 def sample(g: Geometry, n: int = 16) -> np.ndarray:
     """``n`` points (x, y) along one element, both ends included (for rendering and overlap tests)."""
-    t = np.linspace(0.0, 1.0, n)
+    t = _steps(n)
     if isinstance(g, Line):
         d = t * g.length
         return np.column_stack([g.x + d * math.cos(g.hdg), g.y + d * math.sin(g.hdg)])
@@ -130,17 +139,21 @@ def fit_connections(targets: np.ndarray, offsets: tuple[float, ...], min_radius:
     d1v = p * (2 * cv[:, None] + 3 * dv[:, None] * p)
     d2u = 2 * cu[:, None] + 6 * du[:, None] * p
     d2v = 2 * cv[:, None] + 6 * dv[:, None] * p
-    speed = np.hypot(d1u, d1v)
-    ok = (speed.min(axis=1) > 1e-9) & (chord > 1e-6)
-    kappa = (d1u * d2v - d1v * d2u) / np.maximum(speed, 1e-12) ** 3
+    speed2 = d1u * d1u + d1v * d1v  # squared speed: no hypot and no power over every sample (the costly steps)
+    ok = (speed2.min(axis=1) > 1e-18) & (chord > 1e-6)
+    speed2 = np.maximum(speed2, 1e-24)
+    kappa = (d1u * d2v - d1v * d2u) / (speed2 * np.sqrt(speed2))
     worst = np.abs(kappa).max(axis=1)
-    for off in offsets:
+    # |kappa / (1 - t kappa)| grows with t * kappa, so the outermost offset on each side bounds the others (and its
+    # fold test implies theirs)
+    outermost = [max((o for o in offsets if o > 0), default=0.0), min((o for o in offsets if o < 0), default=0.0)]
+    for off in (o for o in outermost if o != 0.0):
         denom = 1.0 - off * kappa
         ok &= denom.min(axis=1) > 0.05
         worst = np.maximum(worst, np.abs(kappa / np.maximum(denom, 0.05)).max(axis=1))
     # total turning equals the heading change: the heading increments never change sign
     dh = np.diff(np.arctan2(d1v, d1u), axis=1)
-    dh = (dh + np.pi) % (2 * np.pi) - np.pi
+    dh = np.where(dh > np.pi, dh - 2 * np.pi, np.where(dh < -np.pi, dh + 2 * np.pi, dh))  # into [-pi, pi]
     turned = dh.sum(axis=1)
     ok &= np.abs(np.abs(turned) - np.abs(phi)) < 1e-6
     radius = 1.0 / np.maximum(worst, 1e-300)

@@ -52,3 +52,42 @@ def taper_length(params: Params, end: tuple[int, int], middle: tuple[int, int]) 
         return 0.0
     shift = (changed - 0.5) * params.lane_width
     return max(params.taper_length, math.sqrt(24.0 * shift * params.min_turn_radius))
+
+
+def min_curve_radius(params: Params, widest: float, ends: tuple[tuple[int, int], ...], middle: tuple[int, int]
+                     ) -> float:
+    """Smallest reference-line arc radius on a road whose widest side is ``widest`` (m, at any s) and whose lane
+    counts go from ``middle`` to each of ``ends`` through tapers (:func:`taper_length`).
+
+    Every lane centre lies at most ``t = widest - lane_width / 2`` from the reference line, so on an arc of radius
+    ``R`` its radius is at least ``R - t``; that keeps 3/4 of the ``1 / min_turn_radius`` budget. Where a taper lies
+    on the arc, the lane centre's offset ``t(s)`` also bends: with ``a = 1 - t / R`` the centre's curvature is
+    ``(a^2 / R + a t'' + 2 t'^2 / R) / (a^2 + t'^2)^1.5``, at most ``1 / (a R) + t'' / a^2 + 2 t'^2 / (a^3 R)``. The
+    radius returned keeps that bound under ``1 / min_turn_radius`` for the steepest taper of the road.
+    """
+    m = params.min_turn_radius
+    r_min = widest + m * 4.0 / 3.0 + 0.5
+    bend = slope2 = 0.0
+    for end in ends:
+        length = taper_length(params, end, middle)
+        if length > 0:
+            shift = (max(abs(a - b) for a, b in zip(end, middle)) - 0.5) * params.lane_width
+            bend = max(bend, 6.0 * shift / length**2)
+            slope2 = max(slope2, (1.5 * shift / length) ** 2)
+    if bend == 0.0:
+        return r_min
+    t = widest - params.lane_width / 2
+
+    def fits(r: float) -> bool:
+        a = 1.0 - t / r
+        return 1.0 / (a * r) + bend / a**2 + 2.0 * slope2 / (a**3 * r) <= 1.0 / m
+
+    if fits(r_min):
+        return r_min
+    lo, hi = r_min, 2.0 * r_min
+    while not fits(hi):
+        lo, hi = hi, 2.0 * hi
+    for _ in range(40):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (lo, mid) if fits(mid) else (mid, hi)
+    return hi

@@ -1,18 +1,20 @@
 """Serialise a :class:`junctionart.opendrive.Document` to OpenDRIVE 1.8 (default) or 1.7 XML.
 
-Element order follows the schema of the declared version. Floats are written with ``repr`` (the shortest string that
-reads back to the same double), so the file round-trips exactly; the output bytes depend only on the document.
+The text is built directly, line by line, in lxml's pretty-print layout (an element tree cost most of the writing
+time); element order follows the schema of the declared version. Floats are written with ``repr`` (the shortest
+string that reads back to the same double), so the file round-trips exactly; the output bytes depend only on the
+document.
 Files are written atomically: a temporary file in the target folder, then ``os.replace``.
 """
 
 from __future__ import annotations
 
+import functools
 import math
 import os
+import re
 import tempfile
 from pathlib import Path
-
-from lxml import etree
 
 from .errors import JunctionArtError
 from .opendrive import (
@@ -42,126 +44,170 @@ def fmt(x: float) -> str:
     return repr(x)
 
 
-def _sub(parent: etree._Element, tag: str, **attrs: str) -> etree._Element:
-    return etree.SubElement(parent, tag, attrs)
+_ESCAPES = {"&": "&amp;", "<": "&lt;", ">": "&gt;", '"': "&quot;", "\n": "&#10;", "\r": "&#13;", "\t": "&#9;"}
+_BAD_XML = re.compile("[\x00-\x08\x0b\x0c\x0e-\x1f\ud800-\udfff\ufffe\uffff]")
+_SPECIAL = re.compile('[&<>"\n\r\t]')
 
 
-def _link(parent: etree._Element, tag: str, link: Link) -> None:
-    el = _sub(parent, tag, elementType=link.element_type, elementId=link.element_id)
-    if link.contact_point is not None:
-        el.set("contactPoint", link.contact_point)
+@functools.lru_cache(maxsize=4096)  # ids, types and names repeat throughout a file
+def _esc(text: str) -> str:
+    """``text`` as an XML attribute value (escaped as libxml2 does); characters XML cannot hold are refused."""
+    if _BAD_XML.search(text):
+        raise JunctionArtError(f"cannot write {text!r}: it holds a character XML does not allow")
+    return _SPECIAL.sub(lambda m: _ESCAPES[m.group()], text)
 
 
-def _geometry(plan: etree._Element, g: Geometry) -> None:
-    el = _sub(plan, "geometry", s=fmt(g.s), x=fmt(g.x), y=fmt(g.y), hdg=fmt(g.hdg), length=fmt(g.length))
+class _Out:
+    """The indented XML text, built line by line (two spaces per level, as lxml's ``pretty_print``)."""
+
+    def __init__(self) -> None:
+        self.lines: list[str] = []
+
+    def leaf(self, depth: int, tag: str, attrs: str = "") -> None:
+        self.lines.append(f"{'  ' * depth}<{tag}{attrs}/>")
+
+    def open(self, depth: int, tag: str, attrs: str = "") -> None:
+        self.lines.append(f"{'  ' * depth}<{tag}{attrs}>")
+
+    def close(self, depth: int, tag: str) -> None:
+        self.lines.append(f"{'  ' * depth}</{tag}>")
+
+
+def _link(out: _Out, depth: int, tag: str, link: Link) -> None:
+    cp = f' contactPoint="{_esc(link.contact_point)}"' if link.contact_point is not None else ""
+    out.leaf(depth, tag, f' elementType="{_esc(link.element_type)}" elementId="{_esc(link.element_id)}"{cp}')
+
+
+def _geometry(out: _Out, g: Geometry) -> None:
+    out.open(3, "geometry", f' s="{fmt(g.s)}" x="{fmt(g.x)}" y="{fmt(g.y)}" hdg="{fmt(g.hdg)}" length="{fmt(g.length)}"')
     if isinstance(g, Line):
-        _sub(el, "line")
+        out.leaf(4, "line")
     elif isinstance(g, Arc):
-        _sub(el, "arc", curvature=fmt(g.curvature))
+        out.leaf(4, "arc", f' curvature="{fmt(g.curvature)}"')
     elif isinstance(g, ParamPoly3):
-        _sub(
-            el, "paramPoly3",
-            aU=fmt(g.au), bU=fmt(g.bu), cU=fmt(g.cu), dU=fmt(g.du),
-            aV=fmt(g.av), bV=fmt(g.bv), cV=fmt(g.cv), dV=fmt(g.dv),
-            pRange="normalized",
-        )
+        out.leaf(4, "paramPoly3",
+                 f' aU="{fmt(g.au)}" bU="{fmt(g.bu)}" cU="{fmt(g.cu)}" dU="{fmt(g.du)}"'
+                 f' aV="{fmt(g.av)}" bV="{fmt(g.bv)}" cV="{fmt(g.cv)}" dV="{fmt(g.dv)}" pRange="normalized"')
     else:  # pragma: no cover - the model has no other kinds
         raise JunctionArtError(f"unknown geometry {type(g).__name__}")
+    out.close(3, "geometry")
 
 
-def _cubic(parent: etree._Element, tag: str, c: Cubic, s_name: str) -> None:
-    etree.SubElement(parent, tag, {s_name: fmt(c.s), "a": fmt(c.a), "b": fmt(c.b), "c": fmt(c.c), "d": fmt(c.d)})
+def _cubic(out: _Out, depth: int, tag: str, c: Cubic, s_name: str) -> None:
+    out.leaf(depth, tag, f' {s_name}="{fmt(c.s)}" a="{fmt(c.a)}" b="{fmt(c.b)}" c="{fmt(c.c)}" d="{fmt(c.d)}"')
 
 
-def _lane(parent: etree._Element, lane: Lane) -> None:
-    el = _sub(parent, "lane", id=str(lane.id), type=lane.type, level="false")
+def _lane(out: _Out, lane: Lane) -> None:
+    head = f' id="{lane.id}" type="{_esc(lane.type)}" level="false"'
+    body = lane.predecessor is not None or lane.successor is not None or (lane.id != 0 and lane.widths) or lane.marks
+    if not body:
+        out.leaf(5, "lane", head)
+        return
+    out.open(5, "lane", head)
     if lane.predecessor is not None or lane.successor is not None:
-        link = _sub(el, "link")
+        out.open(6, "link")
         if lane.predecessor is not None:
-            _sub(link, "predecessor", id=str(lane.predecessor))
+            out.leaf(7, "predecessor", f' id="{lane.predecessor}"')
         if lane.successor is not None:
-            _sub(link, "successor", id=str(lane.successor))
+            out.leaf(7, "successor", f' id="{lane.successor}"')
+        out.close(6, "link")
     if lane.id != 0:
         for w in lane.widths:
-            _cubic(el, "width", w, "sOffset")
+            _cubic(out, 6, "width", w, "sOffset")
     for m in lane.marks:
-        mark = _sub(el, "roadMark", sOffset=fmt(m.s), type=m.type, weight="standard", color=m.color, width=fmt(m.width))
-        if m.lane_change is not None:
-            mark.set("laneChange", m.lane_change)
+        change = f' laneChange="{_esc(m.lane_change)}"' if m.lane_change is not None else ""
+        out.leaf(6, "roadMark", f' sOffset="{fmt(m.s)}" type="{_esc(m.type)}" weight="standard" '
+                                f'color="{_esc(m.color)}" width="{fmt(m.width)}"{change}')
+    out.close(5, "lane")
 
 
-def _section(parent: etree._Element, sec: LaneSection) -> None:
-    el = _sub(parent, "laneSection", s=fmt(sec.s))
+def _side(out: _Out, tag: str, lanes) -> None:
+    out.open(4, tag)
+    for lane in lanes:
+        _lane(out, lane)
+    out.close(4, tag)
+
+
+def _section(out: _Out, sec: LaneSection) -> None:
+    out.open(3, "laneSection", f' s="{fmt(sec.s)}"')
     if sec.left:
-        left = _sub(el, "left")
-        for lane in sorted(sec.left, key=lambda l: -l.id):
-            _lane(left, lane)
-    center = _sub(el, "center")
-    _lane(center, sec.center)
+        _side(out, "left", sorted(sec.left, key=lambda l: -l.id))
+    _side(out, "center", (sec.center,))
     if sec.right:
-        right = _sub(el, "right")
-        for lane in sorted(sec.right, key=lambda l: -l.id):
-            _lane(right, lane)
+        _side(out, "right", sorted(sec.right, key=lambda l: -l.id))
+    out.close(3, "laneSection")
 
 
-def _road(root: etree._Element, road: Road) -> None:
-    el = _sub(root, "road", name=road.name or f"road {road.id}", length=fmt(road.length), id=road.id,
-              junction=road.junction, rule=road.rule)
+def _road(out: _Out, road: Road) -> None:
+    out.open(1, "road", f' name="{_esc(road.name or f"road {road.id}")}" length="{fmt(road.length)}" '
+                        f'id="{_esc(road.id)}" junction="{_esc(road.junction)}" rule="{_esc(road.rule)}"')
     if road.predecessor is not None or road.successor is not None:
-        link = _sub(el, "link")
+        out.open(2, "link")
         if road.predecessor is not None:
-            _link(link, "predecessor", road.predecessor)
+            _link(out, 3, "predecessor", road.predecessor)
         if road.successor is not None:
-            _link(link, "successor", road.successor)
+            _link(out, 3, "successor", road.successor)
+        out.close(2, "link")
     if road.speed_kmh is not None:
-        t = _sub(el, "type", s="0.0", type="town")
-        _sub(t, "speed", max=fmt(road.speed_kmh), unit="km/h")
-    plan = _sub(el, "planView")
+        out.open(2, "type", ' s="0.0" type="town"')
+        out.leaf(3, "speed", f' max="{fmt(road.speed_kmh)}" unit="km/h"')
+        out.close(2, "type")
+    out.open(2, "planView")
     for g in road.geometry:
-        _geometry(plan, g)
-    elev = _sub(el, "elevationProfile")
-    _sub(elev, "elevation", s="0.0", a="0.0", b="0.0", c="0.0", d="0.0")
-    lat = _sub(el, "lateralProfile")
-    del lat  # an empty lateral profile is valid and tells readers there is no superelevation
-    lanes = _sub(el, "lanes")
+        _geometry(out, g)
+    out.close(2, "planView")
+    out.open(2, "elevationProfile")
+    out.leaf(3, "elevation", ' s="0.0" a="0.0" b="0.0" c="0.0" d="0.0"')
+    out.close(2, "elevationProfile")
+    out.leaf(2, "lateralProfile")  # empty: valid, and tells readers there is no superelevation
+    out.open(2, "lanes")
     for c in road.lane_offset:
-        _cubic(lanes, "laneOffset", c, "s")
+        _cubic(out, 3, "laneOffset", c, "s")
     for sec in road.sections:
-        _section(lanes, sec)
+        _section(out, sec)
+    out.close(2, "lanes")
+    out.close(1, "road")
 
 
-def _junction(root: etree._Element, j: Junction) -> None:
-    el = _sub(root, "junction", name=j.name, id=j.id)
+def _junction(out: _Out, j: Junction) -> None:
+    head = f' name="{_esc(j.name)}" id="{_esc(j.id)}"'
+    if not j.connections:
+        out.leaf(1, "junction", head)
+        return
+    out.open(1, "junction", head)
     for c in j.connections:
-        ce = _sub(el, "connection", id=c.id, incomingRoad=c.incoming_road, connectingRoad=c.connecting_road,
-                  contactPoint=c.contact_point)
+        attrs = (f' id="{_esc(c.id)}" incomingRoad="{_esc(c.incoming_road)}" '
+                 f'connectingRoad="{_esc(c.connecting_road)}" contactPoint="{_esc(c.contact_point)}"')
+        if not c.lane_links:
+            out.leaf(2, "connection", attrs)
+            continue
+        out.open(2, "connection", attrs)
         for ll in c.lane_links:
-            _sub(ce, "laneLink", **{"from": str(ll.from_lane), "to": str(ll.to_lane)})
-
-
-def to_tree(doc: Document, version: str = "1.8") -> etree._Element:
-    """The XML element tree of ``doc`` for OpenDRIVE ``version`` ("1.8" or "1.7")."""
-    if version not in REV_MINOR:
-        raise JunctionArtError(f"version {version!r}: must be one of {', '.join(REV_MINOR)}")
-    root = etree.Element("OpenDRIVE")
-    h = doc.header
-    header = _sub(root, "header", revMajor="1", revMinor=str(REV_MINOR[version]), name=h.name, version="1.00")
-    if h.date:
-        header.set("date", h.date)
-    for k in ("north", "south", "east", "west"):
-        header.set(k, fmt(getattr(h, k)))
-    header.set("vendor", h.vendor)
-    for road in doc.roads:
-        _road(root, road)
-    for j in doc.junctions:
-        _junction(root, j)
-    return root
+            out.leaf(3, "laneLink", f' from="{ll.from_lane}" to="{ll.to_lane}"')
+        out.close(2, "connection")
+    out.close(1, "junction")
 
 
 def to_bytes(doc: Document, version: str = "1.8") -> bytes:
-    """The file content: the XML declaration first, UTF-8, indented, deterministic."""
-    tree = to_tree(doc, version)
-    return b'<?xml version="1.0" encoding="UTF-8"?>\n' + etree.tostring(tree, encoding="UTF-8", pretty_print=True)
+    """The file content for OpenDRIVE ``version`` ("1.8" or "1.7"): the XML declaration first, UTF-8, indented two
+    spaces per level, deterministic."""
+    if version not in REV_MINOR:
+        raise JunctionArtError(f"version {version!r}: must be one of {', '.join(REV_MINOR)}")
+    out = _Out()
+    out.lines.append('<?xml version="1.0" encoding="UTF-8"?>')
+    out.open(0, "OpenDRIVE")
+    h = doc.header
+    date = f' date="{_esc(h.date)}"' if h.date else ""
+    bounds = "".join(f' {k}="{fmt(getattr(h, k))}"' for k in ("north", "south", "east", "west"))
+    out.leaf(1, "header", f' revMajor="1" revMinor="{REV_MINOR[version]}" name="{_esc(h.name)}" version="1.00"'
+                          f'{date}{bounds} vendor="{_esc(h.vendor)}"')
+    for road in doc.roads:
+        _road(out, road)
+    for j in doc.junctions:
+        _junction(out, j)
+    out.close(0, "OpenDRIVE")
+    out.lines.append("")
+    return "\n".join(out.lines).encode("utf-8")
 
 
 def _umask() -> int:

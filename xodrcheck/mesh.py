@@ -27,6 +27,10 @@ from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, geometry_of
 from xodrcheck.model import Document, LaneKey, Road
 
+#: Largest coordinate (m) a meshed vertex may have: 25 times the Earth's circumference. Beyond it a lane is damaged
+#: input (a width of 1e308, say), and polygon operations (GEOS) fail on such numbers instead of giving an area.
+MAX_COORDINATE = 1e9
+
 
 @dataclass(frozen=True, eq=False)
 class LaneSurfaces:
@@ -161,7 +165,8 @@ def build_surfaces(
     """Mesh every lane of every road with a plan view (centre lanes have no surface).
 
     ``lane_types`` keeps only lanes of those types (names as the standard spells them; ``None``: all). Lane sections
-    that do not end after they start, and sections whose geometry does not evaluate to finite numbers, are skipped.
+    that do not end after they start, and sections whose geometry does not evaluate to finite numbers or lies beyond
+    :data:`MAX_COORDINATE` (a damaged width or position: other rules report it), are skipped.
     """
     defaults = Tolerances()
     chord = defaults.chord if chord is None else chord
@@ -200,7 +205,7 @@ def build_surfaces(
             curves = rg.border_curves(index, s)
             ids = list(curves)
             rows = np.stack([np.column_stack([curves[i].x, curves[i].y, curves[i].z]) for i in ids])
-            if not np.isfinite(rows).all():
+            if not (np.abs(rows) <= MAX_COORDINATE).all():  # also False for NaN
                 continue
             row_of = {lane_id: k for k, lane_id in enumerate(ids)}
             inner = np.array([row_of[i] for _, i in pairs])

@@ -60,20 +60,26 @@ def crossing(rows: list[LinkFit], skip: set[int]) -> set[int]:
     pa = np.array([pos[x] for x, _ in pairs])
     pb = np.array([pos[y] for _, y in pairs])
     same = np.array([rows[x].lane_in == rows[y].lane_in for x, y in pairs])
-    hit = np.zeros(len(pairs), dtype=bool)
     diff = ~same
-    if diff.any():
-        hit[diff] = shapely.dwithin(lines[pa[diff]], lines[pb[diff]], CLEARANCE)
+    # one dwithin call for every pair: whole paths (different lanes) or their parted tails (one lane)
+    first = np.empty(len(pairs), dtype=object)
+    second = np.empty(len(pairs), dtype=object)
+    gap = np.where(same, TOUCH, CLEARANCE)
+    test = diff.copy()
+    first[diff], second[diff] = lines[pa[diff]], lines[pb[diff]]
     if same.any():
-        # two paths from one lane start together: compare them from where they have parted
+        # two paths from one lane start together: compare them from where they have parted (both ways in one batch)
         sa, sb = pa[same], pb[same]
-        tail_a, ok_a = _parted(xy[sa], xy[sb])
-        tail_b, ok_b = _parted(xy[sb], xy[sa])
-        ok = ok_a & ok_b
-        res = np.zeros(len(sa), dtype=bool)
-        if ok.any():
-            res[ok] = shapely.dwithin(tail_a[ok], tail_b[ok], TOUCH)
-        hit[same] = res
+        k = len(sa)
+        tails, parted = _parted(np.concatenate([xy[sa], xy[sb]]), np.concatenate([xy[sb], xy[sa]]))
+        where = np.flatnonzero(same)
+        first[where], second[where] = tails[:k], tails[k:]
+        test[where] = parted[:k] & parted[k:]
+    hit = np.zeros(len(pairs), dtype=bool)
+    if test.any():
+        a = first[test]
+        shapely.prepare(a)  # an indexed distance: far fewer segment pairs measured than the plain one
+        hit[test] = shapely.dwithin(a, second[test], gap[test])
     return {pairs[k][1] for k in np.flatnonzero(hit)}
 
 
@@ -84,16 +90,14 @@ def _parted(xy: np.ndarray, other: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     n, m, _ = xy.shape
     head = min(m, HEAD)
     seg0, seg1 = other[:, :-1], other[:, 1:]
-    dist = np.full((n, head), np.inf)
     base = np.arange(head)
-    near = xy[:, :head]
-    for off in range(-WINDOW, WINDOW + 1):
-        j = np.minimum(np.maximum(base + off, 0), m - 2)
-        a, b = seg0[:, j], seg1[:, j]
-        ab = b - a
-        t = np.minimum(np.maximum(((near - a) * ab).sum(-1) / np.maximum((ab * ab).sum(-1), 1e-300), 0.0), 1.0)
-        d = a + t[..., None] * ab - near
-        dist = np.minimum(dist, np.hypot(d[..., 0], d[..., 1]))
+    j = np.minimum(np.maximum(base[None, :] + np.arange(-WINDOW, WINDOW + 1)[:, None], 0), m - 2)  # window x head
+    nx, ny = xy[:, None, :head, 0], xy[:, None, :head, 1]
+    ax, ay = seg0[:, j, 0], seg0[:, j, 1]
+    abx, aby = seg1[:, j, 0] - ax, seg1[:, j, 1] - ay
+    t = np.minimum(np.maximum(((nx - ax) * abx + (ny - ay) * aby) / np.maximum(abx * abx + aby * aby, 1e-300), 0.0),
+                   1.0)
+    dist = np.hypot(ax + t * abx - nx, ay + t * aby - ny).min(axis=1)
     far = dist > PARTED
     # not parted within the head: compare from the end of the head (they run together there: a near-touch)
     first = np.where(far.any(axis=1), far.argmax(axis=1), head - 1)

@@ -37,7 +37,7 @@ from ..curves import (
 )
 from ..errors import GenerationError
 from ..graph import Chain, chains
-from ..lanegeom import border_point, inner_offset, lane_id, side_width, taper_length
+from ..lanegeom import border_point, inner_offset, lane_id, min_curve_radius, side_width, taper_length
 from ..lanes import LaneConfig, LanedNetwork
 from ..params import Params, TrafficRule
 from . import links as linkplan
@@ -75,6 +75,7 @@ class Builder:
         self.st = NetworkState(list(net.nodes), {k: (e.u, e.v, laned.lanes[k]) for k, e in enumerate(net.edges)})
         self._fits: dict[tuple[float, float, float], HermiteFit | None] = {}
         self._crossings: dict[tuple, set[int]] = {}
+        self._plans: dict[tuple[linkplan.Leg, ...], linkplan.LinkPlan] = {}
 
     # ---------------------------------------------------------------------------------------------------------------
     # graph helpers
@@ -167,6 +168,18 @@ class Builder:
             if not changed:
                 return
 
+    def _plan(self, L: list[linkplan.Leg]) -> linkplan.LinkPlan:
+        """The lane links of a junction with legs ``L``. A plan that drew nothing new depends on the legs alone (what
+        was drawn for a leg never changes), so it is kept for the next pass."""
+        key = tuple(L)
+        if key in self._plans:
+            return self._plans[key]
+        known = len(self.st.drawn)
+        plan = linkplan.plan(L, self.p, self.rng, self.st.drawn)
+        if len(self.st.drawn) == known:
+            self._plans[key] = plan
+        return plan
+
     def _incident(self, node: int, L: list[linkplan.Leg]) -> list[float]:
         """Distance of each leg's incident point from the control point: the paper's W / sin(d) rule with the legs'
         actual widths, times the node's random factor and growth."""
@@ -189,8 +202,10 @@ class Builder:
         f = self.st.factor[node] * self.st.scale.get(node, 1.0)
         return [x * f for x in r]
 
-    def _road_geometry(self, ch: Chain, r0: float, r1: float, need: float, cfg: LaneConfig):
-        """Geometry of a chain trimmed by r0 / r1, or ("vertex", i) / ("short", None) when it does not fit."""
+    def _road_geometry(self, ch: Chain, r0: float, r1: float, need: float, cfg: LaneConfig,
+                       ends: tuple[tuple[int, int], tuple[int, int]]):
+        """Geometry of a chain trimmed by r0 / r1, or ("vertex", i) / ("short", None) when it does not fit.
+        ``ends``: the (forward, backward) lane counts at its start and end (tapers from ``cfg``'s counts)."""
         P = [self.st.nodes[n] for n in ch.nodes]
         segs = [_unit(a, b) for a, b in itertools.pairwise(P)]
         if any(s[2] < 1e-6 for s in segs):
@@ -199,10 +214,10 @@ class Builder:
         avail = [s[2] for s in segs]
         avail[0] -= r0
         avail[-1] -= r1
-        widest = max(side_width(cfg.forward, cfg.median, self.w, self.mw),
-                     side_width(cfg.backward, cfg.median, self.w, self.mw))
+        mid = (cfg.forward, cfg.backward)
+        widest = max(side_width(n, cfg.median, self.w, self.mw) for n in (*mid, *ends[0], *ends[1]))
         # lane centres on the inside keep 3/4 of the curvature budget; a lane taper on the curve may use the rest
-        r_min = widest + self.p.min_turn_radius * 4.0 / 3.0 + 0.5
+        r_min = min_curve_radius(self.p, widest, ends, mid)
         r_pref = max(r_min, 60.0)
         radii = []
         tangents = []
@@ -383,7 +398,7 @@ class Builder:
         for node in sorted(legs_at):
             keys = sorted(legs_at[node])
             L = [self._leg(chs, k) for k in keys]
-            plan = linkplan.plan(L, self.p, self.rng, self.st.drawn)
+            plan = self._plan(L)
             r = self._incident(node, L)
             plans[node] = (keys, L, plan, r)
             for k, x in zip(keys, r):
@@ -406,7 +421,7 @@ class Builder:
             mid = (cfg.forward, cfg.backward)
             need = MIN_ROAD + taper_length(self.p, (fs, bs), mid) + taper_length(self.p, (fe, be), mid)
             need_of[c] = need
-            status, g = self._road_geometry(ch, r0, r1, need, cfg)
+            status, g = self._road_geometry(ch, r0, r1, need, cfg, ((fs, bs), (fe, be)))
             if status == "vertex":
                 self.st.smooth(ch, g, f"bend at node {ch.nodes[g]} too sharp for its lanes")
             elif status == "short":
@@ -465,7 +480,7 @@ class Builder:
             for c in sorted({k[0] for k in keys}):
                 _, cfg, fs, bs, fe, be = geoms[c]
                 status, g = self._road_geometry(chs[c], r_at.get((c, True), 0.0), r_at.get((c, False), 0.0),
-                                                need_of[c], cfg)
+                                                need_of[c], cfg, ((fs, bs), (fe, be)))
                 if status != "ok":
                     self.st.dirty.update(chs[c].nodes)  # the next pass repairs this road
                     break

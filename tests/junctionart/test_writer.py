@@ -89,3 +89,27 @@ def test_written_numbers_read_back_to_the_model(tmp_path):
         assert float(el.get("length")) == road.length
         for g, ge in zip(road.geometry, el.find("planView")):
             assert (float(ge.get("x")), float(ge.get("y")), float(ge.get("hdg"))) == (g.x, g.y, g.hdg)
+
+
+def test_text_is_escaped_and_reads_back():
+    name = 'A & B <"quoted"> \ttab\nline é'
+    doc = Document(Header(name=name, vendor="x>y"), _tiny().roads, ())
+    root = etree.fromstring(to_bytes(doc), etree.XMLParser(resolve_entities=False, no_network=True))
+    header = root.find("header")
+    assert header.get("name") == name
+    assert header.get("vendor") == "x>y"
+
+
+def test_text_xml_cannot_hold_is_refused(tmp_path):
+    doc = Document(Header(name="bell\x07"), _tiny().roads, ())
+    with pytest.raises(JunctionArtError, match="XML does not allow"):
+        write(doc, tmp_path / "a.xodr")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_text_layout_is_lxmls_pretty_print():
+    """The directly built text is what lxml writes for the same tree (so any XML tool reads the same document)."""
+    data = ja.to_bytes(ja.generate(Params(width=300.0, height=300.0, randomize_lanes=True), 2))
+    tree = etree.fromstring(data, etree.XMLParser(resolve_entities=False, no_network=True, remove_blank_text=True))
+    again = b'<?xml version="1.0" encoding="UTF-8"?>\n' + etree.tostring(tree, encoding="UTF-8", pretty_print=True)
+    assert data == again
