@@ -357,11 +357,16 @@ def _lane_minima(ctx: Context, road: Road, index: int):
             inner = outer
     if not lanes:
         return
-    stacked = np.concatenate(widths)
-    stacked = np.where(np.isfinite(stacked), stacked, 0.0)
+    raw = np.concatenate(widths)
+    stacked = np.where(np.isfinite(raw), raw, 0.0)
     with np.errstate(over="ignore", invalid="ignore"):  # damaged widths near the float limit
         coefficients = _FIT @ stacked.T
-    value, u = _cubic_minimum(coefficients)
+        value, u = _cubic_minimum(coefficients)
+    # Where the cubic fit overflows (widths near the float limit), fall back to the smallest width at the nodes.
+    nodes = np.where(np.isnan(raw), np.inf, raw)
+    lost = ~np.isfinite(value)
+    value = np.where(lost, nodes.min(axis=1), value)
+    u = np.where(lost, _NODES[np.argmin(nodes, axis=1)], u)
     value, u = value.reshape(len(lanes), -1), u.reshape(len(lanes), -1)
     for row, lane in enumerate(lanes):
         k = int(np.argmin(value[row]))

@@ -166,3 +166,22 @@ def test_bad_configuration_file_is_a_usage_error(capsys, text):
     Path("xodrcheck.toml").write_text(text, encoding="utf-8")
     code, out, err = run(capsys, CLEAN)
     assert code == 2 and out == "" and err.startswith("xodrcheck: check:") and "Traceback" not in err
+
+
+def test_damaged_numbers_give_findings_not_numpy_warnings(tmp_path):
+    """Widths near the float limit overflow inside the geometry; the user sees findings, not RuntimeWarnings."""
+    import subprocess
+    import sys
+
+    path = tmp_path / "huge.xodr"
+    path.write_text(
+        '<?xml version="1.0" encoding="UTF-8"?>\n<OpenDRIVE><header revMajor="1" revMinor="7"/>'
+        '<road id="1" length="50" junction="-1"><planView><geometry s="0" x="0" y="0" hdg="0" length="50">'
+        '<arc curvature="0.05"/></geometry></planView><lanes><laneSection s="0"><center><lane id="0" type="none"/>'
+        '</center><right><lane id="-1" type="driving"><width sOffset="0" a="-1e308" b="0" c="0" d="0"/></lane>'
+        "</right></laneSection></lanes></road></OpenDRIVE>\n"
+    )
+    done = subprocess.run([sys.executable, "-m", "xodrcheck", "check", str(path)], capture_output=True, text=True)
+    assert done.returncode == 1
+    assert "G010" in done.stdout
+    assert "Warning" not in done.stderr and "Traceback" not in done.stderr
