@@ -9,9 +9,8 @@ import argparse
 import json
 
 from xodrcheck.cli._common import error, guarded
-from xodrcheck.config import ConfigError, load_config
-from xodrcheck.findings import ReadError
-from xodrcheck.snapshot import Snapshot, SnapshotError, differences, snapshot_of
+from xodrcheck.cli.snapshot import config_or_error, snapshot_or_error
+from xodrcheck.snapshot import Snapshot, SnapshotError, differences
 
 NAME = "diff"
 HELP = "Compare a map with its snapshot (from 'xodrcheck snapshot'): print what changed, exit 1 if anything did."
@@ -33,10 +32,8 @@ def load(path: str) -> Snapshot:
 
 
 def run(args: argparse.Namespace) -> int:
-    try:
-        config = load_config()
-    except (OSError, ValueError, ConfigError) as exc:
-        error(f"configuration: {exc}")
+    config = config_or_error()
+    if config is None:
         return 2
     try:
         old = load(args.snapshot)
@@ -45,10 +42,8 @@ def run(args: argparse.Namespace) -> int:
         return 2
 
     def one() -> int:
-        try:
-            new = snapshot_of(args.file, config)
-        except (ReadError, ValueError) as exc:
-            error(f"cannot snapshot {args.file}: {exc}")
+        new = snapshot_or_error(args.file, config)
+        if new is None:
             return 2
         lines = list(differences(old, new, config.tolerances))
         for line in lines:

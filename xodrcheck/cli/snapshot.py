@@ -8,9 +8,9 @@ import argparse
 import json
 
 from xodrcheck.cli._common import error, guarded, output
-from xodrcheck.config import ConfigError, load_config
+from xodrcheck.config import Config, ConfigError, load_config
 from xodrcheck.findings import ReadError
-from xodrcheck.snapshot import snapshot_of
+from xodrcheck.snapshot import Snapshot, snapshot_of
 
 NAME = "snapshot"
 HELP = ("Write the invariants of a map as JSON: counts of roads, junctions and lanes, legs, lane length, lane graph "
@@ -27,18 +27,32 @@ def dumps(data: dict) -> str:
     return json.dumps(data, indent=1, sort_keys=True) + "\n"
 
 
-def run(args: argparse.Namespace) -> int:
+def snapshot_or_error(path: str, config: Config) -> Snapshot | None:
+    """The snapshot of the map at ``path``, or ``None`` after one error line when it cannot be taken."""
     try:
-        config = load_config()
+        return snapshot_of(path, config)
+    except (ReadError, ValueError) as exc:
+        error(f"cannot snapshot {path}: {exc}")
+        return None
+
+
+def config_or_error() -> Config | None:
+    """The project configuration, or ``None`` after one error line when it cannot be read."""
+    try:
+        return load_config()
     except (OSError, ValueError, ConfigError) as exc:
         error(f"configuration: {exc}")
+        return None
+
+
+def run(args: argparse.Namespace) -> int:
+    config = config_or_error()
+    if config is None:
         return 2
 
     def one() -> int:
-        try:
-            snap = snapshot_of(args.file, config)
-        except (ReadError, ValueError) as exc:
-            error(f"cannot snapshot {args.file}: {exc}")
+        snap = snapshot_or_error(args.file, config)
+        if snap is None:
             return 2
         try:
             with output(args.output) as stream:

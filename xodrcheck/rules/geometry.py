@@ -54,6 +54,11 @@ def _end_of(g: Geometry):
     return float(pose.x[0]), float(pose.y[0]), float(pose.hdg[0])
 
 
+def _at(road: Road, element) -> dict:
+    """Where a finding about plan-view element ``element`` of ``road`` points: its start s, x, y and line."""
+    return {"road": road.id, "s": element.s, "x": element.x, "y": element.y, "line": element.line or road.line or None}
+
+
 @rule("G001", "plan-view-gap", Category.GEOMETRY, Severity.ERROR)
 def plan_view_gap(ctx: Context):
     """A plan-view element does not start where the previous one ends: the reference line has a gap.
@@ -81,11 +86,7 @@ def plan_view_gap(ctx: Context):
                     f"road {road.id}: the {_kind(a)} at s={a.s:g} ends at ({x:.4f}, {y:.4f}) but the next element "
                     f"starts at ({b.x:.4f}, {b.y:.4f}), a gap of {gap:.4g} m; correct the x/y of the element at "
                     f"s={b.s:g} or the previous element's parameters",
-                    road=road.id,
-                    s=b.s,
-                    x=b.x,
-                    y=b.y,
-                    line=b.line or road.line or None,
+                    **_at(road, b),
                 )
 
 
@@ -116,11 +117,7 @@ def plan_view_kink(ctx: Context):
                     f"road {road.id}: the {_kind(a)} at s={a.s:g} ends with heading {hdg:.5f} rad but the next "
                     f"element starts with hdg={b.hdg:.5f}, a kink of {math.degrees(kink):.3g} deg; make the headings "
                     f"agree",
-                    road=road.id,
-                    s=b.s,
-                    x=b.x,
-                    y=b.y,
-                    line=b.line or road.line or None,
+                    **_at(road, b),
                 )
 
 
@@ -148,11 +145,7 @@ def plan_view_s_jump(ctx: Context):
             first = elements[0]
             yield plan_view_s_jump.finding(
                 f"road {road.id}: the plan view starts at s={first.s:g}, not at s=0",
-                road=road.id,
-                s=first.s,
-                x=first.x,
-                y=first.y,
-                line=first.line or road.line or None,
+                **_at(road, first),
             )
         for a, b in _pairs(road):
             expected = a.s + a.length
@@ -161,11 +154,7 @@ def plan_view_s_jump(ctx: Context):
                     f"road {road.id}: the element at s={b.s:g} follows a {_kind(a)} at s={a.s:g} of length "
                     f"{a.length:g}, so it should start at s={expected:.6g} ({'overlap' if b.s < expected else 'gap'} "
                     f"of {abs(b.s - expected):.4g} m in s)",
-                    road=road.id,
-                    s=b.s,
-                    x=b.x,
-                    y=b.y,
-                    line=b.line or road.line or None,
+                    **_at(road, b),
                 )
 
 
@@ -235,11 +224,7 @@ def parampoly3_length_mismatch(ctx: Context):
                     f"road {road.id}: the paramPoly3 at s={g.s:g} is declared {g.length:.6g} m long but its curve "
                     f"over p in {p_range} ({g.p_range.value}) is {actual:.6g} m long (difference "
                     f"{actual - g.length:+.4g} m); fix @length or the coefficients",
-                    road=road.id,
-                    s=g.s,
-                    x=g.x,
-                    y=g.y,
-                    line=g.line or road.line or None,
+                    **_at(road, g),
                 )
 
 
@@ -300,11 +285,7 @@ def spiral_constant_curvature(ctx: Context):
                 yield spiral_constant_curvature.finding(
                     f"road {road.id}: the spiral at s={g.s:g} has curvStart = curvEnd = {g.curv_start:g}; write "
                     f"{shape} instead",
-                    road=road.id,
-                    s=g.s,
-                    x=g.x,
-                    y=g.y,
-                    line=g.line or road.line or None,
+                    **_at(road, g),
                 )
 
 
