@@ -154,6 +154,7 @@ def _params(draw, min_size, max_size, many_lanes):
         curve_probability=draw(st.floats(0.0, 1.0)),
         turn_lane_probability=draw(st.floats(0.0, 1.0)),
         min_turn_radius=draw(st.floats(3.0, 15.0)),
+        min_leg_angle=draw(st.floats(0.0, 50.0)),
         taper_length=draw(st.floats(10.0, 60.0)),
         version=draw(st.sampled_from(("1.8", "1.7"))),
     )
@@ -210,6 +211,7 @@ def invalid_generator_params(draw) -> tuple[dict, str]:
         ("lane_width", st.sampled_from((math.nan, 0.0, -3.5, 1.0, 100.0))),
         ("median_probability", st.sampled_from((-0.1, 1.5, math.nan))),
         ("min_turn_radius", st.sampled_from((0.0, -5.0, math.inf))),
+        ("min_leg_angle", st.sampled_from((-1.0, 90.0, math.nan))),
         ("line_spacing", st.sampled_from(((10.0, 20.0), (200.0, 100.0), (math.nan, 100.0)))),
         ("lane_distribution_side", st.sampled_from(((0.5, 0.5, 0.5, 0.5), (1.0, 0.0, 0.0, 0.0), (0.2, 0.8)))),
         ("n_lines", st.sampled_from((0, 1, -3, 10**6))),

@@ -81,6 +81,8 @@ OPTIONS = [
     ("--u-turn-probability", "u_turn_probability", float,
      "chance of a U-turn lane on a leg wide enough for one within the radius bound"),
     ("--min-turn-radius", "min_turn_radius", float, "smallest radius of any lane centre line (m)"),
+    ("--min-leg-angle", "min_leg_angle", float,
+     "legs of a junction closer than this (degrees) lose a road where the map stays connected (0: keep all)"),
     ("--taper-length", "taper_length", float, "length of lane splits and merges (m)"),
 ]
 

@@ -77,6 +77,9 @@ class Params:
     #: several outgoing lanes)
     u_turn_probability: float = 0.3
     min_turn_radius: float = 5.0  #: smallest radius of any reference line or lane centre line written
+    #: legs of one intersection closer than this angle (degrees) lose one of their roads where the map stays
+    #: connected without it (0: keep every leg)
+    min_leg_angle: float = 20.0
     taper_length: float = 25.0  #: length of a lane split / merge
     version: str = "1.8"  #: OpenDRIVE version written: "1.8" or "1.7"
 
@@ -219,6 +222,7 @@ def validate(p: Params) -> None:
     _range("turn_lane_probability", p.turn_lane_probability, 0.0, 1.0)
     _range("u_turn_probability", p.u_turn_probability, 0.0, 1.0)
     _range("min_turn_radius", p.min_turn_radius, 1.0, 50.0)
+    _range("min_leg_angle", p.min_leg_angle, 0.0, 50.0)
     _range("taper_length", p.taper_length, 5.0, 200.0)
     if p.version not in VERSIONS:
         raise ParamsError(f"version={p.version!r}: must be one of {', '.join(VERSIONS)}")

@@ -48,8 +48,8 @@ from .overlap import overlaps
 from .state import NetworkState
 
 MAX_LEGS = 7
-MAX_GROWTH = 6
-GROWTH = 1.3
+MAX_GROWTH = 10
+GROWTH = 1.15
 MIN_ROAD = 5.0  #: shortest road written between two junctions
 MARGIN = 1.0  #: clearance between the stubs of neighbouring legs
 SCALES = np.linspace(0.2, 1.4, 17)  #: Hermite tangent lengths tried, in chords
@@ -139,6 +139,39 @@ class Builder:
         node, edge = (ch.nodes[0], ch.edges[0]) if at_start else (ch.nodes[-1], ch.edges[-1])
         return linkplan.Leg((node, edge), math.atan2(b[1] - a[1], b[0] - a[0]), n_in, n_out, cfg.median)
 
+    def _acute_legs(self, chs: list[Chain], legs_at: dict[int, list[tuple[int, bool]]]) -> None:
+        """Two legs closer than ``min_leg_angle`` need a junction several times larger than a square one (their
+        stubs only part far from the control point): one of them is removed where the map stays connected without
+        it, as engineers realign skewed approaches. Where both are needed, the junction is built as drawn."""
+        limit = math.radians(self.p.min_leg_angle)
+        for node in sorted(legs_at):
+            keys = legs_at[node]
+            if self.st.touched([node]) or limit <= 0:
+                continue
+            L = [self._leg(chs, k) for k in keys]
+            order = sorted(range(len(L)), key=lambda i: L[i].angle)
+            pairs = sorted(((L[b].angle - L[a].angle) % (2 * math.pi), a, b) for a, b in zip(order, order[1:] + order[:1]))
+            for gap, a, b in pairs:
+                if gap >= limit:
+                    break
+                # the leg with fewer lanes goes first; a leg whose road is needed for connectivity stays
+                cands = sorted((a, b), key=lambda i: (L[i].n_in + L[i].n_out, i))
+                edges = [chs[keys[i][0]].edges[0] if keys[i][1] else chs[keys[i][0]].edges[-1] for i in cands]
+                edges = [e for e in edges if e in self.st.edges]
+                # the whole road goes (no dead-end stub left by the junction), but only the leg's edge of a loop
+                chain_of = {e: {e} if chs[keys[i][0]].start == chs[keys[i][0]].end else set(chs[keys[i][0]].edges)
+                            for i, e in zip(cands, edges)}
+                for e in edges:
+                    if self.st.connected_without(chain_of[e]):
+                        for x in sorted(chain_of[e]):
+                            if x in self.st.edges:
+                                self.st.remove_edge(x, f"node {node}: removed a road whose leg was "
+                                                       f"{math.degrees(gap):.0f} deg from its neighbour")
+                        break
+                else:
+                    continue
+                break
+
     def _fix_exits(self, chs: list[Chain], legs: dict[int, list[tuple[int, bool]]]) -> None:
         """Every leg with lanes in has another leg with lanes out, and the other way round (opening one-way roads)."""
         for _ in range(10 * len(chs) + 10):
@@ -180,21 +213,24 @@ class Builder:
             self._plans[key] = plan
         return plan
 
-    def _incident(self, node: int, L: list[linkplan.Leg]) -> list[float]:
+    def _incident(self, node: int, L: list[linkplan.Leg], plan: linkplan.LinkPlan) -> list[float]:
         """Distance of each leg's incident point from the control point: the paper's W / sin(d) rule with the legs'
-        actual widths, times the node's random factor and growth."""
+        actual widths, room for a turn between neighbouring legs that ``plan`` links, times the node's random factor
+        and growth. Neighbours at a sharp angle that no lane links need only keep their stubs apart."""
         if node not in self.st.factor:
             self.st.factor[node] = float(self.rng.uniform(1.0, 1.2))
         order = sorted(range(len(L)), key=lambda i: L[i].angle)
-        half = [max(side_width(l.n_in, l.median, self.w, self.mw), side_width(l.n_out, l.median, self.w, self.mw))
-                for l in L]
+        # lanes at the junction: a turn lane added before it widens the incoming side
+        half = [max(side_width(max(l.n_in, plan.n_in_end[i]), l.median, self.w, self.mw),
+                    side_width(l.n_out, l.median, self.w, self.mw)) for i, l in enumerate(L)]
         r = [h + self.p.min_turn_radius + 2.0 for h in half]
         turn_r = self.p.min_turn_radius + 1.0 + self.w / 2
+        linked = {frozenset((i, j)) for i, _, j, _ in plan.links}
         for a, b in zip(order, order[1:] + order[:1]):
             d = (L[b].angle - L[a].angle) % (2 * math.pi)
             W = half[a] + half[b] + MARGIN
             need = W / max(math.sin(d), 1e-3) if d < math.pi / 2 else W
-            if d < math.pi:
+            if d < math.pi and frozenset((a, b)) in linked:
                 # a kerb-side turn through the wedge: tangent points of a circle of radius turn_r fitted between
                 # the two legs' outer lanes lie (offset + radius) / tan(d / 2) from the control point
                 need = max(need, (max(half[a], half[b]) + turn_r) / max(math.tan(d / 2), 1e-3))
@@ -256,12 +292,13 @@ class Builder:
         intersections than removing the road); otherwise the road is removed if the map stays connected."""
         return ch.start != ch.end and deg[ch.start] + deg[ch.end] - 2 <= MAX_LEGS
 
-    def _overlap_repair(self, chs: list[Chain], geoms: list, plans: dict) -> None:
-        """Roads and junction areas may only touch where the map connects them; otherwise a road is removed
-        (one whose removal keeps the map connected when there is one)."""
+    def _overlap_repair(self, chs: list[Chain], geoms: list, plans: dict, jplans: list[JunctionPlan]) -> None:
+        """Roads and junction areas (with every connection lane) may only touch where the map connects them;
+        otherwise a road is removed (one whose removal keeps the map connected when there is one)."""
         ends = {node: [(geoms[c][0], geoms[c][1], at_start) for c, at_start in keys]
                 for node, (keys, *_rest) in plans.items()}
-        for cands in overlaps(chs, [(g[0], g[1]) for g in geoms], ends, self.p):
+        lanes = {jp.node: [c.geometry for c in jp.connections] for jp in jplans}
+        for cands in overlaps(chs, [(g[0], g[1]) for g in geoms], ends, lanes, self.p):
             if any(self.st.touched(chs[c].nodes) for c in cands):
                 continue
             for c in cands:
@@ -392,6 +429,9 @@ class Builder:
                 self._drop_leg(node, keys, chs, prefer, f"node {node}: dropped a leg ({len(keys)} legs, at most 7)")
         if self.st.dirty:
             raise _Repair
+        self._acute_legs(chs, legs_at)
+        if self.st.dirty:
+            raise _Repair
         self._fix_exits(chs, legs_at)
         plans: dict[int, tuple[list[tuple[int, bool]], list[linkplan.Leg], linkplan.LinkPlan, list[float]]] = {}
         r_at: dict[tuple[int, bool], float] = {}
@@ -399,7 +439,7 @@ class Builder:
             keys = sorted(legs_at[node])
             L = [self._leg(chs, k) for k in keys]
             plan = self._plan(L)
-            r = self._incident(node, L)
+            r = self._incident(node, L, plan)
             plans[node] = (keys, L, plan, r)
             for k, x in zip(keys, r):
                 r_at[k] = x
@@ -474,7 +514,7 @@ class Builder:
                 continue
             self.st.scale[node] = self.st.scale.get(node, 1.0) * GROWTH
             self.st.repairs.append(f"node {node}: moved incident points outward (turn radius)")
-            for k, x in zip(keys, self._incident(node, L)):
+            for k, x in zip(keys, self._incident(node, L, plans[node][2])):
                 r_at[k] = x
             rebuilt = []
             for c in sorted({k[0] for k in keys}):
@@ -508,7 +548,7 @@ class Builder:
                                             lid_out, connection_geometry(p0[0], p0[1], h0, fit), fit.min_radius))
             conns.extend(self._u_turns(node, keys, plans[node][2], geoms, fits))
             jplans.append(JunctionPlan(node, self.st.nodes[node], len(keys), tuple(conns)))
-        self._overlap_repair(chs, geoms, plans)
+        self._overlap_repair(chs, geoms, plans, jplans)
         if self.st.dirty:
             raise _Repair
         roads = []

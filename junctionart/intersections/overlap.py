@@ -22,11 +22,13 @@ def _pose(g: tuple[Geometry, ...], at_start: bool) -> tuple[float, float, float]
 
 def overlaps(chs: list[Chain], roads: list[tuple[tuple[Geometry, ...], LaneConfig]],
              junctions: dict[int, list[tuple[tuple[Geometry, ...], LaneConfig, bool]]],
-             p: Params) -> list[list[int]]:
+             connections: dict[int, list[Geometry]], p: Params) -> list[list[int]]:
     """For each overlap, the chains (roads) whose removal would end it, in order of preference.
 
     Roads are their reference lines buffered by their wider side; a junction is the convex hull of its legs' end
-    cross-sections. Roads sharing an end node, and a junction with its own legs, may touch.
+    cross-sections together with the body of each of its connection lanes (``connections``: their reference lines,
+    the lane lying on the traffic side), since a wide turn can leave the hull. Roads sharing an end node, and a
+    junction with its own legs, may touch.
     """
     w, mw = p.lane_width, p.median_width
     shapes, owners = [], []
@@ -44,7 +46,12 @@ def overlaps(chs: list[Chain], roads: list[tuple[tuple[Geometry, ...], LaneConfi
             right = side_width(cfg.forward if rht else cfg.backward, False, w, mw)
             corners.append(border_point(*pose, left))
             corners.append(border_point(*pose, -right))
-        shapes.append(shapely.MultiPoint(corners).convex_hull.buffer(-0.5))
+        side = -w if rht else w  # connection lanes are -1 (RHT) or 1 (LHT): right or left of their reference line
+        bodies = [shapely.MultiPoint(corners).convex_hull]
+        for g in connections.get(node, ()):
+            pts = sample(g, max(2, int(g.length / 2.0) + 2))
+            bodies.append(shapely.buffer(shapely.LineString(pts), side, single_sided=True, cap_style="flat"))
+        shapes.append(shapely.union_all(bodies).buffer(-0.5))
         owners.append(("junction", node))
     tree = shapely.STRtree(shapes)
     left_i, right_i = tree.query(shapes, predicate="intersects")

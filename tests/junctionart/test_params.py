@@ -24,6 +24,8 @@ def test_defaults_are_the_originals():
         ({"lane_distribution_control_lines": (0.5, 0.5)}, ["4 probabilities"]),
         ({"median_probability": 1.5}, ["median_probability=1.5", "[0, 1]"]),
         ({"min_turn_radius": 0.1}, ["min_turn_radius=0.1", "[1, 50]"]),
+        ({"min_leg_angle": 60.0}, ["min_leg_angle=60.0", "[0, 50]"]),
+        ({"min_leg_angle": float("nan")}, ["min_leg_angle=nan"]),
         ({"version": "1.4"}, ["version='1.4'", "1.8, 1.7"]),
         ({"n_lines": 1}, ["n_lines=1", "[2, 1000]"]),
         ({"line_spacing": (10.0, 20.0)}, ["line_spacing", "40 m"]),
