@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from xodrcheck.config import Config, ConfigError
-from xodrcheck.findings import Finding, Severity
+from xodrcheck.findings import Finding, OutOfTime, Severity
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.internal import RULE_CRASHED, RULE_OUT_OF_TIME
@@ -118,6 +118,13 @@ def _run_rule(rule: Rule, ctx: Context) -> list[Finding]:
     try:
         for finding in rule.check(ctx):  # type: ignore[misc]
             out.append(finding)  # noqa: PERF402 - one by one, so what came before a crash is kept
+    except OutOfTime as exc:
+        out.append(
+            RULE_OUT_OF_TIME.finding(
+                f"rule {rule.code} {rule.name} stopped ({exc}): time budget spent; {len(out)} finding(s) it gave "
+                f"before are kept"
+            )
+        )
     except Exception as exc:  # noqa: BLE001 - a rule's bug must not stop the check; it becomes a finding
         out.append(
             RULE_CRASHED.finding(

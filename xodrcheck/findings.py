@@ -67,3 +67,8 @@ class XodrError(Exception):
 
 class ReadError(XodrError):
     """The input cannot be read at all (missing file, not a file, too large to be an OpenDRIVE file)."""
+
+
+class OutOfTime(XodrError):
+    """A long computation stopped because the check's time budget (tolerance ``time_budget``) was spent; the
+    argument says what was being done."""

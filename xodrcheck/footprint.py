@@ -12,17 +12,20 @@ the point, or the nearest one for points on a border).
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
 import shapely
 
+from xodrcheck.findings import OutOfTime
 from xodrcheck.mesh import LaneSurfaces, cached_per_chord, surfaces_of
 from xodrcheck.model import DRIVABLE_LANE_TYPES, Document, ElementType, LaneKey
 
 DRIVABLE_TYPE_NAMES = frozenset(t.value for t in DRIVABLE_LANE_TYPES)
+#: Triangles united in one GEOS call when a lane strip's outline is not a simple polygon.
+_UNION_BLOCK = 256
 #: Most points of an overlap polygon's outline sampled for heights (plus its representative point).
 _HEIGHT_POINTS = 24
 
@@ -30,8 +33,9 @@ _HEIGHT_POINTS = 24
 class Footprints:
     """Lane footprints of one document with a spatial index (build with :func:`footprints_of`)."""
 
-    def __init__(self, surfaces: LaneSurfaces):
+    def __init__(self, surfaces: LaneSurfaces, out_of_time: Callable[[], bool] | None = None):
         self.surfaces = surfaces
+        self._out_of_time = out_of_time
         order, owner = surfaces.outline_order()
         xy = surfaces.vertices[:, :2]
         if len(surfaces):
@@ -55,10 +59,24 @@ class Footprints:
         return s.vertices[faces][..., :2]
 
     def _triangle_union(self, lane: int):
+        """Union of a lane strip's triangles, in blocks of :data:`_UNION_BLOCK` merged pairwise, so that a strip
+        winding over itself thousands of times (a damaged 1e9 m spiral) can be stopped between two GEOS calls when the
+        time budget is spent (:class:`OutOfTime`)."""
         tris = self.triangles(lane)
         polys = shapely.polygons(np.concatenate([tris, tris[:, :1]], axis=1))
-        area = shapely.area(polys)
-        return shapely.union_all(polys[area > 0])
+        polys = polys[shapely.area(polys) > 0]
+        parts = []
+        for k in range(0, len(polys), _UNION_BLOCK):
+            self._check_time()
+            parts.append(shapely.union_all(polys[k : k + _UNION_BLOCK]))
+        while len(parts) > 1:
+            self._check_time()
+            parts = [shapely.union_all(parts[k : k + 2]) for k in range(0, len(parts), 2)]
+        return parts[0] if parts else shapely.Polygon()
+
+    def _check_time(self) -> None:
+        if self._out_of_time is not None and self._out_of_time():
+            raise OutOfTime("building lane footprints")
 
     def self_overlap(self, lane: int) -> float:
         """Plan-view area a lane strip covers more than once (its triangles' areas minus the area of their union)."""
@@ -175,9 +193,10 @@ class Relations:
 class OverlapIndex:
     """Footprints plus the road relations of one document."""
 
-    def __init__(self, document: Document, chord: float | None = None):
+    def __init__(self, document: Document, chord: float | None = None,
+                 out_of_time: Callable[[], bool] | None = None):
         self.document = document
-        self.footprints = Footprints(surfaces_of(document, chord))
+        self.footprints = Footprints(surfaces_of(document, chord), out_of_time)
         self.relations = Relations(document)
 
     @property
@@ -242,9 +261,11 @@ class OverlapIndex:
 _CACHE: dict[tuple[int, float], OverlapIndex] = {}
 
 
-def overlap_index(document: Document, chord: float | None = None) -> OverlapIndex:
-    """:class:`OverlapIndex` of a document, cached for its lifetime (per chord)."""
-    return cached_per_chord(_CACHE, document, chord, OverlapIndex)
+def overlap_index(document: Document, chord: float | None = None,
+                  out_of_time: Callable[[], bool] | None = None) -> OverlapIndex:
+    """:class:`OverlapIndex` of a document, cached for its lifetime (per chord). ``out_of_time`` is polled while the
+    footprints are built; when it says so, :class:`OutOfTime` is raised and nothing is cached."""
+    return cached_per_chord(_CACHE, document, chord, lambda d, c: OverlapIndex(d, c, out_of_time))
 
 
 # ------------------------------------------------------------------------------------------------------ metrics

@@ -148,3 +148,33 @@ def test_finding_fields_follow_the_rule():
     rule = load_rules()["R010"]
     assert isinstance(f, Finding)
     assert (f.name, f.category, f.severity) == (rule.name, Category.REFERENCE, rule.severity)
+
+
+def test_footprint_union_stops_when_out_of_time():
+    """A lane strip that folds over itself is united triangle block by triangle block; the time check between GEOS
+    calls stops it (what makes a damaged 1e9 m spiral end near the budget instead of minutes past it)."""
+    from xodrcheck.findings import OutOfTime
+    from xodrcheck.footprint import OverlapIndex
+    from xodrcheck.reader import read
+
+    document = read(fixture("lane-fold", "fail.xodr")).document
+    assert len(OverlapIndex(document).footprints.invalid) > 0  # the fold is united from triangles
+    with pytest.raises(OutOfTime, match="footprints"):
+        OverlapIndex(document, out_of_time=lambda: True)
+
+
+def test_rule_stopped_by_the_budget_keeps_a_warning_not_a_crash(monkeypatch):
+    """A rule interrupted part way (here: the overlap index while it unites a folded strip) reports X901 'stopped'."""
+    import xodrcheck.rules.context as context
+
+    calls = {"n": 0}
+
+    def out_of_time(self):
+        calls["n"] += 1
+        return calls["n"] > 1  # in time for the engine's check before O001, spent inside it
+
+    monkeypatch.setattr(context.Context, "out_of_time", out_of_time)
+    report = check(fixture("lane-fold", "fail.xodr"), select=("O001",))
+    (stopped,) = [f for f in report.findings if f.code == "X901"]
+    assert "O001 road-overlap stopped (building lane footprints)" in stopped.message
+    assert "X900" not in codes(report)

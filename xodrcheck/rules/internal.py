@@ -26,7 +26,8 @@ RULE_OUT_OF_TIME = declare(
     "rule-out-of-time",
     Category.XML,
     Severity.WARNING,
-    """A rule was not run because the file's time budget (tolerance ``time_budget``) was spent.
+    """A rule was not run, or was stopped part way, because the file's time budget (tolerance ``time_budget``) was
+    spent. A stopped rule keeps the findings it gave before.
 
     Raise ``time_budget`` (``--tolerance time_budget=600``) to check large maps completely.
 

@@ -40,7 +40,7 @@ def _pairs(ctx: Context, drivable: bool) -> dict[tuple[str, str], _Pair]:
     if drivable in cache:
         return cache[drivable]
     tol = ctx.tolerances
-    index = overlap_index(ctx.document, tol.chord)
+    index = overlap_index(ctx.document, tol.chord, ctx.out_of_time)
     surfaces = index.surfaces
     both: dict[bool, dict[tuple[str, str], _Pair]] = {True: defaultdict(_Pair), False: defaultdict(_Pair)}
     for o in index.overlaps(tol.overlap_area, tol.clearance, ctx.out_of_time):
@@ -70,7 +70,7 @@ def _message(ctx: Context, roads: tuple[str, str], area: float, lanes: list[tupl
 
 
 def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: str) -> Iterator:
-    surfaces = overlap_index(ctx.document, ctx.tolerances.chord).surfaces
+    surfaces = overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time).surfaces
     for roads, pair in sorted(_pairs(ctx, drivable).items()):
         members = [ctx.road(r) is not None and ctx.road(r).junction is not None for r in roads]
         if junction is not None and any(members) is not junction:
@@ -132,7 +132,7 @@ def lane_fold(ctx: Context):
 
         <geometry ... length="6"><arc curvature="-0.5"/></geometry> ... <lane id="-1"><width a="3.5" .../>
     """
-    index = overlap_index(ctx.document, ctx.tolerances.chord)
+    index = overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time)
     surfaces, footprints = index.surfaces, index.footprints
     for lane in footprints.invalid:
         if ctx.out_of_time():
