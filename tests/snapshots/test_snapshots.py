@@ -2,8 +2,9 @@
 
 Golden snapshots of corpus maps live in ``tests/snapshots/corpus/`` (refresh them with
 ``pytest tests/snapshots --xodr-snapshot-update`` after a deliberate change of the reader or the rules, and read the
-diff in review). The generator's output is still changing, so its seeds are checked for determinism here (the same
-seed gives the same snapshot); golden snapshots of generator seeds belong here once its output is settled.
+diff in review). Golden snapshots of generator seeds live in ``tests/snapshots/generator/``: any change in the
+generator's output shows up there as a readable diff (refresh them the same way after a deliberate change, and say in
+the commit what changed). Seeds are also checked for determinism (the same seed gives the same bytes and snapshot).
 """
 
 from __future__ import annotations
@@ -126,6 +127,26 @@ def test_corpus_maps_match_their_golden_snapshots(name, xodr_snapshot):
     if not path.is_file():
         pytest.skip(f"corpus not available at {corpus_root()}")
     xodr_snapshot(path, snapshot=HERE / "corpus" / f"{name}.json")
+
+
+#: name -> (Params keywords, seed) of the generator's golden maps: small and large, both lane modes, LHT, 1.7, curves
+GENERATOR_GOLDEN = {
+    "two_lane_500m_seed1": ({"width": 500, "height": 500}, 1),
+    "two_lane_500m_seed7": ({"width": 500, "height": 500}, 7),
+    "two_lane_500m_seed42": ({"width": 500, "height": 500}, 42),
+    "random_lane_1km_seed3": ({"width": 1000, "height": 1000, "randomize_lanes": True}, 3),
+    "random_lane_lht_curved_seed5": ({"width": 700, "height": 700, "randomize_lanes": True, "traffic_rule": "LHT",
+                                      "curved_roads": True}, 5),
+    "two_lane_v17_seed11": ({"width": 500, "height": 500, "version": "1.7"}, 11),
+}
+
+
+@pytest.mark.parametrize("name", sorted(GENERATOR_GOLDEN))
+def test_generator_seeds_match_their_golden_snapshots(name, xodr_snapshot):
+    kwargs, seed = GENERATOR_GOLDEN[name]
+    params = ja.Params.create(**kwargs)
+    data = ja.to_bytes(ja.generate(params, seed), params.version)
+    xodr_snapshot(data, snapshot=HERE / "generator" / f"{name}.json")
 
 
 @pytest.mark.parametrize("seed", [1, 7, 42])
