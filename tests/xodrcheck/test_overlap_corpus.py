@@ -47,7 +47,7 @@ EXPECTED: dict[str, set[tuple[str, str, str]]] = {
         ("O003", "288", "83"),
     },
     # Shoulders of roads 7/21 and 25/67 cross at the outer corners of two T-shaped meetings (0.7 and 2.0 m2, z = 0).
-    "carla-towns/OpenDrive/Town06.xodr": {("O004", "21", "7"), ("O004", "25", "67")},
+    "carla-towns/OpenDrive/Town06.xodr": {("O004", "7", "21"), ("O004", "25", "67")},
     # Town07's dead-end side roads (farm entrances) stop on the main roads without a link: road 30 ends 2 m into
     # junction 780 (over connecting road 787) and its sidewalk corners overlap driving lane -1 of roads 28 and 29;
     # road 54 likewise over connecting road 779 and roads 27/28; road 48's end lies on connecting road 444 of
@@ -77,7 +77,7 @@ EXPECTED: dict[str, set[tuple[str, str, str]]] = {
         ("O001", a, b)
         for first in range(0, 24, 3)
         for a, b in ((first, first + 1), (first, first + 2), (first + 1, first + 2))
-        for a, b in [tuple(sorted((str(a), str(b))))]
+        for a, b in [(str(a), str(b))]  # named in file order (roads 0, 1, 2, ... there)
     },
     # Road 0 (z = 3 m) overhangs road 1 (z = 0) by 3 m: 10.5 m2 of lane -1 with only 3 m of clearance.
     "esmini/EnvironmentSimulator/Unittest/xodr/two_roads_overhang.xodr": {("O001", "0", "1")},

@@ -43,11 +43,13 @@ def _pairs(ctx: Context, drivable: bool) -> dict[tuple[str, str], _Pair]:
     index = overlap_index(ctx.document, tol.chord, ctx.out_of_time)
     surfaces = index.surfaces
     both: dict[bool, dict[tuple[str, str], _Pair]] = {True: defaultdict(_Pair), False: defaultdict(_Pair)}
+    # a pair is named in file order, not id order, so that renaming roads changes nothing but the names
+    order = {road.id: n for n, road in reversed(list(enumerate(ctx.document.roads)))}
     for o in index.overlaps(tol.overlap_area, tol.clearance, ctx.out_of_time):
         a, b = surfaces.lanes[o.lane_a], surfaces.lanes[o.lane_b]
         types = surfaces.lane_types
         kind = types[o.lane_a] in DRIVABLE_TYPE_NAMES or types[o.lane_b] in DRIVABLE_TYPE_NAMES
-        if (a.road, a.lane) > (b.road, b.lane):
+        if (order.get(a.road, -1), a.lane) > (order.get(b.road, -1), b.lane):
             o = Overlap(o.lane_b, o.lane_a, o.area, o.x, o.y, o.dz, o.s_b, o.s_a)
             a, b = b, a
         pair = both[kind][(a.road, b.road)]

@@ -23,3 +23,15 @@ def test_two_unlinked_roads_crossing():
     assert f.road == "1" and f.line == line_of(path, '<road id="1"')
     assert "road 1 and road 2 overlap by 49.0 m2" in f.message  # two 7 m wide roads crossing square: 7 x 7
     assert math.hypot(f.x, f.y) < 3.5 * math.sqrt(2) + 1e-6  # inside the crossing square
+
+
+def test_the_pair_is_named_in_file_order_not_id_order(tmp_path):
+    """Renaming the roads so that their ids sort the other way round names the same road (found by the renumbering
+    property of the fuzzer: the finding moved from one road to the other)."""
+    from fuzz.transform import renumber_roads
+
+    data = fixture(RULE, "fail.xodr").read_bytes()
+    renamed = tmp_path / "renamed.xodr"
+    renamed.write_bytes(renumber_roads(data, {"1": "z", "2": "a"}))
+    (f,) = findings(renamed, RULE)
+    assert f.road == "z" and "road z and road a overlap" in f.message
