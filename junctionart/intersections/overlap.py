@@ -20,6 +20,28 @@ def _pose(g: tuple[Geometry, ...], at_start: bool) -> tuple[float, float, float]
     return e.x, e.y, e.hdg
 
 
+def _lane_body(g: Geometry, side: float, w: float):
+    """The plan-view body of one connection lane of width ``w`` on ``side`` (+1 left, -1 right) of reference line
+    ``g``, 0.5 m short of both ends (where it meets its own roads) and 0.1 m inside both borders (so that a lane
+    merely touching a road does not count). A polygon between two offset polylines: far cheaper than a buffer, and
+    valid because the generator keeps every offset line's radius above the offset."""
+    n = max(4, int(g.length / 2.0) + 2)
+    pts = sample(g, n)
+    step = np.hypot(*np.diff(pts, axis=0).T)
+    along = np.concatenate([[0.0], np.cumsum(step)])
+    keep = (along >= 0.5) & (along <= along[-1] - 0.5)
+    if keep.sum() < 2:
+        return None
+    tangent = np.empty_like(pts)
+    tangent[1:-1] = pts[2:] - pts[:-2]
+    tangent[0], tangent[-1] = pts[1] - pts[0], pts[-1] - pts[-2]
+    tangent /= np.maximum(np.hypot(tangent[:, 0], tangent[:, 1]), 1e-12)[:, None]
+    normal = np.column_stack([-tangent[:, 1], tangent[:, 0]]) * side
+    inner = (pts + 0.1 * normal)[keep]
+    outer = (pts + (w - 0.1) * normal)[keep]
+    return shapely.Polygon(np.concatenate([inner, outer[::-1]]))
+
+
 def overlaps(chs: list[Chain], roads: list[tuple[tuple[Geometry, ...], LaneConfig]],
              junctions: dict[int, list[tuple[tuple[Geometry, ...], LaneConfig, bool]]],
              connections: dict[int, list[Geometry]], p: Params) -> list[list[int]]:
@@ -46,13 +68,14 @@ def overlaps(chs: list[Chain], roads: list[tuple[tuple[Geometry, ...], LaneConfi
             right = side_width(cfg.forward if rht else cfg.backward, False, w, mw)
             corners.append(border_point(*pose, left))
             corners.append(border_point(*pose, -right))
-        side = -w if rht else w  # connection lanes are -1 (RHT) or 1 (LHT): right or left of their reference line
-        bodies = [shapely.MultiPoint(corners).convex_hull]
-        for g in connections.get(node, ()):
-            pts = sample(g, max(2, int(g.length / 2.0) + 2))
-            bodies.append(shapely.buffer(shapely.LineString(pts), side, single_sided=True, cap_style="flat"))
-        shapes.append(shapely.union_all(bodies).buffer(-0.5))
+        shapes.append(shapely.MultiPoint(corners).convex_hull.buffer(-0.5))
         owners.append(("junction", node))
+        side = -1.0 if rht else 1.0  # connection lanes are -1 (RHT) or 1 (LHT): right or left of their reference line
+        for g in connections.get(node, ()):
+            body = _lane_body(g, side, w)
+            if body is not None:
+                shapes.append(body)
+                owners.append(("junction", node))
     tree = shapely.STRtree(shapes)
     left_i, right_i = tree.query(shapes, predicate="intersects")
     found = []
@@ -65,6 +88,8 @@ def overlaps(chs: list[Chain], roads: list[tuple[tuple[Geometry, ...], LaneConfi
                 continue
             cands = [a, b]
         elif ka == "junction" and kb == "junction":
+            if a == b:  # the hull and the connection lanes of one junction
+                continue
             cands = [c for c, ch in enumerate(chs) if {ch.start, ch.end} & {a, b}]
         else:
             road, node = (a, b) if ka == "road" else (b, a)
