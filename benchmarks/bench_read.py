@@ -88,7 +88,7 @@ def main() -> None:
     for path in towns:
         bare, model, ratio, result = parse_and_read(path, lxml_parser, args.repeats)
         worst_ratio = max(worst_ratio, ratio)
-        borders, points = median_time(lambda: sample_borders(result.document), args.repeats)
+        borders, points = median_time(lambda doc=result.document: sample_borders(doc), args.repeats)
         target = f"< {TOWN07_BORDERS_TARGET_S * 1000:.0f}" if path.stem == "Town07" else ""
         flag = "" if ratio <= READ_RATIO_TARGET else " !"
         if path.stem == "Town07" and borders >= TOWN07_BORDERS_TARGET_S:

@@ -15,7 +15,14 @@ regressions are in :mod:`fuzz.profiles`.
 """
 
 from fuzz.documents import document_specs, opendrive_documents
-from fuzz.mutations import DAMAGE, DEFECTS, Mutation, damaged_documents, defective_documents, document_mutations
+from fuzz.mutations import (
+    DAMAGE,
+    DEFECTS,
+    Mutation,
+    damaged_documents,
+    defective_documents,
+    document_mutations,
+)
 
 __all__ = [
     "DAMAGE", "DEFECTS", "Mutation", "control_line_groups", "control_lines", "damaged_documents",

@@ -132,7 +132,7 @@ class Table:
     def maps_path(self) -> Path:
         return self.folder / "maps.csv"
 
-    def open(self) -> "Table":
+    def open(self) -> Table:
         self.folder.mkdir(parents=True, exist_ok=True)
         if self.maps_path.exists():
             for row in read_csv(self.maps_path):
@@ -384,10 +384,10 @@ def run(args) -> int:
     seconds = time.perf_counter() - t0
     usage = [resource.getrusage(who) for who in (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN)]
     peak = max(u.ru_maxrss for u in usage) / 1024
-    setup = [f"Runs: {', '.join(names)}; maps {width:g} m x {height:g} m, seeds 0, 1, 2, ... per run; the first "
-             f"{args.intersections} intersections (junctions with 3+ legs) of each run in seed order.",
-             "Metrics: `xodrcheck.metrics` (definitions in its docstring), computed on each map after writing it "
-             "and reading it back with the independent reader."]
+    setup = [(f"Runs: {', '.join(names)}; maps {width:g} m x {height:g} m, seeds 0, 1, 2, ... per run; the first "
+              f"{args.intersections} intersections (junctions with 3+ legs) of each run in seed order."),
+             ("Metrics: `xodrcheck.metrics` (definitions in its docstring), computed on each map after writing it "
+              "and reading it back with the independent reader.")]
     for name in names:
         seeds = [s for (r, s), v in table.done.items() if r == name]
         failed = sum(1 for (r, s), v in table.done.items() if r == name and v < 0)

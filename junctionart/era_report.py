@@ -54,7 +54,7 @@ class Sample:
     junctions: dict[str, np.ndarray]  # column -> values, one per junction
 
     @classmethod
-    def of(cls, label: str, rows: Sequence[dict]) -> "Sample":
+    def of(cls, label: str, rows: Sequence[dict]) -> Sample:
         columns = ("legs", *(c for c, *_ in LEG_METRICS), *(c for c, *_ in JUNCTION_METRICS))
         leg_rows = [r for r in rows if r["leg"] not in ("", None)]
         first = [r for r in rows if r["leg"] in ("0", "", None, 0)]
@@ -65,7 +65,7 @@ class Sample:
         )
 
     def table(self, column: str) -> dict[str, np.ndarray]:
-        return self.junctions if column in dict((c, 0) for c, *_ in JUNCTION_METRICS) else self.legs
+        return self.junctions if column in {c for c, *_ in JUNCTION_METRICS} else self.legs
 
 
 def _bins(values: list[np.ndarray], n: int = 40) -> np.ndarray:
@@ -183,7 +183,7 @@ def write_report(
     for column, name, unit, figure, paper in (*LEG_METRICS, *JUNCTION_METRICS):
         png = f"dist_{column}.png"
         distribution_figure(column, samples, compare, folder / png)
-        per = "incident road (leg)" if column in dict((c, 0) for c, *_ in LEG_METRICS) else "intersection"
+        per = "incident road (leg)" if column in {c for c, *_ in LEG_METRICS} else "intersection"
         lines += [f"### {name} (paper Figure {figure})", "", f"![{name}]({png})", "",
                   f"Distribution of {name} per {per}, one line per leg count"
                   + (f", {compare.label} dashed" if compare else "") + f". Paper: {paper}. Here, medians: "
@@ -200,7 +200,7 @@ def write_report(
             if ok.sum() > 2 and np.std(vx[ok]) > 0 and np.std(vy[ok]) > 0:
                 corr.append(f"{s.label} r = {np.corrcoef(vx[ok], vy[ok])[0, 1]:.2f}")
         lines += [f"### {NAMES[x]} vs {NAMES[y]} (paper Figure {figure})", "", f"![{x} vs {y}]({png})", "",
-                  f"Share of legs in each cell" + (f"; {compare.label} legs as crosses" if compare else "")
+                  "Share of legs in each cell" + (f"; {compare.label} legs as crosses" if compare else "")
                   + f". Paper: {paper}. Here, Pearson correlation: {', '.join(corr) or 'n/a'}.", ""]
     path = folder / "report.md"
     path.write_text("\n".join(lines), encoding="utf-8")

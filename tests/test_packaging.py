@@ -46,6 +46,7 @@ def wheel(source: Path, tmp_path_factory) -> Path:
     out = tmp / "dist"
     proc = subprocess.run(
         [sys.executable, "-m", "pip", "wheel", str(source), "--no-deps", "--no-build-isolation", "-q", "-w", str(out)],
+        check=False,
         capture_output=True,
         text=True,
         cwd=tmp,
@@ -82,6 +83,7 @@ def test_installed_tree_finds_schemas_through_importlib_resources(wheel: Path, t
     target = tmp_path / "site"
     proc = subprocess.run(
         [sys.executable, "-m", "pip", "install", "--no-deps", "-q", "--target", str(target), str(wheel)],
+        check=False,
         capture_output=True,
         text=True,
     )
@@ -101,6 +103,7 @@ def test_installed_tree_finds_schemas_through_importlib_resources(wheel: Path, t
     )
     proc = subprocess.run(
         [sys.executable, "-S", "-c", probe],
+        check=False,
         capture_output=True,
         text=True,
         cwd=tmp_path,

@@ -5,7 +5,6 @@ runs every rule and gives a :class:`Report` (``.ok``, ``.findings``); ``is_valid
 """
 
 from xodrcheck.check import Report, check, is_valid, is_valid_reason
-
 from xodrcheck.findings import Category, Finding, ReadError, Severity, XodrError
 from xodrcheck.model import Document, LaneKey
 

@@ -258,14 +258,11 @@ class OverlapIndex:
         return out
 
 
-_CACHE: dict[tuple[int, float], OverlapIndex] = {}
-
-
 def overlap_index(document: Document, chord: float | None = None,
                   out_of_time: Callable[[], bool] | None = None) -> OverlapIndex:
     """:class:`OverlapIndex` of a document, cached for its lifetime (per chord). ``out_of_time`` is polled while the
     footprints are built; when it says so, :class:`OutOfTime` is raised and nothing is cached."""
-    return cached_per_chord(_CACHE, document, chord, lambda d, c: OverlapIndex(d, c, out_of_time))
+    return cached_per_chord("overlap index", document, chord, lambda d, c: OverlapIndex(d, c, out_of_time))
 
 
 # ------------------------------------------------------------------------------------------------------ metrics

@@ -38,7 +38,6 @@ lateral offset), with ``q'`` and ``q''`` carried exactly (:mod:`xodrcheck.geomet
 
 from __future__ import annotations
 
-import weakref
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 
@@ -49,7 +48,7 @@ from xodrcheck.geometry import profile
 from xodrcheck.geometry.jet import Jet
 from xodrcheck.geometry.planview import ReferenceLine
 from xodrcheck.geometry.pose import Pose, as_array
-from xodrcheck.model import Document, Lane, Road
+from xodrcheck.model import Document, Lane, Road, document_cache
 from xodrcheck.sampling import sample_section
 
 _WHERE = ("centre", "inner", "outer")
@@ -427,15 +426,10 @@ class _LazyGeometries(Mapping[str, RoadGeometry]):
         return len(self._roads)
 
 
-_CACHE: dict[int, _LazyGeometries] = {}
-
-
 def geometry_of(document: Document) -> Mapping[str, RoadGeometry]:
     """Road id -> :class:`RoadGeometry`, built on first access and cached for the document's lifetime."""
-    key = id(document)
-    found = _CACHE.get(key)
+    cache = document_cache(document)
+    found = cache.get("geometry")
     if found is None:
-        found = _LazyGeometries(document)
-        _CACHE[key] = found
-        weakref.finalize(document, _CACHE.pop, key, None)
+        found = cache["geometry"] = _LazyGeometries(document)
     return found

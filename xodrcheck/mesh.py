@@ -15,7 +15,6 @@ followed by its outer row reversed.
 from __future__ import annotations
 
 import math
-import weakref
 from collections.abc import Callable, Collection, Mapping
 from dataclasses import dataclass
 from functools import cached_property
@@ -25,7 +24,7 @@ import numpy as np
 from xodrcheck.config import Tolerances
 from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, geometry_of
-from xodrcheck.model import Document, LaneKey, Road
+from xodrcheck.model import Document, LaneKey, Road, document_cache
 
 #: Largest coordinate (m) a meshed vertex may have: 25 times the Earth's circumference. Beyond it a lane is damaged
 #: input (a width of 1e308, say), and polygon operations (GEOS) fail on such numbers instead of giving an area.
@@ -234,22 +233,19 @@ def build_surfaces(
     )
 
 
-_CACHE: dict[tuple[int, float], LaneSurfaces] = {}
-
-
-def cached_per_chord(cache: dict, document: Document, chord: float | None, build: Callable):
-    """``build(document, chord)`` (chord defaulting to the configured tolerance), kept in ``cache`` for the document's
-    lifetime, per chord."""
+def cached_per_chord(name: str, document: Document, chord: float | None, build: Callable):
+    """``build(document, chord)`` (chord defaulting to the configured tolerance), kept as ``name`` with the document
+    (:func:`xodrcheck.model.document_cache`) for its lifetime, per chord."""
     chord = Tolerances().chord if chord is None else float(chord)
-    key = (id(document), chord)
+    cache = document_cache(document)
+    key = (name, chord)
     found = cache.get(key)
     if found is None:
         found = cache[key] = build(document, chord)
-        weakref.finalize(document, cache.pop, key, None)
     return found
 
 
 def surfaces_of(document: Document, chord: float | None = None) -> LaneSurfaces:
     """:func:`build_surfaces` of every lane, cached per document and chord for the document's lifetime (the overlap
     rules and the metrics share one mesh)."""
-    return cached_per_chord(_CACHE, document, chord, build_surfaces)
+    return cached_per_chord("surfaces", document, chord, build_surfaces)

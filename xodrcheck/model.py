@@ -17,7 +17,6 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass, field
 from functools import cached_property
-from typing import Union
 
 
 # --------------------------------------------------------------------------------------------------------------------
@@ -228,7 +227,7 @@ class ParamPoly3:
     line: int = 0
 
 
-Geometry = Union[Line, Arc, Spiral, Poly3, ParamPoly3]
+Geometry = Line | Arc | Spiral | Poly3 | ParamPoly3
 
 
 # --------------------------------------------------------------------------------------------------------------------
@@ -415,6 +414,15 @@ class Header:
         if self.rev_major is None or self.rev_minor is None:
             return None
         return (self.rev_major, self.rev_minor)
+
+
+def document_cache(document: Document) -> dict:
+    """A dict that lives and dies with ``document``, for what is derived from it (geometry, meshes, footprints).
+
+    Kept in the instance's ``__dict__`` (not a field: equality, ``repr`` and ``dataclasses.replace`` ignore it), so a
+    cached value that refers back to its document (an overlap index does) is freed with it; a module-level cache keyed
+    by ``id(document)`` would keep both alive for the whole process."""
+    return document.__dict__.setdefault("_derived", {})
 
 
 @dataclass(frozen=True)

@@ -20,7 +20,6 @@ parts of the network share one pass.
 
 from __future__ import annotations
 
-import itertools
 import math
 from collections import deque
 
@@ -30,14 +29,18 @@ from ..curves import (
     HermiteFit,
     connection_geometry,
     end_pose,
-    fillet_chain,
     fit_connections,
     local_target,
     wrap,
 )
 from ..errors import GenerationError
 from ..graph import Chain, chains
-from ..lanegeom import border_point, inner_offset, lane_id, min_curve_radius, side_width, taper_length
+from ..lanegeom import (
+    border_point,
+    inner_offset,
+    lane_id,
+    taper_length,
+)
 from ..lanes import LaneConfig, LanedNetwork
 from ..params import Params, TrafficRule
 from . import links as linkplan
@@ -45,24 +48,18 @@ from . import uturn
 from .crossing import LinkFit, crossing
 from .model import ConnectionPlan, JunctionPlan, Layout, RoadPlan
 from .overlap import overlaps
+from .placement import incident_distances, road_geometry
 from .state import NetworkState
 
 MAX_LEGS = 7
 MAX_GROWTH = 10
 GROWTH = 1.15
 MIN_ROAD = 5.0  #: shortest road written between two junctions
-MARGIN = 1.0  #: clearance between the stubs of neighbouring legs
 SCALES = np.linspace(0.2, 1.4, 17)  #: Hermite tangent lengths tried, in chords
 
 
 class _Repair(Exception):
     """Raised inside one pass when the network was changed; the pass starts again."""
-
-
-def _unit(a: tuple[float, float], b: tuple[float, float]) -> tuple[float, float, float]:
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    L = math.hypot(dx, dy)
-    return dx / L, dy / L, L
 
 
 class Builder:
@@ -214,78 +211,13 @@ class Builder:
         return plan
 
     def _incident(self, node: int, L: list[linkplan.Leg], plan: linkplan.LinkPlan) -> list[float]:
-        """Distance of each leg's incident point from the control point: the paper's W / sin(d) rule with the legs'
-        actual widths, room for a turn between neighbouring legs that ``plan`` links, times the node's random factor
-        and growth. Neighbours at a sharp angle that no lane links need only keep their stubs apart."""
         if node not in self.st.factor:
             self.st.factor[node] = float(self.rng.uniform(1.0, 1.2))
-        order = sorted(range(len(L)), key=lambda i: L[i].angle)
-        # lanes at the junction: a turn lane added before it widens the incoming side
-        half = [max(side_width(max(l.n_in, plan.n_in_end[i]), l.median, self.w, self.mw),
-                    side_width(l.n_out, l.median, self.w, self.mw)) for i, l in enumerate(L)]
-        r = [h + self.p.min_turn_radius + 2.0 for h in half]
-        turn_r = self.p.min_turn_radius + 1.0 + self.w / 2
-        linked = {frozenset((i, j)) for i, _, j, _ in plan.links}
-        for a, b in zip(order, order[1:] + order[:1]):
-            d = (L[b].angle - L[a].angle) % (2 * math.pi)
-            W = half[a] + half[b] + MARGIN
-            need = W / max(math.sin(d), 1e-3) if d < math.pi / 2 else W
-            if d < math.pi and frozenset((a, b)) in linked:
-                # a kerb-side turn through the wedge: tangent points of a circle of radius turn_r fitted between
-                # the two legs' outer lanes lie (offset + radius) / tan(d / 2) from the control point
-                need = max(need, (max(half[a], half[b]) + turn_r) / max(math.tan(d / 2), 1e-3))
-            r[a], r[b] = max(r[a], need), max(r[b], need)
-        f = self.st.factor[node] * self.st.scale.get(node, 1.0)
-        return [x * f for x in r]
+        return incident_distances(L, plan, self.p, self.st.factor[node] * self.st.scale.get(node, 1.0))
 
     def _road_geometry(self, ch: Chain, r0: float, r1: float, need: float, cfg: LaneConfig,
                        ends: tuple[tuple[int, int], tuple[int, int]]):
-        """Geometry of a chain trimmed by r0 / r1, or ("vertex", i) / ("short", None) when it does not fit.
-        ``ends``: the (forward, backward) lane counts at its start and end (tapers from ``cfg``'s counts)."""
-        P = [self.st.nodes[n] for n in ch.nodes]
-        segs = [_unit(a, b) for a, b in itertools.pairwise(P)]
-        if any(s[2] < 1e-6 for s in segs):
-            return "short", None
-        n = len(segs)
-        avail = [s[2] for s in segs]
-        avail[0] -= r0
-        avail[-1] -= r1
-        mid = (cfg.forward, cfg.backward)
-        widest = max(side_width(n, cfg.median, self.w, self.mw) for n in (*mid, *ends[0], *ends[1]))
-        # lane centres on the inside keep 3/4 of the curvature budget; a lane taper on the curve may use the rest
-        r_min = min_curve_radius(self.p, widest, ends, mid)
-        r_pref = max(r_min, 60.0)
-        radii = []
-        tangents = []
-        for i in range(1, n):
-            theta = abs(wrap(math.atan2(segs[i][1], segs[i][0]) - math.atan2(segs[i - 1][1], segs[i - 1][0])))
-            share_l = avail[i - 1] / (2 if i - 1 > 0 else 1)
-            share_r = avail[i] / (2 if i < n - 1 else 1)
-            t_max = min(share_l, share_r) - 0.5
-            if theta < 1e-9:  # collinear: no vertex, one line runs through
-                radii.append(0.0)
-                tangents.append(0.0)
-                continue
-            if t_max <= 0 or theta > math.radians(170):
-                return "vertex", i
-            R = min(r_pref, t_max / math.tan(theta / 2))
-            if R < r_min:
-                return "vertex", i
-            radii.append(R)
-            tangents.append(R * math.tan(theta / 2))
-        if any(a <= 0 for a in avail) and n == 1:
-            return "short", None
-        straight = sum(avail) - 2 * sum(tangents)
-        if straight < 0:
-            return "short", None
-        start = (P[0][0] + r0 * segs[0][0], P[0][1] + r0 * segs[0][1])
-        end = (P[-1][0] - r1 * segs[-1][0], P[-1][1] - r1 * segs[-1][1])
-        corners = [(v, r) for v, r in zip(P[1:-1], radii) if r > 0]
-        geom = fillet_chain(start, [v for v, _ in corners], end, [r for _, r in corners])
-        length = geom[-1].s + geom[-1].length
-        if length < need:
-            return "short", None
-        return "ok", geom
+        return road_geometry([self.st.nodes[n] for n in ch.nodes], r0, r1, need, cfg, ends, self.p)
 
     def _merge_instead(self, ch: Chain, deg: list[int]) -> bool:
         """A road too short for its two junctions merges them into one when that has at most 7 legs (more varied

@@ -4,10 +4,9 @@ geometry; a broken generator is caught."""
 
 from __future__ import annotations
 
-import re
-
 import dataclasses
 import json
+import re
 
 import pytest
 from hypothesis import Phase, settings

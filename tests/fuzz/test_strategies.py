@@ -13,7 +13,12 @@ from lxml import etree
 
 from fuzz import DEFECTS, Mutation
 from fuzz.documents import KINDS, document_specs, opendrive_documents
-from fuzz.generator import RELATIONS, control_line_groups, control_lines, generator_params
+from fuzz.generator import (
+    RELATIONS,
+    control_line_groups,
+    control_lines,
+    generator_params,
+)
 from fuzz.mutations import damaged_documents, defective_documents, document_mutations
 
 BAD = [

@@ -75,6 +75,7 @@ def carla_waypoints(xodr_path: str | os.PathLike, distance: float = 2.0, timeout
         try:
             proc = subprocess.run(
                 [str(python), "-I", str(WORKER), str(Path(xodr_path).resolve()), repr(float(distance)), str(out)],
+                check=False,
                 capture_output=True,
                 text=True,
                 timeout=timeout,

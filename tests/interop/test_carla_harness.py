@@ -11,7 +11,12 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from tests.interop.carla_harness import REPO, CarlaUnavailable, carla_python, carla_waypoints
+from tests.interop.carla_harness import (
+    REPO,
+    CarlaUnavailable,
+    carla_python,
+    carla_waypoints,
+)
 from xodrcheck.lanes import geometry_of
 from xodrcheck.reader import read
 

@@ -82,9 +82,9 @@ def test_dask_local_cluster_gives_the_local_results(tmp_path):
     except ImportError:  # the extra is optional for users, not for the suite
         pytest.fail("dask.distributed is missing: install the [dask] extra (scripts/setup does)")
     era.collect(SMALL, 10, tmp_path / "local", jobs=2, progress=False)
-    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
-        with distributed.Client(cluster) as client:
-            era.collect(SMALL, 10, tmp_path / "dask", scheduler=client, progress=False)
+    with (distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster,
+          distributed.Client(cluster) as client):
+        era.collect(SMALL, 10, tmp_path / "dask", scheduler=client, progress=False)
     assert _selected(tmp_path / "local", 10) == _selected(tmp_path / "dask", 10)
 
 

@@ -1,7 +1,6 @@
 """Every line xodrcheck's curvature rules measure stays within ``min_turn_radius``, for the whole range Params allow:
 the lane-0 line beside a drivable lane (C002), every drivable lane centre (C001), and no border folds (C003)."""
 
-import math
 
 import numpy as np
 import pytest

@@ -19,7 +19,14 @@ import junctionart as ja
 from tests.conftest import corpus_root
 from xodrcheck.cli import main
 from xodrcheck.reader import read
-from xodrcheck.snapshot import Snapshot, SnapshotError, differences, lane_links, snapshot_of, topology_hash
+from xodrcheck.snapshot import (
+    Snapshot,
+    SnapshotError,
+    differences,
+    lane_links,
+    snapshot_of,
+    topology_hash,
+)
 
 pytest_plugins = ("pytester",)
 

@@ -165,7 +165,7 @@ def test_footprint_union_stops_when_out_of_time():
 
 def test_rule_stopped_by_the_budget_keeps_a_warning_not_a_crash(monkeypatch):
     """A rule interrupted part way (here: the overlap index while it unites a folded strip) reports X901 'stopped'."""
-    import xodrcheck.rules.context as context
+    from xodrcheck.rules import context
 
     calls = {"n": 0}
 

@@ -128,7 +128,7 @@ def junction_lane_link_to_missing_lane(tree):
 def connection_to_missing_road(tree):
     _, c = next(_connections(tree, 1))
     c.set("connectingRoad", "999999")
-    return None  # the finding names the junction's road or none
+    # the finding names the junction's road or none
 
 
 def duplicate_road_id(tree):

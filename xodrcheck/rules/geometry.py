@@ -16,6 +16,7 @@ the geometric rules' samples would exceed ``max_samples_per_section`` is sampled
 
 from __future__ import annotations
 
+import itertools
 import math
 import weakref
 
@@ -44,7 +45,7 @@ def _finite(*values: float) -> bool:
 def _pairs(road: Road):
     """Consecutive plan-view elements (sorted by ``s`` as the reference line uses them) with finite attributes."""
     elements = ReferenceLine(road.plan_view).elements
-    for a, b in zip(elements, elements[1:]):
+    for a, b in itertools.pairwise(elements):
         if _finite(a.s, a.x, a.y, a.hdg, a.length, b.s, b.x, b.y, b.hdg) and a.length >= 0:
             yield a, b
 

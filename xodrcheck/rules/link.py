@@ -24,13 +24,19 @@ from __future__ import annotations
 import math
 from collections.abc import Iterator
 
-import numpy as np
-
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Road
 from xodrcheck.rules.context import Context, Neighbour, link_at
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import EndPoint, RoadEnd, angle_between, end_s, road_end, section_lines, usable
+from xodrcheck.rules.sampled import (
+    EndPoint,
+    RoadEnd,
+    angle_between,
+    end_s,
+    road_end,
+    section_lines,
+    usable,
+)
 
 
 def _joints(ctx: Context, once: bool = True) -> Iterator[tuple[Road, ContactPoint, Neighbour]]:

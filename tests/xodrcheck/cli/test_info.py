@@ -133,7 +133,7 @@ def test_text_output(tmp_path, capsys):
 def test_several_files_print_one_object_each(tmp_path, capsys):
     a = write(tmp_path, maps.STRAIGHT, "a.xodr")
     b = write(tmp_path, maps.ARC, "b.xodr")
-    code, infos, err = info_json(capsys, a, b)
+    code, infos, _ = info_json(capsys, a, b)
     assert code == 0
     assert [i["file"] for i in infos] == [str(a), str(b)]
     assert [i["geometry"] for i in infos] == [{"line": 1}, {"arc": 1}]
