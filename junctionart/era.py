@@ -21,6 +21,8 @@ How a run goes
 from __future__ import annotations
 
 import csv
+import functools
+import hashlib
 import os
 import time
 import traceback
@@ -40,7 +42,7 @@ ROW_COLUMNS = (
     "corner_deviation", "complexity",
 )
 #: Columns of ``maps.csv``.
-MAP_COLUMNS = ("run", "seed", "status", "junctions", "intersections", "seconds", "error")
+MAP_COLUMNS = ("run", "seed", "status", "junctions", "intersections", "seconds", "error", "generator")
 #: Smallest leg count of an intersection.
 MIN_LEGS = 3
 
@@ -117,6 +119,26 @@ def measure_map(run: str, params: Params, seed: int) -> MapResult:
 # --------------------------------------------------------------------------------------------------------------------
 # The table on disk
 # --------------------------------------------------------------------------------------------------------------------
+@functools.cache
+def generator_version() -> str:
+    """``VERSION+HASH``: the package version and a hash of the source of junctionart and xodrcheck (whose metrics
+    fill the rows), so that a resumed run cannot mix maps of two different generators, installed or checked out."""
+    from importlib import metadata
+
+    import xodrcheck
+
+    try:
+        version = metadata.version("junctionart")
+    except metadata.PackageNotFoundError:
+        version = "unknown"
+    digest = hashlib.sha256()
+    for package in (Path(__file__).parent, Path(xodrcheck.__file__).parent):
+        for path in sorted(package.rglob("*.py")):
+            digest.update(path.relative_to(package.parent).as_posix().encode())
+            digest.update(path.read_bytes())
+    return f"{version}+{digest.hexdigest()[:12]}"
+
+
 @dataclass
 class Table:
     """``legs.csv`` and ``maps.csv`` in ``folder``, appended as maps finish."""
@@ -135,7 +157,12 @@ class Table:
     def open(self) -> Table:
         self.folder.mkdir(parents=True, exist_ok=True)
         if self.maps_path.exists():
-            for row in read_csv(self.maps_path):
+            rows = read_csv(self.maps_path)
+            made_by = sorted({row.get("generator") or "unrecorded" for row in rows} - {generator_version()})
+            if made_by:
+                raise ParamsError(f"{self.folder}: its maps were made by generator {', '.join(made_by)}, this is "
+                                  f"{generator_version()}; give a new output folder (-o) or remove this one")
+            for row in rows:
                 self.done[(row["run"], int(row["seed"]))] = int(row["intersections"]) if row["status"] == "ok" else -1
         else:
             _write_header(self.maps_path, MAP_COLUMNS)
@@ -154,7 +181,8 @@ class Table:
         with open(self.maps_path, "a", newline="", encoding="utf-8") as stream:
             csv.DictWriter(stream, MAP_COLUMNS, lineterminator="\n").writerow(
                 {"run": result.run, "seed": result.seed, "status": result.status, "junctions": result.junctions,
-                 "intersections": result.intersections, "seconds": f"{result.seconds:.3f}", "error": result.error}
+                 "intersections": result.intersections, "seconds": f"{result.seconds:.3f}", "error": result.error,
+                 "generator": generator_version()}
             )
         self.done[(result.run, result.seed)] = result.intersections if result.status == "ok" else -1
 
@@ -387,7 +415,8 @@ def run(args) -> int:
     setup = [(f"Runs: {', '.join(names)}; maps {width:g} m x {height:g} m, seeds 0, 1, 2, ... per run; the first "
               f"{args.intersections} intersections (junctions with 3+ legs) of each run in seed order."),
              ("Metrics: `xodrcheck.metrics` (definitions in its docstring), computed on each map after writing it "
-              "and reading it back with the independent reader.")]
+              "and reading it back with the independent reader."),
+             f"Generator: junctionart {generator_version()} (package version + source hash, also in maps.csv)."]
     for name in names:
         seeds = [s for (r, s), v in table.done.items() if r == name]
         failed = sum(1 for (r, s), v in table.done.items() if r == name and v < 0)

@@ -76,6 +76,16 @@ def test_resume_skips_finished_seeds_and_drops_half_written_maps(tmp_path):
     assert _selected(folder, 15) == _selected(fresh, 15)
 
 
+def test_resume_refuses_maps_of_another_generator(tmp_path, monkeypatch):
+    folder = tmp_path / "run"
+    era.collect(SMALL, 3, folder, jobs=1, progress=False)
+    (made_by,) = {r["generator"] for r in era.read_csv(folder / "maps.csv")}
+    assert made_by == era.generator_version() and "+" in made_by
+    monkeypatch.setattr(era, "generator_version", lambda: "0.1.0+changed")
+    with pytest.raises(era.ParamsError, match=r"made by generator .*this is 0.1.0\+changed"):
+        era.collect(SMALL, 6, folder, jobs=1, progress=False)
+
+
 def test_dask_local_cluster_gives_the_local_results(tmp_path):
     try:
         import distributed
