@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import argparse
+import math
 import os
 import sys
 import tempfile
@@ -12,6 +14,17 @@ from typing import IO
 
 from xodrcheck.findings import ReadError, Severity
 from xodrcheck.reader import ReadResult, read
+
+
+def positive_number(text: str) -> float:
+    """argparse type: a finite number > 0 (a step, a chord)."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
+    if not (math.isfinite(value) and value > 0):
+        raise argparse.ArgumentTypeError(f"must be a finite number > 0, got {text!r}")
+    return value
 
 
 def error(message: str) -> None:

@@ -10,9 +10,14 @@ output).
 from __future__ import annotations
 
 import argparse
-import math
 
-from xodrcheck.cli._common import error, guarded, read_file, report_errors
+from xodrcheck.cli._common import (
+    error,
+    guarded,
+    positive_number,
+    read_file,
+    report_errors,
+)
 from xodrcheck.config import ConfigError, load_config
 from xodrcheck.mesh import build_surfaces
 from xodrcheck.mesh_export import FORMATS, ExportError, format_of, write
@@ -22,16 +27,6 @@ NAME = "mesh"
 HELP = "Write the lane surfaces as a 3D mesh (.glb, .obj or .ply), coloured by lane type."
 
 _TYPE_NAMES = sorted(t.value for t in LaneType if t is not LaneType.UNKNOWN)
-
-
-def _chord(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
-    if not (math.isfinite(value) and value > 0):
-        raise argparse.ArgumentTypeError(f"must be a finite number > 0, got {text!r}")
-    return value
 
 
 def _lane_types(text: str) -> tuple[str, ...]:
@@ -53,7 +48,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="OUT",
         help=f"mesh file; format from the extension ({', '.join(FORMATS)})",
     )
-    parser.add_argument("--chord", type=_chord, metavar="TOL", help="chord tolerance in metres (default: configured)")
+    parser.add_argument("--chord", type=positive_number, metavar="TOL", help="chord tolerance in metres (default: configured)")
     parser.add_argument(
         "--lane-types",
         type=_lane_types,

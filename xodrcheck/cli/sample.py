@@ -14,10 +14,16 @@ from __future__ import annotations
 
 import argparse
 import json
-import math
 from typing import IO
 
-from xodrcheck.cli._common import error, guarded, output, read_file, report_errors
+from xodrcheck.cli._common import (
+    error,
+    guarded,
+    output,
+    positive_number,
+    read_file,
+    report_errors,
+)
 from xodrcheck.sample import LaneLine, sample_lanes
 
 NAME = "sample"
@@ -26,19 +32,9 @@ HELP = "Sample every lane's centre line (and borders) at a fixed step, as CSV or
 CSV_COLUMNS = ("road", "section_s", "lane", "type", "kind", "s", "x", "y", "z", "hdg")
 
 
-def _step(text: str) -> float:
-    try:
-        value = float(text)
-    except ValueError:
-        raise argparse.ArgumentTypeError(f"not a number: {text!r}") from None
-    if not (math.isfinite(value) and value > 0):
-        raise argparse.ArgumentTypeError(f"must be a finite number > 0, got {text!r}")
-    return value
-
-
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", metavar="FILE", help="OpenDRIVE file")
-    parser.add_argument("--step", type=_step, required=True, metavar="D", help="distance in s between samples (m)")
+    parser.add_argument("--step", type=positive_number, required=True, metavar="D", help="distance in s between samples (m)")
     parser.add_argument("--borders", action="store_true", help="also sample each lane's inner and outer border")
     parser.add_argument("--format", choices=("csv", "geojson"), default="csv", help="output format (default: csv)")
     parser.add_argument("-o", "--output", metavar="OUT", help="write here (atomically) instead of standard output")
