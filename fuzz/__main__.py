@@ -61,6 +61,8 @@ def main(argv: list[str] | None = None) -> int:
             except Exception as exc:  # noqa: BLE001 - a failing property, reported with its example below
                 failed[name] = f"{type(exc).__name__}: {exc}"
                 print(f"FAILED {name}: {failed[name]}", flush=True)
+                for note in getattr(exc, "__notes__", ()):  # Hypothesis's falsifying example and how to replay it
+                    print(note, flush=True)
         rounds += 1
         print(f"round {rounds}: {sum(campaign.TRIED.values())} inputs in {time.monotonic() - started:.0f} s",
               flush=True)

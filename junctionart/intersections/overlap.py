@@ -20,25 +20,29 @@ def _pose(g: tuple[Geometry, ...], at_start: bool) -> tuple[float, float, float]
     return e.x, e.y, e.hdg
 
 
+INSET = 0.05  #: how far a connection lane's body stays inside its ends and borders (m)
+
+
 def _lane_body(g: Geometry, side: float, w: float):
     """The plan-view body of one connection lane of width ``w`` on ``side`` (+1 left, -1 right) of reference line
-    ``g``, 0.5 m short of both ends (where it meets its own roads) and 0.1 m inside both borders (so that a lane
-    merely touching a road does not count). A polygon between two offset polylines: far cheaper than a buffer, and
-    valid because the generator keeps every offset line's radius above the offset."""
+    ``g``, :data:`INSET` short of both ends and inside both borders (so that a lane merely touching a road does not
+    count, while a dead end lying across the lane's first metre does: the checker counts any shared area). A polygon
+    between two offset polylines: far cheaper than a buffer, and valid because the generator keeps every offset line's
+    radius above the offset."""
+    if not g.length > 2 * INSET:
+        return None
     n = max(4, int(g.length / 2.0) + 2)
     pts = sample(g, n)
-    step = np.hypot(*np.diff(pts, axis=0).T)
-    along = np.concatenate([[0.0], np.cumsum(step)])
-    keep = (along >= 0.5) & (along <= along[-1] - 0.5)
-    if keep.sum() < 2:
-        return None
     tangent = np.empty_like(pts)
     tangent[1:-1] = pts[2:] - pts[:-2]
     tangent[0], tangent[-1] = pts[1] - pts[0], pts[-1] - pts[-2]
     tangent /= np.maximum(np.hypot(tangent[:, 0], tangent[:, 1]), 1e-12)[:, None]
+    # the ends move INSET along the lane (dropping the end samples instead would cut a whole step of ~2 m off)
+    pts[0] += INSET * tangent[0]
+    pts[-1] -= INSET * tangent[-1]
     normal = np.column_stack([-tangent[:, 1], tangent[:, 0]]) * side
-    inner = (pts + 0.1 * normal)[keep]
-    outer = (pts + (w - 0.1) * normal)[keep]
+    inner = pts + INSET * normal
+    outer = pts + (w - INSET) * normal
     return shapely.Polygon(np.concatenate([inner, outer[::-1]]))
 
 

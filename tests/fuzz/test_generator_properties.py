@@ -13,7 +13,7 @@ from hypothesis import Phase, settings
 
 from fuzz import campaign
 from fuzz.profiles import budget, regressions
-from junctionart import cleanup
+from junctionart import cleanup, controllines
 from junctionart.cli import main as junctionart_main
 
 
@@ -138,12 +138,13 @@ def test_generated_map_regressions(entry):
     from fuzz import properties as P
 
     params = ja.Params.create(**{k: tuple(v) if isinstance(v, list) else v for k, v in entry["params"].items()})
+    lines = controllines.parse(entry["control_lines"]) if "control_lines" in entry else None
     if entry.get("known_fault"):
         try:
-            P.generated_map_is_valid(params, entry["seed"])
+            P.generated_map_is_valid(params, entry["seed"], lines)
         except AssertionError as exc:
             if any(re.search(rf"^\s*{code} ", str(exc), re.MULTILINE) for code in entry["tolerate"]):
                 pytest.xfail(entry["note"])
             raise
         _known_fault(entry, still_there=False)
-    P.generated_map_is_valid(params, entry["seed"])
+    P.generated_map_is_valid(params, entry["seed"], lines)
