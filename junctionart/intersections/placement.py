@@ -9,13 +9,18 @@ from __future__ import annotations
 import itertools
 import math
 
-from ..curves import fillet_chain, wrap
+import numpy as np
+import shapely
+
+from ..curves import fillet_chain, sample, wrap
 from ..lanegeom import min_curve_radius, side_width
 from ..lanes import LaneConfig
 from ..params import Params
 from . import links as linkplan
 
 MARGIN = 1.0  #: clearance between the stubs of neighbouring legs
+#: Total turning (rad) of a road's bends beyond which its borders are tested for crossing themselves.
+SELF_OVERLAP_TURN = 0.9 * math.pi
 
 
 def _unit(a: tuple[float, float], b: tuple[float, float]) -> tuple[float, float, float]:
@@ -66,8 +71,10 @@ def road_geometry(P: list[tuple[float, float]], r0: float, r1: float, need: floa
     r_pref = max(r_min, 60.0)
     radii = []
     tangents = []
+    turns = [0.0]  # turn at each interior vertex (index i), for the self-overlap test below
     for i in range(1, n):
         theta = abs(wrap(math.atan2(segs[i][1], segs[i][0]) - math.atan2(segs[i - 1][1], segs[i - 1][0])))
+        turns.append(theta)
         share_l = avail[i - 1] / (2 if i - 1 > 0 else 1)
         share_r = avail[i] / (2 if i < n - 1 else 1)
         t_max = min(share_l, share_r) - 0.5
@@ -94,4 +101,19 @@ def road_geometry(P: list[tuple[float, float]], r0: float, r1: float, need: floa
     length = geom[-1].s + geom[-1].length
     if length < need:
         return "short", None
+    if sum(turns) > SELF_OVERLAP_TURN and _folds(geom, widest):
+        return "vertex", int(np.argmax(turns))
     return "ok", geom
+
+
+def _folds(geom, offset: float) -> bool:
+    """Whether a border ``offset`` to either side of the chain ``geom`` crosses itself: bends turning the road back
+    on itself (two tight bends, 200 deg in all) put a lane over its own surface."""
+    pts = np.concatenate([sample(e, max(4, int(e.length / 2.0) + 2))[:-1] for e in geom] + [sample(geom[-1], 2)[-1:]])
+    tangent = np.empty_like(pts)
+    tangent[1:-1] = pts[2:] - pts[:-2]
+    tangent[0], tangent[-1] = pts[1] - pts[0], pts[-1] - pts[-2]
+    tangent /= np.maximum(np.hypot(tangent[:, 0], tangent[:, 1]), 1e-12)[:, None]
+    normal = np.column_stack([-tangent[:, 1], tangent[:, 0]])
+    borders = shapely.linestrings(np.stack([pts + offset * normal, pts - offset * normal]))
+    return not bool(shapely.is_simple(borders).all())
