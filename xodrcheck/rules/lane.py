@@ -190,13 +190,31 @@ def lane_id_sequence(ctx: Context):
                             lane=lane.id, line=lane.line or None, **where,
                         )
                 ids = sorted({abs(lane.id) for lane in lanes if lane.id * sign > 0})
-                missing = [i for i in range(1, (ids[-1] if ids else 0) + 1) if i not in ids]
-                if missing:
+                gaps = _gaps(ids)
+                if gaps:
                     first = next(lane for lane in lanes if lane.id * sign > 0)
                     yield lane_id_sequence.finding(
-                        f"{here}: {name} lanes skip id(s) {', '.join(str(i * sign) for i in missing)}",
-                        lane=missing[0] * sign, line=first.line or None, **where,
+                        f"{here}: {name} lanes skip id(s) {_gap_text(gaps, sign)}",
+                        lane=gaps[0][0] * sign, line=first.line or None, **where,
                     )
+
+
+def _gaps(ids: list[int]) -> list[tuple[int, int]]:
+    """Runs ``(first, last)`` of the ids missing from 1 .. max(ids) (sorted, positive): by runs, not one by one, so that
+    a damaged id of 10**12 costs nothing."""
+    out, prev = [], 0
+    for i in ids:
+        if i > prev + 1:
+            out.append((prev + 1, i - 1))
+        prev = i
+    return out
+
+
+def _gap_text(gaps: list[tuple[int, int]], sign: int, most: int = 5) -> str:
+    parts = [str(a * sign) if a == b else f"{a * sign} to {b * sign}" for a, b in gaps[:most]]
+    more = len(gaps) - most
+    count = sum(b - a + 1 for a, b in gaps)
+    return ", ".join(parts) + (f" and {more} more run(s)" if more > 0 else "") + (f" ({count} ids)" if count > 3 else "")
 
 
 # ------------------------------------------------------------------------------------------------ links at joints
