@@ -74,6 +74,8 @@ def main(argv: list[str] | None = None) -> int:
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         out = Path(tmp) / "map.xodr"
+        # warm-up, untimed: first calls import and build lazily (scipy, shapely, caches), as in any long run
+        ja.write(ja.generate(Params(width=500, height=500, randomize_lanes=True), 10**6), out)
         for label, size, rnd, orig_cpu, orig_tries in CONFIGS:
             n = args.big_maps if size >= 5000 else args.maps
             if n <= 0:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 import shapely
 
@@ -9,7 +11,7 @@ from ..curves import end_pose, sample
 from ..graph import Chain
 from ..lanegeom import border_point, side_width
 from ..lanes import LaneConfig
-from ..opendrive import Geometry
+from ..opendrive import Geometry, ParamPoly3
 from ..params import Params, TrafficRule
 
 
@@ -46,6 +48,47 @@ def _lane_body(g: Geometry, side: float, w: float):
     return shapely.Polygon(np.concatenate([inner, outer[::-1]]))
 
 
+def _lane_bodies(gs, side: float, w: float) -> list:
+    """:func:`_lane_body` of every geometry in ``gs``, the paramPoly3 ones in one vectorised pass (same samples and
+    arithmetic as :func:`junctionart.curves.sample`; one junction's lanes cost one set of numpy calls, not one each)."""
+    out: list = [None] * len(gs)
+    cubic = [k for k, g in enumerate(gs) if isinstance(g, ParamPoly3) and g.length > 2 * INSET]
+    for k, g in enumerate(gs):
+        if not isinstance(g, ParamPoly3):
+            out[k] = _lane_body(g, side, w)
+    if not cubic:
+        return out
+    geoms = [gs[k] for k in cubic]
+    n = np.array([max(4, int(g.length / 2.0) + 2) for g in geoms])
+    owner = np.repeat(np.arange(len(geoms)), n)
+    first = np.cumsum(n) - n
+    last = first + n - 1
+    t = np.concatenate([np.linspace(0.0, 1.0, m) for m in n])
+    c = np.array([[g.au, g.bu, g.cu, g.du, g.av, g.bv, g.cv, g.dv, g.x, g.y, math.cos(g.hdg), math.sin(g.hdg)]
+                  for g in geoms])[owner]
+    u = c[:, 0] + t * (c[:, 1] + t * (c[:, 2] + t * c[:, 3]))
+    v = c[:, 4] + t * (c[:, 5] + t * (c[:, 6] + t * c[:, 7]))
+    pts = np.column_stack([c[:, 8] + c[:, 10] * u - c[:, 11] * v, c[:, 9] + c[:, 11] * u + c[:, 10] * v])
+    # central differences inside each lane, one-sided at its ends
+    ahead = np.minimum(np.arange(len(t)) + 1, last[owner])
+    behind = np.maximum(np.arange(len(t)) - 1, first[owner])
+    tangent = pts[ahead] - pts[behind]
+    tangent /= np.maximum(np.hypot(tangent[:, 0], tangent[:, 1]), 1e-12)[:, None]
+    pts[first] += INSET * tangent[first]
+    pts[last] -= INSET * tangent[last]
+    normal = np.column_stack([-tangent[:, 1], tangent[:, 0]]) * side
+    inner, outer = pts + INSET * normal, pts + (w - INSET) * normal
+    # each ring: the lane's inner samples, then its outer samples backwards; built in one call
+    reverse = (first[owner] + last[owner]) - np.arange(len(t))  # index of the mirrored sample within each lane
+    ring_owner = np.concatenate([owner, owner])
+    coords = np.concatenate([inner, outer[reverse]])
+    order = np.argsort(ring_owner, kind="stable")
+    polygons = shapely.polygons(shapely.linearrings(coords[order], indices=ring_owner[order]))
+    for i, k in enumerate(cubic):
+        out[k] = polygons[i]
+    return out
+
+
 def overlaps(chs: list[Chain], roads: list[tuple[tuple[Geometry, ...], LaneConfig]],
              junctions: dict[int, list[tuple[tuple[Geometry, ...], LaneConfig, bool]]],
              connections: dict[int, list[Geometry]], p: Params) -> list[list[int]]:
@@ -75,17 +118,19 @@ def overlaps(chs: list[Chain], roads: list[tuple[tuple[Geometry, ...], LaneConfi
         shapes.append(shapely.MultiPoint(corners).convex_hull.buffer(-0.5))
         owners.append(("junction", node))
         side = -1.0 if rht else 1.0  # connection lanes are -1 (RHT) or 1 (LHT): right or left of their reference line
-        for g in connections.get(node, ()):
-            body = _lane_body(g, side, w)
+        for body in _lane_bodies(connections.get(node, ()), side, w):
             if body is not None:
                 shapes.append(body)
                 owners.append(("junction", node))
-    tree = shapely.STRtree(shapes)
-    left_i, right_i = tree.query(shapes, predicate="intersects")
+    shapes = np.array(shapes, dtype=object)
+    left_i, right_i = shapely.STRtree(shapes).query(shapes)  # bounding boxes first
+    # the hull and lanes of one junction overlap each other by design: drop those pairs before the exact test
+    junction_of = np.array([a if kind == "junction" else -1 for kind, a in owners])
+    keep = (left_i < right_i) & ((junction_of[left_i] < 0) | (junction_of[left_i] != junction_of[right_i]))
+    left_i, right_i = left_i[keep], right_i[keep]
+    hit = shapely.intersects(shapes[left_i], shapes[right_i])
     found = []
-    for i, j in sorted(zip(left_i.tolist(), right_i.tolist())):
-        if i >= j:
-            continue
+    for i, j in sorted(zip(left_i[hit].tolist(), right_i[hit].tolist())):
         (ka, a), (kb, b) = owners[i], owners[j]
         if ka == "road" and kb == "road":
             if {chs[a].start, chs[a].end} & {chs[b].start, chs[b].end}:
