@@ -68,6 +68,14 @@ def sample(g: Geometry, n: int = 16) -> np.ndarray:
     return np.column_stack([g.x + c * u - s * v, g.y + s * u + c * v])
 
 
+def unit_tangents(pts: np.ndarray) -> np.ndarray:
+    """Unit tangents of a polyline ``(n, 2)``: central differences inside, one-sided at both ends."""
+    tangent = np.empty_like(pts)
+    tangent[1:-1] = pts[2:] - pts[:-2]
+    tangent[0], tangent[-1] = pts[1] - pts[0], pts[-1] - pts[-2]
+    return tangent / np.maximum(np.hypot(tangent[:, 0], tangent[:, 1]), 1e-12)[:, None]
+
+
 def wrap(a: float) -> float:
     """Angle in (-pi, pi]."""
     a = math.fmod(a + math.pi, 2 * math.pi)

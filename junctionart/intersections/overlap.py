@@ -7,7 +7,7 @@ import math
 import numpy as np
 import shapely
 
-from ..curves import end_pose, sample
+from ..curves import end_pose, sample, unit_tangents
 from ..graph import Chain
 from ..lanegeom import border_point, side_width
 from ..lanes import LaneConfig
@@ -35,10 +35,7 @@ def _lane_body(g: Geometry, side: float, w: float):
         return None
     n = max(4, int(g.length / 2.0) + 2)
     pts = sample(g, n)
-    tangent = np.empty_like(pts)
-    tangent[1:-1] = pts[2:] - pts[:-2]
-    tangent[0], tangent[-1] = pts[1] - pts[0], pts[-1] - pts[-2]
-    tangent /= np.maximum(np.hypot(tangent[:, 0], tangent[:, 1]), 1e-12)[:, None]
+    tangent = unit_tangents(pts)
     # the ends move INSET along the lane (dropping the end samples instead would cut a whole step of ~2 m off)
     pts[0] += INSET * tangent[0]
     pts[-1] -= INSET * tangent[-1]
@@ -137,8 +134,6 @@ def overlaps(chs: list[Chain], roads: list[tuple[tuple[Geometry, ...], LaneConfi
                 continue
             cands = [a, b]
         elif ka == "junction" and kb == "junction":
-            if a == b:  # the hull and the connection lanes of one junction
-                continue
             cands = [c for c, ch in enumerate(chs) if {ch.start, ch.end} & {a, b}]
         else:
             road, node = (a, b) if ka == "road" else (b, a)

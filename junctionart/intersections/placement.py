@@ -12,7 +12,7 @@ import math
 import numpy as np
 import shapely
 
-from ..curves import fillet_chain, sample, wrap
+from ..curves import fillet_chain, sample, unit_tangents, wrap
 from ..lanegeom import min_curve_radius, side_width
 from ..lanes import LaneConfig
 from ..params import Params
@@ -110,10 +110,7 @@ def _folds(geom, offset: float) -> bool:
     """Whether a border ``offset`` to either side of the chain ``geom`` crosses itself: bends turning the road back
     on itself (two tight bends, 200 deg in all) put a lane over its own surface."""
     pts = np.concatenate([sample(e, max(4, int(e.length / 2.0) + 2))[:-1] for e in geom] + [sample(geom[-1], 2)[-1:]])
-    tangent = np.empty_like(pts)
-    tangent[1:-1] = pts[2:] - pts[:-2]
-    tangent[0], tangent[-1] = pts[1] - pts[0], pts[-1] - pts[-2]
-    tangent /= np.maximum(np.hypot(tangent[:, 0], tangent[:, 1]), 1e-12)[:, None]
+    tangent = unit_tangents(pts)
     normal = np.column_stack([-tangent[:, 1], tangent[:, 0]])
     borders = shapely.linestrings(np.stack([pts + offset * normal, pts - offset * normal]))
     return not bool(shapely.is_simple(borders).all())
