@@ -9,20 +9,23 @@ direction and solid within :data:`SOLID_NEAR_JUNCTION` of a junction, solid whit
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
-from .curves import sample
 from .intersections.model import Layout, RoadPlan
 from .lanegeom import lane_id, taper_length
 from .opendrive import (
+    Arc,
     Connection,
     Cubic,
     Document,
+    Geometry,
     Header,
     Junction,
     Lane,
     LaneLink,
     LaneSection,
+    Line,
     Link,
     Road,
     RoadMark,
@@ -120,6 +123,25 @@ def _road(rp: RoadPlan, rid: str, junction_ids: list[str], params: Params) -> Ro
                 name=f"road {rid}", speed_kmh=ROAD_SPEED)
 
 
+def _three_points(g: Geometry) -> tuple[tuple[float, float], ...]:
+    """Start, middle and end of one element for the header's bounds (scalar arithmetic: a numpy call per element
+    cost more than the sums; the same operations in the same order as :func:`junctionart.curves.sample`)."""
+    if isinstance(g, Line):
+        c, s = math.cos(g.hdg), math.sin(g.hdg)
+        return tuple((g.x + d * c, g.y + d * s) for d in (0.0, 0.5 * g.length, g.length))
+    if isinstance(g, Arc):
+        k, s0, c0 = g.curvature, math.sin(g.hdg), math.cos(g.hdg)
+        return tuple((g.x + (math.sin(g.hdg + k * d) - s0) / k, g.y - (math.cos(g.hdg + k * d) - c0) / k)
+                     for d in (0.0, 0.5 * g.length, g.length))
+    c, s = math.cos(g.hdg), math.sin(g.hdg)
+    out = []
+    for t in (0.0, 0.5, 1.0):
+        u = g.au + t * (g.bu + t * (g.cu + t * g.du))
+        v = g.av + t * (g.bv + t * (g.cv + t * g.dv))
+        out.append((g.x + c * u - s * v, g.y + s * u + c * v))
+    return tuple(out)
+
+
 def document(layout: Layout, params: Params, name: str = "junctionart") -> Document:
     """The OpenDRIVE document of a finished layout."""
     n_roads = len(layout.roads)
@@ -150,9 +172,9 @@ def document(layout: Layout, params: Params, name: str = "junctionart") -> Docum
     xs, ys = [], []
     for r in roads:
         for g in r.geometry:
-            pts = sample(g, 3)
-            xs.extend(pts[:, 0])
-            ys.extend(pts[:, 1])
+            for x, y in _three_points(g):
+                xs.append(x)
+                ys.append(y)
     header = Header(name=name, north=max(ys, default=0.0), south=min(ys, default=0.0), east=max(xs, default=0.0),
                     west=min(xs, default=0.0))
     return Document(header, tuple(roads), tuple(junctions))

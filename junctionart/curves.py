@@ -143,31 +143,61 @@ def fit_connections(targets: np.ndarray, offsets: tuple[float, ...], min_radius:
     cv = 3 * v1 - k * s
     dv = -2 * v1 + k * s
     p = _P_CHECK[None, :]
-    d1u = k[:, None] + p * (2 * cu[:, None] + 3 * du[:, None] * p)
-    d1v = p * (2 * cv[:, None] + 3 * dv[:, None] * p)
-    d2u = 2 * cu[:, None] + 6 * du[:, None] * p
-    d2v = 2 * cv[:, None] + 6 * dv[:, None] * p
-    speed2 = d1u * d1u + d1v * d1v  # squared speed: no hypot and no power over every sample (the costly steps)
+    # the same operations in the same order as the plain expressions, written into few buffers (allocation was a
+    # large part of the cost on these small arrays)
+    d1u = 3 * du[:, None] * p
+    d1u += 2 * cu[:, None]
+    d1u *= p
+    d1u += k[:, None]
+    d1v = 3 * dv[:, None] * p
+    d1v += 2 * cv[:, None]
+    d1v *= p
+    d2u = 6 * du[:, None] * p
+    d2u += 2 * cu[:, None]
+    d2v = 6 * dv[:, None] * p
+    d2v += 2 * cv[:, None]
+    speed2 = d1u * d1u
+    tmp = d1v * d1v
+    speed2 += tmp  # squared speed: no hypot and no power over every sample (the costly steps)
     ok = (speed2.min(axis=1) > 1e-18) & (chord > 1e-6)
-    speed2 = np.maximum(speed2, 1e-24)
-    kappa = (d1u * d2v - d1v * d2u) / (speed2 * np.sqrt(speed2))
-    worst = np.abs(kappa).max(axis=1)
+    np.maximum(speed2, 1e-24, out=speed2)
+    kappa = d1u * d2v
+    np.multiply(d1v, d2u, out=tmp)
+    kappa -= tmp
+    np.sqrt(speed2, out=tmp)
+    tmp *= speed2
+    kappa /= tmp
+    np.abs(kappa, out=tmp)
+    worst = tmp.max(axis=1)
     # |kappa / (1 - t kappa)| grows with t * kappa, so the outermost offset on each side bounds the others (and its
     # fold test implies theirs)
     outermost = [max((o for o in offsets if o > 0), default=0.0), min((o for o in offsets if o < 0), default=0.0)]
     for off in (o for o in outermost if o != 0.0):
-        denom = 1.0 - off * kappa
-        ok &= denom.min(axis=1) > 0.05
-        worst = np.maximum(worst, np.abs(kappa / np.maximum(denom, 0.05)).max(axis=1))
-    # total turning equals the heading change: the heading increments never change sign
-    dh = np.diff(np.arctan2(d1v, d1u), axis=1)
-    dh = np.where(dh > np.pi, dh - 2 * np.pi, np.where(dh < -np.pi, dh + 2 * np.pi, dh))  # into [-pi, pi]
-    turned = dh.sum(axis=1)
-    ok &= np.abs(np.abs(turned) - np.abs(phi)) < 1e-6
+        np.multiply(off, kappa, out=tmp)
+        np.subtract(1.0, tmp, out=tmp)
+        ok &= tmp.min(axis=1) > 0.05
+        np.maximum(tmp, 0.05, out=tmp)
+        np.divide(kappa, tmp, out=tmp)
+        np.abs(tmp, out=tmp)
+        worst = np.maximum(worst, tmp.max(axis=1))
     radius = 1.0 / np.maximum(worst, 1e-300)
     ok &= radius >= min_radius
     score = np.where(ok, radius, -1.0).reshape(n, m)
-    best = score.argmax(axis=1)
+    # the last condition, the costliest, only for each target's best candidate so far: total turning equals the
+    # heading change (the heading increments never change sign); a best candidate failing it gives way to the next
+    pending = np.arange(n)
+    while True:
+        best = score.argmax(axis=1)
+        pending = pending[score[pending, best[pending]] >= 0]
+        if not len(pending):
+            break
+        rows = pending * m + best[pending]
+        dh = np.diff(np.arctan2(d1v[rows], d1u[rows]), axis=1)
+        dh = np.where(dh > np.pi, dh - 2 * np.pi, np.where(dh < -np.pi, dh + 2 * np.pi, dh))  # into [-pi, pi]
+        turned = dh.sum(axis=1)
+        bad = ~(np.abs(np.abs(turned) - np.abs(phi[rows])) < 1e-6)
+        score[pending[bad], best[pending[bad]]] = -1.0
+        pending = pending[bad]
     sel = np.arange(n) * m + best
     zero = np.zeros(n)
     coefs = np.column_stack([zero, k[sel], cu[sel], du[sel], zero, zero, cv[sel], dv[sel]])

@@ -29,6 +29,7 @@ from .opendrive import (
     Link,
     ParamPoly3,
     Road,
+    RoadMark,
 )
 
 REV_MINOR = {"1.8": 8, "1.7": 7}
@@ -57,6 +58,9 @@ def _esc(text: str) -> str:
     return _SPECIAL.sub(lambda m: _ESCAPES[m.group()], text)
 
 
+_INDENT = tuple("  " * depth for depth in range(8))
+
+
 class _Out:
     """The indented XML text, built line by line (two spaces per level, as lxml's ``pretty_print``)."""
 
@@ -64,13 +68,13 @@ class _Out:
         self.lines: list[str] = []
 
     def leaf(self, depth: int, tag: str, attrs: str = "") -> None:
-        self.lines.append(f"{'  ' * depth}<{tag}{attrs}/>")
+        self.lines.append(f"{_INDENT[depth]}<{tag}{attrs}/>")
 
     def open(self, depth: int, tag: str, attrs: str = "") -> None:
-        self.lines.append(f"{'  ' * depth}<{tag}{attrs}>")
+        self.lines.append(f"{_INDENT[depth]}<{tag}{attrs}>")
 
     def close(self, depth: int, tag: str) -> None:
-        self.lines.append(f"{'  ' * depth}</{tag}>")
+        self.lines.append(f"{_INDENT[depth]}</{tag}>")
 
 
 def _link(out: _Out, depth: int, tag: str, link: Link) -> None:
@@ -78,67 +82,75 @@ def _link(out: _Out, depth: int, tag: str, link: Link) -> None:
     out.leaf(depth, tag, f' elementType="{_esc(link.element_type)}" elementId="{_esc(link.element_id)}"{cp}')
 
 
-def _geometry(out: _Out, g: Geometry) -> None:
-    out.open(3, "geometry", f' s="{fmt(g.s)}" x="{fmt(g.x)}" y="{fmt(g.y)}" hdg="{fmt(g.hdg)}" length="{fmt(g.length)}"')
+def _geometry(add, g: Geometry) -> None:
+    add(f'      <geometry s="{fmt(g.s)}" x="{fmt(g.x)}" y="{fmt(g.y)}" hdg="{fmt(g.hdg)}" length="{fmt(g.length)}">')
     if isinstance(g, Line):
-        out.leaf(4, "line")
+        add("        <line/>")
     elif isinstance(g, Arc):
-        out.leaf(4, "arc", f' curvature="{fmt(g.curvature)}"')
+        add(f'        <arc curvature="{fmt(g.curvature)}"/>')
     elif isinstance(g, ParamPoly3):
-        out.leaf(4, "paramPoly3",
-                 f' aU="{fmt(g.au)}" bU="{fmt(g.bu)}" cU="{fmt(g.cu)}" dU="{fmt(g.du)}"'
-                 f' aV="{fmt(g.av)}" bV="{fmt(g.bv)}" cV="{fmt(g.cv)}" dV="{fmt(g.dv)}" pRange="normalized"')
+        add(f'        <paramPoly3 aU="{fmt(g.au)}" bU="{fmt(g.bu)}" cU="{fmt(g.cu)}" dU="{fmt(g.du)}"'
+            f' aV="{fmt(g.av)}" bV="{fmt(g.bv)}" cV="{fmt(g.cv)}" dV="{fmt(g.dv)}" pRange="normalized"/>')
     else:  # pragma: no cover - the model has no other kinds
         raise JunctionArtError(f"unknown geometry {type(g).__name__}")
-    out.close(3, "geometry")
+    add("      </geometry>")
 
 
-def _cubic(out: _Out, depth: int, tag: str, c: Cubic, s_name: str) -> None:
-    out.leaf(depth, tag, f' {s_name}="{fmt(c.s)}" a="{fmt(c.a)}" b="{fmt(c.b)}" c="{fmt(c.c)}" d="{fmt(c.d)}"')
+@functools.lru_cache(maxsize=1024)  # most widths are the same full-width record
+def _cubic_line(depth: int, tag: str, c: Cubic, s_name: str) -> str:
+    return (f'{_INDENT[depth]}<{tag} {s_name}="{fmt(c.s)}" a="{fmt(c.a)}" b="{fmt(c.b)}" c="{fmt(c.c)}" '
+            f'd="{fmt(c.d)}"/>')
 
 
-def _lane(out: _Out, lane: Lane) -> None:
-    head = f' id="{lane.id}" type="{_esc(lane.type)}" level="false"'
-    body = lane.predecessor is not None or lane.successor is not None or (lane.id != 0 and lane.widths) or lane.marks
-    if not body:
-        out.leaf(5, "lane", head)
+@functools.lru_cache(maxsize=1024)  # a handful of distinct marks make up most of a file
+def _mark_line(m: RoadMark) -> str:
+    change = f' laneChange="{_esc(m.lane_change)}"' if m.lane_change is not None else ""
+    return (f'{_INDENT[6]}<roadMark sOffset="{fmt(m.s)}" type="{_esc(m.type)}" weight="standard" '
+            f'color="{_esc(m.color)}" width="{fmt(m.width)}"{change}/>')
+
+
+def _lane(add, lane: Lane) -> None:
+    head = f'          <lane id="{lane.id}" type="{_esc(lane.type)}" level="false"'
+    linked = lane.predecessor is not None or lane.successor is not None
+    if not (linked or (lane.id != 0 and lane.widths) or lane.marks):
+        add(head + "/>")
         return
-    out.open(5, "lane", head)
-    if lane.predecessor is not None or lane.successor is not None:
-        out.open(6, "link")
+    add(head + ">")
+    if linked:
+        add("            <link>")
         if lane.predecessor is not None:
-            out.leaf(7, "predecessor", f' id="{lane.predecessor}"')
+            add(f'              <predecessor id="{lane.predecessor}"/>')
         if lane.successor is not None:
-            out.leaf(7, "successor", f' id="{lane.successor}"')
-        out.close(6, "link")
+            add(f'              <successor id="{lane.successor}"/>')
+        add("            </link>")
     if lane.id != 0:
         for w in lane.widths:
-            _cubic(out, 6, "width", w, "sOffset")
+            add(_cubic_line(6, "width", w, "sOffset"))
     for m in lane.marks:
-        change = f' laneChange="{_esc(m.lane_change)}"' if m.lane_change is not None else ""
-        out.leaf(6, "roadMark", f' sOffset="{fmt(m.s)}" type="{_esc(m.type)}" weight="standard" '
-                                f'color="{_esc(m.color)}" width="{fmt(m.width)}"{change}')
-    out.close(5, "lane")
+        add(_mark_line(m))
+    add("          </lane>")
 
 
-def _side(out: _Out, tag: str, lanes) -> None:
-    out.open(4, tag)
-    for lane in lanes:
-        _lane(out, lane)
-    out.close(4, tag)
-
-
-def _section(out: _Out, sec: LaneSection) -> None:
-    out.open(3, "laneSection", f' s="{fmt(sec.s)}"')
+def _section(add, sec: LaneSection) -> None:
+    add(f'      <laneSection s="{fmt(sec.s)}">')
     if sec.left:
-        _side(out, "left", sorted(sec.left, key=lambda l: -l.id))
-    _side(out, "center", (sec.center,))
+        add("        <left>")
+        for lane in sorted(sec.left, key=lambda l: -l.id):
+            _lane(add, lane)
+        add("        </left>")
+    add("        <center>")
+    _lane(add, sec.center)
+    add("        </center>")
     if sec.right:
-        _side(out, "right", sorted(sec.right, key=lambda l: -l.id))
-    out.close(3, "laneSection")
+        add("        <right>")
+        for lane in sorted(sec.right, key=lambda l: -l.id):
+            _lane(add, lane)
+        add("        </right>")
+    add("      </laneSection>")
 
 
 def _road(out: _Out, road: Road) -> None:
+    add = out.lines.append
     out.open(1, "road", f' name="{_esc(road.name or f"road {road.id}")}" length="{fmt(road.length)}" '
                         f'id="{_esc(road.id)}" junction="{_esc(road.junction)}" rule="{_esc(road.rule)}"')
     if road.predecessor is not None or road.successor is not None:
@@ -152,21 +164,21 @@ def _road(out: _Out, road: Road) -> None:
         out.open(2, "type", ' s="0.0" type="town"')
         out.leaf(3, "speed", f' max="{fmt(road.speed_kmh)}" unit="km/h"')
         out.close(2, "type")
-    out.open(2, "planView")
+    add("    <planView>")
     for g in road.geometry:
-        _geometry(out, g)
-    out.close(2, "planView")
-    out.open(2, "elevationProfile")
-    out.leaf(3, "elevation", ' s="0.0" a="0.0" b="0.0" c="0.0" d="0.0"')
-    out.close(2, "elevationProfile")
-    out.leaf(2, "lateralProfile")  # empty: valid, and tells readers there is no superelevation
-    out.open(2, "lanes")
+        _geometry(add, g)
+    add("    </planView>")
+    add("    <elevationProfile>")
+    add('      <elevation s="0.0" a="0.0" b="0.0" c="0.0" d="0.0"/>')
+    add("    </elevationProfile>")
+    add("    <lateralProfile/>")  # empty: valid, and tells readers there is no superelevation
+    add("    <lanes>")
     for c in road.lane_offset:
-        _cubic(out, 3, "laneOffset", c, "s")
+        add(_cubic_line(3, "laneOffset", c, "s"))
     for sec in road.sections:
-        _section(out, sec)
-    out.close(2, "lanes")
-    out.close(1, "road")
+        _section(add, sec)
+    add("    </lanes>")
+    add("  </road>")
 
 
 def _junction(out: _Out, j: Junction) -> None:

@@ -20,6 +20,8 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+import numpy as np
+
 from xodrcheck.config import Config, ConfigError
 from xodrcheck.findings import Finding, OutOfTime, Severity
 from xodrcheck.rules import load_rules
@@ -184,15 +186,18 @@ def check(
     ]
     version = None
     if result.document is not None:
-        ctx = Context(
-            result.document,
-            config,
-            path=result.path,
-            data=data,
-            deadline=started + config.tolerances.time_budget,
-        )
-        version = _version_text(ctx.version)
-        more, ran = run_rules(ctx, selection)
+        # damaged numbers (1e308 widths, say) overflow to inf/nan inside the geometry; the rules report them as
+        # findings, and numpy's floating-point warnings would only repeat that as noise (IEEE results are the same)
+        with np.errstate(all="ignore"):
+            ctx = Context(
+                result.document,
+                config,
+                path=result.path,
+                data=data,
+                deadline=started + config.tolerances.time_budget,
+            )
+            version = _version_text(ctx.version)
+            more, ran = run_rules(ctx, selection)
         findings.extend(f for f in more if selection.wants_finding(f) or f.code in _ENGINE_CODES)
         run.extend(ran)
     return Report(

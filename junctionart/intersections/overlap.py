@@ -7,7 +7,7 @@ import math
 import numpy as np
 import shapely
 
-from ..curves import end_pose, sample, unit_tangents
+from ..curves import end_pose, sample
 from ..graph import Chain
 from ..lanegeom import border_point, side_width
 from ..lanes import LaneConfig
@@ -25,63 +25,54 @@ def _pose(g: tuple[Geometry, ...], at_start: bool) -> tuple[float, float, float]
 INSET = 0.05  #: how far a connection lane's body stays inside its ends and borders (m)
 
 
-def _lane_body(g: Geometry, side: float, w: float):
-    """The plan-view body of one connection lane of width ``w`` on ``side`` (+1 left, -1 right) of reference line
-    ``g``, :data:`INSET` short of both ends and inside both borders (so that a lane merely touching a road does not
-    count, while a dead end lying across the lane's first metre does: the checker counts any shared area). A polygon
-    between two offset polylines: far cheaper than a buffer, and valid because the generator keeps every offset line's
-    radius above the offset."""
-    if not g.length > 2 * INSET:
-        return None
-    n = max(4, int(g.length / 2.0) + 2)
-    pts = sample(g, n)
-    tangent = unit_tangents(pts)
-    # the ends move INSET along the lane (dropping the end samples instead would cut a whole step of ~2 m off)
-    pts[0] += INSET * tangent[0]
-    pts[-1] -= INSET * tangent[-1]
-    normal = np.column_stack([-tangent[:, 1], tangent[:, 0]]) * side
-    inner = pts + INSET * normal
-    outer = pts + (w - INSET) * normal
-    return shapely.Polygon(np.concatenate([inner, outer[::-1]]))
-
-
 def _lane_bodies(gs, side: float, w: float) -> list:
-    """:func:`_lane_body` of every geometry in ``gs``, the paramPoly3 ones in one vectorised pass (same samples and
-    arithmetic as :func:`junctionart.curves.sample`; one junction's lanes cost one set of numpy calls, not one each)."""
+    """The plan-view body of each connection lane of width ``w`` on ``side`` (+1 left, -1 right) of the reference
+    lines ``gs``, :data:`INSET` short of both ends and inside both borders (so that a lane merely touching a road does
+    not count, while a dead end lying across the lane's first metre does: the checker counts any shared area); None
+    for a lane too short for that. Each is a polygon between two offset polylines: far cheaper than a buffer, and
+    valid because the generator keeps every offset line's radius above the offset. All lanes of a junction are built
+    in one vectorised pass (the paramPoly3 samples with the same arithmetic as :func:`junctionart.curves.sample`)."""
     out: list = [None] * len(gs)
-    cubic = [k for k, g in enumerate(gs) if isinstance(g, ParamPoly3) and g.length > 2 * INSET]
-    for k, g in enumerate(gs):
-        if not isinstance(g, ParamPoly3):
-            out[k] = _lane_body(g, side, w)
-    if not cubic:
+    keep = [k for k, g in enumerate(gs) if g.length > 2 * INSET]
+    if not keep:
         return out
-    geoms = [gs[k] for k in cubic]
+    geoms = [gs[k] for k in keep]
     n = np.array([max(4, int(g.length / 2.0) + 2) for g in geoms])
     owner = np.repeat(np.arange(len(geoms)), n)
     first = np.cumsum(n) - n
     last = first + n - 1
-    t = np.concatenate([np.linspace(0.0, 1.0, m) for m in n])
-    c = np.array([[g.au, g.bu, g.cu, g.du, g.av, g.bv, g.cv, g.dv, g.x, g.y, math.cos(g.hdg), math.sin(g.hdg)]
-                  for g in geoms])[owner]
-    u = c[:, 0] + t * (c[:, 1] + t * (c[:, 2] + t * c[:, 3]))
-    v = c[:, 4] + t * (c[:, 5] + t * (c[:, 6] + t * c[:, 7]))
-    pts = np.column_stack([c[:, 8] + c[:, 10] * u - c[:, 11] * v, c[:, 9] + c[:, 11] * u + c[:, 10] * v])
-    # central differences inside each lane, one-sided at its ends
-    ahead = np.minimum(np.arange(len(t)) + 1, last[owner])
-    behind = np.maximum(np.arange(len(t)) - 1, first[owner])
+    pts = np.empty((len(owner), 2))
+    cubic = np.array([isinstance(g, ParamPoly3) for g in geoms])
+    for i in np.flatnonzero(~cubic):  # U-turn arcs: few, one sample call each
+        pts[first[i]:last[i] + 1] = sample(geoms[i], int(n[i]))
+    if cubic.any():
+        rows = cubic[owner]
+        idx, at = np.flatnonzero(rows), owner[rows]
+        # np.linspace(0, 1, m) for each lane, in one pass: the same step, products and exact last sample
+        t = (idx - first[at]) * (1.0 / (n - 1))[at]
+        t[idx == last[at]] = 1.0
+        c = np.array([[g.au, g.bu, g.cu, g.du, g.av, g.bv, g.cv, g.dv, g.x, g.y, math.cos(g.hdg), math.sin(g.hdg)]
+                      if isinstance(g, ParamPoly3) else [0.0] * 12 for g in geoms])[at]
+        u = c[:, 0] + t * (c[:, 1] + t * (c[:, 2] + t * c[:, 3]))
+        v = c[:, 4] + t * (c[:, 5] + t * (c[:, 6] + t * c[:, 7]))
+        pts[rows] = np.column_stack([c[:, 8] + c[:, 10] * u - c[:, 11] * v, c[:, 9] + c[:, 11] * u + c[:, 10] * v])
+    # central differences inside each lane, one-sided at its ends (as junctionart.curves.unit_tangents)
+    ahead = np.minimum(np.arange(len(owner)) + 1, last[owner])
+    behind = np.maximum(np.arange(len(owner)) - 1, first[owner])
     tangent = pts[ahead] - pts[behind]
     tangent /= np.maximum(np.hypot(tangent[:, 0], tangent[:, 1]), 1e-12)[:, None]
+    # the ends move INSET along the lane (dropping the end samples instead would cut a whole step of ~2 m off)
     pts[first] += INSET * tangent[first]
     pts[last] -= INSET * tangent[last]
     normal = np.column_stack([-tangent[:, 1], tangent[:, 0]]) * side
     inner, outer = pts + INSET * normal, pts + (w - INSET) * normal
     # each ring: the lane's inner samples, then its outer samples backwards; built in one call
-    reverse = (first[owner] + last[owner]) - np.arange(len(t))  # index of the mirrored sample within each lane
+    reverse = (first[owner] + last[owner]) - np.arange(len(owner))  # index of the mirrored sample within each lane
     ring_owner = np.concatenate([owner, owner])
     coords = np.concatenate([inner, outer[reverse]])
     order = np.argsort(ring_owner, kind="stable")
     polygons = shapely.polygons(shapely.linearrings(coords[order], indices=ring_owner[order]))
-    for i, k in enumerate(cubic):
+    for i, k in enumerate(keep):
         out[k] = polygons[i]
     return out
 
@@ -97,12 +88,13 @@ def overlaps(chs: list[Chain], roads: list[tuple[tuple[Geometry, ...], LaneConfi
     junction with its own legs, may touch.
     """
     w, mw = p.lane_width, p.median_width
-    shapes, owners = [], []
-    for c, (g, cfg) in enumerate(roads):
-        half = max(side_width(cfg.forward, cfg.median, w, mw), side_width(cfg.backward, cfg.median, w, mw))
-        pts = np.concatenate([sample(e, max(2, int(e.length / 5.0) + 2)) for e in g])
-        shapes.append(shapely.LineString(pts).buffer(half, cap_style="flat"))
-        owners.append(("road", c))
+    halves, lines = [], []
+    for g, cfg in roads:
+        halves.append(max(side_width(cfg.forward, cfg.median, w, mw), side_width(cfg.backward, cfg.median, w, mw)))
+        lines.append(np.concatenate([sample(e, max(2, int(e.length / 5.0) + 2)) for e in g]))
+    shapes = list(shapely.buffer(shapely.linestrings(np.concatenate(lines), indices=np.repeat(
+        np.arange(len(lines)), [len(x) for x in lines])), np.array(halves), cap_style="flat")) if roads else []
+    owners = [("road", c) for c in range(len(roads))]
     rht = p.traffic_rule is TrafficRule.RHT
     for node, legs in junctions.items():
         corners = []
@@ -112,7 +104,7 @@ def overlaps(chs: list[Chain], roads: list[tuple[tuple[Geometry, ...], LaneConfi
             right = side_width(cfg.forward if rht else cfg.backward, False, w, mw)
             corners.append(border_point(*pose, left))
             corners.append(border_point(*pose, -right))
-        shapes.append(shapely.MultiPoint(corners).convex_hull.buffer(-0.5))
+        shapes.append(shapely.MultiPoint(np.array(corners)).convex_hull.buffer(-0.5))
         owners.append(("junction", node))
         side = -1.0 if rht else 1.0  # connection lanes are -1 (RHT) or 1 (LHT): right or left of their reference line
         for body in _lane_bodies(connections.get(node, ()), side, w):

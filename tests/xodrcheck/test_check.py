@@ -178,3 +178,22 @@ def test_rule_stopped_by_the_budget_keeps_a_warning_not_a_crash(monkeypatch):
     (stopped,) = [f for f in report.findings if f.code == "X901"]
     assert "O001 road-overlap stopped (building lane footprints)" in stopped.message
     assert "X900" not in codes(report)
+
+
+def test_library_check_of_damaged_numbers_gives_findings_not_numpy_warnings():
+    """Library users (not only the command line) get findings for widths near the float limit, and no numpy
+    RuntimeWarning (made errors here, so a warning fails the test)."""
+    import warnings
+
+    text = (
+        '<?xml version="1.0" encoding="UTF-8"?>\n<OpenDRIVE><header revMajor="1" revMinor="7"/>'
+        '<road id="1" length="50" junction="-1"><planView><geometry s="0" x="0" y="0" hdg="0" length="50">'
+        '<arc curvature="0.05"/></geometry></planView><lanes><laneSection s="0"><center><lane id="0" type="none"/>'
+        '</center><right><lane id="-1" type="driving"><width sOffset="0" a="-1e308" b="0" c="0" d="0"/></lane>'
+        "</right></laneSection></lanes></road></OpenDRIVE>\n"
+    )
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        report = check(text.encode())
+    assert "G010" in {f.code for f in report.findings}
+    assert not any(f.code.startswith("X90") for f in report.findings)

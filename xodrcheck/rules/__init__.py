@@ -13,8 +13,8 @@ prefix    category    codes
 ``R``     reference   ``R0xx`` ids and references (:mod:`.reference`)
 ``K``     link        ``K0xx`` road-link topology (:mod:`.link_topology`); ``K1xx`` positions at contacts (:mod:`.link`)
 ``L``     lane        ``L0xx`` lane topology (:mod:`.lane`, :mod:`.lane_attributes`); ``L1xx`` lane geometry
-``G``     geometry    ``G0xx``-``G8xx`` plan view and profiles (:mod:`.geometry`); ``G9xx`` redundant records
-                      (:mod:`.records`)
+``G``     geometry    ``G0xx``-``G8xx`` plan view and profiles (:mod:`.geometry`), lane shapes (:mod:`.lane_shape`);
+                      ``G9xx`` redundant records (:mod:`.records`)
 ``C``     curvature   ``C0xx`` (:mod:`.curvature`)
 ``J``     junction    ``J0xx`` junction topology (:mod:`.junction`); ``J1xx`` junction geometry
                       (:mod:`.junction_geometry`)
@@ -39,6 +39,7 @@ FAMILIES = (
     "lane",
     "lane_attributes",
     "geometry",
+    "lane_shape",
     "records",
     "curvature",
     "junction",

@@ -1,0 +1,167 @@
+"""Lane shapes (``G010``, ``G011``): every lane's outer border stays on the outer side of its inner border over the
+whole lane section, checked exactly rather than at samples.
+
+Between consecutive knots (section ends, record starts of every lane, the laneOffset and the plan view) every border's
+``t`` is one cubic polynomial in ``s``; each lane's signed width ``sign * (t_outer - t_inner)`` is recovered on each
+piece from four evaluations and its minimum found from the roots of its derivative. A lane given by ``<width>``
+records with a negative minimum has a negative width (``G010``); a lane given by ``<border>`` records crosses its inner
+neighbour (``G011``, ASAM's ``road.lane.border.overlap_with_inner_lanes``).
+"""
+
+from __future__ import annotations
+
+import weakref
+
+import numpy as np
+
+from xodrcheck.findings import Category, Severity
+from xodrcheck.model import Road
+from xodrcheck.rules.context import Context
+from xodrcheck.rules.registry import rule
+from xodrcheck.rules.sampled import usable
+from xodrcheck.sampling import knots
+
+_NODES = np.array([0.125, 0.375, 0.625, 0.875])
+_FIT = np.linalg.inv(np.vander(_NODES, 4, increasing=True))  # values at the nodes -> coefficients in u
+
+
+def _cubic_minimum(coef: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Minimum over ``u`` in [0, 1] of ``c0 + c1 u + c2 u^2 + c3 u^3`` for each column of ``coef`` (4, n): the values
+    and where they are reached."""
+    c0, c1, c2, c3 = coef
+    candidates = [np.zeros_like(c0), np.ones_like(c0)]
+    a, b, c = 3.0 * c3, 2.0 * c2, c1  # derivative a u^2 + b u + c; roots by the cancellation-free formula
+    with np.errstate(divide="ignore", invalid="ignore"):
+        disc = np.sqrt(np.maximum(b * b - 4.0 * a * c, 0.0))
+        q = -0.5 * (b + np.where(b >= 0, disc, -disc))
+        r1, r2 = q / a, c / q
+    for r in (r1, r2):
+        candidates.append(np.clip(np.where(np.isfinite(r), r, 0.0), 0.0, 1.0))
+    u = np.stack(candidates)
+    values = c0 + u * (c1 + u * (c2 + u * c3))
+    k = np.argmin(values, axis=0)
+    columns = np.arange(values.shape[1])
+    return values[k, columns], u[k, columns]
+
+
+def _lane_minima(ctx: Context, road: Road, index: int):
+    """(lane, minimum signed width, s where reached) for every lane with records in a section, from the exact
+    per-piece cubics (all lanes and pieces of the section in one vectorised pass)."""
+    geometry = ctx.geometry(road.id)
+    cuts = knots(geometry, index)
+    if len(cuts) < 2:
+        return
+    a, b = cuts[:-1], cuts[1:]
+    keep = b - a > 1e-9
+    a, b = a[keep], b[keep]
+    if not len(a):
+        return
+    s = (a[:, None] + (b - a)[:, None] * _NODES[None, :]).ravel()
+    borders = geometry.borders(index, s)
+    lanes, widths = [], []
+    for sign, side in zip((+1, -1), geometry.side_lanes(index)):
+        inner = borders[0]
+        for lane, law in zip(side.lanes, side.laws):
+            outer = borders[lane.id]
+            if law is not None:
+                lanes.append(lane)
+                widths.append((sign * (outer - inner)).reshape(-1, 4))
+            inner = outer
+    if not lanes:
+        return
+    raw = np.concatenate(widths)
+    stacked = np.where(np.isfinite(raw), raw, 0.0)
+    with np.errstate(over="ignore", invalid="ignore"):  # damaged widths near the float limit
+        coefficients = _FIT @ stacked.T
+        value, u = _cubic_minimum(coefficients)
+    # Where the cubic fit overflows (widths near the float limit), fall back to the smallest width at the nodes.
+    nodes = np.where(np.isnan(raw), np.inf, raw)
+    lost = ~np.isfinite(value)
+    value = np.where(lost, nodes.min(axis=1), value)
+    u = np.where(lost, _NODES[np.argmin(nodes, axis=1)], u)
+    value, u = value.reshape(len(lanes), -1), u.reshape(len(lanes), -1)
+    for row, lane in enumerate(lanes):
+        k = int(np.argmin(value[row]))
+        yield lane, float(value[row, k]), float(a[k] + u[row, k] * (b[k] - a[k]))
+
+
+_MINIMA: weakref.WeakKeyDictionary[Context, list] = weakref.WeakKeyDictionary()
+
+
+def _width_findings(ctx: Context, by_widths: bool):
+    """Lanes (with ``<width>`` records when ``by_widths``, else with ``<border>`` records) whose signed width drops
+    under ``-zero_width``; the minima are computed once per file for both rules."""
+    tol = ctx.tolerances.zero_width
+    found = _MINIMA.get(ctx)
+    if found is None:
+        found = []
+        for road in ctx.document.roads:
+            geometry = usable(ctx, road)
+            if geometry is None:
+                continue
+            for index, section in enumerate(road.lane_sections):
+                for lane, minimum, s in _lane_minima(ctx, road, index):
+                    if minimum < -tol:
+                        found.append((road, geometry, index, section, lane, minimum, s))
+        _MINIMA[ctx] = found
+    for road, geometry, index, section, lane, minimum, s in found:
+        if bool(lane.widths) != by_widths:
+            continue
+        point = geometry.lane_points(index, lane.id, np.array([s]), "outer")
+        where = {
+            "road": road.id,
+            "lane": lane.id,
+            "section_s": section.s,
+            "s": s,
+            "x": float(point.x[0]),
+            "y": float(point.y[0]),
+            "line": lane.line or section.line or None,
+        }
+        yield lane, section, minimum, where
+
+
+@rule("G010", "negative-width", Category.GEOMETRY, Severity.ERROR)
+def negative_width(ctx: Context):
+    """A lane's width becomes negative somewhere in its lane section.
+
+    The width polynomials are minimised exactly over each record's interval (not only at sample points), so a cubic
+    that dips below zero between its ends is found. A negative width puts the outer border inside the inner one.
+
+    Passes (3.5 m narrowing linearly to 0 over the 50 m section)::
+
+        <laneSection s="0"> ... <lane id="-1"><width sOffset="0" a="3.5" b="-0.07" c="0" d="0"/>
+
+    Fails (narrowing to -1.5 m)::
+
+        <laneSection s="0"> ... <lane id="-1"><width sOffset="0" a="3.5" b="-0.1" c="0" d="0"/>
+    """
+    for lane, section, minimum, where in _width_findings(ctx, True):
+        yield negative_width.finding(
+            f"road {where['road']}: lane {lane.id} of the lane section at s={section.s:g} is {minimum:.4g} m wide at "
+            f"s={where['s']:.6g}; its width records must stay >= 0 over the section",
+            **where,
+        )
+
+
+@rule("G011", "border-crosses-inner", Category.GEOMETRY, Severity.ERROR)
+def border_crosses_inner(ctx: Context):
+    """A lane given by ``<border>`` records has its outer border on the wrong side of its inner border.
+
+    For a left lane the outer border's ``t`` must stay at or above the inner border's, for a right lane at or below,
+    over the whole section (checked exactly per polynomial piece). ASAM's
+    ``road.lane.border.overlap_with_inner_lanes``.
+
+    Passes (lane 1's border at t=3.5, outside lane 0 at t=0)::
+
+        <left><lane id="1"><border sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left>
+
+    Fails (the border crosses t=0 at s=35)::
+
+        <left><lane id="1"><border sOffset="0" a="3.5" b="-0.1" c="0" d="0"/></lane></left>
+    """
+    for lane, section, minimum, where in _width_findings(ctx, False):
+        yield border_crosses_inner.finding(
+            f"road {where['road']}: lane {lane.id} of the lane section at s={section.s:g}: its outer border lies "
+            f"{-minimum:.4g} m on the inner side of its inner border at s={where['s']:.6g}; the lane's borders cross",
+            **where,
+        )
