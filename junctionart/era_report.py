@@ -68,6 +68,10 @@ class Sample:
         return self.junctions if column in {c for c, *_ in JUNCTION_METRICS} else self.legs
 
 
+#: fewer values than this are drawn as ticks, not as a density
+MIN_DENSITY_SAMPLES = 10
+
+
 def _bins(values: list[np.ndarray], n: int = 40) -> np.ndarray:
     finite = np.concatenate([v[np.isfinite(v)] for v in values]) if values else np.array([])
     if finite.size == 0:
@@ -89,15 +93,21 @@ def distribution_figure(column: str, samples: Sequence[Sample], compare: Sample 
     fig, axes = plt.subplots(1, len(samples), figsize=(5.2 * len(samples), 3.6), sharey=True, squeeze=False)
     for ax, sample in zip(axes[0], samples):
         table = sample.table(column)
-        for legs in LEG_COUNTS:
+        for k, legs in enumerate(LEG_COUNTS):
             values = table[column][(table["legs"] == legs) & np.isfinite(table[column])]
-            if values.size:
-                ax.hist(values, bins=bins, density=True, histtype="step", linewidth=1.4,
-                        label=f"{legs} legs (n={values.size})")
+            inside = values[(values >= bins[0]) & (values <= bins[-1])]
+            if values.size < MIN_DENSITY_SAMPLES or inside.size == 0:
+                # a density of a handful of values is a few spikes: show the values themselves
+                if values.size:
+                    ax.plot(np.clip(values, bins[0], bins[-1]), np.zeros(values.size), linestyle="none",
+                            marker="|", markersize=14, color=f"C{k}", label=f"{legs} legs (n={values.size}, values)")
+                continue
+            ax.hist(values, bins=bins, density=True, histtype="step", linewidth=1.4, color=f"C{k}",
+                    label=f"{legs} legs (n={values.size})")
         if compare is not None:
             ctable = compare.table(column)
             values = ctable[column][(ctable["legs"] >= LEG_COUNTS[0]) & np.isfinite(ctable[column])]
-            if values.size:
+            if ((values >= bins[0]) & (values <= bins[-1])).any():
                 ax.hist(values, bins=bins, density=True, histtype="step", linestyle="--", color="black",
                         linewidth=1.4, label=f"{compare.label}, all legs (n={values.size})")
         ax.set_title(sample.label)

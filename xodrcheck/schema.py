@@ -2,7 +2,10 @@
 
 Versions 1.1 to 1.7 use XSD 1.0 and compile in lxml in milliseconds. 1.8 uses XSD 1.1 (``xs:assert``,
 ``xs:alternative``), which lxml cannot compile: xmlschema's ``XMLSchema11`` validator is used, and since building it
-takes about half a second, the compiled schema is cached per version.
+takes about half a second, the compiled schema is cached per version. xmlschema validates about 1 MB/s, so a file is
+first given a fast verdict (:mod:`xodrcheck.schema_fast`: lxml on the XSD 1.0 part, with the alternatives made
+explicit and the assertions evaluated one by one); only a file not shown valid that way goes through xmlschema,
+which reports its errors.
 
 Which schema a version gets (:data:`SCHEMA_FOLDERS`): the header has only ``revMajor`` and ``revMinor`` (its
 ``version`` attribute is the map's own version, not the standard's), so a patch release cannot be told apart from its
@@ -18,6 +21,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import cache
 from importlib import resources
+
+from xodrcheck import schema_fast
 
 #: (revMajor, revMinor) -> (folder under the package data ``xodrcheck.schemas``, main file).
 SCHEMA_FOLDERS: dict[tuple[int, int], tuple[str, str]] = {
@@ -82,6 +87,9 @@ def validate(tree, version: tuple[int, int]) -> Iterator[SchemaError]:
     """Validate an lxml tree against the schema of ``version``, yielding each error with its source line."""
     schema = compiled(version)
     if version in XSD11:
+        folder, main = SCHEMA_FOLDERS[version]
+        if schema_fast.is_valid(tree, schema, folder, main):
+            return  # shown valid by lxml on the XSD 1.0 part plus the alternatives and assertions (schema_fast)
         for err in schema.iter_errors(tree):
             line = getattr(err, "sourceline", None) or 0
             reason = err.reason or str(err.message)

@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import junctionart
@@ -117,3 +118,37 @@ def test_cli_bad_options_are_one_line(tmp_path, capsys):
     assert cli.main(["era", "-o", str(tmp_path), "--size", "big", "-q"]) == 2
     assert cli.main(["era", "-o", str(tmp_path), "-n", "0", "-q"]) == 2
     assert "Traceback" not in capsys.readouterr().err
+
+
+def test_distribution_figure_draws_rare_leg_counts_as_values_without_warnings(tmp_path, monkeypatch):
+    """Two 7-leg intersections are drawn as two ticks, not as a spiky density; a leg count whose values all lie past
+    the shared bins (cut at the 99.5th percentile) does not divide by zero (RuntimeWarnings are errors here)."""
+    import warnings
+
+    import matplotlib.axes
+
+    from junctionart import era_report
+
+    rng = np.random.default_rng(0)
+    legs = np.concatenate([np.full(400, 4.0), np.full(2, 7.0), np.full(3, 6.0)])
+    area = np.concatenate([rng.uniform(500, 1500, 400), [900.0, 1100.0], [1e6, 2e6, 3e6]])
+    sample = era_report.Sample("junctionart", {"legs": legs, "area": area}, {"legs": legs, "area": area})
+    drawn = {"hist": [], "plot": []}
+    real_hist, real_plot = matplotlib.axes.Axes.hist, matplotlib.axes.Axes.plot
+
+    def hist(self, values, *args, **kwargs):
+        drawn["hist"].append(kwargs.get("label"))
+        return real_hist(self, values, *args, **kwargs)
+
+    def plot(self, *args, **kwargs):
+        drawn["plot"].append(kwargs.get("label"))
+        return real_plot(self, *args, **kwargs)
+
+    monkeypatch.setattr(matplotlib.axes.Axes, "hist", hist)
+    monkeypatch.setattr(matplotlib.axes.Axes, "plot", plot)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        era_report.distribution_figure("area", [sample], None, tmp_path / "area.png")
+    assert (tmp_path / "area.png").stat().st_size > 0
+    assert drawn["hist"] == ["4 legs (n=400)"]
+    assert drawn["plot"] == ["6 legs (n=3, values)", "7 legs (n=2, values)"]

@@ -15,7 +15,8 @@ MAX_REPORTED = 200
 def schema_invalid(ctx: Context):
     """The file does not validate against the XSD of the OpenDRIVE version its header declares.
 
-    1.1 to 1.7 are validated with lxml, 1.8 with an XSD 1.1 validator (its schema uses assertions). A 1.6 file is
+    1.1 to 1.7 are validated with lxml, 1.8 with an XSD 1.1 validator (its schema uses assertions and type
+    alternatives; a fast verdict, :mod:`xodrcheck.schema_fast`, spares valid files the slow one). A 1.6 file is
     checked against the 1.6.1 schema, 1.7 against 1.7.0, 1.8 against 1.8.1 (see :mod:`xodrcheck.schema`). Each schema
     error is one finding at its line, up to 200 per file.
 

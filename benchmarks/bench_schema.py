@@ -1,0 +1,61 @@
+"""OpenDRIVE 1.8 schema validation of valid files: the fast verdict (``xodrcheck.schema_fast``: lxml on the XSD 1.0
+part, alternatives made explicit, assertions one by one) against xmlschema's XSD 1.1 validator, as ratios measured in
+one run on generated maps (random lanes, 500 m to 2 km).
+
+    python benchmarks/bench_schema.py [--repeats 3]
+
+Target: the fast verdict in at most a quarter of xmlschema's time on maps of 1 km and more.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import sys
+import time
+from pathlib import Path
+
+from lxml import etree
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+import junctionart as ja
+from xodrcheck import schema, schema_fast
+
+V18 = (1, 8)
+
+
+def _median_time(fn, repeats: int) -> float:
+    times = []
+    for _ in range(repeats):
+        t0 = time.perf_counter()
+        fn()
+        times.append(time.perf_counter() - t0)
+    return statistics.median(times)
+
+
+def main(argv: list[str] | None = None) -> int:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--repeats", type=int, default=3)
+    args = ap.parse_args(argv)
+    full = schema.compiled(V18)
+    folder, main_file = schema.SCHEMA_FOLDERS[V18]
+    schema_fast.derived(folder, main_file)  # compiled once per process, as in any run
+    print(f"{'map':22} {'size kB':>8} {'xmlschema s':>12} {'fast s':>8} {'ratio':>6}  target <= 0.25")
+    worst = 0.0
+    for size in (500, 1000, 2000):
+        data = ja.to_bytes(ja.generate(ja.Params(width=size, height=size, randomize_lanes=True), 3))
+        tree = etree.ElementTree(etree.fromstring(data, etree.XMLParser(resolve_entities=False, no_network=True)))
+        assert schema_fast.is_valid(tree, full, folder, main_file), "a generated map must take the fast path"
+        slow = _median_time(lambda t=tree: list(full.iter_errors(t)), args.repeats)
+        fast = _median_time(lambda t=tree: schema_fast.is_valid(t, full, folder, main_file), args.repeats)
+        ratio = fast / slow
+        if size >= 1000:
+            worst = max(worst, ratio)
+        print(f"{size} m random lanes{'':5} {len(data) // 1000:8d} {slow:12.3f} {fast:8.3f} {ratio:6.2f}")
+    print(f"worst ratio at 1 km and more: {worst:.2f} ({'met' if worst <= 0.25 else 'MISSED'})")
+    return 0 if worst <= 0.25 else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())

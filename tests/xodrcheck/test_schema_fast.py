@@ -1,0 +1,154 @@
+"""The fast XSD 1.1 verdict (xodrcheck.schema_fast) against the full validator (xmlschema): it may only say "valid"
+where xmlschema finds no error, and it must say so for valid files, or the speed is lost."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from lxml import etree
+
+import junctionart as ja
+from fuzz.documents import opendrive_documents
+from fuzz.mutations import damaged_documents
+from xodrcheck import schema, schema_fast
+
+V18 = (1, 8)
+FOLDER, MAIN = schema.SCHEMA_FOLDERS[V18]
+
+
+def _tree(data: bytes):
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True)
+    return etree.ElementTree(etree.fromstring(data, parser))
+
+
+def _fast(tree) -> bool:
+    return schema_fast.is_valid(tree, schema.compiled(V18), FOLDER, MAIN)
+
+
+def _full(tree) -> list[str]:
+    """Errors of the full XSD 1.1 validator alone."""
+    return [str(e.reason or e.message) for e in schema.compiled(V18).iter_errors(tree)]
+
+
+def _doc(junctions: str = "", objects: str = "", extra_root: str = "") -> bytes:
+    road = """<road id="{id}" length="10" junction="{junction}">{link}
+    <planView><geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry></planView>
+    <lanes><laneSection s="0"><center><lane id="0" type="none" level="false"/></center>
+      <right><lane id="-1" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>
+    </laneSection></lanes>{objects}
+  </road>"""
+    roads = "".join(
+        road.format(id=i, junction=j, link="", objects=objects if i == 1 else "")
+        for i, j in ((1, "-1"), (2, "-1"), (3, "100"))
+    )
+    return (f'<?xml version="1.0" encoding="UTF-8"?>\n<OpenDRIVE{extra_root}><header revMajor="1" revMinor="8"/>'
+            f"{roads}{junctions}</OpenDRIVE>").encode()
+
+
+COMMON = ('<junction id="100" name="j"><connection id="0" incomingRoad="1" connectingRoad="3" contactPoint="start">'
+          '<laneLink from="-1" to="-1"/></connection></junction>')
+DIRECT = ('<junction id="100" name="j" type="direct"><connection id="0" incomingRoad="1" linkedRoad="2" '
+          'contactPoint="start"><laneLink from="-1" to="-1"/></connection></junction>')
+
+
+@pytest.mark.parametrize("junction", [COMMON, DIRECT], ids=["common", "direct"])
+def test_valid_junctions_of_each_type_are_shown_valid(junction):
+    tree = _tree(_doc(junction))
+    assert _full(tree) == []
+    assert _fast(tree)
+
+
+@pytest.mark.parametrize(
+    ("name", "data"),
+    [
+        # an assertion (connection ids unique in a junction) is all that fails
+        ("assertion", _doc(COMMON.replace("</junction>", COMMON[COMMON.index("<connection"):COMMON.index("</junction>")]
+                                          + "</junction>"))),
+        # an alternative: a direct junction's connection needs linkedRoad, a common one's connectingRoad
+        ("alternative", _doc(DIRECT.replace('linkedRoad="2"', 'connectingRoad="3"'))),
+        # an object assertion: radius together with width and length
+        ("object-assertion", _doc(COMMON, objects='<objects><object id="o" s="1" t="0" zOffset="0" radius="1" '
+                                                  'width="1" length="1" type="pole" orientation="none"/></objects>')),
+    ],
+)
+def test_xsd11_only_errors_are_not_shown_valid(name, data):
+    tree = _tree(data)
+    assert _full(tree), name  # the case is invalid for the full validator ...
+    assert not _fast(tree)  # ... and the fast verdict does not hide it
+    assert list(schema.validate(tree, V18))  # so validate() reports it
+
+
+def test_where_libxml2_is_stricter_the_full_validator_decides():
+    """A junction connection naming a road that does not exist breaks keyref r_junction_connection_incomingRoad;
+    libxml2 sees it, xmlschema 4 does not. S001 stays the XSD 1.1 validator's verdict (rule R011 reports the missing road)."""
+    tree = _tree(_doc(COMMON.replace('incomingRoad="1"', 'incomingRoad="9"')))
+    assert not _fast(tree)
+    assert list(schema.validate(tree, V18)) == _full(tree) == []
+
+
+def test_xsi_attributes_go_to_the_full_validator():
+    tree = _tree(_doc(COMMON, extra_root=' xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" '
+                                         'xsi:noNamespaceSchemaLocation="x.xsd"'))
+    assert not _fast(tree)
+
+
+def test_comments_and_processing_instructions_are_skipped():
+    tree = _tree(_doc(COMMON.replace("<laneLink", "<!-- a comment --><?pi x?><laneLink")))
+    assert _full(tree) == [] and _fast(tree)
+
+
+@pytest.mark.parametrize("seed", [1, 2])
+def test_generated_maps_are_shown_valid(seed):
+    params = ja.Params(width=500, height=500, randomize_lanes=True, u_turn_probability=1.0, median_probability=0.6,
+                       median_width=8.0)
+    tree = _tree(ja.to_bytes(ja.generate(params, seed)))
+    assert _full(tree) == []
+    assert _fast(tree)
+
+
+def _corpus_18() -> list[Path]:
+    root = os.environ.get("XODR_CORPUS")
+    if not root or not Path(root).is_dir():
+        return []
+    found = []
+    for path in sorted(Path(root).rglob("*.xodr")):
+        head = path.read_bytes()[:4000]
+        if b'revMinor="8"' in head or b"revMinor='8'" in head:
+            found.append(path)
+    return found
+
+
+@pytest.mark.corpus
+def test_corpus_18_files_get_the_same_verdict():
+    paths = _corpus_18()
+    if not paths:
+        pytest.fail("no OpenDRIVE 1.8 file found under $XODR_CORPUS")
+    for path in paths:
+        tree = etree.parse(str(path), etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True))
+        full = _full(tree)
+        assert _fast(tree) == (not full), (path.name, full[:3])
+
+
+_V18_DOCS = opendrive_documents(versions=(V18,), max_roads_per_chain=2, max_elements=2, max_lanes=2)
+
+
+@settings(max_examples=40, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(_V18_DOCS)
+def test_valid_documents_take_the_fast_path(data):
+    tree = _tree(data)
+    assert _full(tree) == []
+    assert _fast(tree)
+
+
+@settings(max_examples=200, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(damaged_documents(base=_V18_DOCS, min_mutations=1, max_mutations=3))
+def test_damaged_documents_are_never_shown_valid_when_they_are_not(data):
+    try:
+        tree = _tree(data)
+    except etree.XMLSyntaxError:
+        return  # not well-formed: no schema validation at all
+    full = _full(tree)
+    assert not (_fast(tree) and full), full[:3]
