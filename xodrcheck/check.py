@@ -20,8 +20,6 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-import numpy as np
-
 from xodrcheck.config import Config, ConfigError
 from xodrcheck.findings import Finding, OutOfTime, Severity
 from xodrcheck.rules import load_rules
@@ -171,6 +169,8 @@ def check(
     (the command line loads ``pyproject.toml``/``xodrcheck.toml``; call :func:`~xodrcheck.config.load_config` for
     that here).
     """
+    import numpy as np  # here, not at the top: importing xodrcheck stays light
+
     from xodrcheck.reader import read
 
     config = config or Config()
