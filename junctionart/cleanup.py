@@ -169,12 +169,8 @@ def document(layout: Layout, params: Params, name: str = "junctionart") -> Docum
             conns.append(Connection(str(cn + 1), road_ids[cp.in_road], rid, "start",
                                     (LaneLink(cp.in_lane, conn_lane),)))
         junctions.append(Junction(junction_ids[jn], f"junction {junction_ids[jn]} ({jp.legs} legs)", tuple(conns)))
-    xs, ys = [], []
-    for r in roads:
-        for g in r.geometry:
-            for x, y in _three_points(g):
-                xs.append(x)
-                ys.append(y)
+    points = [xy for r in roads for g in r.geometry for xy in _three_points(g)]
+    xs, ys = [x for x, _ in points], [y for _, y in points]
     header = Header(name=name, north=max(ys, default=0.0), south=min(ys, default=0.0), east=max(xs, default=0.0),
                     west=min(xs, default=0.0))
     return Document(header, tuple(roads), tuple(junctions))

@@ -122,6 +122,45 @@ class HermiteFit:
     min_radius: float  # smallest radius over the reference line and the given offset lines
 
 
+def _bends(k, cu, du, cv, dv, p, outermost) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """At parameters ``p`` (1, samples) of each candidate: (nothing stalls or folds, the largest curvature magnitude
+    on the reference line and the outermost offset lines, du/dp, dv/dp). The same operations in the same order as
+    the plain expressions, written into few buffers (allocation was a large part of the cost on these small arrays)."""
+    d1u = 3 * du[:, None] * p
+    d1u += 2 * cu[:, None]
+    d1u *= p
+    d1u += k[:, None]
+    d1v = 3 * dv[:, None] * p
+    d1v += 2 * cv[:, None]
+    d1v *= p
+    d2u = 6 * du[:, None] * p
+    d2u += 2 * cu[:, None]
+    d2v = 6 * dv[:, None] * p
+    d2v += 2 * cv[:, None]
+    speed2 = d1u * d1u
+    tmp = d1v * d1v
+    speed2 += tmp  # squared speed: no hypot and no power over every sample (the costly steps)
+    ok = speed2.min(axis=1) > 1e-18
+    np.maximum(speed2, 1e-24, out=speed2)
+    kappa = d1u * d2v
+    np.multiply(d1v, d2u, out=tmp)
+    kappa -= tmp
+    np.sqrt(speed2, out=tmp)
+    tmp *= speed2
+    kappa /= tmp
+    np.abs(kappa, out=tmp)
+    worst = tmp.max(axis=1)
+    for off in outermost:
+        np.multiply(off, kappa, out=tmp)
+        np.subtract(1.0, tmp, out=tmp)
+        ok &= tmp.min(axis=1) > 0.05
+        np.maximum(tmp, 0.05, out=tmp)
+        np.divide(kappa, tmp, out=tmp)
+        np.abs(tmp, out=tmp)
+        worst = np.maximum(worst, tmp.max(axis=1))
+    return ok, worst, d1u, d1v
+
+
 def fit_connections(targets: np.ndarray, offsets: tuple[float, ...], min_radius: float,
                     scales: np.ndarray) -> list[HermiteFit | None]:
     """For each target (u1, v1, phi), the smoothest Hermite cubic from (0, 0) heading 0 meeting the radius bound on
@@ -142,47 +181,25 @@ def fit_connections(targets: np.ndarray, offsets: tuple[float, ...], min_radius:
     du = -2 * u1 + k + k * c
     cv = 3 * v1 - k * s
     dv = -2 * v1 + k * s
-    p = _P_CHECK[None, :]
-    # the same operations in the same order as the plain expressions, written into few buffers (allocation was a
-    # large part of the cost on these small arrays)
-    d1u = 3 * du[:, None] * p
-    d1u += 2 * cu[:, None]
-    d1u *= p
-    d1u += k[:, None]
-    d1v = 3 * dv[:, None] * p
-    d1v += 2 * cv[:, None]
-    d1v *= p
-    d2u = 6 * du[:, None] * p
-    d2u += 2 * cu[:, None]
-    d2v = 6 * dv[:, None] * p
-    d2v += 2 * cv[:, None]
-    speed2 = d1u * d1u
-    tmp = d1v * d1v
-    speed2 += tmp  # squared speed: no hypot and no power over every sample (the costly steps)
-    ok = (speed2.min(axis=1) > 1e-18) & (chord > 1e-6)
-    np.maximum(speed2, 1e-24, out=speed2)
-    kappa = d1u * d2v
-    np.multiply(d1v, d2u, out=tmp)
-    kappa -= tmp
-    np.sqrt(speed2, out=tmp)
-    tmp *= speed2
-    kappa /= tmp
-    np.abs(kappa, out=tmp)
-    worst = tmp.max(axis=1)
     # |kappa / (1 - t kappa)| grows with t * kappa, so the outermost offset on each side bounds the others (and its
     # fold test implies theirs)
-    outermost = [max((o for o in offsets if o > 0), default=0.0), min((o for o in offsets if o < 0), default=0.0)]
-    for off in (o for o in outermost if o != 0.0):
-        np.multiply(off, kappa, out=tmp)
-        np.subtract(1.0, tmp, out=tmp)
-        ok &= tmp.min(axis=1) > 0.05
-        np.maximum(tmp, 0.05, out=tmp)
-        np.divide(kappa, tmp, out=tmp)
-        np.abs(tmp, out=tmp)
-        worst = np.maximum(worst, tmp.max(axis=1))
-    radius = 1.0 / np.maximum(worst, 1e-300)
-    ok &= radius >= min_radius
-    score = np.where(ok, radius, -1.0).reshape(n, m)
+    outermost = [o for o in (max((o for o in offsets if o > 0), default=0.0),
+                             min((o for o in offsets if o < 0), default=0.0)) if o != 0.0]
+    # a screen on every 8th sample first: a candidate failing there fails on all samples (a minimum can only be
+    # lower and a maximum only higher with more samples), so only the others are evaluated in full
+    ok, worst, _, _ = _bends(k, cu, du, cv, dv, _P_CHECK[None, ::8], outermost)
+    live = np.flatnonzero(ok & (chord > 1e-6) & (1.0 / np.maximum(worst, 1e-300) >= min_radius))
+    ok_live, worst_live, d1u, d1v = _bends(k[live], cu[live], du[live], cv[live], dv[live], _P_CHECK[None, :],
+                                           outermost)
+    radius_live = 1.0 / np.maximum(worst_live, 1e-300)
+    ok_live &= radius_live >= min_radius
+    radius = np.full(n * m, -1.0)
+    radius[live] = radius_live
+    score = np.full(n * m, -1.0)
+    score[live] = np.where(ok_live, radius_live, -1.0)
+    score = score.reshape(n, m)
+    at = np.full(n * m, -1)
+    at[live] = np.arange(len(live))  # candidate -> its row in the full evaluation
     # the last condition, the costliest, only for each target's best candidate so far: total turning equals the
     # heading change (the heading increments never change sign); a best candidate failing it gives way to the next
     pending = np.arange(n)
@@ -191,11 +208,12 @@ def fit_connections(targets: np.ndarray, offsets: tuple[float, ...], min_radius:
         pending = pending[score[pending, best[pending]] >= 0]
         if not len(pending):
             break
-        rows = pending * m + best[pending]
+        cand = pending * m + best[pending]
+        rows = at[cand]
         dh = np.diff(np.arctan2(d1v[rows], d1u[rows]), axis=1)
         dh = np.where(dh > np.pi, dh - 2 * np.pi, np.where(dh < -np.pi, dh + 2 * np.pi, dh))  # into [-pi, pi]
         turned = dh.sum(axis=1)
-        bad = ~(np.abs(np.abs(turned) - np.abs(phi[rows])) < 1e-6)
+        bad = ~(np.abs(np.abs(turned) - np.abs(phi[cand])) < 1e-6)
         score[pending[bad], best[pending[bad]]] = -1.0
         pending = pending[bad]
     sel = np.arange(n) * m + best
