@@ -100,7 +100,8 @@ def distribution_figure(column: str, samples: Sequence[Sample], compare: Sample 
                 # a density of a handful of values is a few spikes: show the values themselves
                 if values.size:
                     ax.plot(np.clip(values, bins[0], bins[-1]), np.zeros(values.size), linestyle="none",
-                            marker="|", markersize=14, color=f"C{k}", label=f"{legs} legs (n={values.size}, values)")
+                            marker="|", markersize=22, markeredgewidth=2.2, clip_on=False, color=f"C{k}",
+                            label=f"{legs} legs (n={values.size}, values)")
                 continue
             ax.hist(values, bins=bins, density=True, histtype="step", linewidth=1.4, color=f"C{k}",
                     label=f"{legs} legs (n={values.size})")
