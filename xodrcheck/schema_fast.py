@@ -61,21 +61,20 @@ def derived(folder_name: str, main: str) -> etree.XMLSchema:
     return etree.XMLSchema(etree.fromstring(texts[main], parser, base_url=main))
 
 
-def _children(xsd_type, cache_: dict) -> dict[str, object]:
-    """Local name -> element declaration of the children ``xsd_type``'s content model declares."""
-    key = id(xsd_type)
-    found = cache_.get(key)
-    if found is None:
-        found = {}
+def _children(xsd_type, known: dict) -> dict[str, object]:
+    """Local name -> element declaration of the children ``xsd_type``'s content model declares (``known``: the
+    answers so far, by the type's id, each kept with its type so that the id stays that type's)."""
+    entry = known.get(id(xsd_type))
+    if entry is None:
+        found: dict[str, object] = {}
         content = getattr(xsd_type, "content", None)
         if content is not None and hasattr(content, "iter_elements"):
             for decl in content.iter_elements():
                 name = getattr(decl, "local_name", None)
                 if name and hasattr(decl, "type"):
                     found.setdefault(name, decl)
-        cache_[key] = (xsd_type, found)  # the type is kept alive with its id
-        return found
-    return found[1]
+        entry = known[id(xsd_type)] = (xsd_type, found)
+    return entry[1]
 
 
 def _selected_type(decl, elem):
