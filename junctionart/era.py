@@ -119,6 +119,28 @@ def measure_map(run: str, params: Params, seed: int) -> MapResult:
 # --------------------------------------------------------------------------------------------------------------------
 # The table on disk
 # --------------------------------------------------------------------------------------------------------------------
+#: Sources that only present results (figures, report, command lines): editing them changes no row, so they are not
+#: part of the generator version (anything else of either package is, to be safe).
+PRESENTATION_ONLY = frozenset({
+    "junctionart/__main__.py", "junctionart/cli.py", "junctionart/era_report.py", "junctionart/render.py",
+    "xodrcheck/__main__.py", "xodrcheck/cli", "xodrcheck/report",
+})
+
+
+def source_hash(packages: Iterable[Path]) -> str:
+    """sha256 (12 hex digits) of the ``.py`` files of ``packages`` (folders) and their paths, less
+    :data:`PRESENTATION_ONLY`."""
+    digest = hashlib.sha256()
+    for package in packages:
+        for path in sorted(package.rglob("*.py")):
+            name = path.relative_to(package.parent).as_posix()
+            if any(name == skip or name.startswith(skip + "/") for skip in PRESENTATION_ONLY):
+                continue
+            digest.update(name.encode())
+            digest.update(path.read_bytes())
+    return digest.hexdigest()[:12]
+
+
 @functools.cache
 def generator_version() -> str:
     """``VERSION+HASH``: the package version and a hash of the source of junctionart and xodrcheck (whose metrics
@@ -131,12 +153,7 @@ def generator_version() -> str:
         version = metadata.version("junctionart")
     except metadata.PackageNotFoundError:
         version = "unknown"
-    digest = hashlib.sha256()
-    for package in (Path(__file__).parent, Path(xodrcheck.__file__).parent):
-        for path in sorted(package.rglob("*.py")):
-            digest.update(path.relative_to(package.parent).as_posix().encode())
-            digest.update(path.read_bytes())
-    return f"{version}+{digest.hexdigest()[:12]}"
+    return f"{version}+{source_hash([Path(__file__).parent, Path(xodrcheck.__file__).parent])}"
 
 
 @dataclass

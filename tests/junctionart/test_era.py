@@ -152,3 +152,27 @@ def test_distribution_figure_draws_rare_leg_counts_as_values_without_warnings(tm
     assert (tmp_path / "area.png").stat().st_size > 0
     assert drawn["hist"] == ["4 legs (n=400)"]
     assert drawn["plot"] == ["6 legs (n=3, values)", "7 legs (n=2, values)"]
+
+
+def test_generator_version_ignores_presentation_only_sources(tmp_path):
+    """Editing the report or figure code keeps the version (a finished run can be redrawn and resumed); editing
+    anything that makes or measures maps changes it."""
+    pkg = tmp_path / "junctionart"
+    (pkg / "intersections").mkdir(parents=True)
+    (pkg / "era_report.py").write_text("A = 1\n")
+    (pkg / "curves.py").write_text("B = 1\n")
+    (pkg / "intersections" / "layout.py").write_text("C = 1\n")
+    before = era.source_hash([pkg])
+    (pkg / "era_report.py").write_text("A = 2\n")
+    assert era.source_hash([pkg]) == before
+    (pkg / "intersections" / "layout.py").write_text("C = 2\n")
+    assert era.source_hash([pkg]) != before
+    checker = tmp_path / "xodrcheck"
+    (checker / "cli").mkdir(parents=True)
+    (checker / "cli" / "check.py").write_text("D = 1\n")
+    (checker / "metrics.py").write_text("E = 1\n")
+    both = era.source_hash([pkg, checker])
+    (checker / "cli" / "check.py").write_text("D = 2\n")
+    assert era.source_hash([pkg, checker]) == both
+    (checker / "metrics.py").write_text("E = 2\n")
+    assert era.source_hash([pkg, checker]) != both
