@@ -47,14 +47,18 @@ _SQRT_PI_OVER_2 = math.sqrt(math.pi / 2.0)
 
 def evaluate(g: Spiral, ds) -> Pose:
     ds = as_array(ds)
-    k0 = g.curv_start
-    c = (g.curv_end - g.curv_start) / g.length if g.length > 0 else 0.0
-    offset = ds * np.exp(1j * g.hdg) * phase_integral(k0 * ds, 0.5 * c * ds * ds)
+    k0, dk = g.curv_start, g.curv_end - g.curv_start
+    c = dk / g.length if g.length > 0 else 0.0
+    # the curvature change over ds as dk * (ds / length), not c * ds: the same value, and finite even for a damaged
+    # element 1e-320 m long (whose rate c overflows to infinity)
+    t = ds / g.length if g.length > 0 else np.zeros_like(ds)
+    turn = 0.5 * dk * ds * t  # the quadratic part of the heading, 0.5 c ds^2
+    offset = ds * np.exp(1j * g.hdg) * phase_integral(k0 * ds, turn)
     return Pose(
         g.x + offset.real,
         g.y + offset.imag,
-        g.hdg + k0 * ds + 0.5 * c * ds * ds,
-        k0 + c * ds,
+        g.hdg + k0 * ds + turn,
+        k0 + dk * t,
         np.full_like(ds, c),
     )
 
@@ -63,13 +67,17 @@ def phase_integral(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """``integral_0^1 exp(i (a t + b t^2)) dt`` for arrays ``a``, ``b`` (complex result, double precision)."""
     a, b = np.broadcast_arrays(np.asarray(a, dtype=float), np.asarray(b, dtype=float))
     out = np.empty(a.shape, dtype=complex)
+    # a damaged element (a curvature change over a length of 1e-320 m is an infinite rate, and times s = 0 a NaN) has
+    # no value: NaN, which the rules report, instead of a piece count of "NaN" pieces
+    finite = np.isfinite(a) & np.isfinite(b)
+    out[~finite] = complex(math.nan, math.nan)
     abs_b = np.abs(b)
     with np.errstate(divide="ignore", invalid="ignore"):
         error = _EPS * (a * a / (4.0 * abs_b) + 2.0 / np.sqrt(abs_b))
-    use_fresnel = (abs_b > 0) & (error <= _FRESNEL_BUDGET)
+    use_fresnel = finite & (abs_b > 0) & (error <= _FRESNEL_BUDGET)
     if use_fresnel.any():
         out[use_fresnel] = _by_fresnel(a[use_fresnel], b[use_fresnel])
-    rest = ~use_fresnel
+    rest = finite & ~use_fresnel
     # Far from curvature 0 with a tiny curvature change over an absurd length (a > 2048 rad of turning): the series
     # would need over a thousand pieces per point; expand in b instead (or take Fresnel when b is not small).
     long = rest & (np.abs(a) * 0.5 > _MAX_PIECES)

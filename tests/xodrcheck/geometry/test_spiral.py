@@ -101,3 +101,22 @@ def test_plain_fresnel_formula_would_fail_the_nearly_arc_case():
     exact = np.array([_phase_reference(ai, bi) for ai, bi in zip(a, b)])
     assert np.all(np.abs(naive - exact) > 1e-9)
     assert np.all(np.abs(spiral.phase_integral(a, b) - exact) < 1e-15)
+
+
+def test_a_spiral_1e_320_m_long_evaluates_to_its_own_ends():
+    """A damaged element so short that its curvature rate (curvEnd - curvStart) / length overflows to infinity still
+    evaluates finitely: heading and curvature are taken as (curvEnd - curvStart) * (ds / length), and at its end the
+    curvature is curvEnd (found by the long fuzz run: the rate times s = 0 gave NaN, and NaN series pieces crashed
+    ten rules)."""
+    g = Spiral(s=0.0, x=62.0, y=0.0, hdg=0.0, length=1e-320, curv_start=0.0, curv_end=0.015625)
+    pose = spiral.evaluate(g, np.array([0.0, 1e-320]))
+    assert np.isfinite(pose.x).all() and np.isfinite(pose.y).all() and np.isfinite(pose.hdg).all()
+    assert pose.x[0] == 62.0 and pose.y[0] == 0.0
+    assert pose.curvature[0] == 0.0 and pose.curvature[1] == 0.015625
+
+
+@pytest.mark.filterwarnings("ignore::RuntimeWarning")
+def test_phase_integral_of_non_finite_arguments_is_nan_not_an_error():
+    out = spiral.phase_integral(np.array([0.0, math.nan, math.inf, 1.0]), np.array([math.nan, 0.0, 0.0, 0.5]))
+    assert np.isnan(out[:3]).all()
+    assert np.isfinite(out[3])
