@@ -7,8 +7,9 @@ is XSD 1.0, which libxml2 (lxml) validates in C. So, on a copy of the document:
 
 1. every element whose declaration has alternatives gets the type they select as an explicit ``xsi:type`` (XSD 1.1
    requires alternative types to derive from the declared type, so XSD 1.0 accepts exactly that choice), and every
-   assertion of every element's type is evaluated with elementpath, as xmlschema does (one that cannot be evaluated
-   counts as failed);
+   assertion of every element's type is evaluated with elementpath on the element as a fragment, as xmlschema does,
+   but untyped (OpenDRIVE's assertions test existence, counts and string or numeric comparisons, where typing does
+   not change the result; one that cannot be evaluated counts as failed);
 2. the copy is validated by lxml against a *derived* XSD 1.0 schema: the shipped files with their assertions and
    alternatives removed (identity constraints, which reach into junctions, keep working).
 
