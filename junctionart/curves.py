@@ -68,11 +68,14 @@ def sample(g: Geometry, n: int = 16) -> np.ndarray:
     return np.column_stack([g.x + c * u - s * v, g.y + s * u + c * v])
 
 
-def unit_tangents(pts: np.ndarray) -> np.ndarray:
-    """Unit tangents of a polyline ``(n, 2)``: central differences inside, one-sided at both ends."""
-    tangent = np.empty_like(pts)
-    tangent[1:-1] = pts[2:] - pts[:-2]
-    tangent[0], tangent[-1] = pts[1] - pts[0], pts[-1] - pts[-2]
+def unit_tangents(pts: np.ndarray, first=0, last=None) -> np.ndarray:
+    """Unit tangents of a polyline ``(n, 2)``: central differences inside, one-sided at both ends. Several polylines
+    stored end to end are handled in one pass when ``first`` and ``last`` give, per point, the indexes of its own
+    polyline's first and last point."""
+    at = np.arange(len(pts))
+    ahead = np.minimum(at + 1, len(pts) - 1 if last is None else last)
+    behind = np.maximum(at - 1, first)
+    tangent = pts[ahead] - pts[behind]
     return tangent / np.maximum(np.hypot(tangent[:, 0], tangent[:, 1]), 1e-12)[:, None]
 
 

@@ -131,21 +131,20 @@ def _lane(add, lane: Lane) -> None:
     add("          </lane>")
 
 
+def _side(add, tag: str, lanes) -> None:
+    add(f"        <{tag}>")
+    for lane in lanes:
+        _lane(add, lane)
+    add(f"        </{tag}>")
+
+
 def _section(add, sec: LaneSection) -> None:
     add(f'      <laneSection s="{fmt(sec.s)}">')
     if sec.left:
-        add("        <left>")
-        for lane in sorted(sec.left, key=lambda l: -l.id):
-            _lane(add, lane)
-        add("        </left>")
-    add("        <center>")
-    _lane(add, sec.center)
-    add("        </center>")
+        _side(add, "left", sorted(sec.left, key=lambda l: -l.id))
+    _side(add, "center", (sec.center,))
     if sec.right:
-        add("        <right>")
-        for lane in sorted(sec.right, key=lambda l: -l.id):
-            _lane(add, lane)
-        add("        </right>")
+        _side(add, "right", sorted(sec.right, key=lambda l: -l.id))
     add("      </laneSection>")
 
 

@@ -7,7 +7,7 @@ import math
 import numpy as np
 import shapely
 
-from ..curves import end_pose, sample
+from ..curves import end_pose, sample, unit_tangents
 from ..graph import Chain
 from ..lanegeom import border_point, side_width
 from ..lanes import LaneConfig
@@ -56,11 +56,7 @@ def _lane_bodies(gs, side: float, w: float) -> list:
         u = c[:, 0] + t * (c[:, 1] + t * (c[:, 2] + t * c[:, 3]))
         v = c[:, 4] + t * (c[:, 5] + t * (c[:, 6] + t * c[:, 7]))
         pts[rows] = np.column_stack([c[:, 8] + c[:, 10] * u - c[:, 11] * v, c[:, 9] + c[:, 11] * u + c[:, 10] * v])
-    # central differences inside each lane, one-sided at its ends (as junctionart.curves.unit_tangents)
-    ahead = np.minimum(np.arange(len(owner)) + 1, last[owner])
-    behind = np.maximum(np.arange(len(owner)) - 1, first[owner])
-    tangent = pts[ahead] - pts[behind]
-    tangent /= np.maximum(np.hypot(tangent[:, 0], tangent[:, 1]), 1e-12)[:, None]
+    tangent = unit_tangents(pts, first[owner], last[owner])
     # the ends move INSET along the lane (dropping the end samples instead would cut a whole step of ~2 m off)
     pts[first] += INSET * tangent[first]
     pts[last] -= INSET * tangent[last]
