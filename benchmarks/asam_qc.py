@@ -96,7 +96,9 @@ def run_asam(command: Path, path: Path) -> list[AsamIssue]:
         result = Path(tmp) / "result.xqar"
         config = Path(tmp) / "config.xml"
         config.write_text(config_text(path, result), encoding="utf-8")
-        subprocess.run([str(Path(command).absolute()), "-c", str(config)], cwd=tmp, capture_output=True, check=False, timeout=600)
+        subprocess.run(
+            [str(Path(command).absolute()), "-c", str(config)], cwd=tmp, capture_output=True, check=False, timeout=600
+        )
         if not result.exists():
             raise RuntimeError(f"asam-qc-opendrive wrote no result for {path}")
         return read_result(result, path)

@@ -56,8 +56,10 @@ def main() -> int:
         ours_time = time.perf_counter() - started
         asam_total += asam_time
         ours_total += ours_time
-        print(f"\n== {path.name}  (version {report.version})  ASAM {asam_time:.2f} s  xodrcheck {ours_time:.3f} s  "
-              f"ratio {asam_time / max(ours_time, 1e-9):.0f}x")
+        print(
+            f"\n== {path.name}  (version {report.version})  ASAM {asam_time:.2f} s  xodrcheck {ours_time:.3f} s  "
+            f"ratio {asam_time / max(ours_time, 1e-9):.0f}x"
+        )
         by_rule = Counter((i.rule, i.level) for i in issues)
         for (rule, level), count in sorted(by_rule.items()):
             codes = sorted(COVERED_BY.get(rule, ()))
@@ -70,8 +72,10 @@ def main() -> int:
         mine = Counter(f.code for f in report.findings)
         print(f"   xodrcheck: {dict(sorted(mine.items()))}")
     n = len(files)
-    print(f"\n{n} files: ASAM {asam_total / n:.2f} s/file, xodrcheck {ours_total / n:.3f} s/file, "
-          f"xodrcheck is {asam_total / max(ours_total, 1e-9):.0f}x faster; ASAM error issues missed: {missed_total}")
+    print(
+        f"\n{n} files: ASAM {asam_total / n:.2f} s/file, xodrcheck {ours_total / n:.3f} s/file, "
+        f"xodrcheck is {asam_total / max(ours_total, 1e-9):.0f}x faster; ASAM error issues missed: {missed_total}"
+    )
     return 1 if missed_total else 0
 
 

@@ -100,20 +100,39 @@ def main(argv: list[str] | None = None) -> int:
         for rnd in (False, True):
             params = Params(randomize_lanes=rnd)
             cpu, tries, valid, st = _run(params, range(args.maps), a_shape, out, args.repeats)
-            rows.append((f"A shape, {'random' if rnd else '2'} lanes", cpu / valid, float("nan"), tries, valid, 1.0,
-                         _peak(params, 0, a_shape, out), st, valid))
-    print(f"{'configuration':28} {'CPU s/map':>10} {'original':>9} {'orig+retry':>10} {'ratio':>6} {'tries':>6} "
-          f"{'valid':>6} {'orig tries/map':>14} {'peak MB':>8} {'roads':>7} {'junct.':>7} {'conn.':>7} {'repairs':>8}")
+            rows.append(
+                (
+                    f"A shape, {'random' if rnd else '2'} lanes",
+                    cpu / valid,
+                    float("nan"),
+                    tries,
+                    valid,
+                    1.0,
+                    _peak(params, 0, a_shape, out),
+                    st,
+                    valid,
+                )
+            )
+    print(
+        f"{'configuration':28} {'CPU s/map':>10} {'original':>9} {'orig+retry':>10} {'ratio':>6} {'tries':>6} "
+        f"{'valid':>6} {'orig tries/map':>14} {'peak MB':>8} {'roads':>7} {'junct.':>7} {'conn.':>7} {'repairs':>8}"
+    )
     for label, per, orig, tries, valid, orig_tries, peak, st, n in rows:
         with_retries = orig * orig_tries
         ratio = float("nan") if math.isnan(orig) else per / with_retries
-        print(f"{label:28} {per:10.3f} {orig:9.3f} {with_retries:10.3f} {ratio:6.2f} {tries:6d} {valid:6d} "
-              f"{orig_tries:14.1f} {peak:8.1f} {st['roads'] / n:7.0f} {st['junctions'] / n:7.0f} "
-              f"{st['connections'] / n:7.0f} {st['repairs'] / n:8.1f}")
-    print("original: CPU s per successful map, generation only, 2 cores (junctionart-notes.md); 'orig+retry' adds its "
-          "discarded tries (5 km: 14 and 21 tries for 5 maps); its 1 km run peaks at about 200 MB (process RSS).")
-    print("here: whole pipeline including the written file, every try a valid map; peak = Python heap (tracemalloc) "
-          f"for one map; process peak RSS over the whole run: {_rss_mb():.0f} MB")
+        print(
+            f"{label:28} {per:10.3f} {orig:9.3f} {with_retries:10.3f} {ratio:6.2f} {tries:6d} {valid:6d} "
+            f"{orig_tries:14.1f} {peak:8.1f} {st['roads'] / n:7.0f} {st['junctions'] / n:7.0f} "
+            f"{st['connections'] / n:7.0f} {st['repairs'] / n:8.1f}"
+        )
+    print(
+        "original: CPU s per successful map, generation only, 2 cores (junctionart-notes.md); 'orig+retry' adds its "
+        "discarded tries (5 km: 14 and 21 tries for 5 maps); its 1 km run peaks at about 200 MB (process RSS)."
+    )
+    print(
+        "here: whole pipeline including the written file, every try a valid map; peak = Python heap (tracemalloc) "
+        f"for one map; process peak RSS over the whole run: {_rss_mb():.0f} MB"
+    )
     return 0
 
 

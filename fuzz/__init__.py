@@ -25,16 +25,31 @@ from fuzz.mutations import (
 )
 
 __all__ = [
-    "DAMAGE", "DEFECTS", "Mutation", "control_line_groups", "control_lines", "damaged_documents",
-    "defective_documents", "document_mutations", "document_specs", "generator_params", "invalid_control_line_files",
-    "invalid_generator_params", "opendrive_documents",
+    "DAMAGE",
+    "DEFECTS",
+    "Mutation",
+    "control_line_groups",
+    "control_lines",
+    "damaged_documents",
+    "defective_documents",
+    "document_mutations",
+    "document_specs",
+    "generator_params",
+    "invalid_control_line_files",
+    "invalid_generator_params",
+    "opendrive_documents",
 ]
 
 
 def __getattr__(name: str):
     # The generator's strategies import junctionart; load them only when asked for.
-    if name in ("control_lines", "control_line_groups", "generator_params", "invalid_control_line_files",
-                "invalid_generator_params"):
+    if name in (
+        "control_lines",
+        "control_line_groups",
+        "generator_params",
+        "invalid_control_line_files",
+        "invalid_generator_params",
+    ):
         from fuzz import generator
 
         return getattr(generator, name)

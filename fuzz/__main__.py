@@ -26,10 +26,15 @@ ROUND_PARTS = 10
 def _parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="python -m fuzz", description=__doc__.split("\n\n")[0])
     parser.add_argument("--minutes", type=float, default=10.0, help="wall-clock time to fuzz for (default 10)")
-    parser.add_argument("--profile", choices=profiles.PROFILES, default="long",
-                        help="Hypothesis profile: round sizes and shrinking (default long)")
-    parser.add_argument("--runs", default=",".join(campaign.RUNS),
-                        help=f"comma-separated runs (default all: {','.join(campaign.RUNS)})")
+    parser.add_argument(
+        "--profile",
+        choices=profiles.PROFILES,
+        default="long",
+        help="Hypothesis profile: round sizes and shrinking (default long)",
+    )
+    parser.add_argument(
+        "--runs", default=",".join(campaign.RUNS), help=f"comma-separated runs (default all: {','.join(campaign.RUNS)})"
+    )
     return parser
 
 
@@ -38,8 +43,10 @@ def main(argv: list[str] | None = None) -> int:
     names = [n.strip() for n in args.runs.split(",") if n.strip()]
     unknown = [n for n in names if n not in campaign.RUNS]
     if unknown or not names:
-        print(f"python -m fuzz: unknown run {unknown[0] if unknown else '(none)'}; runs: {', '.join(campaign.RUNS)}",
-              file=sys.stderr)
+        print(
+            f"python -m fuzz: unknown run {unknown[0] if unknown else '(none)'}; runs: {', '.join(campaign.RUNS)}",
+            file=sys.stderr,
+        )
         return 2
     if not args.minutes > 0:
         print("python -m fuzz: --minutes must be positive", file=sys.stderr)
@@ -58,22 +65,25 @@ def main(argv: list[str] | None = None) -> int:
             config = settings(budget, max_examples=max(1, budget.max_examples // ROUND_PARTS))
             try:
                 campaign.hypothesis_test(name, config)()
-            except Exception as exc:  # noqa: BLE001 - a failing property, reported with its example below
+            except Exception as exc:
                 failed[name] = f"{type(exc).__name__}: {exc}"
                 print(f"FAILED {name}: {failed[name]}", flush=True)
                 for note in getattr(exc, "__notes__", ()):  # Hypothesis's falsifying example and how to replay it
                     print(note, flush=True)
         rounds += 1
-        print(f"round {rounds}: {sum(campaign.TRIED.values())} inputs in {time.monotonic() - started:.0f} s",
-              flush=True)
+        print(
+            f"round {rounds}: {sum(campaign.TRIED.values())} inputs in {time.monotonic() - started:.0f} s", flush=True
+        )
     elapsed = time.monotonic() - started
     print(f"\nprofile {args.profile}, {elapsed / 60.0:.1f} min, {rounds} round(s)")
     for name in names:
         status = "FAILED" if name in failed else "ok"
         print(f"  {name:15} {campaign.TRIED[name]:8d} inputs  {status}  ({campaign.RUNS[name].doc})")
-    print(f"inputs tried: {sum(campaign.TRIED.values())}; generated maps: {P.STATS['maps']}; "
-          f"damaged documents: {P.STATS['damaged']}; failures: {len(failed)}; "
-          f"known faults tolerated: {P.STATS['tolerated']}; time: {elapsed:.0f} s")
+    print(
+        f"inputs tried: {sum(campaign.TRIED.values())}; generated maps: {P.STATS['maps']}; "
+        f"damaged documents: {P.STATS['damaged']}; failures: {len(failed)}; "
+        f"known faults tolerated: {P.STATS['tolerated']}; time: {elapsed:.0f} s"
+    )
     return 1 if failed else 0
 
 

@@ -60,8 +60,12 @@ def _check_defect(case) -> None:
 
 def _moves() -> st.SearchStrategy:
     finite = {"allow_nan": False, "allow_infinity": False}
-    return st.tuples(_metamorphic_inputs(), st.floats(-5e4, 5e4, **finite), st.floats(-5e4, 5e4, **finite),
-                     st.floats(-math.pi, math.pi, **finite))
+    return st.tuples(
+        _metamorphic_inputs(),
+        st.floats(-5e4, 5e4, **finite),
+        st.floats(-5e4, 5e4, **finite),
+        st.floats(-math.pi, math.pi, **finite),
+    )
 
 
 def _check_move(case) -> None:
@@ -142,28 +146,58 @@ def _check_round_trip(case) -> None:
 RUNS: dict[str, Run] = {
     run.name: run
     for run in (
-        Run("documents", "documents", _documents, P.document_is_valid,
-            "valid documents built without the generator: no error"),
-        Run("damaged", "damaged", damaged_documents, lambda data: P.checker_survives(data, tolerated("damaged")),
-            "damaged documents: findings or a clear error, never a crash, in bounded time"),
-        Run("defects", "defects", defective_documents, _check_defect,
-            "documents with one known defect: the defect is reported"),
+        Run(
+            "documents",
+            "documents",
+            _documents,
+            P.document_is_valid,
+            "valid documents built without the generator: no error",
+        ),
+        Run(
+            "damaged",
+            "damaged",
+            damaged_documents,
+            lambda data: P.checker_survives(data, tolerated("damaged")),
+            "damaged documents: findings or a clear error, never a crash, in bounded time",
+        ),
+        Run(
+            "defects",
+            "defects",
+            defective_documents,
+            _check_defect,
+            "documents with one known defect: the defect is reported",
+        ),
         Run("move-rotate", "metamorphic", _moves, _check_move, "moving and rotating a map changes no finding"),
-        Run("renumber", "metamorphic", _renumberings, _check_renumbering,
-            "renumbering roads changes no finding except ids"),
+        Run(
+            "renumber",
+            "metamorphic",
+            _renumberings,
+            _check_renumbering,
+            "renumbering roads changes no finding except ids",
+        ),
         Run("maps", "maps", _maps, _check_map, "valid generator input: a map without error"),
-        Run("invalid-lines", "invalid", _invalid_lines, _check_invalid_lines,
-            "invalid control lines: one clear error"),
-        Run("invalid-params", "invalid", _invalid_params, _check_invalid_params,
-            "invalid parameters: one clear error naming the parameter"),
-        Run("round-trip", "round-trip", _round_trips, _check_round_trip,
-            "generator model -> .xodr -> reader: the same geometry within 1e-9 m"),
+        Run("invalid-lines", "invalid", _invalid_lines, _check_invalid_lines, "invalid control lines: one clear error"),
+        Run(
+            "invalid-params",
+            "invalid",
+            _invalid_params,
+            _check_invalid_params,
+            "invalid parameters: one clear error naming the parameter",
+        ),
+        Run(
+            "round-trip",
+            "round-trip",
+            _round_trips,
+            _check_round_trip,
+            "generator model -> .xodr -> reader: the same geometry within 1e-9 m",
+        ),
     )
 }
 
 
-def hypothesis_test(name: str, config: settings, strategy: st.SearchStrategy | None = None,
-                    key: str | None = None) -> Callable[[], None]:
+def hypothesis_test(
+    name: str, config: settings, strategy: st.SearchStrategy | None = None, key: str | None = None
+) -> Callable[[], None]:
     """The Hypothesis test of run ``name`` under ``config`` (``strategy``: a narrower strategy than the run's own,
     e.g. one defect kind, stored under ``key``). Its database key is the run's own (the same for the test suite and
     ``python -m fuzz``), so stored failures are replayed wherever the run goes next."""

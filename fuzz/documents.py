@@ -65,8 +65,17 @@ def _fits(e: xb.Element, heading: float, band: tuple[float, float]) -> bool:
 
 
 @st.composite
-def _chain(draw, start: xb.Pose, band: tuple[float, float], n_roads: int, prefix: str,
-           kinds, min_length, max_length, max_elements) -> list[tuple[xb.Pose, tuple[xb.Element, ...]]]:
+def _chain(
+    draw,
+    start: xb.Pose,
+    band: tuple[float, float],
+    n_roads: int,
+    prefix: str,
+    kinds,
+    min_length,
+    max_length,
+    max_elements,
+) -> list[tuple[xb.Pose, tuple[xb.Element, ...]]]:
     """Roads (start pose, elements) chained end to start; headings stay in ``start.hdg + band``."""
     out = []
     pose = start
@@ -84,8 +93,9 @@ def _chain(draw, start: xb.Pose, band: tuple[float, float], n_roads: int, prefix
     return out
 
 
-def _lanes(n_left: int, n_right: int, widths: list[float], outer: str, pred: bool, succ: bool,
-           flip: bool = False) -> tuple:
+def _lanes(
+    n_left: int, n_right: int, widths: list[float], outer: str, pred: bool, succ: bool, flip: bool = False
+) -> tuple:
     """Lanes of one road; linked lanes keep their id (``flip``: the neighbours' ids have the other sign)."""
     lanes = []
     for side, n in ((1, n_left), (-1, n_right)):
@@ -146,16 +156,38 @@ def _document_specs(
     reverse_only = _lanes(0, n_left, widths, outer, True, True, flip=True)
     back = lambda q: xb.Pose(q.x, q.y, q.hdg + math.pi)
     quarter = TURN_RADIUS * math.pi / 2
-    a_end, b_start, c_start = xb.LinkSpec("road", names_a[-1], "end"), xb.LinkSpec("road", names_b[0], "start"), \
-        xb.LinkSpec("road", names_c[0], "start")
+    a_end, b_start, c_start = (
+        xb.LinkSpec("road", names_a[-1], "end"),
+        xb.LinkSpec("road", names_b[0], "start"),
+        xb.LinkSpec("road", names_c[0], "start"),
+    )
     # Each connecting road carries one direction (one connection per connecting road, as OpenDRIVE 1.7 requires).
     roads.append(xb.RoadSpec(jroads[0], p, (xb.Element("line", 2 * TURN_RADIUS),), right_only, jid, a_end, b_start))
-    roads.append(xb.RoadSpec(jroads[1], p, (xb.Element("arc", quarter, (("curvature", -1 / TURN_RADIUS),)),),
-                             right_only, jid, a_end, c_start))
-    roads.append(xb.RoadSpec(jroads[2], back(start_b), (xb.Element("line", 2 * TURN_RADIUS),), reverse_only, jid,
-                             b_start, a_end))
-    roads.append(xb.RoadSpec(jroads[3], back(start_c), (xb.Element("arc", quarter, (("curvature", 1 / TURN_RADIUS),)),),
-                             reverse_only, jid, c_start, a_end))
+    roads.append(
+        xb.RoadSpec(
+            jroads[1],
+            p,
+            (xb.Element("arc", quarter, (("curvature", -1 / TURN_RADIUS),)),),
+            right_only,
+            jid,
+            a_end,
+            c_start,
+        )
+    )
+    roads.append(
+        xb.RoadSpec(jroads[2], back(start_b), (xb.Element("line", 2 * TURN_RADIUS),), reverse_only, jid, b_start, a_end)
+    )
+    roads.append(
+        xb.RoadSpec(
+            jroads[3],
+            back(start_c),
+            (xb.Element("arc", quarter, (("curvature", 1 / TURN_RADIUS),)),),
+            reverse_only,
+            jid,
+            c_start,
+            a_end,
+        )
+    )
     into_a = tuple((-k, -k) for k in range(1, n_right + 1) if k < n_right or n_right == 1 or outer == "driving")
     into_bc = tuple((k, -k) for k in range(1, n_left + 1) if k < n_left or n_left == 1 or outer == "driving")
     connections = (
@@ -196,9 +228,15 @@ def opendrive_documents(
     side, 1 to 3) bound the size; ``versions``: the (major, minor) OpenDRIVE versions to declare (from
     :data:`VERSIONS`). The checker finds no error in any of them.
     """
-    return document_specs(kinds=kinds, min_length=min_length, max_length=max_length,
-                          max_roads_per_chain=max_roads_per_chain, max_elements=max_elements, max_lanes=max_lanes,
-                          versions=versions).map(xb.to_bytes)
+    return document_specs(
+        kinds=kinds,
+        min_length=min_length,
+        max_length=max_length,
+        max_roads_per_chain=max_roads_per_chain,
+        max_elements=max_elements,
+        max_lanes=max_lanes,
+        versions=versions,
+    ).map(xb.to_bytes)
 
 
 def document_specs(
@@ -213,9 +251,15 @@ def document_specs(
 ) -> st.SearchStrategy[xb.DocumentSpec]:
     """Like :func:`opendrive_documents`, but the :class:`fuzz.xodrbuild.DocumentSpec` before it is written."""
     _validate(kinds, min_length, max_length, max_roads_per_chain, max_elements, max_lanes, versions)
-    return _document_specs(kinds=tuple(kinds), min_length=float(min_length), max_length=float(max_length),
-                           max_roads_per_chain=max_roads_per_chain, max_elements=max_elements, max_lanes=max_lanes,
-                           versions=tuple(tuple(v) for v in versions))
+    return _document_specs(
+        kinds=tuple(kinds),
+        min_length=float(min_length),
+        max_length=float(max_length),
+        max_roads_per_chain=max_roads_per_chain,
+        max_elements=max_elements,
+        max_lanes=max_lanes,
+        versions=tuple(tuple(v) for v in versions),
+    )
 
 
 def _validate(kinds, min_length, max_length, max_roads_per_chain, max_elements, max_lanes, versions) -> None:
@@ -224,11 +268,17 @@ def _validate(kinds, min_length, max_length, max_roads_per_chain, max_elements, 
     _check_bounds("min_length", min_length, "max_length", max_length)
     if max_length > 1000:
         raise InvalidArgument(f"max_length={max_length!r} must be at most 1000 m (documents are kept small)")
-    for name, value, top in (("max_roads_per_chain", max_roads_per_chain, 20), ("max_elements", max_elements, 20),
-                             ("max_lanes", max_lanes, 3)):
+    for name, value, top in (
+        ("max_roads_per_chain", max_roads_per_chain, 20),
+        ("max_elements", max_elements, 20),
+        ("max_lanes", max_lanes, 3),
+    ):
         _check_positive(name, value, integer=True)
         if value > top:
             raise InvalidArgument(f"{name}={value!r} must be at most {top}")
-    if isinstance(versions, str) or not versions or any(not isinstance(v, (tuple, list)) or tuple(v) not in VERSIONS
-                                                        for v in versions):
+    if (
+        isinstance(versions, str)
+        or not versions
+        or any(not isinstance(v, (tuple, list)) or tuple(v) not in VERSIONS for v in versions)
+    ):
         raise InvalidArgument(f"versions={versions!r} must be a non-empty collection of {VERSIONS}")

@@ -53,8 +53,15 @@ def _line(draw, min_points, max_points, min_length, max_length, max_lanes, lanes
     return pts, (list(draw(_lane_pairs(max_lanes))) if lanes and draw(st.booleans()) else None)
 
 
-def control_lines(*, min_points: int = 2, max_points: int = 4, min_length: float = 20.0, max_length: float = 500.0,
-                  max_lanes: int = 3, lanes: bool = True) -> st.SearchStrategy[ControlLine]:
+def control_lines(
+    *,
+    min_points: int = 2,
+    max_points: int = 4,
+    min_length: float = 20.0,
+    max_length: float = 500.0,
+    max_lanes: int = 3,
+    lanes: bool = True,
+) -> st.SearchStrategy[ControlLine]:
     """Single control lines (:class:`junctionart.controllines.ControlLine`): polylines of ``min_points`` to
     ``max_points`` points, ``min_length`` to ``max_length`` m from end to end, anywhere and in any direction; with
     ``lanes`` some carry a fixed lane configuration (forward, backward) of up to ``max_lanes`` each."""
@@ -67,8 +74,10 @@ def control_lines(*, min_points: int = 2, max_points: int = 4, min_length: float
         raise InvalidArgument(f"max_lanes={max_lanes!r} must be 1, 2 or 3 (the generator's lane limit)")
     # parsed as a control-line file (its validation applies); the file needs a second line, kept far away
     return _line(min_points, max_points, float(min_length), float(max_length), max_lanes, lanes).map(
-        lambda v: parse({"lines": [{"id": "l", "points": v[0], "lanes": v[1]},
-                                   {"id": "m", "points": [[0, 2e4], [100, 2e4]]}]}).lines[0])
+        lambda v: parse(
+            {"lines": [{"id": "l", "points": v[0], "lanes": v[1]}, {"id": "m", "points": [[0, 2e4], [100, 2e4]]}]}
+        ).lines[0]
+    )
 
 
 @st.composite
@@ -86,13 +95,17 @@ def _pair(draw, relation: str, extent: float, max_lanes: int, lanes: bool, offse
         angle = math.radians(draw(st.floats(lo, hi)))
         half = 0.5 * length
         cx = draw(st.floats(0.3, 0.7)) * length
-        other = [[cx - half * math.cos(angle), offset_y - half * math.sin(angle)],
-                 [cx + half * math.cos(angle), offset_y + half * math.sin(angle)]]
+        other = [
+            [cx - half * math.cos(angle), offset_y - half * math.sin(angle)],
+            [cx + half * math.cos(angle), offset_y + half * math.sin(angle)],
+        ]
     else:  # polyline: a bent line above a straight one
         bend = draw(st.floats(-0.2, 0.2)) * length
         other = [[0.0, offset_y + gap], [0.5 * length, offset_y + gap + abs(bend)], [length, offset_y + gap]]
+
     def conf():
         return draw(_lane_pairs(max_lanes)) if lanes and draw(st.booleans()) else None
+
     return [(base, conf()), (other, conf())]
 
 
@@ -106,15 +119,31 @@ def _groups(draw, min_lines, max_lines, extent, relations, max_lanes, lanes, as_
         lines.extend(draw(_pair(relation, extent, max_lanes, lanes, y)))
         y += 0.7 * extent + 150.0
     angle, dx, dy = draw(st.floats(-math.pi, math.pi)), draw(st.floats(-1e4, 1e4)), draw(st.floats(-1e4, 1e4))
-    data = {"lines": [{"id": f"c{i}", "points": _rotate(pts, angle, dx, dy), "group": i // 2,
-                       **({"lanes": list(conf)} if conf else {})} for i, (pts, conf) in enumerate(lines)],
-            "pairs": [[f"c{i}", f"c{i + 1}"] for i in range(0, len(lines), 2)]}
+    data = {
+        "lines": [
+            {
+                "id": f"c{i}",
+                "points": _rotate(pts, angle, dx, dy),
+                "group": i // 2,
+                **({"lanes": list(conf)} if conf else {}),
+            }
+            for i, (pts, conf) in enumerate(lines)
+        ],
+        "pairs": [[f"c{i}", f"c{i + 1}"] for i in range(0, len(lines), 2)],
+    }
     return data if as_json else parse(data)
 
 
-def control_line_groups(*, min_lines: int = 2, max_lines: int = 4, extent: float = 400.0,
-                        relations: tuple[str, ...] = RELATIONS, max_lanes: int = 3, lanes: bool = True,
-                        as_json: bool = False) -> st.SearchStrategy[ControlLines]:
+def control_line_groups(
+    *,
+    min_lines: int = 2,
+    max_lines: int = 4,
+    extent: float = 400.0,
+    relations: tuple[str, ...] = RELATIONS,
+    max_lanes: int = 3,
+    lanes: bool = True,
+    as_json: bool = False,
+) -> st.SearchStrategy[ControlLines]:
     """Sets of control lines in pairs (one group per pair, pairs stacked apart): each pair's lines are related by one
     of ``relations`` (see :data:`RELATIONS`); lines span about ``extent`` metres; the whole set is moved and rotated
     anywhere. ``as_json``: the JSON object of a control-line file instead of :class:`ControlLines`."""
@@ -139,10 +168,12 @@ def _params(draw, min_size, max_size, many_lanes):
     min_d = draw(st.floats(40.0, 150.0))
     lanes = (0.0, 0.1, 0.3, 0.6) if many_lanes else (0.15, 0.6, 0.2, 0.05)
     return Params.create(
-        width=draw(size), height=draw(size),
+        width=draw(size),
+        height=draw(size),
         line_spacing=(lo, lo + draw(st.floats(0.0, 150.0))),
         snap_distance=draw(st.floats(0.0, 80.0)),
-        min_distance=min_d, max_distance=min_d + draw(st.floats(0.0, 100.0)),
+        min_distance=min_d,
+        max_distance=min_d + draw(st.floats(0.0, 100.0)),
         randomize_lanes=draw(st.booleans()),
         lane_distribution_side=lanes,
         lane_width=draw(st.floats(2.5, 4.5)),
@@ -160,8 +191,9 @@ def _params(draw, min_size, max_size, many_lanes):
     )
 
 
-def generator_params(*, min_size: float = 150.0, max_size: float = 500.0, many_lanes: bool = False
-                     ) -> st.SearchStrategy[Params]:
+def generator_params(
+    *, min_size: float = 150.0, max_size: float = 500.0, many_lanes: bool = False
+) -> st.SearchStrategy[Params]:
     """Valid :class:`junctionart.Params` for maps of ``min_size`` to ``max_size`` metres a side (keep it small for
     fast runs); ``many_lanes`` favours three lanes a side."""
     _bounds("min_size", min_size, "max_size", max_size, 50.0)
@@ -180,8 +212,11 @@ def invalid_control_line_files(draw) -> tuple[dict, str]:
     base = draw(control_line_groups(as_json=True, lanes=False))
     lines = base["lines"]
     i = draw(st.integers(0, len(lines) - 1))
-    what = draw(st.sampled_from(("non-finite", "degenerate", "single-point", "overlapping", "lane-count",
-                                 "no-lanes", "one-line")))
+    what = draw(
+        st.sampled_from(
+            ("non-finite", "degenerate", "single-point", "overlapping", "lane-count", "no-lanes", "one-line")
+        )
+    )
     if what == "non-finite":
         p = draw(st.integers(0, len(lines[i]["points"]) - 1))
         lines[i]["points"][p][draw(st.integers(0, 1))] = draw(st.sampled_from(_BAD_NUMBERS))
@@ -205,17 +240,21 @@ def invalid_control_line_files(draw) -> tuple[dict, str]:
 @st.composite
 def invalid_generator_params(draw) -> tuple[dict, str]:
     """``(keyword arguments of Params.create, the parameter at fault)`` that :class:`Params` must refuse."""
-    name, bad = draw(st.sampled_from((
-        ("width", st.sampled_from((math.nan, math.inf, -100.0, 0.0, 10.0, 1e9))),
-        ("height", st.sampled_from((math.nan, -1.0, 0.0))),
-        ("lane_width", st.sampled_from((math.nan, 0.0, -3.5, 1.0, 100.0))),
-        ("median_probability", st.sampled_from((-0.1, 1.5, math.nan))),
-        ("min_turn_radius", st.sampled_from((0.0, -5.0, math.inf))),
-        ("min_leg_angle", st.sampled_from((-1.0, 90.0, math.nan))),
-        ("line_spacing", st.sampled_from(((10.0, 20.0), (200.0, 100.0), (math.nan, 100.0)))),
-        ("lane_distribution_side", st.sampled_from(((0.5, 0.5, 0.5, 0.5), (1.0, 0.0, 0.0, 0.0), (0.2, 0.8)))),
-        ("n_lines", st.sampled_from((0, 1, -3, 10**6))),
-        ("traffic_rule", st.sampled_from(("left", "", "rht"))),
-        ("version", st.sampled_from(("1.6", "2.0", ""))),
-    )))
+    name, bad = draw(
+        st.sampled_from(
+            (
+                ("width", st.sampled_from((math.nan, math.inf, -100.0, 0.0, 10.0, 1e9))),
+                ("height", st.sampled_from((math.nan, -1.0, 0.0))),
+                ("lane_width", st.sampled_from((math.nan, 0.0, -3.5, 1.0, 100.0))),
+                ("median_probability", st.sampled_from((-0.1, 1.5, math.nan))),
+                ("min_turn_radius", st.sampled_from((0.0, -5.0, math.inf))),
+                ("min_leg_angle", st.sampled_from((-1.0, 90.0, math.nan))),
+                ("line_spacing", st.sampled_from(((10.0, 20.0), (200.0, 100.0), (math.nan, 100.0)))),
+                ("lane_distribution_side", st.sampled_from(((0.5, 0.5, 0.5, 0.5), (1.0, 0.0, 0.0, 0.0), (0.2, 0.8)))),
+                ("n_lines", st.sampled_from((0, 1, -3, 10**6))),
+                ("traffic_rule", st.sampled_from(("left", "", "rht"))),
+                ("version", st.sampled_from(("1.6", "2.0", ""))),
+            )
+        )
+    )
     return {name: draw(bad)}, name

@@ -44,8 +44,29 @@ DEFECTS: dict[str, frozenset[str]] = {
 DAMAGE = ("drop", "duplicate", "swap", "attribute", "remove-attribute", "rename", "truncate")
 
 #: Values an attribute is set to by the ``attribute`` damage.
-BAD_VALUES = ("", " ", "NaN", "nan", "inf", "-INF", "1e308", "-1e308", "1e999", "-1", "-0", "0", "1e-320",
-              "99999999999999999999999", "-99999999999999999999999", "abc", "1,5", "0x10", "true", "start", "-1.5e-9")
+BAD_VALUES = (
+    "",
+    " ",
+    "NaN",
+    "nan",
+    "inf",
+    "-INF",
+    "1e308",
+    "-1e308",
+    "1e999",
+    "-1",
+    "-0",
+    "0",
+    "1e-320",
+    "99999999999999999999999",
+    "-99999999999999999999999",
+    "abc",
+    "1,5",
+    "0x10",
+    "true",
+    "start",
+    "-1.5e-9",
+)
 
 _PARSER = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False, huge_tree=False)
 
@@ -142,8 +163,11 @@ def _road_kink(m: Mutation, root) -> bool:
 
 
 def _planview(m: Mutation, root, attribute: str) -> bool:
-    roads = [r for r in _roads(root) if len(_geometries(r)) >= 2 and all(
-        _float(g, k) is not None for g in _geometries(r) for k in ("x", "y", "hdg"))]
+    roads = [
+        r
+        for r in _roads(root)
+        if len(_geometries(r)) >= 2 and all(_float(g, k) is not None for g in _geometries(r) for k in ("x", "y", "hdg"))
+    ]
     if not roads:
         return False
     gs = _geometries(m.pick(0, roads))
@@ -167,8 +191,12 @@ def _road_length(m: Mutation, root) -> bool:
 
 
 def _road_links(root, kind: str = "road"):
-    return [el for r in _roads(root) for el in (r.find("link/predecessor"), r.find("link/successor"))
-            if el is not None and el.get("elementType") == kind]
+    return [
+        el
+        for r in _roads(root)
+        for el in (r.find("link/predecessor"), r.find("link/successor"))
+        if el is not None and el.get("elementType") == kind
+    ]
 
 
 def _link_target_missing(m: Mutation, root) -> bool:
@@ -199,8 +227,12 @@ def _duplicate_road_id(m: Mutation, root) -> bool:
 
 
 def _lane_link_dropped(m: Mutation, root) -> bool:
-    lanes = [ln for r in _roads(root, True) for ln in r.iterfind("lanes/laneSection/*/lane")
-             if ln.get("id") != "0" and ln.find("link") is not None and len(ln.find("link")) > 0]
+    lanes = [
+        ln
+        for r in _roads(root, True)
+        for ln in r.iterfind("lanes/laneSection/*/lane")
+        if ln.get("id") != "0" and ln.find("link") is not None and len(ln.find("link")) > 0
+    ]
     if not lanes:
         return False
     link = m.pick(0, lanes).find("link")
@@ -209,8 +241,13 @@ def _lane_link_dropped(m: Mutation, root) -> bool:
 
 
 def _lane_width_step(m: Mutation, root) -> bool:
-    widths = [w for r in _roads(root, True) if r.find("link") is not None
-              for w in r.iterfind("lanes/laneSection/*/lane/width") if _float(w, "a")]
+    widths = [
+        w
+        for r in _roads(root, True)
+        if r.find("link") is not None
+        for w in r.iterfind("lanes/laneSection/*/lane/width")
+        if _float(w, "a")
+    ]
     if not widths:
         return False
     w = m.pick(0, widths)
@@ -219,16 +256,16 @@ def _lane_width_step(m: Mutation, root) -> bool:
 
 
 def _lane_id_gap(m: Mutation, root) -> bool:
-    sides = [side for r in _roads(root) for side in r.iterfind("lanes/laneSection/right")
-             if side.findall("lane")]
+    sides = [side for r in _roads(root) for side in r.iterfind("lanes/laneSection/right") if side.findall("lane")]
     if not sides:
         return False
     lanes = m.pick(0, sides).findall("lane")
     ids = [int(ln.get("id")) for ln in lanes if (ln.get("id") or "").lstrip("-").isdigit()]
     if not ids:
         return False
-    outer = lanes[[int(ln.get("id")) if (ln.get("id") or "").lstrip("-").isdigit() else 0
-                   for ln in lanes].index(min(ids))]
+    outer = lanes[
+        [int(ln.get("id")) if (ln.get("id") or "").lstrip("-").isdigit() else 0 for ln in lanes].index(min(ids))
+    ]
     outer.set("id", str(min(ids) - 1))
     return True
 
@@ -377,8 +414,9 @@ def _validate_kinds(name: str, kinds, valid) -> tuple[str, ...]:
     return tuple(kinds)
 
 
-def document_mutations(*, defects: Sequence[str] | None = None, damage: Sequence[str] | None = None
-                       ) -> st.SearchStrategy[Mutation]:
+def document_mutations(
+    *, defects: Sequence[str] | None = None, damage: Sequence[str] | None = None
+) -> st.SearchStrategy[Mutation]:
     """Single :class:`Mutation` values: defects from ``defects`` (default: all of :data:`DEFECTS`) and random damage
     from ``damage`` (default: all of :data:`DAMAGE`); pass an empty tuple to leave a family out (not both)."""
     d = tuple(DEFECTS) if defects is None else (_validate_kinds("defects", defects, tuple(DEFECTS)) if defects else ())
@@ -403,9 +441,14 @@ def _damaged(draw, base, mutations, min_mutations: int, max_mutations: int) -> b
     return data
 
 
-def damaged_documents(base: st.SearchStrategy[bytes] | None = None, *, min_mutations: int = 1,
-                      max_mutations: int = 3, defects: Sequence[str] | None = None,
-                      damage: Sequence[str] | None = None) -> st.SearchStrategy[bytes]:
+def damaged_documents(
+    base: st.SearchStrategy[bytes] | None = None,
+    *,
+    min_mutations: int = 1,
+    max_mutations: int = 3,
+    defects: Sequence[str] | None = None,
+    damage: Sequence[str] | None = None,
+) -> st.SearchStrategy[bytes]:
     """Documents from ``base`` (default :func:`fuzz.opendrive_documents`) after ``min_mutations`` to
     ``max_mutations`` mutations from :func:`document_mutations` (a mutation that does not apply changes nothing)."""
     for name, value in (("min_mutations", min_mutations), ("max_mutations", max_mutations)):
@@ -433,8 +476,9 @@ def _defective(draw, base, kinds) -> tuple[bytes, str]:
     return out, m.kind
 
 
-def defective_documents(base: st.SearchStrategy[bytes] | None = None, *, defects: Sequence[str] | None = None
-                        ) -> st.SearchStrategy[tuple[bytes, str]]:
+def defective_documents(
+    base: st.SearchStrategy[bytes] | None = None, *, defects: Sequence[str] | None = None
+) -> st.SearchStrategy[tuple[bytes, str]]:
     """``(document, defect kind)``: a document from ``base`` with exactly one defect of :data:`DEFECTS`."""
     kinds = tuple(DEFECTS) if defects is None else _validate_kinds("defects", defects, tuple(DEFECTS))
     if base is not None and not isinstance(base, st.SearchStrategy):

@@ -33,16 +33,36 @@ PROFILES = ("ci", "long")
 #: ~0.04 s); ``faults`` bounds the search of the fault-injection tests, which find their fault within a few examples.
 #: ``long`` sizes the rounds of ``python -m fuzz --profile long``, which repeats them until its time is up.
 BUDGETS: dict[str, dict[str, int]] = {
-    "ci": {"maps": 500, "damaged": 3000, "documents": 200, "defects": 280, "metamorphic": 60, "invalid": 200,
-           "round-trip": 100, "faults": 30},
-    "long": {"maps": 200, "damaged": 2000, "documents": 200, "defects": 500, "metamorphic": 100, "invalid": 500,
-             "round-trip": 100, "faults": 200},
+    "ci": {
+        "maps": 500,
+        "damaged": 3000,
+        "documents": 200,
+        "defects": 280,
+        "metamorphic": 60,
+        "invalid": 200,
+        "round-trip": 100,
+        "faults": 30,
+    },
+    "long": {
+        "maps": 200,
+        "damaged": 2000,
+        "documents": 200,
+        "defects": 500,
+        "metamorphic": 100,
+        "invalid": 500,
+        "round-trip": 100,
+        "faults": 200,
+    },
 }
 
 _COMMON = {
     "deadline": None,
-    "suppress_health_check": [HealthCheck.too_slow, HealthCheck.data_too_large, HealthCheck.filter_too_much,
-                              HealthCheck.function_scoped_fixture],
+    "suppress_health_check": [
+        HealthCheck.too_slow,
+        HealthCheck.data_too_large,
+        HealthCheck.filter_too_much,
+        HealthCheck.function_scoped_fixture,
+    ],
     "print_blob": True,
 }
 
@@ -51,10 +71,10 @@ def database() -> DirectoryBasedExampleDatabase:
     return DirectoryBasedExampleDatabase(str(DATABASE_DIR))
 
 
-settings.register_profile("ci", database=None, derandomize=True, phases=(Phase.explicit, Phase.generate),
-                          **_COMMON)
-settings.register_profile("long", database=database(),
-                          phases=(Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink), **_COMMON)
+settings.register_profile("ci", database=None, derandomize=True, phases=(Phase.explicit, Phase.generate), **_COMMON)
+settings.register_profile(
+    "long", database=database(), phases=(Phase.explicit, Phase.reuse, Phase.generate, Phase.shrink), **_COMMON
+)
 
 
 def current() -> str:
@@ -83,5 +103,6 @@ def tolerated(prop: str) -> frozenset[str]:
     finding codes for ``generated-map``, substrings of a rule's crash message for ``damaged``. The property counts
     them in ``STATS["tolerated"]`` instead of failing, while the entry's own regression test tracks the fault (and
     fails as soon as it is fixed, so that the tolerance goes with it)."""
-    return frozenset(t for e in regressions() if e.get("known_fault") and e["property"] == prop
-                     for t in e.get("tolerate", ()))
+    return frozenset(
+        t for e in regressions() if e.get("known_fault") and e["property"] == prop for t in e.get("tolerate", ())
+    )

@@ -81,8 +81,7 @@ def defect_is_found(data: bytes, expected: frozenset[str]) -> Report:
     return report
 
 
-def generated_map_is_valid(params: ja.Params, seed: int, lines=None, tolerated: frozenset[str] = frozenset()
-                           ) -> bytes:
+def generated_map_is_valid(params: ja.Params, seed: int, lines=None, tolerated: frozenset[str] = frozenset()) -> bytes:
     """Valid generator input: a map on which the checker finds no error (returned as bytes).
 
     The checker's default curvature bound applies, relaxed to ``params.min_turn_radius`` when the user asked the
@@ -126,6 +125,7 @@ def finding_keys(report: Report, rename: dict[str, str] | None = None) -> Counte
 
 def _arc_lengths(g, p: np.ndarray) -> np.ndarray:
     """Arc length of a generator paramPoly3 from its start to each ``p`` (adaptive quadrature to ~1e-12 m)."""
+
     def speed(q: float) -> float:
         return math.hypot(g.bu + q * (2.0 * g.cu + 3.0 * g.du * q), g.bv + q * (2.0 * g.cv + 3.0 * g.dv * q))
 
@@ -171,7 +171,8 @@ def round_trip_exact(doc, samples: int = 17) -> int:
             worst = int(np.argmax(gap))
             assert gap[worst] <= ROUND_TRIP_TOLERANCE, (
                 f"road {road.id} {type(mine).__name__} at s={mine.s}: generator and reader differ by "
-                f"{gap[worst]:.3g} m at ds={ds[worst]:.6g}")
+                f"{gap[worst]:.3g} m at ds={ds[worst]:.6g}"
+            )
             compared += 1
     STATS["round-trips"] += 1
     assert compared > 0 or not doc.roads

@@ -74,8 +74,16 @@ def param_poly3(b_u: float, c_u: float, d_u: float, c_v: float, d_v: float, arc_
     if not arc_length:
         return Element("paramPoly3", length, tuple(normal.items()) + (("pRange", "normalized"),))
     L = length
-    scaled = {"aU": 0.0, "bU": b_u / L, "cU": c_u / L**2, "dU": d_u / L**3,
-              "aV": 0.0, "bV": 0.0, "cV": c_v / L**2, "dV": d_v / L**3}
+    scaled = {
+        "aU": 0.0,
+        "bU": b_u / L,
+        "cU": c_u / L**2,
+        "dU": d_u / L**3,
+        "aV": 0.0,
+        "bV": 0.0,
+        "cV": c_v / L**2,
+        "dV": d_v / L**3,
+    }
     return Element("paramPoly3", length, tuple(scaled.items()) + (("pRange", "arcLength"),))
 
 
@@ -222,13 +230,28 @@ def _write_lane(parent, lane: LaneSpec, version: tuple[int, int]) -> None:
     if lane.id != 0:
         _sub(el, "width", sOffset="0.0", a=_num(lane.width), b="0.0", c="0.0", d="0.0")
     mark = "solid" if lane.id == 0 else "broken"
-    _sub(el, "roadMark", sOffset="0.0", type=mark, weight="standard", color="standard", width="0.12",
-         laneChange="none" if lane.id == 0 else "both")
+    _sub(
+        el,
+        "roadMark",
+        sOffset="0.0",
+        type=mark,
+        weight="standard",
+        color="standard",
+        width="0.12",
+        laneChange="none" if lane.id == 0 else "both",
+    )
 
 
 def _write_road(root, road: RoadSpec, version: tuple[int, int]) -> None:
-    el = _sub(root, "road", name=f"road {road.id}", length=_num(road.length), id=road.id, junction=road.junction,
-              rule="RHT" if version >= (1, 5) else None)
+    el = _sub(
+        root,
+        "road",
+        name=f"road {road.id}",
+        length=_num(road.length),
+        id=road.id,
+        junction=road.junction,
+        rule="RHT" if version >= (1, 5) else None,
+    )
     if road.predecessor is not None or road.successor is not None:
         link = _sub(el, "link")
         _write_link(link, "predecessor", road.predecessor)
@@ -236,8 +259,7 @@ def _write_road(root, road: RoadSpec, version: tuple[int, int]) -> None:
     plan = _sub(el, "planView")
     s = 0.0
     for pose, e in zip(road.poses(), road.elements):
-        g = _sub(plan, "geometry", s=_num(s), x=_num(pose.x), y=_num(pose.y), hdg=_num(pose.hdg),
-                 length=_num(e.length))
+        g = _sub(plan, "geometry", s=_num(s), x=_num(pose.x), y=_num(pose.y), hdg=_num(pose.hdg), length=_num(e.length))
         _sub(g, e.kind, **{k: (v if isinstance(v, str) else _num(v)) for k, v in e.params})
         s += e.length
     lanes = _sub(el, "lanes")
@@ -260,8 +282,14 @@ def _write_road(root, road: RoadSpec, version: tuple[int, int]) -> None:
 def _write_junction(root, j: JunctionSpec) -> None:
     el = _sub(root, "junction", id=j.id, name=f"junction {j.id}")
     for c in j.connections:
-        ce = _sub(el, "connection", id=c.id, incomingRoad=c.incoming, connectingRoad=c.connecting,
-                  contactPoint=c.contact_point)
+        ce = _sub(
+            el,
+            "connection",
+            id=c.id,
+            incomingRoad=c.incoming,
+            connectingRoad=c.connecting,
+            contactPoint=c.contact_point,
+        )
         for a, b in c.lane_links:
             _sub(ce, "laneLink", **{"from": str(a), "to": str(b)})
 
@@ -270,9 +298,20 @@ def to_tree(doc: DocumentSpec) -> etree._Element:
     root = etree.Element("OpenDRIVE")
     xs = [p.x for r in doc.roads for p in r.poses()]
     ys = [p.y for r in doc.roads for p in r.poses()]
-    _sub(root, "header", revMajor=str(doc.version[0]), revMinor=str(doc.version[1]), name=doc.name, version="1.00",
-         date="2024-01-01T00:00:00", north=_num(max(ys, default=0.0)), south=_num(min(ys, default=0.0)),
-         east=_num(max(xs, default=0.0)), west=_num(min(xs, default=0.0)), vendor="fuzz")
+    _sub(
+        root,
+        "header",
+        revMajor=str(doc.version[0]),
+        revMinor=str(doc.version[1]),
+        name=doc.name,
+        version="1.00",
+        date="2024-01-01T00:00:00",
+        north=_num(max(ys, default=0.0)),
+        south=_num(min(ys, default=0.0)),
+        east=_num(max(xs, default=0.0)),
+        west=_num(min(xs, default=0.0)),
+        vendor="fuzz",
+    )
     for road in doc.roads:
         _write_road(root, road, doc.version)
     for j in doc.junctions:

@@ -50,8 +50,12 @@ class Result:
 STAGES = ("control lines", "network", "lanes", "intersections", "cleanup")
 
 
-def generate_layout(params: Params | None = None, seed: int = 0, control_lines: ControlLines | None = None,
-                    on_stage: Callable[[str], None] | None = None) -> Result:
+def generate_layout(
+    params: Params | None = None,
+    seed: int = 0,
+    control_lines: ControlLines | None = None,
+    on_stage: Callable[[str], None] | None = None,
+) -> Result:
     """Run all stages; randomness comes from one ``numpy.random.Generator`` seeded with ``seed``.
 
     ``on_stage`` (for progress bars) is called with each name of :data:`STAGES` as that stage starts.

@@ -102,8 +102,16 @@ def _section(rp: RoadPlan, span: _Span, params: Params, prev: _Span | None, nxt:
             lanes_by_side[1 if lid > 0 else -1].append(Lane(lid, "driving", (_taper(wa, wb, L),), marks, pred, succ))
     if median:
         has_prev, has_next = prev is not None, nxt is not None
-        lanes_by_side[1].append(Lane(1, "median", (Cubic(0.0, mw),), (RoadMark(0.0, "solid", "yellow"),),
-                                     1 if has_prev else None, 1 if has_next else None))
+        lanes_by_side[1].append(
+            Lane(
+                1,
+                "median",
+                (Cubic(0.0, mw),),
+                (RoadMark(0.0, "solid", "yellow"),),
+                1 if has_prev else None,
+                1 if has_next else None,
+            )
+        )
     two_way = rp.lanes.forward > 0 and rp.lanes.backward > 0
     centre = Lane(0, "none", (), (RoadMark(0.0, "solid", "yellow" if two_way else "standard", lane_change="none"),))
     left = tuple(sorted(lanes_by_side[1], key=lambda l: l.id))
@@ -119,8 +127,18 @@ def _road(rp: RoadPlan, rid: str, junction_ids: list[str], params: Params) -> Ro
     )
     pred = Link("junction", junction_ids[rp.start_junction]) if rp.start_junction is not None else None
     succ = Link("junction", junction_ids[rp.end_junction]) if rp.end_junction is not None else None
-    return Road(rid, rp.length, "-1", rp.geometry, sections, params.traffic_rule.value, pred, succ,
-                name=f"road {rid}", speed_kmh=ROAD_SPEED)
+    return Road(
+        rid,
+        rp.length,
+        "-1",
+        rp.geometry,
+        sections,
+        params.traffic_rule.value,
+        pred,
+        succ,
+        name=f"road {rid}",
+        speed_kmh=ROAD_SPEED,
+    )
 
 
 def _three_points(g: Geometry) -> tuple[tuple[float, float], ...]:
@@ -131,8 +149,10 @@ def _three_points(g: Geometry) -> tuple[tuple[float, float], ...]:
         return tuple((g.x + d * c, g.y + d * s) for d in (0.0, 0.5 * g.length, g.length))
     if isinstance(g, Arc):
         k, s0, c0 = g.curvature, math.sin(g.hdg), math.cos(g.hdg)
-        return tuple((g.x + (math.sin(g.hdg + k * d) - s0) / k, g.y - (math.cos(g.hdg + k * d) - c0) / k)
-                     for d in (0.0, 0.5 * g.length, g.length))
+        return tuple(
+            (g.x + (math.sin(g.hdg + k * d) - s0) / k, g.y - (math.cos(g.hdg + k * d) - c0) / k)
+            for d in (0.0, 0.5 * g.length, g.length)
+        )
     c, s = math.cos(g.hdg), math.sin(g.hdg)
     out = []
     for t in (0.0, 0.5, 1.0):
@@ -157,20 +177,41 @@ def document(layout: Layout, params: Params, name: str = "junctionart") -> Docum
         for cn, cp in enumerate(jp.connections):
             rid = str(next_id)
             next_id += 1
-            lane = Lane(conn_lane, "driving", (Cubic(0.0, params.lane_width),), (RoadMark(0.0, "none", "standard"),),
-                        cp.in_lane, cp.out_lane)
+            lane = Lane(
+                conn_lane,
+                "driving",
+                (Cubic(0.0, params.lane_width),),
+                (RoadMark(0.0, "none", "standard"),),
+                cp.in_lane,
+                cp.out_lane,
+            )
             centre = Lane(0, "none", (), (RoadMark(0.0, "none", "standard"),))
             sec = LaneSection(0.0, (lane,) if conn_lane > 0 else (), centre, (lane,) if conn_lane < 0 else ())
-            roads.append(Road(rid, cp.geometry.length, junction_ids[jn], (cp.geometry,), (sec,),
-                              params.traffic_rule.value,
-                              Link("road", road_ids[cp.in_road], cp.in_contact),
-                              Link("road", road_ids[cp.out_road], cp.out_contact),
-                              name=f"junction {junction_ids[jn]} connection {cn + 1}", speed_kmh=JUNCTION_SPEED))
-            conns.append(Connection(str(cn + 1), road_ids[cp.in_road], rid, "start",
-                                    (LaneLink(cp.in_lane, conn_lane),)))
+            roads.append(
+                Road(
+                    rid,
+                    cp.geometry.length,
+                    junction_ids[jn],
+                    (cp.geometry,),
+                    (sec,),
+                    params.traffic_rule.value,
+                    Link("road", road_ids[cp.in_road], cp.in_contact),
+                    Link("road", road_ids[cp.out_road], cp.out_contact),
+                    name=f"junction {junction_ids[jn]} connection {cn + 1}",
+                    speed_kmh=JUNCTION_SPEED,
+                )
+            )
+            conns.append(
+                Connection(str(cn + 1), road_ids[cp.in_road], rid, "start", (LaneLink(cp.in_lane, conn_lane),))
+            )
         junctions.append(Junction(junction_ids[jn], f"junction {junction_ids[jn]} ({jp.legs} legs)", tuple(conns)))
     points = [xy for r in roads for g in r.geometry for xy in _three_points(g)]
     xs, ys = [x for x, _ in points], [y for _, y in points]
-    header = Header(name=name, north=max(ys, default=0.0), south=min(ys, default=0.0), east=max(xs, default=0.0),
-                    west=min(xs, default=0.0))
+    header = Header(
+        name=name,
+        north=max(ys, default=0.0),
+        south=min(ys, default=0.0),
+        east=max(xs, default=0.0),
+        west=min(xs, default=0.0),
+    )
     return Document(header, tuple(roads), tuple(junctions))

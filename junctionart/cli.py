@@ -38,6 +38,7 @@ def _floats(n: int):
         if len(vals) != n:
             raise argparse.ArgumentTypeError(f"{text!r}: expected {n} comma-separated numbers, got {len(vals)}")
         return vals
+
     return parse
 
 
@@ -66,10 +67,18 @@ OPTIONS = [
     ("--gap-scale", "gap_scale", _floats(2), "LOW,HIGH random factor applied to the control-point gap"),
     ("--randomize-lanes", "randomize_lanes", _bool, "true: 0-3 lanes per side drawn; false: one lane each way"),
     ("--lane-distribution", "lane_distribution_side", _floats(4), "P(0),P(1),P(2),P(3) lanes on a side"),
-    ("--control-line-lane-distribution", "lane_distribution_control_lines", _floats(4),
-     "the same for roads along control lines"),
-    ("--control-line-lanes", "control_line_lanes", _lane_pairs,
-     "F:B,F:B,... exact forward:backward lanes along automatic control lines 0, 1, ..."),
+    (
+        "--control-line-lane-distribution",
+        "lane_distribution_control_lines",
+        _floats(4),
+        "the same for roads along control lines",
+    ),
+    (
+        "--control-line-lanes",
+        "control_line_lanes",
+        _lane_pairs,
+        "F:B,F:B,... exact forward:backward lanes along automatic control lines 0, 1, ...",
+    ),
     ("--lane-width", "lane_width", float, "lane width (m)"),
     ("--median-probability", "median_probability", float, "chance of a median on a two-way road"),
     ("--median-width", "median_width", float, "median width (m)"),
@@ -78,20 +87,35 @@ OPTIONS = [
     ("--curved-roads", "curved_roads", _bool, "bend long connections (true/false)"),
     ("--curve-probability", "curve_probability", float, "chance an eligible connection is bent"),
     ("--turn-lane-probability", "turn_lane_probability", float, "chance of a turn lane before a junction"),
-    ("--u-turn-probability", "u_turn_probability", float,
-     "chance of a U-turn lane on a leg wide enough for one within the radius bound"),
+    (
+        "--u-turn-probability",
+        "u_turn_probability",
+        float,
+        "chance of a U-turn lane on a leg wide enough for one within the radius bound",
+    ),
     ("--min-turn-radius", "min_turn_radius", float, "smallest radius of any lane centre line (m)"),
-    ("--min-leg-angle", "min_leg_angle", float,
-     "legs of a junction closer than this (degrees) lose a road where the map stays connected (0: keep all)"),
+    (
+        "--min-leg-angle",
+        "min_leg_angle",
+        float,
+        "legs of a junction closer than this (degrees) lose a road where the map stays connected (0: keep all)",
+    ),
     ("--taper-length", "taper_length", float, "length of lane splits and merges (m)"),
 ]
 
 
 def _add_generate(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("generate", help="generate a road network (.xodr)",
-                       description="Generate an OpenDRIVE road network from automatic or given control lines.")
-    p.add_argument("-o", "--output", default="map.xodr",
-                   help="output file; with --count, '{seed}' in the name is replaced by each seed")
+    p = sub.add_parser(
+        "generate",
+        help="generate a road network (.xodr)",
+        description="Generate an OpenDRIVE road network from automatic or given control lines.",
+    )
+    p.add_argument(
+        "-o",
+        "--output",
+        default="map.xodr",
+        help="output file; with --count, '{seed}' in the name is replaced by each seed",
+    )
     p.add_argument("--seed", type=int, default=0, help="random seed (same seed and parameters: identical file)")
     p.add_argument("--count", type=int, default=1, help="generate this many maps, seeds SEED, SEED+1, ...")
     p.add_argument("--size", type=_size, help="map size WxH in metres for automatic control lines")
@@ -155,6 +179,7 @@ def _generate(args: argparse.Namespace) -> int:
             def on_stage(name: str, bar_=stage_bar) -> None:
                 bar_.set_description(name)
                 bar_.update(1)
+
         result = generate_layout(params, seed, lines, on_stage)
         if stage_bar is not None:
             stage_bar.close()
@@ -163,9 +188,11 @@ def _generate(args: argparse.Namespace) -> int:
             bar.update(1)
         elif not args.quiet:
             lay = result.layout
-            print(f"{path}: {len(lay.roads)} roads, {len(lay.junctions)} junctions, "
-                  f"{sum(len(j.connections) for j in lay.junctions)} connection lanes, "
-                  f"{len(lay.repairs)} repairs, {time.perf_counter() - t0:.2f} s")
+            print(
+                f"{path}: {len(lay.roads)} roads, {len(lay.junctions)} junctions, "
+                f"{sum(len(j.connections) for j in lay.junctions)} connection lanes, "
+                f"{len(lay.repairs)} repairs, {time.perf_counter() - t0:.2f} s"
+            )
     if bar is not None:
         bar.close()
     return 0
@@ -193,9 +220,12 @@ def _render(args: argparse.Namespace) -> int:
 def _add_era(sub: argparse._SubParsersAction) -> None:
     from .era import add_arguments
 
-    p = sub.add_parser("era", help="expressive range analysis: generate maps, measure intersections, draw figures",
-                       description="Generate maps until N intersections are collected per run, measure them with "
-                       "xodrcheck and write legs.csv, maps.csv, PNG figures and report.md (resumable).")
+    p = sub.add_parser(
+        "era",
+        help="expressive range analysis: generate maps, measure intersections, draw figures",
+        description="Generate maps until N intersections are collected per run, measure them with "
+        "xodrcheck and write legs.csv, maps.csv, PNG figures and report.md (resumable).",
+    )
     add_arguments(p)
 
 

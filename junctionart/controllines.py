@@ -131,9 +131,11 @@ def _points(where: str, raw: Any) -> tuple[tuple[float, float], ...]:
         raise InputError(f"{where}: needs a list of at least 2 points [x, y]")
     pts = []
     for k, p in enumerate(raw):
-        if (not isinstance(p, (list, tuple)) or len(p) < 2
-                or not all(isinstance(c, (int, float)) and not isinstance(c, bool) and math.isfinite(c)
-                           for c in p[:2])):
+        if (
+            not isinstance(p, (list, tuple))
+            or len(p) < 2
+            or not all(isinstance(c, (int, float)) and not isinstance(c, bool) and math.isfinite(c) for c in p[:2])
+        ):
             raise InputError(f"{where}: point {k} is {p!r}, expected [x, y] with finite numbers")
         pts.append((float(p[0]), float(p[1])))
     for k in range(len(pts) - 1):
@@ -151,7 +153,7 @@ def _lanes(where: str, raw: Any) -> tuple[int, int] | None:
     elif isinstance(raw, list) and len(raw) == 2:
         fwd, bwd = raw
     else:
-        raise InputError(f"{where}: lanes must be {{\"forward\": n, \"backward\": m}} or [n, m]")
+        raise InputError(f'{where}: lanes must be {{"forward": n, "backward": m}} or [n, m]')
     for v in (fwd, bwd):
         if isinstance(v, bool) or not isinstance(v, int) or not 0 <= v <= 3:
             raise InputError(f"{where}: lane counts must be integers in [0, 3], got {fwd!r}, {bwd!r}")
@@ -195,15 +197,17 @@ def _assemble(source: str, entries: list[tuple[str, tuple, int, Any]], pairs_raw
     for a, b in pairs:
         shared = shapely.LineString(lines[a].points).intersection(shapely.LineString(lines[b].points)).length
         if shared > 1.0:
-            raise InputError(f"{source}: lines {lines[a].id!r} and {lines[b].id!r} of a pair overlap along "
-                             f"{shared:.1f} m; the two lines of a pair must be apart")
+            raise InputError(
+                f"{source}: lines {lines[a].id!r} and {lines[b].id!r} of a pair overlap along "
+                f"{shared:.1f} m; the two lines of a pair must be apart"
+            )
     return ControlLines(lines, tuple(pairs))
 
 
 def parse(data: Any, source: str = "<input>") -> ControlLines:
     """Control lines from already-decoded JSON or GeoJSON."""
     if not isinstance(data, dict):
-        raise InputError(f"{source}: expected a JSON object with \"lines\" or a GeoJSON FeatureCollection")
+        raise InputError(f'{source}: expected a JSON object with "lines" or a GeoJSON FeatureCollection')
     entries: list[tuple[str, tuple, int, Any]] = []
     pairs_raw: list[Any] = []
     if data.get("type") == "FeatureCollection":
@@ -219,25 +223,37 @@ def parse(data: Any, source: str = "<input>") -> ControlLines:
             if not isinstance(props, dict):
                 raise InputError(f"{where}: properties must be an object")
             lid = str(props.get("id", f.get("id", k)))
-            entries.append((lid, _points(where, geom.get("coordinates")), _group(where, props.get("group")),
-                            _lanes(where, props.get("lanes"))))
+            entries.append(
+                (
+                    lid,
+                    _points(where, geom.get("coordinates")),
+                    _group(where, props.get("group")),
+                    _lanes(where, props.get("lanes")),
+                )
+            )
             for other in props.get("pair_with") or []:
                 pairs_raw.append([lid, str(other)])
     elif "lines" in data:
         raw_lines = data["lines"]
         if not isinstance(raw_lines, list):
-            raise InputError(f"{source}: \"lines\" must be a list")
+            raise InputError(f'{source}: "lines" must be a list')
         for k, ln in enumerate(raw_lines):
             where = f"{source}: line {k}"
             if not isinstance(ln, dict):
-                raise InputError(f"{where}: must be an object with \"points\"")
-            entries.append((str(ln.get("id", k)), _points(where, ln.get("points")), _group(where, ln.get("group")),
-                            _lanes(where, ln.get("lanes"))))
+                raise InputError(f'{where}: must be an object with "points"')
+            entries.append(
+                (
+                    str(ln.get("id", k)),
+                    _points(where, ln.get("points")),
+                    _group(where, ln.get("group")),
+                    _lanes(where, ln.get("lanes")),
+                )
+            )
         pairs_raw = data.get("pairs") or []
         if not isinstance(pairs_raw, list):
-            raise InputError(f"{source}: \"pairs\" must be a list of [id, id]")
+            raise InputError(f'{source}: "pairs" must be a list of [id, id]')
     else:
-        raise InputError(f"{source}: expected a JSON object with \"lines\" or a GeoJSON FeatureCollection")
+        raise InputError(f'{source}: expected a JSON object with "lines" or a GeoJSON FeatureCollection')
     return _assemble(source, entries, pairs_raw)
 
 

@@ -60,8 +60,9 @@ def sample(g: Geometry, n: int = 16) -> np.ndarray:
     if isinstance(g, Arc):
         d = t * g.length
         h = g.hdg + g.curvature * d
-        return np.column_stack([g.x + (np.sin(h) - math.sin(g.hdg)) / g.curvature,
-                                g.y - (np.cos(h) - math.cos(g.hdg)) / g.curvature])
+        return np.column_stack(
+            [g.x + (np.sin(h) - math.sin(g.hdg)) / g.curvature, g.y - (np.cos(h) - math.cos(g.hdg)) / g.curvature]
+        )
     u = g.au + t * (g.bu + t * (g.cu + t * g.du))
     v = g.av + t * (g.bv + t * (g.cv + t * g.dv))
     c, s = math.cos(g.hdg), math.sin(g.hdg)
@@ -164,8 +165,9 @@ def _bends(k, cu, du, cv, dv, p, outermost) -> tuple[np.ndarray, np.ndarray, np.
     return ok, worst, d1u, d1v
 
 
-def fit_connections(targets: np.ndarray, offsets: tuple[float, ...], min_radius: float,
-                    scales: np.ndarray) -> list[HermiteFit | None]:
+def fit_connections(
+    targets: np.ndarray, offsets: tuple[float, ...], min_radius: float, scales: np.ndarray
+) -> list[HermiteFit | None]:
     """For each target (u1, v1, phi), the smoothest Hermite cubic from (0, 0) heading 0 meeting the radius bound on
     its reference line and on the lines at lateral ``offsets`` (lane centre, outer border); None when no candidate
     tangent length (``scales`` times the chord, equal at both ends) does. The candidate whose smallest radius is the
@@ -186,14 +188,18 @@ def fit_connections(targets: np.ndarray, offsets: tuple[float, ...], min_radius:
     dv = -2 * v1 + k * s
     # |kappa / (1 - t kappa)| grows with t * kappa, so the outermost offset on each side bounds the others (and its
     # fold test implies theirs)
-    outermost = [o for o in (max((o for o in offsets if o > 0), default=0.0),
-                             min((o for o in offsets if o < 0), default=0.0)) if o != 0.0]
+    outermost = [
+        o
+        for o in (max((o for o in offsets if o > 0), default=0.0), min((o for o in offsets if o < 0), default=0.0))
+        if o != 0.0
+    ]
     # a screen on every 8th sample first: a candidate failing there fails on all samples (a minimum can only be
     # lower and a maximum only higher with more samples), so only the others are evaluated in full
     ok, worst, _, _ = _bends(k, cu, du, cv, dv, _P_CHECK[None, ::8], outermost)
     live = np.flatnonzero(ok & (chord > 1e-6) & (1.0 / np.maximum(worst, 1e-300) >= min_radius))
-    ok_live, worst_live, d1u, d1v = _bends(k[live], cu[live], du[live], cv[live], dv[live], _P_CHECK[None, :],
-                                           outermost)
+    ok_live, worst_live, d1u, d1v = _bends(
+        k[live], cu[live], du[live], cv[live], dv[live], _P_CHECK[None, :], outermost
+    )
     radius_live = 1.0 / np.maximum(worst_live, 1e-300)
     ok_live &= radius_live >= min_radius
     radius = np.full(n * m, -1.0)
@@ -223,12 +229,17 @@ def fit_connections(targets: np.ndarray, offsets: tuple[float, ...], min_radius:
     zero = np.zeros(n)
     coefs = np.column_stack([zero, k[sel], cu[sel], du[sel], zero, zero, cv[sel], dv[sel]])
     lengths = arc_lengths(coefs)
-    return [HermiteFit(tuple(coefs[i].tolist()), float(lengths[i]), float(radius[sel[i]]))
-            if score[i, best[i]] >= 0 else None for i in range(n)]
+    return [
+        HermiteFit(tuple(coefs[i].tolist()), float(lengths[i]), float(radius[sel[i]]))
+        if score[i, best[i]] >= 0
+        else None
+        for i in range(n)
+    ]
 
 
-def fit_connection(u1: float, v1: float, phi: float, offsets: tuple[float, ...], min_radius: float,
-                   scales: np.ndarray) -> HermiteFit | None:
+def fit_connection(
+    u1: float, v1: float, phi: float, offsets: tuple[float, ...], min_radius: float, scales: np.ndarray
+) -> HermiteFit | None:
     """:func:`fit_connections` for one target."""
     return fit_connections(np.array([[u1, v1, phi]]), offsets, min_radius, scales)[0]
 
@@ -248,8 +259,9 @@ def local_target(x0: float, y0: float, h0: float, x1: float, y1: float, h1: floa
 # ---------------------------------------------------------------------------------------------------------------------
 # Fillet chains: a polyline with circular arcs at its interior vertices
 # ---------------------------------------------------------------------------------------------------------------------
-def fillet_chain(start: tuple[float, float], vertices: list[tuple[float, float]], end: tuple[float, float],
-                 radii: list[float]) -> tuple[Geometry, ...]:
+def fillet_chain(
+    start: tuple[float, float], vertices: list[tuple[float, float]], end: tuple[float, float], radii: list[float]
+) -> tuple[Geometry, ...]:
     """Lines and arcs from ``start`` through the corners at ``vertices`` (rounded with ``radii``) to ``end``.
 
     Each element starts exactly at the end pose of the previous one (evaluated with :func:`end_pose`).

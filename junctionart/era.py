@@ -37,9 +37,26 @@ from .params import Params
 
 #: Columns of ``legs.csv``.
 ROW_COLUMNS = (
-    "run", "seed", "junction_index", "junction", "junction_type", "legs", "n_connection_lanes", "n_u_turn_lanes",
-    "area", "conflict_area", "conflict_ratio", "leg", "road", "contact", "x", "y", "fov", "max_curvature",
-    "corner_deviation", "complexity",
+    "run",
+    "seed",
+    "junction_index",
+    "junction",
+    "junction_type",
+    "legs",
+    "n_connection_lanes",
+    "n_u_turn_lanes",
+    "area",
+    "conflict_area",
+    "conflict_ratio",
+    "leg",
+    "road",
+    "contact",
+    "x",
+    "y",
+    "fov",
+    "max_curvature",
+    "corner_deviation",
+    "complexity",
 )
 #: Columns of ``maps.csv``.
 MAP_COLUMNS = ("run", "seed", "status", "junctions", "intersections", "seconds", "error", "generator")
@@ -79,17 +96,32 @@ def metric_rows(run: str, seed: int, metrics) -> list[dict]:
     out = []
     for index, m in enumerate(metrics):
         head = {
-            "run": run, "seed": seed, "junction_index": index, "junction": m.junction, "junction_type": m.type.value,
-            "legs": m.legs, "n_connection_lanes": m.n_connection_lanes, "n_u_turn_lanes": m.n_u_turn_lanes,
-            "area": m.area, "conflict_area": m.conflict_area, "conflict_ratio": m.conflict_ratio,
+            "run": run,
+            "seed": seed,
+            "junction_index": index,
+            "junction": m.junction,
+            "junction_type": m.type.value,
+            "legs": m.legs,
+            "n_connection_lanes": m.n_connection_lanes,
+            "n_u_turn_lanes": m.n_u_turn_lanes,
+            "area": m.area,
+            "conflict_area": m.conflict_area,
+            "conflict_ratio": m.conflict_ratio,
         }
         legs = list(enumerate(m.leg_metrics)) or [(None, None)]
         for i, leg in legs:
             row = dict(head, leg=i)
             if leg is not None:
-                row.update(road=leg.road, contact=leg.end.value, x=leg.x, y=leg.y, fov=leg.fov,
-                           max_curvature=leg.max_curvature, corner_deviation=leg.corner_deviation,
-                           complexity=leg.complexity)
+                row.update(
+                    road=leg.road,
+                    contact=leg.end.value,
+                    x=leg.x,
+                    y=leg.y,
+                    fov=leg.fov,
+                    max_curvature=leg.max_curvature,
+                    corner_deviation=leg.corner_deviation,
+                    complexity=leg.complexity,
+                )
             out.append({k: _cell(row.get(k)) for k in ROW_COLUMNS})
     return out
 
@@ -108,7 +140,7 @@ def measure_map(run: str, params: Params, seed: int) -> MapResult:
         if document is None:
             raise JunctionArtError("the reader could not build the generated map")
         metrics = map_metrics(document)
-    except Exception as exc:  # noqa: BLE001 - a failed map is a result (recorded, counted), not a crash of the run
+    except Exception as exc:
         detail = traceback.format_exception_only(type(exc), exc)[-1].strip()
         return MapResult(run, seed, "failed", (), 0, 0, time.perf_counter() - t0, detail)
     rows = metric_rows(run, seed, metrics)
@@ -121,10 +153,17 @@ def measure_map(run: str, params: Params, seed: int) -> MapResult:
 # --------------------------------------------------------------------------------------------------------------------
 #: Sources that only present results (figures, report, command lines): editing them changes no row, so they are not
 #: part of the generator version (anything else of either package is, to be safe).
-PRESENTATION_ONLY = frozenset({
-    "junctionart/__main__.py", "junctionart/cli.py", "junctionart/era_report.py", "junctionart/render.py",
-    "xodrcheck/__main__.py", "xodrcheck/cli", "xodrcheck/report",
-})
+PRESENTATION_ONLY = frozenset(
+    {
+        "junctionart/__main__.py",
+        "junctionart/cli.py",
+        "junctionart/era_report.py",
+        "junctionart/render.py",
+        "xodrcheck/__main__.py",
+        "xodrcheck/cli",
+        "xodrcheck/report",
+    }
+)
 
 
 def source_hash(packages: Iterable[Path]) -> str:
@@ -177,8 +216,10 @@ class Table:
             rows = read_csv(self.maps_path)
             made_by = sorted({row.get("generator") or "unrecorded" for row in rows} - {generator_version()})
             if made_by:
-                raise ParamsError(f"{self.folder}: its maps were made by generator {', '.join(made_by)}, this is "
-                                  f"{generator_version()}; give a new output folder (-o) or remove this one")
+                raise ParamsError(
+                    f"{self.folder}: its maps were made by generator {', '.join(made_by)}, this is "
+                    f"{generator_version()}; give a new output folder (-o) or remove this one"
+                )
             for row in rows:
                 self.done[(row["run"], int(row["seed"]))] = int(row["intersections"]) if row["status"] == "ok" else -1
         else:
@@ -197,9 +238,16 @@ class Table:
             csv.DictWriter(stream, ROW_COLUMNS, lineterminator="\n").writerows(result.rows)
         with open(self.maps_path, "a", newline="", encoding="utf-8") as stream:
             csv.DictWriter(stream, MAP_COLUMNS, lineterminator="\n").writerow(
-                {"run": result.run, "seed": result.seed, "status": result.status, "junctions": result.junctions,
-                 "intersections": result.intersections, "seconds": f"{result.seconds:.3f}", "error": result.error,
-                 "generator": generator_version()}
+                {
+                    "run": result.run,
+                    "seed": result.seed,
+                    "status": result.status,
+                    "junctions": result.junctions,
+                    "intersections": result.intersections,
+                    "seconds": f"{result.seconds:.3f}",
+                    "error": result.error,
+                    "generator": generator_version(),
+                }
             )
         self.done[(result.run, result.seed)] = result.intersections if result.status == "ok" else -1
 
@@ -392,18 +440,38 @@ def analyse(folder: Path, run_names: Iterable[str], n: int, compare: Path | None
 
 
 def add_arguments(p) -> None:
-    p.add_argument("-o", "--output", type=Path, default=Path("era"),
-                   help="folder for legs.csv, maps.csv, figures and report.md (default: ./era); reused to resume")
-    p.add_argument("-n", "--intersections", type=int, default=10_000,
-                   help="intersections (3+ legs) to collect per run (default 10000, as in the paper)")
-    p.add_argument("--runs", default="two-lane,random-lane",
-                   help="comma-separated runs: two-lane, random-lane (default: both)")
+    p.add_argument(
+        "-o",
+        "--output",
+        type=Path,
+        default=Path("era"),
+        help="folder for legs.csv, maps.csv, figures and report.md (default: ./era); reused to resume",
+    )
+    p.add_argument(
+        "-n",
+        "--intersections",
+        type=int,
+        default=10_000,
+        help="intersections (3+ legs) to collect per run (default 10000, as in the paper)",
+    )
+    p.add_argument(
+        "--runs", default="two-lane,random-lane", help="comma-separated runs: two-lane, random-lane (default: both)"
+    )
     p.add_argument("--size", default="2000x2000", help="map size WxH in metres (default 2000x2000)")
     p.add_argument("-j", "--jobs", type=int, default=None, help="worker processes (default: all cores)")
-    p.add_argument("--scheduler", default=None, metavar="ADDRESS",
-                   help="run on this Dask scheduler (e.g. tcp://host:8786) instead of local processes")
-    p.add_argument("--compare", type=Path, default=None, metavar="DIR",
-                   help="overlay the distributions of the .xodr maps in DIR (e.g. the CARLA towns)")
+    p.add_argument(
+        "--scheduler",
+        default=None,
+        metavar="ADDRESS",
+        help="run on this Dask scheduler (e.g. tcp://host:8786) instead of local processes",
+    )
+    p.add_argument(
+        "--compare",
+        type=Path,
+        default=None,
+        metavar="DIR",
+        help="overlay the distributions of the .xodr maps in DIR (e.g. the CARLA towns)",
+    )
     p.add_argument("--max-maps", type=int, default=100_000, help="give up on a run after this many seeds")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
 
@@ -424,26 +492,44 @@ def run(args) -> int:
     if args.compare is not None and not args.compare.is_dir():
         raise ParamsError(f"--compare {args.compare}: not a folder")
     t0 = time.perf_counter()
-    table = collect({name: known[name] for name in names}, args.intersections, args.output, args.jobs,
-                    args.scheduler, args.max_maps, not args.quiet)
+    table = collect(
+        {name: known[name] for name in names},
+        args.intersections,
+        args.output,
+        args.jobs,
+        args.scheduler,
+        args.max_maps,
+        not args.quiet,
+    )
     seconds = time.perf_counter() - t0
     usage = [resource.getrusage(who) for who in (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN)]
     peak = max(u.ru_maxrss for u in usage) / 1024
-    setup = [(f"Runs: {', '.join(names)}; maps {width:g} m x {height:g} m, seeds 0, 1, 2, ... per run; the first "
-              f"{args.intersections} intersections (junctions with 3+ legs) of each run in seed order."),
-             ("Metrics: `xodrcheck.metrics` (definitions in its docstring), computed on each map after writing it "
-              "and reading it back with the independent reader."),
-             f"Generator: junctionart {generator_version()} (package version + source hash, also in maps.csv)."]
+    setup = [
+        (
+            f"Runs: {', '.join(names)}; maps {width:g} m x {height:g} m, seeds 0, 1, 2, ... per run; the first "
+            f"{args.intersections} intersections (junctions with 3+ legs) of each run in seed order."
+        ),
+        (
+            "Metrics: `xodrcheck.metrics` (definitions in its docstring), computed on each map after writing it "
+            "and reading it back with the independent reader."
+        ),
+        f"Generator: junctionart {generator_version()} (package version + source hash, also in maps.csv).",
+    ]
     for name in names:
         seeds = [s for (r, s), v in table.done.items() if r == name]
         failed = sum(1 for (r, s), v in table.done.items() if r == name and v < 0)
         setup.append(f"{name}: {len(seeds)} maps measured ({failed} failed), {table.collected(name)} intersections.")
     setup.append(f"This invocation: {seconds:.0f} s wall, peak resident memory {peak:.0f} MB per process.")
     report = analyse(args.output, names, args.intersections, args.compare, setup)
-    print(f"{report}: {', '.join(f'{n} {table.collected(n)} intersections' for n in names)}, {seconds:.0f} s",
-          file=sys.stderr)
+    print(
+        f"{report}: {', '.join(f'{n} {table.collected(n)} intersections' for n in names)}, {seconds:.0f} s",
+        file=sys.stderr,
+    )
     short = [n for n in names if table.collected(n) < args.intersections]
     if short:
-        print(f"junctionart: warning: {', '.join(short)} stopped short of {args.intersections} intersections "
-              f"(--max-maps {args.max_maps})", file=sys.stderr)
+        print(
+            f"junctionart: warning: {', '.join(short)} stopped short of {args.intersections} intersections "
+            f"(--max-maps {args.max_maps})",
+            file=sys.stderr,
+        )
     return 0

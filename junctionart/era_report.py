@@ -99,18 +99,41 @@ def distribution_figure(column: str, samples: Sequence[Sample], compare: Sample 
             if values.size < MIN_DENSITY_SAMPLES or inside.size == 0:
                 # a density of a handful of values is a few spikes: show the values themselves
                 if values.size:
-                    ax.plot(np.clip(values, bins[0], bins[-1]), np.zeros(values.size), linestyle="none",
-                            marker="|", markersize=22, markeredgewidth=2.2, clip_on=False, color=f"C{k}",
-                            label=f"{legs} legs (n={values.size}, values)")
+                    ax.plot(
+                        np.clip(values, bins[0], bins[-1]),
+                        np.zeros(values.size),
+                        linestyle="none",
+                        marker="|",
+                        markersize=22,
+                        markeredgewidth=2.2,
+                        clip_on=False,
+                        color=f"C{k}",
+                        label=f"{legs} legs (n={values.size}, values)",
+                    )
                 continue
-            ax.hist(values, bins=bins, density=True, histtype="step", linewidth=1.4, color=f"C{k}",
-                    label=f"{legs} legs (n={values.size})")
+            ax.hist(
+                values,
+                bins=bins,
+                density=True,
+                histtype="step",
+                linewidth=1.4,
+                color=f"C{k}",
+                label=f"{legs} legs (n={values.size})",
+            )
         if compare is not None:
             ctable = compare.table(column)
             values = ctable[column][(ctable["legs"] >= LEG_COUNTS[0]) & np.isfinite(ctable[column])]
             if ((values >= bins[0]) & (values <= bins[-1])).any():
-                ax.hist(values, bins=bins, density=True, histtype="step", linestyle="--", color="black",
-                        linewidth=1.4, label=f"{compare.label}, all legs (n={values.size})")
+                ax.hist(
+                    values,
+                    bins=bins,
+                    density=True,
+                    histtype="step",
+                    linestyle="--",
+                    color="black",
+                    linewidth=1.4,
+                    label=f"{compare.label}, all legs (n={values.size})",
+                )
         ax.set_title(sample.label)
         unit = UNITS[column]
         ax.set_xlabel(f"{NAMES[column]}" + (f" ({unit})" if unit else ""))
@@ -136,8 +159,13 @@ def heatmap_figure(x: str, y: str, samples: Sequence[Sample], compare: Sample | 
         ok = np.isfinite(vx) & np.isfinite(vy) & (sample.legs["legs"] >= LEG_COUNTS[0])
         counts, _, _ = np.histogram2d(vx[ok], vy[ok], bins=[xbins, ybins])
         total = max(counts.sum(), 1)
-        image = ax.imshow((counts / total).T, origin="lower", aspect="auto", cmap="magma",
-                          extent=(xbins[0], xbins[-1], ybins[0], ybins[-1]))
+        image = ax.imshow(
+            (counts / total).T,
+            origin="lower",
+            aspect="auto",
+            cmap="magma",
+            extent=(xbins[0], xbins[-1], ybins[0], ybins[-1]),
+        )
         fig.colorbar(image, ax=ax, label="share of legs")
         if compare is not None:
             cx, cy = compare.legs[x], compare.legs[y]
@@ -171,8 +199,10 @@ def _medians_line(column: str, sample: Sample) -> str:
 
 def _count_table(samples: Sequence[Sample], compare: Sample | None) -> list[str]:
     everyone = [*samples, *([compare] if compare else [])]
-    lines = ["| | " + " | ".join(f"{n} legs" for n in LEG_COUNTS) + " | 8+ | total |",
-             "|---|" + "---|" * (len(LEG_COUNTS) + 2)]
+    lines = [
+        "| | " + " | ".join(f"{n} legs" for n in LEG_COUNTS) + " | 8+ | total |",
+        "|---|" + "---|" * (len(LEG_COUNTS) + 2),
+    ]
     for s in everyone:
         legs = s.junctions["legs"]
         legs = legs[legs >= LEG_COUNTS[0]]
@@ -189,17 +219,35 @@ def write_report(
 ) -> Path:
     """Draw every figure into ``folder`` and write ``folder/report.md``; ``setup`` lines describe the run."""
     folder.mkdir(parents=True, exist_ok=True)
-    lines = ["# Expressive range analysis", "", *setup, "", "## Intersections by leg count", "",
-             *_count_table(samples, compare), "", "## Distributions by leg count", ""]
+    lines = [
+        "# Expressive range analysis",
+        "",
+        *setup,
+        "",
+        "## Intersections by leg count",
+        "",
+        *_count_table(samples, compare),
+        "",
+        "## Distributions by leg count",
+        "",
+    ]
     for column, name, unit, figure, paper in (*LEG_METRICS, *JUNCTION_METRICS):
         png = f"dist_{column}.png"
         distribution_figure(column, samples, compare, folder / png)
         per = "incident road (leg)" if column in {c for c, *_ in LEG_METRICS} else "intersection"
-        lines += [f"### {name} (paper Figure {figure})", "", f"![{name}]({png})", "",
-                  f"Distribution of {name} per {per}, one line per leg count"
-                  + (f", {compare.label} dashed" if compare else "") + f". Paper: {paper}. Here, medians: "
-                  + "; ".join(f"{s.label}: {_medians_line(column, s)}" for s in samples)
-                  + (f"; {compare.label}: {_medians_line(column, compare)}" if compare else "") + ".", ""]
+        lines += [
+            f"### {name} (paper Figure {figure})",
+            "",
+            f"![{name}]({png})",
+            "",
+            f"Distribution of {name} per {per}, one line per leg count"
+            + (f", {compare.label} dashed" if compare else "")
+            + f". Paper: {paper}. Here, medians: "
+            + "; ".join(f"{s.label}: {_medians_line(column, s)}" for s in samples)
+            + (f"; {compare.label}: {_medians_line(column, compare)}" if compare else "")
+            + ".",
+            "",
+        ]
     lines += ["## Heatmaps of metric pairs", ""]
     for x, y, figure, paper in HEATMAPS:
         png = f"heat_{x}__{y}.png"
@@ -210,9 +258,16 @@ def write_report(
             ok = np.isfinite(vx) & np.isfinite(vy)
             if ok.sum() > 2 and np.std(vx[ok]) > 0 and np.std(vy[ok]) > 0:
                 corr.append(f"{s.label} r = {np.corrcoef(vx[ok], vy[ok])[0, 1]:.2f}")
-        lines += [f"### {NAMES[x]} vs {NAMES[y]} (paper Figure {figure})", "", f"![{x} vs {y}]({png})", "",
-                  "Share of legs in each cell" + (f"; {compare.label} legs as crosses" if compare else "")
-                  + f". Paper: {paper}. Here, Pearson correlation: {', '.join(corr) or 'n/a'}.", ""]
+        lines += [
+            f"### {NAMES[x]} vs {NAMES[y]} (paper Figure {figure})",
+            "",
+            f"![{x} vs {y}]({png})",
+            "",
+            "Share of legs in each cell"
+            + (f"; {compare.label} legs as crosses" if compare else "")
+            + f". Paper: {paper}. Here, Pearson correlation: {', '.join(corr) or 'n/a'}.",
+            "",
+        ]
     path = folder / "report.md"
     path.write_text("\n".join(lines), encoding="utf-8")
     return path

@@ -54,8 +54,9 @@ def taper_length(params: Params, end: tuple[int, int], middle: tuple[int, int]) 
     return max(params.taper_length, math.sqrt(24.0 * shift * params.min_turn_radius))
 
 
-def min_curve_radius(params: Params, widest: float, ends: tuple[tuple[int, int], ...], middle: tuple[int, int]
-                     ) -> float:
+def min_curve_radius(
+    params: Params, widest: float, ends: tuple[tuple[int, int], ...], middle: tuple[int, int]
+) -> float:
     """Smallest reference-line arc radius on a road whose widest side is ``widest`` (m, at any s) and whose lane
     counts go from ``middle`` to each of ``ends`` through tapers (:func:`taper_length`).
 

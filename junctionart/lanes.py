@@ -45,8 +45,11 @@ def assign(net: Network, lines: ControlLines, params: Params, rng: np.random.Gen
     deg = net.degree()
     lanes: list[LaneConfig | None] = [None] * len(net.edges)
     for ch in chains(len(net.nodes), [(e.u, e.v) for e in net.edges]):
-        fixed = [(e, fw) for e, fw in zip(ch.edges, ch.forward)
-                 if net.edges[e].line >= 0 and lines.lines[net.edges[e].line].lanes is not None]
+        fixed = [
+            (e, fw)
+            for e, fw in zip(ch.edges, ch.forward)
+            if net.edges[e].line >= 0 and lines.lines[net.edges[e].line].lanes is not None
+        ]
         on_line = any(net.edges[e].line >= 0 for e in ch.edges)
         if not params.randomize_lanes:
             fwd, bwd = 1, 1

@@ -267,11 +267,12 @@ def _connect(nodes: list[tuple[float, float]], edges: dict[tuple[int, int], int]
         edges[(min(a, b), max(a, b))] = -1
 
 
-def _bend(nodes: list[tuple[float, float]], edges: dict[tuple[int, int], int], params: Params,
-          rng: np.random.Generator) -> dict[tuple[int, int], int]:
+def _bend(
+    nodes: list[tuple[float, float]], edges: dict[tuple[int, int], int], params: Params, rng: np.random.Generator
+) -> dict[tuple[int, int], int]:
     """Curved roads: long connections get an extra vertex moved sideways (a fillet arc later)."""
     out: dict[tuple[int, int], int] = {}
-    for (a, b) in sorted(edges):
+    for a, b in sorted(edges):
         line = edges[(a, b)]
         (x0, y0), (x1, y1) = nodes[a], nodes[b]
         L = math.hypot(x1 - x0, y1 - y0)

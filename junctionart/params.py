@@ -204,11 +204,15 @@ def validate(p: Params) -> None:
     if not isinstance(p.control_line_lanes, tuple):
         raise ParamsError(f"control_line_lanes={p.control_line_lanes!r}: must be a tuple of (forward, backward) pairs")
     for i, pair in enumerate(p.control_line_lanes):
-        ok = isinstance(pair, tuple) and len(pair) == 2 and all(
-            isinstance(n, int) and not isinstance(n, bool) and 0 <= n <= 3 for n in pair)
+        ok = (
+            isinstance(pair, tuple)
+            and len(pair) == 2
+            and all(isinstance(n, int) and not isinstance(n, bool) and 0 <= n <= 3 for n in pair)
+        )
         if not ok or pair == (0, 0):
-            raise ParamsError(f"control_line_lanes[{i}]={pair!r}: must be (forward, backward) lane counts in [0, 3], "
-                              f"not both 0")
+            raise ParamsError(
+                f"control_line_lanes[{i}]={pair!r}: must be (forward, backward) lane counts in [0, 3], not both 0"
+            )
     _range("lane_width", p.lane_width, 2.0, 6.0)
     _range("median_probability", p.median_probability, 0.0, 1.0)
     _range("median_width", p.median_width, 0.5, 10.0)

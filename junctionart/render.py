@@ -44,8 +44,9 @@ def _legend_entries(used: list[str]) -> list[tuple[str, str]]:
     return entries
 
 
-def render(source: str | Path, output: str | Path, *, dpi: int = 150, size: float = 10.0,
-           title: str | None = None) -> Path:
+def render(
+    source: str | Path, output: str | Path, *, dpi: int = 150, size: float = 10.0, title: str | None = None
+) -> Path:
     """Draw ``source`` to ``output`` (PNG, written atomically); raises :class:`InputError` when it cannot be read."""
     import matplotlib
 
@@ -82,8 +83,9 @@ def render(source: str | Path, output: str | Path, *, dpi: int = 150, size: floa
                 for lane in (*sec.left, *sec.right):
                     inner = geo.lane_points(idx, lane.id, s, where="inner")
                     outer = geo.lane_points(idx, lane.id, s, where="outer")
-                    ring = np.column_stack([np.concatenate([inner.x, outer.x[::-1]]),
-                                            np.concatenate([inner.y, outer.y[::-1]])])
+                    ring = np.column_stack(
+                        [np.concatenate([inner.x, outer.x[::-1]]), np.concatenate([inner.y, outer.y[::-1]])]
+                    )
                     if not np.all(np.isfinite(ring)):
                         continue
                     polys.append(ring)
@@ -108,7 +110,9 @@ def render(source: str | Path, output: str | Path, *, dpi: int = 150, size: floa
     ax.set_aspect("equal")
     ax.set_facecolor("#f7f7f2")
     n_j = len(doc.junctions)
-    ax.set_title(title or f"{Path(str(source)).name}: {sum(r.junction is None for r in doc.roads)} roads, {n_j} junctions")
+    ax.set_title(
+        title or f"{Path(str(source)).name}: {sum(r.junction is None for r in doc.roads)} roads, {n_j} junctions"
+    )
     ax.legend(handles=legend, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False, fontsize=9)
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")

@@ -89,8 +89,10 @@ def _geometry(add, g: Geometry) -> None:
     elif isinstance(g, Arc):
         add(f'        <arc curvature="{fmt(g.curvature)}"/>')
     elif isinstance(g, ParamPoly3):
-        add(f'        <paramPoly3 aU="{fmt(g.au)}" bU="{fmt(g.bu)}" cU="{fmt(g.cu)}" dU="{fmt(g.du)}"'
-            f' aV="{fmt(g.av)}" bV="{fmt(g.bv)}" cV="{fmt(g.cv)}" dV="{fmt(g.dv)}" pRange="normalized"/>')
+        add(
+            f'        <paramPoly3 aU="{fmt(g.au)}" bU="{fmt(g.bu)}" cU="{fmt(g.cu)}" dU="{fmt(g.du)}"'
+            f' aV="{fmt(g.av)}" bV="{fmt(g.bv)}" cV="{fmt(g.cv)}" dV="{fmt(g.dv)}" pRange="normalized"/>'
+        )
     else:  # pragma: no cover - the model has no other kinds
         raise JunctionArtError(f"unknown geometry {type(g).__name__}")
     add("      </geometry>")
@@ -98,15 +100,16 @@ def _geometry(add, g: Geometry) -> None:
 
 @functools.lru_cache(maxsize=1024)  # most widths are the same full-width record
 def _cubic_line(depth: int, tag: str, c: Cubic, s_name: str) -> str:
-    return (f'{_INDENT[depth]}<{tag} {s_name}="{fmt(c.s)}" a="{fmt(c.a)}" b="{fmt(c.b)}" c="{fmt(c.c)}" '
-            f'd="{fmt(c.d)}"/>')
+    return f'{_INDENT[depth]}<{tag} {s_name}="{fmt(c.s)}" a="{fmt(c.a)}" b="{fmt(c.b)}" c="{fmt(c.c)}" d="{fmt(c.d)}"/>'
 
 
 @functools.lru_cache(maxsize=1024)  # a handful of distinct marks make up most of a file
 def _mark_line(m: RoadMark) -> str:
     change = f' laneChange="{_esc(m.lane_change)}"' if m.lane_change is not None else ""
-    return (f'{_INDENT[6]}<roadMark sOffset="{fmt(m.s)}" type="{_esc(m.type)}" weight="standard" '
-            f'color="{_esc(m.color)}" width="{fmt(m.width)}"{change}/>')
+    return (
+        f'{_INDENT[6]}<roadMark sOffset="{fmt(m.s)}" type="{_esc(m.type)}" weight="standard" '
+        f'color="{_esc(m.color)}" width="{fmt(m.width)}"{change}/>'
+    )
 
 
 def _lane(add, lane: Lane) -> None:
@@ -150,8 +153,12 @@ def _section(add, sec: LaneSection) -> None:
 
 def _road(out: _Out, road: Road) -> None:
     add = out.lines.append
-    out.open(1, "road", f' name="{_esc(road.name or f"road {road.id}")}" length="{fmt(road.length)}" '
-                        f'id="{_esc(road.id)}" junction="{_esc(road.junction)}" rule="{_esc(road.rule)}"')
+    out.open(
+        1,
+        "road",
+        f' name="{_esc(road.name or f"road {road.id}")}" length="{fmt(road.length)}" '
+        f'id="{_esc(road.id)}" junction="{_esc(road.junction)}" rule="{_esc(road.rule)}"',
+    )
     if road.predecessor is not None or road.successor is not None:
         out.open(2, "link")
         if road.predecessor is not None:
@@ -187,8 +194,10 @@ def _junction(out: _Out, j: Junction) -> None:
         return
     out.open(1, "junction", head)
     for c in j.connections:
-        attrs = (f' id="{_esc(c.id)}" incomingRoad="{_esc(c.incoming_road)}" '
-                 f'connectingRoad="{_esc(c.connecting_road)}" contactPoint="{_esc(c.contact_point)}"')
+        attrs = (
+            f' id="{_esc(c.id)}" incomingRoad="{_esc(c.incoming_road)}" '
+            f'connectingRoad="{_esc(c.connecting_road)}" contactPoint="{_esc(c.contact_point)}"'
+        )
         if not c.lane_links:
             out.leaf(2, "connection", attrs)
             continue
@@ -210,8 +219,12 @@ def to_bytes(doc: Document, version: str = "1.8") -> bytes:
     h = doc.header
     date = f' date="{_esc(h.date)}"' if h.date else ""
     bounds = "".join(f' {k}="{fmt(getattr(h, k))}"' for k in ("north", "south", "east", "west"))
-    out.leaf(1, "header", f' revMajor="1" revMinor="{REV_MINOR[version]}" name="{_esc(h.name)}" version="1.00"'
-                          f'{date}{bounds} vendor="{_esc(h.vendor)}"')
+    out.leaf(
+        1,
+        "header",
+        f' revMajor="1" revMinor="{REV_MINOR[version]}" name="{_esc(h.name)}" version="1.00"'
+        f'{date}{bounds} vendor="{_esc(h.vendor)}"',
+    )
     for road in doc.roads:
         _road(out, road)
     for j in doc.junctions:

@@ -117,7 +117,7 @@ def _run_rule(rule: Rule, ctx: Context) -> list[Finding]:
     out: list[Finding] = []
     try:
         for finding in rule.check(ctx):  # type: ignore[misc]
-            out.append(finding)  # noqa: PERF402 - one by one, so what came before a crash is kept
+            out.append(finding)
     except OutOfTime as exc:
         out.append(
             RULE_OUT_OF_TIME.finding(
@@ -125,7 +125,7 @@ def _run_rule(rule: Rule, ctx: Context) -> list[Finding]:
                 f"before are kept"
             )
         )
-    except Exception as exc:  # noqa: BLE001 - a rule's bug must not stop the check; it becomes a finding
+    except Exception as exc:
         out.append(
             RULE_CRASHED.finding(
                 f"rule {rule.code} {rule.name} crashed: {type(exc).__name__}: {exc}; "

@@ -193,8 +193,7 @@ class Relations:
 class OverlapIndex:
     """Footprints plus the road relations of one document."""
 
-    def __init__(self, document: Document, chord: float | None = None,
-                 out_of_time: Callable[[], bool] | None = None):
+    def __init__(self, document: Document, chord: float | None = None, out_of_time: Callable[[], bool] | None = None):
         self.document = document
         self.footprints = Footprints(surfaces_of(document, chord), out_of_time)
         self.relations = Relations(document)
@@ -258,8 +257,9 @@ class OverlapIndex:
         return out
 
 
-def overlap_index(document: Document, chord: float | None = None,
-                  out_of_time: Callable[[], bool] | None = None) -> OverlapIndex:
+def overlap_index(
+    document: Document, chord: float | None = None, out_of_time: Callable[[], bool] | None = None
+) -> OverlapIndex:
     """:class:`OverlapIndex` of a document, cached for its lifetime (per chord). ``out_of_time`` is polled while the
     footprints are built; when it says so, :class:`OutOfTime` is raised and nothing is cached."""
     return cached_per_chord("overlap index", document, chord, lambda d, c: OverlapIndex(d, c, out_of_time))

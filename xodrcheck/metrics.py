@@ -132,7 +132,9 @@ def _road_ends_at_junctions(document: Document) -> dict[str, list[tuple[str, Con
     return out
 
 
-def leg_ends(document: Document, junction: Junction, linked: Mapping[str, list] | None = None) -> list[tuple[str, ContactPoint]]:
+def leg_ends(
+    document: Document, junction: Junction, linked: Mapping[str, list] | None = None
+) -> list[tuple[str, ContactPoint]]:
     """The (road, end) pairs of a junction's legs, in order of first mention (see the module docstring)."""
     roads = document.road_by_id
     found: dict[tuple[str, ContactPoint], None] = {}
@@ -268,7 +270,9 @@ def is_u_turn(road: Road) -> bool:
 
 
 def _drivable_lane_count(road: Road) -> int:
-    return max((sum(1 for lane in sec.lanes if lane.id != 0 and lane.drivable) for sec in road.lane_sections), default=0)
+    return max(
+        (sum(1 for lane in sec.lanes if lane.id != 0 and lane.drivable) for sec in road.lane_sections), default=0
+    )
 
 
 def _junction_footprints(document: Document, roads: list[Road], chord: float) -> tuple[list, list[str]]:
@@ -310,7 +314,9 @@ def junction_metrics(
     if junction.type is JunctionType.DIRECT:
         per_leg = tuple(LegMetrics(g.road, g.end, g.p1[0], g.p1[1], None, None, None, None) for g in legs)
         lanes = sum(len(c.lane_links) for c in junction.connections)
-        return JunctionMetrics(junction.id, junction.name, junction.type, len(legs), lanes, 0, None, None, None, per_leg)
+        return JunctionMetrics(
+            junction.id, junction.name, junction.type, len(legs), lanes, 0, None, None, None, per_leg
+        )
     per_leg = leg_metrics(legs, tol.position)
     roads = connecting_roads(document, junction)
     n_lanes = sum(_drivable_lane_count(r) for r in roads)
@@ -322,7 +328,9 @@ def junction_metrics(
     )
 
 
-def map_metrics(document: Document, tolerances: Tolerances | None = None, lookback: float = LOOKBACK) -> tuple[JunctionMetrics, ...]:
+def map_metrics(
+    document: Document, tolerances: Tolerances | None = None, lookback: float = LOOKBACK
+) -> tuple[JunctionMetrics, ...]:
     """Metrics of every junction of the document, in file order."""
     linked = _road_ends_at_junctions(document)
     return tuple(junction_metrics(document, j, tolerances, lookback, linked) for j in document.junctions)

@@ -23,8 +23,12 @@ _OPTION = "--xodr-snapshot-update"
 
 def pytest_addoption(parser: pytest.Parser) -> None:
     group = parser.getgroup("xodrcheck", "OpenDRIVE map snapshots")
-    group.addoption(_OPTION, action="store_true", default=False,
-                    help="write the snapshots the xodr_snapshot fixture compares with, instead of comparing")
+    group.addoption(
+        _OPTION,
+        action="store_true",
+        default=False,
+        help="write the snapshots the xodr_snapshot fixture compares with, instead of comparing",
+    )
 
 
 class SnapshotAssertion:
@@ -60,8 +64,10 @@ class SnapshotAssertion:
         lines = list(differences(old, new))
         if lines:
             where = "the map" if isinstance(source, bytes) else str(source)
-            pytest.fail(f"{where} differs from {snapshot} (run pytest {_OPTION} to accept):\n  "
-                        + "\n  ".join(lines), pytrace=False)
+            pytest.fail(
+                f"{where} differs from {snapshot} (run pytest {_OPTION} to accept):\n  " + "\n  ".join(lines),
+                pytrace=False,
+            )
 
 
 @pytest.fixture

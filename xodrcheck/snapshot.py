@@ -65,7 +65,9 @@ class Snapshot:
         data = {"format": FORMAT}
         for f in fields(self):
             value = getattr(self, f.name)
-            data[f.name] = list(value) if isinstance(value, tuple) else dict(value) if isinstance(value, Mapping) else value
+            data[f.name] = (
+                list(value) if isinstance(value, tuple) else dict(value) if isinstance(value, Mapping) else value
+            )
         return data
 
     @classmethod
@@ -191,8 +193,11 @@ def snapshot_of(source: str | Path | bytes, config: Config | None = None) -> Sna
         first = next((f"{f.code} {f.name}: {f.message}" for f in result.findings), "nothing readable")
         raise ValueError(f"no OpenDRIVE document could be read ({first})")
     lanes = Counter(
-        lane_type_name(lane) for road in doc.roads for section in road.lane_sections
-        for lane in (*section.left, *section.right) if lane.id != 0
+        lane_type_name(lane)
+        for road in doc.roads
+        for section in road.lane_sections
+        for lane in (*section.left, *section.right)
+        if lane.id != 0
     )
     edges = lane_links(doc)
     box = bounding_box(doc, config.tolerances)
@@ -216,12 +221,18 @@ def snapshot_of(source: str | Path | bytes, config: Config | None = None) -> Sna
 
 # ------------------------------------------------------------------------------------------------------ differences
 _COUNTS = (
-    ("roads", "roads"), ("junction_roads", "roads inside junctions"), ("junctions", "junctions"),
-    ("lane_sections", "lane sections"), ("lanes", "lanes"), ("lane_links", "lane links"),
+    ("roads", "roads"),
+    ("junction_roads", "roads inside junctions"),
+    ("junctions", "junctions"),
+    ("lane_sections", "lane sections"),
+    ("lanes", "lanes"),
+    ("lane_links", "lane links"),
 )
 _HISTOGRAMS = (
-    ("junctions_by_type", "junctions of type", ""), ("legs", "junctions with", " legs"),
-    ("lanes_by_type", "lanes of type", ""), ("findings", "findings", ""),
+    ("junctions_by_type", "junctions of type", ""),
+    ("legs", "junctions with", " legs"),
+    ("lanes_by_type", "lanes of type", ""),
+    ("findings", "findings", ""),
 )
 
 
@@ -230,7 +241,7 @@ def differences(old: Snapshot, new: Snapshot, tolerances: Tolerances | None = No
 
     Lengths compare within ``length_abs`` and coordinates within ``position`` (plus the storage rounding)."""
     tol = tolerances or Tolerances()
-    slack = 0.5 * 10.0 ** -_DECIMALS + 1e-9
+    slack = 0.5 * 10.0**-_DECIMALS + 1e-9
     for name, label in _COUNTS:
         a, b = getattr(old, name), getattr(new, name)
         if a != b:

@@ -43,7 +43,7 @@ def crossing(rows: list[LinkFit], skip: set[int]) -> set[int]:
     for n, r in enumerate(rows):
         if n not in skip:
             by_leg.setdefault(r.leg_in, []).append(n)
-    pairs = [(a, b) for group in by_leg.values() for i, a in enumerate(group) for b in group[i + 1:]]
+    pairs = [(a, b) for group in by_leg.values() for i, a in enumerate(group) for b in group[i + 1 :]]
     if not pairs:
         return set()
     idx = sorted({n for pair in pairs for n in pair})
@@ -95,8 +95,9 @@ def _parted(xy: np.ndarray, other: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     nx, ny = xy[:, None, :head, 0], xy[:, None, :head, 1]
     ax, ay = seg0[:, j, 0], seg0[:, j, 1]
     abx, aby = seg1[:, j, 0] - ax, seg1[:, j, 1] - ay
-    t = np.minimum(np.maximum(((nx - ax) * abx + (ny - ay) * aby) / np.maximum(abx * abx + aby * aby, 1e-300), 0.0),
-                   1.0)
+    t = np.minimum(
+        np.maximum(((nx - ax) * abx + (ny - ay) * aby) / np.maximum(abx * abx + aby * aby, 1e-300), 0.0), 1.0
+    )
     dist = np.hypot(ax + t * abx - nx, ay + t * aby - ny).min(axis=1)
     far = dist > PARTED
     # not parted within the head: compare from the end of the head (they run together there: a near-touch)
@@ -105,5 +106,3 @@ def _parted(xy: np.ndarray, other: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     first = np.minimum(first, m - 2)
     keep = np.arange(m)[None, :] >= first[:, None]
     return shapely.linestrings(xy[keep], indices=np.repeat(np.arange(n), keep.sum(axis=1))), ok
-
-

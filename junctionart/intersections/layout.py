@@ -93,7 +93,9 @@ class Builder:
         """Give every chain one configuration (its first edge's); break pure cycles."""
         for ch in chs:
             if ch.start == ch.end and deg[ch.start] == 2:
-                self.st.remove_edge(ch.edges[0], f"removed a road forming a closed loop without junction at node {ch.start}")
+                self.st.remove_edge(
+                    ch.edges[0], f"removed a road forming a closed loop without junction at node {ch.start}"
+                )
                 continue
             first = self.st.edges[ch.edges[0]][2]
             cfg = first if ch.forward[0] else first.reversed()
@@ -147,7 +149,9 @@ class Builder:
                 continue
             L = [self._leg(chs, k) for k in keys]
             order = sorted(range(len(L)), key=lambda i: L[i].angle)
-            pairs = sorted(((L[b].angle - L[a].angle) % (2 * math.pi), a, b) for a, b in zip(order, order[1:] + order[:1]))
+            pairs = sorted(
+                ((L[b].angle - L[a].angle) % (2 * math.pi), a, b) for a, b in zip(order, order[1:] + order[:1])
+            )
             for gap, a, b in pairs:
                 if gap >= limit:
                     break
@@ -156,14 +160,19 @@ class Builder:
                 edges = [chs[keys[i][0]].edges[0] if keys[i][1] else chs[keys[i][0]].edges[-1] for i in cands]
                 edges = [e for e in edges if e in self.st.edges]
                 # the whole road goes (no dead-end stub left by the junction), but only the leg's edge of a loop
-                chain_of = {e: {e} if chs[keys[i][0]].start == chs[keys[i][0]].end else set(chs[keys[i][0]].edges)
-                            for i, e in zip(cands, edges)}
+                chain_of = {
+                    e: {e} if chs[keys[i][0]].start == chs[keys[i][0]].end else set(chs[keys[i][0]].edges)
+                    for i, e in zip(cands, edges)
+                }
                 for e in edges:
                     if self.st.connected_without(chain_of[e]):
                         for x in sorted(chain_of[e]):
                             if x in self.st.edges:
-                                self.st.remove_edge(x, f"node {node}: removed a road whose leg was "
-                                                       f"{math.degrees(gap):.0f} deg from its neighbour")
+                                self.st.remove_edge(
+                                    x,
+                                    f"node {node}: removed a road whose leg was "
+                                    f"{math.degrees(gap):.0f} deg from its neighbour",
+                                )
                         break
                 else:
                     continue
@@ -215,8 +224,15 @@ class Builder:
             self.st.factor[node] = float(self.rng.uniform(1.0, 1.2))
         return incident_distances(L, plan, self.p, self.st.factor[node] * self.st.scale.get(node, 1.0))
 
-    def _road_geometry(self, ch: Chain, r0: float, r1: float, need: float, cfg: LaneConfig,
-                       ends: tuple[tuple[int, int], tuple[int, int]]):
+    def _road_geometry(
+        self,
+        ch: Chain,
+        r0: float,
+        r1: float,
+        need: float,
+        cfg: LaneConfig,
+        ends: tuple[tuple[int, int], tuple[int, int]],
+    ):
         return road_geometry([self.st.nodes[n] for n in ch.nodes], r0, r1, need, cfg, ends, self.p)
 
     def _merge_instead(self, ch: Chain, deg: list[int]) -> bool:
@@ -227,8 +243,10 @@ class Builder:
     def _overlap_repair(self, chs: list[Chain], geoms: list, plans: dict, jplans: list[JunctionPlan]) -> None:
         """Roads and junction areas (with every connection lane) may only touch where the map connects them;
         otherwise a road is removed (one whose removal keeps the map connected when there is one)."""
-        ends = {node: [(geoms[c][0], geoms[c][1], at_start) for c, at_start in keys]
-                for node, (keys, *_rest) in plans.items()}
+        ends = {
+            node: [(geoms[c][0], geoms[c][1], at_start) for c, at_start in keys]
+            for node, (keys, *_rest) in plans.items()
+        }
         lanes = {jp.node: [c.geometry for c in jp.connections] for jp in jplans}
         for cands in overlaps(chs, [(g[0], g[1]) for g in geoms], ends, lanes, self.p):
             if any(self.st.touched(chs[c].nodes) for c in cands):
@@ -241,8 +259,9 @@ class Builder:
             for e in chs[c].edges:
                 del self.st.edges[e]
             self.st.dirty.update(chs[c].nodes)
-            self.st.repairs.append(f"removed road between nodes {chs[c].start} and {chs[c].end}: it overlapped "
-                                   f"another road or junction")
+            self.st.repairs.append(
+                f"removed road between nodes {chs[c].start} and {chs[c].end}: it overlapped another road or junction"
+            )
 
     def _drop_leg(self, node: int, keys: list[tuple[int, bool]], chs: list[Chain], prefer: list[int], why: str) -> None:
         """Remove the edge of one leg at ``node``: the first of ``prefer`` (leg indexes) that is not a bridge."""
@@ -306,7 +325,9 @@ class Builder:
         return good, False
 
     @staticmethod
-    def _contacts(keys: list[tuple[int, bool]], geoms: list) -> tuple[list[tuple[float, float, float, bool]], list[bool]]:
+    def _contacts(
+        keys: list[tuple[int, bool]], geoms: list
+    ) -> tuple[list[tuple[float, float, float, bool]], list[bool]]:
         """Per leg: the pose where its road meets the junction (and whether that is the road's start), and whether
         the road has a median."""
         contact, median = [], []
@@ -320,8 +341,9 @@ class Builder:
             median.append(geoms[c][1].median)
         return contact, median
 
-    def _u_turns(self, node: int, keys: list[tuple[int, bool]], plan: linkplan.LinkPlan, geoms: list,
-                 fits: list[LinkFit]) -> list[ConnectionPlan]:
+    def _u_turns(
+        self, node: int, keys: list[tuple[int, bool]], plan: linkplan.LinkPlan, geoms: list, fits: list[LinkFit]
+    ) -> list[ConnectionPlan]:
         """U-turn lanes of a finished junction: on legs where one meets the radius bound and crosses none of its
         road's other connection lanes, each with probability ``u_turn_probability``. Drawn last in stage 3, so the
         rest of the map does not depend on them."""
@@ -388,8 +410,12 @@ class Builder:
                 continue
             cfg = self._chain_cfg(ch)
             r0, r1 = r_at.get((c, True), 0.0), r_at.get((c, False), 0.0)
-            fs, bs = (counts[(c, True)][1], counts[(c, True)][0]) if (c, True) in counts else (cfg.forward, cfg.backward)
-            fe, be = (counts[(c, False)][0], counts[(c, False)][1]) if (c, False) in counts else (cfg.forward, cfg.backward)
+            fs, bs = (
+                (counts[(c, True)][1], counts[(c, True)][0]) if (c, True) in counts else (cfg.forward, cfg.backward)
+            )
+            fe, be = (
+                (counts[(c, False)][0], counts[(c, False)][1]) if (c, False) in counts else (cfg.forward, cfg.backward)
+            )
             mid = (cfg.forward, cfg.backward)
             need = MIN_ROAD + taper_length(self.p, (fs, bs), mid) + taper_length(self.p, (fe, be), mid)
             need_of[c] = need
@@ -399,17 +425,29 @@ class Builder:
             elif status == "short":
                 if len(ch.nodes) > 2:
                     P = [self.st.nodes[n] for n in ch.nodes]
-                    turns = [abs(wrap(math.atan2(P[i + 1][1] - P[i][1], P[i + 1][0] - P[i][0])
-                                      - math.atan2(P[i][1] - P[i - 1][1], P[i][0] - P[i - 1][0])))
-                             for i in range(1, len(P) - 1)]
-                    self.st.smooth(ch, 1 + int(np.argmax(turns)), f"bend on a road too short between nodes "
-                                 f"{ch.start} and {ch.end}")
+                    turns = [
+                        abs(
+                            wrap(
+                                math.atan2(P[i + 1][1] - P[i][1], P[i + 1][0] - P[i][0])
+                                - math.atan2(P[i][1] - P[i - 1][1], P[i][0] - P[i - 1][0])
+                            )
+                        )
+                        for i in range(1, len(P) - 1)
+                    ]
+                    self.st.smooth(
+                        ch, 1 + int(np.argmax(turns)), f"bend on a road too short between nodes {ch.start} and {ch.end}"
+                    )
                 elif not self._merge_instead(ch, deg) and self.st.connected_without(ch.edges[0]):
-                    self.st.remove_edge(ch.edges[0], f"removed road between nodes {ch.start} and {ch.end}: too short "
-                                                   f"for its intersections")
+                    self.st.remove_edge(
+                        ch.edges[0],
+                        f"removed road between nodes {ch.start} and {ch.end}: too short for its intersections",
+                    )
                 else:
-                    self.st.contract(ch.edges[0], f"merged nodes {ch.start} and {ch.end} into one intersection: the "
-                                                f"road between them was too short")
+                    self.st.contract(
+                        ch.edges[0],
+                        f"merged nodes {ch.start} and {ch.end} into one intersection: the "
+                        f"road between them was too short",
+                    )
             geoms.append((g, cfg, fs, bs, fe, be) if status == "ok" else None)
         if self.st.dirty:
             raise _Repair
@@ -441,8 +479,13 @@ class Builder:
                 failed = [r.leg_in for r in fits if r.fit is None]
                 self.st.growth[node] = 0
                 self.st.scale[node] = 1.0
-                self._drop_leg(node, keys, chs, sorted(set(failed)),
-                               f"node {node}: dropped a leg whose turns stay under the radius bound")
+                self._drop_leg(
+                    node,
+                    keys,
+                    chs,
+                    sorted(set(failed)),
+                    f"node {node}: dropped a leg whose turns stay under the radius bound",
+                )
                 continue
             self.st.scale[node] = self.st.scale.get(node, 1.0) * GROWTH
             self.st.repairs.append(f"node {node}: moved incident points outward (turn radius)")
@@ -451,8 +494,9 @@ class Builder:
             rebuilt = []
             for c in sorted({k[0] for k in keys}):
                 _, cfg, fs, bs, fe, be = geoms[c]
-                status, g = self._road_geometry(chs[c], r_at.get((c, True), 0.0), r_at.get((c, False), 0.0),
-                                                need_of[c], cfg, ((fs, bs), (fe, be)))
+                status, g = self._road_geometry(
+                    chs[c], r_at.get((c, True), 0.0), r_at.get((c, False), 0.0), need_of[c], cfg, ((fs, bs), (fe, be))
+                )
                 if status != "ok":
                     self.st.dirty.update(chs[c].nodes)  # the next pass repairs this road
                     break
@@ -476,8 +520,18 @@ class Builder:
             for i, k, j, m, lid_in, lid_out, p0, h0, fit in fits:
                 ci, si = keys[i]
                 cj, sj = keys[j]
-                conns.append(ConnectionPlan(ci, "start" if si else "end", lid_in, cj, "start" if sj else "end",
-                                            lid_out, connection_geometry(p0[0], p0[1], h0, fit), fit.min_radius))
+                conns.append(
+                    ConnectionPlan(
+                        ci,
+                        "start" if si else "end",
+                        lid_in,
+                        cj,
+                        "start" if sj else "end",
+                        lid_out,
+                        connection_geometry(p0[0], p0[1], h0, fit),
+                        fit.min_radius,
+                    )
+                )
             conns.extend(self._u_turns(node, keys, plans[node][2], geoms, fits))
             jplans.append(JunctionPlan(node, self.st.nodes[node], len(keys), tuple(conns)))
         self._overlap_repair(chs, geoms, plans, jplans)
@@ -486,9 +540,22 @@ class Builder:
         roads = []
         for c, ch in enumerate(chs):
             g, cfg, fs, bs, fe, be = geoms[c]
-            roads.append(RoadPlan(c, ch.start, ch.end, junction_of.get(ch.start) if deg[ch.start] >= 3 else None,
-                                  junction_of.get(ch.end) if deg[ch.end] >= 3 else None, g,
-                                  g[-1].s + g[-1].length, cfg, fs, bs, fe, be))
+            roads.append(
+                RoadPlan(
+                    c,
+                    ch.start,
+                    ch.end,
+                    junction_of.get(ch.start) if deg[ch.start] >= 3 else None,
+                    junction_of.get(ch.end) if deg[ch.end] >= 3 else None,
+                    g,
+                    g[-1].s + g[-1].length,
+                    cfg,
+                    fs,
+                    bs,
+                    fe,
+                    be,
+                )
+            )
         return Layout(tuple(roads), tuple(jplans), tuple(self.st.repairs))
 
     def run(self) -> Layout:

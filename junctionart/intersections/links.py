@@ -59,8 +59,9 @@ def _targets(legs: list[Leg], rule: TrafficRule) -> list[list[int]]:
     return [sorted(t, key=lambda j, i=i: sign * turn(legs, i, j)) for i, t in enumerate(out)]
 
 
-def plan(legs: list[Leg], params: Params, rng: np.random.Generator, drawn: dict[tuple[int, int], tuple[bool, bool]]
-         ) -> LinkPlan:
+def plan(
+    legs: list[Leg], params: Params, rng: np.random.Generator, drawn: dict[tuple[int, int], tuple[bool, bool]]
+) -> LinkPlan:
     """Lane links for one junction. ``drawn`` remembers per leg what was drawn for it (a turn lane? split first?),
     so a leg keeps its choices while repairs elsewhere make the junction be planned again."""
     n = len(legs)
@@ -93,7 +94,7 @@ def plan(legs: list[Leg], params: Params, rng: np.random.Generator, drawn: dict[
                 take += extra
             if strategy is SplitStrategy.SPLIT_FIRST and k == 1:
                 take += extra
-            for j, m in targets[pos:pos + take]:
+            for j, m in targets[pos : pos + take]:
                 links.append((i, k, j, m))
                 fed[j].add(m)
             pos += take

@@ -44,15 +44,21 @@ def _lane_bodies(gs, side: float, w: float) -> list:
     pts = np.empty((len(owner), 2))
     cubic = np.array([isinstance(g, ParamPoly3) for g in geoms])
     for i in np.flatnonzero(~cubic):  # U-turn arcs: few, one sample call each
-        pts[first[i]:last[i] + 1] = sample(geoms[i], int(n[i]))
+        pts[first[i] : last[i] + 1] = sample(geoms[i], int(n[i]))
     if cubic.any():
         rows = cubic[owner]
         idx, at = np.flatnonzero(rows), owner[rows]
         # np.linspace(0, 1, m) for each lane, in one pass: the same step, products and exact last sample
         t = (idx - first[at]) * (1.0 / (n - 1))[at]
         t[idx == last[at]] = 1.0
-        c = np.array([[g.au, g.bu, g.cu, g.du, g.av, g.bv, g.cv, g.dv, g.x, g.y, math.cos(g.hdg), math.sin(g.hdg)]
-                      if isinstance(g, ParamPoly3) else [0.0] * 12 for g in geoms])[at]
+        c = np.array(
+            [
+                [g.au, g.bu, g.cu, g.du, g.av, g.bv, g.cv, g.dv, g.x, g.y, math.cos(g.hdg), math.sin(g.hdg)]
+                if isinstance(g, ParamPoly3)
+                else [0.0] * 12
+                for g in geoms
+            ]
+        )[at]
         u = c[:, 0] + t * (c[:, 1] + t * (c[:, 2] + t * c[:, 3]))
         v = c[:, 4] + t * (c[:, 5] + t * (c[:, 6] + t * c[:, 7]))
         pts[rows] = np.column_stack([c[:, 8] + c[:, 10] * u - c[:, 11] * v, c[:, 9] + c[:, 11] * u + c[:, 10] * v])
@@ -73,9 +79,13 @@ def _lane_bodies(gs, side: float, w: float) -> list:
     return out
 
 
-def overlaps(chs: list[Chain], roads: list[tuple[tuple[Geometry, ...], LaneConfig]],
-             junctions: dict[int, list[tuple[tuple[Geometry, ...], LaneConfig, bool]]],
-             connections: dict[int, list[Geometry]], p: Params) -> list[list[int]]:
+def overlaps(
+    chs: list[Chain],
+    roads: list[tuple[tuple[Geometry, ...], LaneConfig]],
+    junctions: dict[int, list[tuple[tuple[Geometry, ...], LaneConfig, bool]]],
+    connections: dict[int, list[Geometry]],
+    p: Params,
+) -> list[list[int]]:
     """For each overlap, the chains (roads) whose removal would end it, in order of preference.
 
     Roads are their reference lines buffered by their wider side; a junction is the convex hull of its legs' end
@@ -88,8 +98,19 @@ def overlaps(chs: list[Chain], roads: list[tuple[tuple[Geometry, ...], LaneConfi
     for g, cfg in roads:
         halves.append(max(side_width(cfg.forward, cfg.median, w, mw), side_width(cfg.backward, cfg.median, w, mw)))
         lines.append(np.concatenate([sample(e, max(2, int(e.length / 5.0) + 2)) for e in g]))
-    shapes = list(shapely.buffer(shapely.linestrings(np.concatenate(lines), indices=np.repeat(
-        np.arange(len(lines)), [len(x) for x in lines])), np.array(halves), cap_style="flat")) if roads else []
+    shapes = (
+        list(
+            shapely.buffer(
+                shapely.linestrings(
+                    np.concatenate(lines), indices=np.repeat(np.arange(len(lines)), [len(x) for x in lines])
+                ),
+                np.array(halves),
+                cap_style="flat",
+            )
+        )
+        if roads
+        else []
+    )
     owners = [("road", c) for c in range(len(roads))]
     rht = p.traffic_rule is TrafficRule.RHT
     for node, legs in junctions.items():

@@ -35,8 +35,13 @@ def incident_distances(L: list[linkplan.Leg], plan: linkplan.LinkPlan, params: P
     random factor and growth). Neighbours at a sharp angle that no lane links need only keep their stubs apart."""
     order = sorted(range(len(L)), key=lambda i: L[i].angle)
     # lanes at the junction: a turn lane added before it widens the incoming side
-    half = [max(side_width(max(l.n_in, plan.n_in_end[i]), l.median, params.lane_width, params.median_width),
-                side_width(l.n_out, l.median, params.lane_width, params.median_width)) for i, l in enumerate(L)]
+    half = [
+        max(
+            side_width(max(l.n_in, plan.n_in_end[i]), l.median, params.lane_width, params.median_width),
+            side_width(l.n_out, l.median, params.lane_width, params.median_width),
+        )
+        for i, l in enumerate(L)
+    ]
     r = [h + params.min_turn_radius + 2.0 for h in half]
     turn_r = params.min_turn_radius + 1.0 + params.lane_width / 2
     linked = {frozenset((i, j)) for i, _, j, _ in plan.links}
@@ -52,8 +57,15 @@ def incident_distances(L: list[linkplan.Leg], plan: linkplan.LinkPlan, params: P
     return [x * scale for x in r]
 
 
-def road_geometry(P: list[tuple[float, float]], r0: float, r1: float, need: float, cfg: LaneConfig,
-                  ends: tuple[tuple[int, int], tuple[int, int]], params: Params):
+def road_geometry(
+    P: list[tuple[float, float]],
+    r0: float,
+    r1: float,
+    need: float,
+    cfg: LaneConfig,
+    ends: tuple[tuple[int, int], tuple[int, int]],
+    params: Params,
+):
     """Geometry of a chain through points ``P`` trimmed by r0 / r1, or ("vertex", i) / ("short", None) when it does
     not fit.
     ``ends``: the (forward, backward) lane counts at its start and end (tapers from ``cfg``'s counts)."""
@@ -85,7 +97,7 @@ def road_geometry(P: list[tuple[float, float]], r0: float, r1: float, need: floa
         if t_max <= 0 or theta > math.radians(170):
             return "vertex", i
         R = min(r_pref, t_max / math.tan(theta / 2))
-        if R < r_min:
+        if r_min > R:
             return "vertex", i
         radii.append(R)
         tangents.append(R * math.tan(theta / 2))

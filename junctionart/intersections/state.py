@@ -140,4 +140,3 @@ class NetworkState:
             next_id += 2
             prev = n
         self.edges[next_id] = (prev, b, cfg)
-

@@ -33,8 +33,9 @@ class UTurn:
     radius: float  #: of the reference line; the lane centre's is half a lane width larger
 
 
-def candidate(leg: int, contact: tuple[float, float, float, bool], median: bool, n_out_end: int, p: Params
-              ) -> UTurn | None:
+def candidate(
+    leg: int, contact: tuple[float, float, float, bool], median: bool, n_out_end: int, p: Params
+) -> UTurn | None:
     """The U-turn of one leg, from its innermost incoming lane to the nearest outgoing lane fed at the junction whose
     half circle meets the radius bound; None when there is none."""
     x, y, h, at_start = contact
@@ -60,8 +61,9 @@ def _centre_points(ref: Arc, w: float) -> np.ndarray:
     a = Arc(0.0, x, y, ref.hdg, math.pi * radius, math.copysign(1.0 / radius, ref.curvature))
     d = np.linspace(0.0, a.length, _SAMPLES)
     hdg = a.hdg + a.curvature * d
-    return np.column_stack([a.x + (np.sin(hdg) - math.sin(a.hdg)) / a.curvature,
-                            a.y - (np.cos(hdg) - math.cos(a.hdg)) / a.curvature])
+    return np.column_stack(
+        [a.x + (np.sin(hdg) - math.sin(a.hdg)) / a.curvature, a.y - (np.cos(hdg) - math.cos(a.hdg)) / a.curvature]
+    )
 
 
 def _hermite_centre(row: LinkFit, t: float) -> np.ndarray:
@@ -94,6 +96,6 @@ def crosses(turn: UTurn, lane_in: int, rows: list[LinkFit], p: Params) -> bool:
         far = np.flatnonzero(shapely.distance(shapely.points(pts), other) > PARTED)
         if len(far) == 0 or far[0] > _SAMPLES - 2:
             return True
-        if shapely.dwithin(shapely.LineString(pts[far[0]:]), other, TOUCH):
+        if shapely.dwithin(shapely.LineString(pts[far[0] :]), other, TOUCH):
             return True
     return False

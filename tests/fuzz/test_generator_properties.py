@@ -43,8 +43,9 @@ def _known_fault(entry: dict, still_there: bool) -> None:
     pytest.fail(f"known fault {entry['what']!r} is fixed: set known_fault to false in fuzz/regressions.json")
 
 
-@pytest.mark.parametrize("entry", [e for e in regressions() if e["property"] == "invalid-input"],
-                         ids=lambda e: e["what"])
+@pytest.mark.parametrize(
+    "entry", [e for e in regressions() if e["property"] == "invalid-input"], ids=lambda e: e["what"]
+)
 def test_invalid_input_regressions(entry, tmp_path, capsys):
     """On the command line: exit 2, one line on stderr, no file."""
     source = tmp_path / "lines.json"
@@ -64,7 +65,7 @@ def test_round_trip_geometry_is_exact():
 
 # ------------------------------------------------------------------------------------------------ fault injection
 def _replace_road(doc, i, road):
-    return dataclasses.replace(doc, roads=doc.roads[:i] + (road,) + doc.roads[i + 1:])
+    return dataclasses.replace(doc, roads=doc.roads[:i] + (road,) + doc.roads[i + 1 :])
 
 
 def _drop_lane_link(doc):
@@ -77,9 +78,9 @@ def _drop_lane_link(doc):
                 lanes = getattr(sec, side)
                 for j, lane in enumerate(lanes):
                     if lane.predecessor is not None:
-                        lanes = lanes[:j] + (dataclasses.replace(lane, predecessor=None),) + lanes[j + 1:]
+                        lanes = lanes[:j] + (dataclasses.replace(lane, predecessor=None),) + lanes[j + 1 :]
                         sec = dataclasses.replace(sec, **{side: lanes})
-                        road = dataclasses.replace(road, sections=road.sections[:k] + (sec,) + road.sections[k + 1:])
+                        road = dataclasses.replace(road, sections=road.sections[:k] + (sec,) + road.sections[k + 1 :])
                         return _replace_road(doc, i, road)
     return doc
 
@@ -113,8 +114,9 @@ def test_fuzzing_catches_a_broken_generator(monkeypatch, breakage):
     assert broken[-1], "the run failed on a map the breakage left alone"
 
 
-@pytest.mark.parametrize("entry", [e for e in regressions() if e["property"] == "min-turn-radius"],
-                         ids=lambda e: e["what"])
+@pytest.mark.parametrize(
+    "entry", [e for e in regressions() if e["property"] == "min-turn-radius"], ids=lambda e: e["what"]
+)
 def test_min_turn_radius_regressions(entry):
     """Params promise that no lane centre is written tighter than ``min_turn_radius``."""
     import junctionart as ja
@@ -130,8 +132,9 @@ def test_min_turn_radius_regressions(entry):
     assert tight == []
 
 
-@pytest.mark.parametrize("entry", [e for e in regressions() if e["property"] == "generated-map"],
-                         ids=lambda e: e["what"])
+@pytest.mark.parametrize(
+    "entry", [e for e in regressions() if e["property"] == "generated-map"], ids=lambda e: e["what"]
+)
 def test_generated_map_regressions(entry):
     """Maps the fuzzer found errors in: no error any more (known faults: xfail while the error is there)."""
     import junctionart as ja

@@ -28,8 +28,11 @@ def test_a_failing_run_is_reported_and_exits_1(no_database, monkeypatch, capsys)
     def fails(case):
         raise AssertionError("planted failure")
 
-    monkeypatch.setitem(campaign.RUNS, "planted", campaign.Run("planted", "invalid", campaign.RUNS["invalid-params"]
-                                                               .strategy, fails, "always fails"))
+    monkeypatch.setitem(
+        campaign.RUNS,
+        "planted",
+        campaign.Run("planted", "invalid", campaign.RUNS["invalid-params"].strategy, fails, "always fails"),
+    )
     assert fuzz_main.main(["--minutes", "0.05", "--profile", "ci", "--runs", "planted,invalid-params"]) == 1
     out = capsys.readouterr().out
     assert "FAILED planted" in out and "planted failure" in out and "failures: 1" in out

@@ -112,8 +112,15 @@ def test_defective_documents_carry_their_defect(case):
 
 
 @settings(max_examples=10, database=None)
-@given(damaged_documents(base=st.just(b"<OpenDRIVE><header revMajor='1' revMinor='8'/></OpenDRIVE>"),
-                         min_mutations=1, max_mutations=1, damage=("rename",), defects=()))
+@given(
+    damaged_documents(
+        base=st.just(b"<OpenDRIVE><header revMajor='1' revMinor='8'/></OpenDRIVE>"),
+        min_mutations=1,
+        max_mutations=1,
+        damage=("rename",),
+        defects=(),
+    )
+)
 def test_damage_applies_to_any_base(data):
     assert isinstance(data, bytes) and data
 

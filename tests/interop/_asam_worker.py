@@ -20,8 +20,12 @@ def main(configs):
         config = Configuration()
         config.load_from_file(xml_file_path=path)
         result = Result()
-        result.register_checker_bundle(name=constants.BUNDLE_NAME, description="OpenDrive checker bundle",
-                                       version=constants.BUNDLE_VERSION, summary="")
+        result.register_checker_bundle(
+            name=constants.BUNDLE_NAME,
+            description="OpenDrive checker bundle",
+            version=constants.BUNDLE_VERSION,
+            summary="",
+        )
         result.set_result_version(version=constants.BUNDLE_VERSION)
         run_checks(config, result)
         result.copy_param_from_config(config)

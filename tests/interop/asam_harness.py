@@ -45,8 +45,10 @@ def asam_python() -> Path:
     venv = Path(os.environ.get("ASAM_VENV", REPO / ".venv-asam"))
     python = venv / "bin" / "python"
     if not (venv / "bin" / "qc_opendrive").is_file() or not python.is_file():
-        raise AsamUnavailable(f"asam-qc-opendrive not found in {venv}: run scripts/setup (it creates .venv-asam with "
-                              "asam-qc-opendrive==1.0.0), or set ASAM_VENV to an environment that has it")
+        raise AsamUnavailable(
+            f"asam-qc-opendrive not found in {venv}: run scripts/setup (it creates .venv-asam with "
+            "asam-qc-opendrive==1.0.0), or set ASAM_VENV to an environment that has it"
+        )
     return python
 
 
@@ -69,9 +71,18 @@ class AsamRun:
         # largest files first, dealt round-robin, so the workers finish at about the same time
         order = sorted(range(len(configs)), key=lambda n: -self.paths[n].stat().st_size)
         batches = [[configs[n] for n in order[w::workers]] for w in range(workers)]
-        self.procs = [subprocess.Popen([str(python), "-I", str(WORKER), *map(str, batch)], cwd=work,
-                                       stdin=subprocess.DEVNULL, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
-                                       text=True) for batch in batches if batch]
+        self.procs = [
+            subprocess.Popen(
+                [str(python), "-I", str(WORKER), *map(str, batch)],
+                cwd=work,
+                stdin=subprocess.DEVNULL,
+                stdout=subprocess.DEVNULL,
+                stderr=subprocess.PIPE,
+                text=True,
+            )
+            for batch in batches
+            if batch
+        ]
 
     def reports(self, timeout: float = 900) -> dict[Path, AsamReport]:
         """ASAM's report on each file (waits for the workers)."""

@@ -37,8 +37,15 @@ SKIPPED = {"1.7": "one_link_to_incoming", "1.8": "one_connection_element"}
 U_TURNS = {"median_width": 4.0, "median_probability": 0.7, "u_turn_probability": 1.0}
 
 #: (size in m, randomize lanes, number of maps, other parameters): most at 500 m and 1 km, a few at 2 km.
-PLAN = [(500, False, 18, {}), (500, True, 16, {}), (1000, False, 7, {}), (1000, True, 7, {}), (1000, True, 3, U_TURNS),
-        (2000, False, 1, {}), (2000, True, 1, {})]
+PLAN = [
+    (500, False, 18, {}),
+    (500, True, 16, {}),
+    (1000, False, 7, {}),
+    (1000, True, 7, {}),
+    (1000, True, 3, U_TURNS),
+    (2000, False, 1, {}),
+    (2000, True, 1, {}),
+]
 
 
 @dataclass(frozen=True)
@@ -64,8 +71,14 @@ def maps(tmp_path_factory) -> list[Map]:
         for k in range(count):
             seed = 1000 * size // 500 + 100 * random_lanes + 50 * bool(extra) + k
             version = "1.7" if n % 4 == 3 else "1.8"
-            params = Params(width=size, height=size, randomize_lanes=random_lanes,
-                            curved_roads=random_lanes and k % 2 == 1, version=version, **extra)
+            params = Params(
+                width=size,
+                height=size,
+                randomize_lanes=random_lanes,
+                curved_roads=random_lanes and k % 2 == 1,
+                version=version,
+                **extra,
+            )
             path = folder / f"{size}-{'random' if random_lanes else 'two'}{'-uturn' if extra else ''}-{seed}.xodr"
             ja.write(ja.generate(params, seed), path, version)
             out.append(Map(path, size, random_lanes, seed, version))
@@ -118,8 +131,10 @@ def _netconvert() -> Path:
     venv = Path(os.environ.get("SUMO_VENV", REPO / ".venv-sumo"))
     command = venv / "bin" / "netconvert"
     if not command.is_file():
-        pytest.fail(f"SUMO netconvert not found at {command}: run scripts/setup (it creates .venv-sumo with "
-                    "eclipse-sumo==1.28.0), or set SUMO_VENV to an environment that has it")
+        pytest.fail(
+            f"SUMO netconvert not found at {command}: run scripts/setup (it creates .venv-sumo with "
+            "eclipse-sumo==1.28.0), or set SUMO_VENV to an environment that has it"
+        )
     return command
 
 
@@ -128,8 +143,14 @@ def test_sumo_netconvert_converts_every_map(maps, tmp_path):
     bad = []
     for m in maps:
         out = tmp_path / f"{m.path.stem}.net.xml"
-        proc = subprocess.run([str(command), "--opendrive-files", str(m.path), "-o", str(out)], capture_output=True,
-                              text=True, timeout=300, stdin=subprocess.DEVNULL, check=False)
+        proc = subprocess.run(
+            [str(command), "--opendrive-files", str(m.path), "-o", str(out)],
+            capture_output=True,
+            text=True,
+            timeout=300,
+            stdin=subprocess.DEVNULL,
+            check=False,
+        )
         if proc.returncode != 0 or not out.is_file():
             tail = "\n".join(proc.stderr.strip().splitlines()[-3:])
             bad.append(f"{m.label}: exit {proc.returncode}: {tail}")
@@ -139,8 +160,13 @@ def test_sumo_netconvert_converts_every_map(maps, tmp_path):
 def _driving_lanes(path: Path) -> set[tuple[str, int]]:
     doc = read(path).document
     assert doc is not None
-    return {(road.id, lane.id) for road in doc.roads for sec in road.lane_sections for lane in sec.lanes
-            if lane.type is LaneType.DRIVING}
+    return {
+        (road.id, lane.id)
+        for road in doc.roads
+        for sec in road.lane_sections
+        for lane in sec.lanes
+        if lane.type is LaneType.DRIVING
+    }
 
 
 def test_carla_loads_every_map_with_waypoints_on_every_driving_lane(maps):
@@ -157,8 +183,9 @@ def test_carla_loads_every_map_with_waypoints_on_every_driving_lane(maps):
         seen = {(w.road_id, w.lane_id) for w in result.waypoints}
         missing = sorted(lanes - seen)
         if missing:
-            bad.append(f"{m.label}: no CARLA waypoint on {len(missing)} of {len(lanes)} driving lanes, e.g. "
-                       f"{missing[:5]}")
+            bad.append(
+                f"{m.label}: no CARLA waypoint on {len(missing)} of {len(lanes)} driving lanes, e.g. {missing[:5]}"
+            )
     assert bad == []
 
 

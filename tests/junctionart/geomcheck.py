@@ -59,13 +59,18 @@ def measure(path) -> Measures:
             k = np.abs(geo.lane_points(0, lane.id, s, where=where).curvature)
             rmin = min(rmin, 1.0 / max(float(k.max()), 1e-12))
         rmin = min(rmin, 1.0 / max(float(np.abs(geo.reference(s).curvature).max()), 1e-12))
-        for link, my_contact, other_lane in ((road.predecessor, "start", lane.predecessors),
-                                             (road.successor, "end", lane.successors)):
+        for link, my_contact, other_lane in (
+            (road.predecessor, "start", lane.predecessors),
+            (road.successor, "end", lane.successors),
+        ):
             other = roads[link.element_id]
             ci, co = _end_points(geo, road, lane.id, my_contact)
             oi, oo = _end_points(geos[other.id], other, other_lane[0], link.contact_point.value)
-            gap = max(gap, float(math.hypot(ci.x[0] - oi.x[0], ci.y[0] - oi.y[0])),
-                      float(math.hypot(co.x[0] - oo.x[0], co.y[0] - oo.y[0])))
+            gap = max(
+                gap,
+                float(math.hypot(ci.x[0] - oi.x[0], ci.y[0] - oi.y[0])),
+                float(math.hypot(co.x[0] - oo.x[0], co.y[0] - oo.y[0])),
+            )
             # travel heading: along s for the connecting lane; the other lane's travel direction at its contact
             h_conn = float(ci.hdg[0])
             h_other = float(oi.hdg[0])

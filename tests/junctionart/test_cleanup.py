@@ -65,7 +65,8 @@ def test_markings(maps):
                     assert all(m.type == "none" for l in (*sec.left, sec.center, *sec.right) for m in l.marks)
                     continue
                 two_way = any(s.right for s in road.sections) and any(
-                    l.type == "driving" for s in road.sections for l in s.left)
+                    l.type == "driving" for s in road.sections for l in s.left
+                )
                 (centre,) = sec.center.marks
                 assert centre.type == "solid"
                 assert centre.color == ("yellow" if two_way else "standard")

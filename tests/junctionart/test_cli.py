@@ -12,8 +12,10 @@ EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 def test_generate_writes_a_map_and_is_reproducible(tmp_path, capsys):
     a, b = tmp_path / "a.xodr", tmp_path / "b.xodr"
     assert main(["generate", "--seed", "4", "--size", "600x400", "--randomize-lanes", "true", "-o", str(a)]) == 0
-    assert main(["generate", "--seed", "4", "--size", "600x400", "--randomize-lanes", "true", "-o", str(b),
-                 "--quiet"]) == 0
+    assert (
+        main(["generate", "--seed", "4", "--size", "600x400", "--randomize-lanes", "true", "-o", str(b), "--quiet"])
+        == 0
+    )
     assert a.read_bytes() == b.read_bytes()
     out = capsys.readouterr().out
     assert "junctions" in out and str(a) in out
@@ -21,8 +23,10 @@ def test_generate_writes_a_map_and_is_reproducible(tmp_path, capsys):
 
 def test_generate_from_control_lines_version_17(tmp_path):
     out = tmp_path / "a.xodr"
-    assert main(["generate", "--control-lines", str(EXAMPLES / "a_shape.json"), "--version", "1.7", "-o", str(out),
-                 "-q"]) == 0
+    assert (
+        main(["generate", "--control-lines", str(EXAMPLES / "a_shape.json"), "--version", "1.7", "-o", str(out), "-q"])
+        == 0
+    )
     assert b'revMinor="7"' in out.read_bytes()[:300]
 
 
@@ -70,8 +74,12 @@ def test_render_bad_file(tmp_path, capsys):
 
 
 def test_console_script_entry_point(tmp_path):
-    proc = subprocess.run([sys.executable, "-m", "junctionart", "generate", "--size", "10x10", "-o",
-                           str(tmp_path / "a.xodr")], capture_output=True, text=True, check=False)
+    proc = subprocess.run(
+        [sys.executable, "-m", "junctionart", "generate", "--size", "10x10", "-o", str(tmp_path / "a.xodr")],
+        capture_output=True,
+        text=True,
+        check=False,
+    )
     assert proc.returncode == 2
     assert "width=10.0" in proc.stderr and "Traceback" not in proc.stderr
 

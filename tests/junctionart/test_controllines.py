@@ -29,10 +29,14 @@ def test_automatic_line_count_is_honoured():
 
 
 def test_json_lines_pairs_groups_lanes():
-    data = {"lines": [{"id": "a", "points": [[0, 0], [100, 0], [200, 50]], "group": 1, "lanes": [2, 1]},
-                      {"id": "b", "points": [[0, 100], [200, 100]], "group": 1},
-                      {"id": "c", "points": [[0, 300], [200, 300]], "group": 2, "lanes": {"forward": 0, "backward": 3}}],
-            "pairs": [["a", "b"]]}
+    data = {
+        "lines": [
+            {"id": "a", "points": [[0, 0], [100, 0], [200, 50]], "group": 1, "lanes": [2, 1]},
+            {"id": "b", "points": [[0, 100], [200, 100]], "group": 1},
+            {"id": "c", "points": [[0, 300], [200, 300]], "group": 2, "lanes": {"forward": 0, "backward": 3}},
+        ],
+        "pairs": [["a", "b"]],
+    }
     cl = controllines.parse(data)
     assert [ln.id for ln in cl.lines] == ["a", "b", "c"]
     assert cl.pairs == ((0, 1),)
@@ -43,8 +47,12 @@ def test_json_lines_pairs_groups_lanes():
 
 
 def test_default_pairs_are_consecutive_lines_of_a_group():
-    data = {"lines": [{"id": k, "points": [[0, y], [100, y]], "group": g}
-                      for k, y, g in (("a", 0, 0), ("b", 100, 0), ("c", 200, 0), ("d", 500, 1), ("e", 600, 1))]}
+    data = {
+        "lines": [
+            {"id": k, "points": [[0, y], [100, y]], "group": g}
+            for k, y, g in (("a", 0, 0), ("b", 100, 0), ("c", 200, 0), ("d", 500, 1), ("e", 600, 1))
+        ]
+    }
     assert controllines.parse(data).pairs == ((0, 1), (1, 2), (3, 4))
 
 
@@ -68,15 +76,42 @@ def test_examples_load(name):
         ("{not json", ["not valid JSON", "line 1"]),
         ("[1, 2]", ["expected a JSON object"]),
         ('{"lines": [{"id": "a", "points": [[0, 0], [1, 1]]}]}', ["at least 2 control lines"]),
-        ('{"lines": [{"id": "a", "points": [[0, 0]]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}', ["line 0", "at least 2 points"]),
-        ('{"lines": [{"id": "a", "points": [[0, 0], [5, "x"]]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}', ["point 1"]),
-        ('{"lines": [{"id": "a", "points": [[0, 0], [50, 0]]}, {"id": "a", "points": [[0, 9], [9, 9]]}]}', ["'a' is used twice"]),
-        ('{"lines": [{"id": "a", "points": [[0, 0], [50, 0]], "lanes": [0, 0]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}', ["0 in both"]),
-        ('{"lines": [{"id": "a", "points": [[0, 0], [50, 0]], "lanes": [4, 1]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}', ["[0, 3]"]),
-        ('{"lines": [{"id": "a", "points": [[0, 0], [50, 0]]}, {"id": "b", "points": [[0, 9], [9, 9]]}], "pairs": [["a", "z"]]}', ["pair", "'z'"]),
-        ('{"type": "FeatureCollection", "features": [{"type": "Feature", "geometry": {"type": "Point", "coordinates": [0, 0]}}]}', ["LineString"]),
-        ('{"lines": [{"id": "a", "points": [[0, 0], [400, 0]]}, {"id": "b", "points": [[0, 0], [400, 0]]}]}', ["'a' and 'b'", "overlap along 400.0 m"]),
-        ('{"lines": [{"id": "a", "points": [[0, 0], [400, 0]]}, {"id": "b", "points": [[200, 0], [600, 0]]}]}', ["overlap along 200.0 m"]),
+        (
+            '{"lines": [{"id": "a", "points": [[0, 0]]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}',
+            ["line 0", "at least 2 points"],
+        ),
+        (
+            '{"lines": [{"id": "a", "points": [[0, 0], [5, "x"]]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}',
+            ["point 1"],
+        ),
+        (
+            '{"lines": [{"id": "a", "points": [[0, 0], [50, 0]]}, {"id": "a", "points": [[0, 9], [9, 9]]}]}',
+            ["'a' is used twice"],
+        ),
+        (
+            '{"lines": [{"id": "a", "points": [[0, 0], [50, 0]], "lanes": [0, 0]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}',
+            ["0 in both"],
+        ),
+        (
+            '{"lines": [{"id": "a", "points": [[0, 0], [50, 0]], "lanes": [4, 1]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}',
+            ["[0, 3]"],
+        ),
+        (
+            '{"lines": [{"id": "a", "points": [[0, 0], [50, 0]]}, {"id": "b", "points": [[0, 9], [9, 9]]}], "pairs": [["a", "z"]]}',
+            ["pair", "'z'"],
+        ),
+        (
+            '{"type": "FeatureCollection", "features": [{"type": "Feature", "geometry": {"type": "Point", "coordinates": [0, 0]}}]}',
+            ["LineString"],
+        ),
+        (
+            '{"lines": [{"id": "a", "points": [[0, 0], [400, 0]]}, {"id": "b", "points": [[0, 0], [400, 0]]}]}',
+            ["'a' and 'b'", "overlap along 400.0 m"],
+        ),
+        (
+            '{"lines": [{"id": "a", "points": [[0, 0], [400, 0]]}, {"id": "b", "points": [[200, 0], [600, 0]]}]}',
+            ["overlap along 200.0 m"],
+        ),
     ],
 )
 def test_bad_files_name_the_file_and_the_problem(tmp_path, content, words):

@@ -27,12 +27,17 @@ def _features(size: float, seeds: range) -> dict:
         for rp in lay.roads:
             lane_counts.update((rp.lanes.forward, rp.lanes.backward))
             one_way += rp.lanes.forward == 0 or rp.lanes.backward == 0
-            ends = [(rp.fwd_start, rp.lanes.forward), (rp.bwd_start, rp.lanes.backward),
-                    (rp.fwd_end, rp.lanes.forward), (rp.bwd_end, rp.lanes.backward)]
+            ends = [
+                (rp.fwd_start, rp.lanes.forward),
+                (rp.bwd_start, rp.lanes.backward),
+                (rp.fwd_end, rp.lanes.forward),
+                (rp.bwd_end, rp.lanes.backward),
+            ]
             merges += sum(end < mid for end, mid in ends)
             splits += sum(end > mid for end, mid in ends)
             turn_lanes += (rp.end_junction is not None and rp.fwd_end > rp.lanes.forward) + (
-                rp.start_junction is not None and rp.bwd_start > rp.lanes.backward)
+                rp.start_junction is not None and rp.bwd_start > rp.lanes.backward
+            )
         # which incoming lane feeds several outgoing lanes tells the strategy that ran
         per_lane: Counter = Counter()
         for j in lay.junctions:
@@ -43,8 +48,15 @@ def _features(size: float, seeds: range) -> dict:
                 lanes = sorted(k[3] for k in per_lane if k[:3] == (node, road, contact))
                 if len(lanes) > 1:
                     strategies.add("first" if lane == lanes[0] else "last" if lane == lanes[-1] else "?")
-    return {"legs": legs, "lane_counts": lane_counts, "one_way": one_way, "splits": splits, "merges": merges,
-            "turn_lanes": turn_lanes, "strategies": strategies}
+    return {
+        "legs": legs,
+        "lane_counts": lane_counts,
+        "one_way": one_way,
+        "splits": splits,
+        "merges": merges,
+        "turn_lanes": turn_lanes,
+        "strategies": strategies,
+    }
 
 
 def _assert(f: dict, legs: set[int]) -> None:

@@ -66,8 +66,9 @@ def test_resume_skips_finished_seeds_and_drops_half_written_maps(tmp_path):
     first = _seeds(folder)
     # an interrupted write: rows of a map whose maps.csv line never came
     with open(folder / "legs.csv", "a", newline="") as stream:
-        csv.DictWriter(stream, era.ROW_COLUMNS).writerow(dict.fromkeys(era.ROW_COLUMNS, "") | {
-            "run": "two-lane", "seed": 999, "junction_index": 0, "legs": 3})
+        csv.DictWriter(stream, era.ROW_COLUMNS).writerow(
+            dict.fromkeys(era.ROW_COLUMNS, "") | {"run": "two-lane", "seed": 999, "junction_index": 0, "legs": 3}
+        )
     era.collect(SMALL, 15, folder, jobs=1, progress=False)
     seeds = _seeds(folder)
     assert seeds[: len(first)] == first and len(seeds) == len(set(seeds)) > len(first)
@@ -93,8 +94,10 @@ def test_dask_local_cluster_gives_the_local_results(tmp_path):
     except ImportError:  # the extra is optional for users, not for the suite
         pytest.fail("dask.distributed is missing: install the [dask] extra (scripts/setup does)")
     era.collect(SMALL, 10, tmp_path / "local", jobs=2, progress=False)
-    with (distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster,
-          distributed.Client(cluster) as client):
+    with (
+        distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster,
+        distributed.Client(cluster) as client,
+    ):
         era.collect(SMALL, 10, tmp_path / "dask", scheduler=client, progress=False)
     assert _selected(tmp_path / "local", 10) == _selected(tmp_path / "dask", 10)
 
@@ -102,8 +105,24 @@ def test_dask_local_cluster_gives_the_local_results(tmp_path):
 def test_cli_writes_table_figures_and_report(tmp_path, corpus_dir):
     out = tmp_path / "era"
     compare = corpus_dir / "carla-towns"
-    code = cli.main(["era", "-o", str(out), "-n", "6", "--size", "500x500", "--runs", "two-lane", "-j", "1", "-q",
-                     "--compare", str(compare)])
+    code = cli.main(
+        [
+            "era",
+            "-o",
+            str(out),
+            "-n",
+            "6",
+            "--size",
+            "500x500",
+            "--runs",
+            "two-lane",
+            "-j",
+            "1",
+            "-q",
+            "--compare",
+            str(compare),
+        ]
+    )
     assert code == 0
     report = (out / "report.md").read_text()
     assert "complexity (paper Figure 13)" in report and "carla-towns" in report

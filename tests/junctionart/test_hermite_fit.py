@@ -67,7 +67,8 @@ def test_fit_connections_picks_what_the_definition_picks(batch):
 
 
 def test_a_quarter_turn_fits_and_a_hairpin_in_a_metre_does_not():
-    turn, hairpin = fit_connections(np.array([[20.0, -20.0, -math.pi / 2], [0.0, -1.0, math.pi]]), OFFSETS,
-                                    MIN_RADIUS, SCALES)
+    turn, hairpin = fit_connections(
+        np.array([[20.0, -20.0, -math.pi / 2], [0.0, -1.0, math.pi]]), OFFSETS, MIN_RADIUS, SCALES
+    )
     assert turn is not None and turn.min_radius >= MIN_RADIUS
     assert hairpin is None

@@ -29,12 +29,15 @@ def _check_links(layout, params):
             targets = [(c.out_road, c.out_contact, c.out_lane) for c in conns]
             assert len(targets) == len(set(targets)), "two lanes of one road merge into one lane"
             back = [c for c in conns if (c.out_road, c.out_contact) == (r, contact)]
-            assert len(back) <= 1 and all(c.in_lane == lane_id(contact == "end", 1, median, rule) for c in back), \
+            assert len(back) <= 1 and all(c.in_lane == lane_id(contact == "end", 1, median, rule) for c in back), (
                 "U-turns only from the innermost lane"
+            )
         for c in jp.connections:
             assert c.min_radius >= params.min_turn_radius
         # every leg is linked: some lane enters or leaves the junction by it
-        linked = {(c.in_road, c.in_contact) for c in jp.connections} | {(c.out_road, c.out_contact) for c in jp.connections}
+        linked = {(c.in_road, c.in_contact) for c in jp.connections} | {
+            (c.out_road, c.out_contact) for c in jp.connections
+        }
         for rp in roads:
             for contact, j in (("start", rp.start_junction), ("end", rp.end_junction)):
                 if j is not None and layout.junctions[j] is jp:
@@ -50,7 +53,7 @@ def _check_links(layout, params):
 
 def _parted(xy, other, tol=0.05):
     far = np.flatnonzero(shapely.distance(shapely.points(xy), other) > tol)
-    return LineString(xy[far[0]:]) if len(far) and len(xy) - far[0] >= 2 else None
+    return LineString(xy[far[0] :]) if len(far) and len(xy) - far[0] >= 2 else None
 
 
 def _no_crossing(layout):
@@ -102,6 +105,7 @@ def test_rules_and_strategies(rule, strategy):
 def test_split_first_and_split_last_differ():
     """With more outgoing lanes than incoming ones, split-first feeds the extras from the centre lane, split-last from
     the kerb lane."""
+
     def extras(strategy):
         params = Params(randomize_lanes=True, split_strategy=strategy, width=800, height=800, turn_lane_probability=0.0)
         layout = ja.generate_layout(params, 2).layout
@@ -116,6 +120,7 @@ def test_split_first_and_split_last_differ():
                 centre += per_lane[ids[0]] > 1
                 kerb += per_lane[ids[-1]] > 1
         return centre, kerb
+
     c_first, k_first = extras(SplitStrategy.SPLIT_FIRST)
     c_last, k_last = extras(SplitStrategy.SPLIT_LAST)
     assert c_first > 0 and k_last > 0
@@ -147,9 +152,17 @@ def test_roads_start_at_their_incident_points(random_500):
 
 def test_repairs_never_discard_a_map():
     """Dense networks (tiny gaps, wide roads) need repairs; every seed still yields a map."""
-    params = Params(randomize_lanes=True, min_distance=30.0, max_distance=40.0, snap_distance=20.0,
-                    lane_distribution_side=(0.0, 0.0, 0.0, 1.0), lane_distribution_control_lines=(0.0, 0.0, 0.0, 1.0),
-                    width=600, height=600, curved_roads=True)
+    params = Params(
+        randomize_lanes=True,
+        min_distance=30.0,
+        max_distance=40.0,
+        snap_distance=20.0,
+        lane_distribution_side=(0.0, 0.0, 0.0, 1.0),
+        lane_distribution_control_lines=(0.0, 0.0, 0.0, 1.0),
+        width=600,
+        height=600,
+        curved_roads=True,
+    )
     repairs = 0
     for seed in range(4):
         result = ja.generate_layout(params, seed)
@@ -163,9 +176,11 @@ def test_link_plan_feeds_a_leg_reachable_only_by_a_sharp_turn():
     """An outgoing-only leg at a sharp angle to the only incoming leg is still fed (no unlinked leg)."""
     from junctionart.intersections.links import Leg, plan
 
-    legs = [Leg((0, 0), 0.0, 1, 1, False),  # two-way leg to the east
-            Leg((0, 1), math.radians(10.0), 0, 1, False),  # one-way out, 10 degrees from the first
-            Leg((0, 2), math.pi, 0, 1, False)]  # one-way out to the west
+    legs = [
+        Leg((0, 0), 0.0, 1, 1, False),  # two-way leg to the east
+        Leg((0, 1), math.radians(10.0), 0, 1, False),  # one-way out, 10 degrees from the first
+        Leg((0, 2), math.pi, 0, 1, False),
+    ]  # one-way out to the west
     p = plan(legs, Params(turn_lane_probability=0.0), np.random.default_rng(0), {})
     assert {j for _, _, j, _ in p.links} == {1, 2}
     assert p.n_out_end == (0, 1, 1)

@@ -53,8 +53,9 @@ def test_same_seed_same_graph_other_seed_other_graph():
 
 
 def _two_lines(length=1000.0, gap=150.0):
-    return controllines.parse({"lines": [{"id": "a", "points": [[0, 0], [length, 0]]},
-                                         {"id": "b", "points": [[0, gap], [length, gap]]}]})
+    return controllines.parse(
+        {"lines": [{"id": "a", "points": [[0, 0], [length, 0]]}, {"id": "b", "points": [[0, gap], [length, gap]]}]}
+    )
 
 
 def _table(**rows):
@@ -75,8 +76,12 @@ def test_orthogonal_then_parallel_gives_rungs():
 
 
 def test_common_end_makes_triangles():
-    t = _table(start={"orthogonal": 1.0}, orthogonal={"commonEnd": 1.0}, commonEnd={"orthogonal": 0.5, "random": 0.5},
-               random={"commonEnd": 1.0})
+    t = _table(
+        start={"orthogonal": 1.0},
+        orthogonal={"commonEnd": 1.0},
+        commonEnd={"orthogonal": 0.5, "random": 0.5},
+        random={"commonEnd": 1.0},
+    )
     p = Params.create(transitions=t, snap_distance=10.0)
     net = _net(p, 1, _two_lines(2000.0))
     rungs = [e for e in net.edges if e.line == -1]
@@ -97,14 +102,23 @@ def test_snap_distance_and_gap_bounds_on_a_line():
 
 
 def test_groups_are_joined():
-    data = {"lines": [{"id": "a", "points": [[0, 0], [400, 0]], "group": 0},
-                      {"id": "b", "points": [[0, 200], [400, 200]], "group": 0},
-                      {"id": "c", "points": [[700, 0], [1100, 0]], "group": 1},
-                      {"id": "d", "points": [[700, 200], [1100, 200]], "group": 1}]}
+    data = {
+        "lines": [
+            {"id": "a", "points": [[0, 0], [400, 0]], "group": 0},
+            {"id": "b", "points": [[0, 200], [400, 200]], "group": 0},
+            {"id": "c", "points": [[700, 0], [1100, 0]], "group": 1},
+            {"id": "d", "points": [[700, 200], [1100, 200]], "group": 1},
+        ]
+    }
     net = _net(Params(), 0, controllines.parse(data))
     assert _components(net) == 1
-    joins = [e for e in net.edges if e.line == -1 and max(net.nodes[e.u][0], net.nodes[e.v][0]) >= 700
-             and min(net.nodes[e.u][0], net.nodes[e.v][0]) <= 400]
+    joins = [
+        e
+        for e in net.edges
+        if e.line == -1
+        and max(net.nodes[e.u][0], net.nodes[e.v][0]) >= 700
+        and min(net.nodes[e.u][0], net.nodes[e.v][0]) <= 400
+    ]
     assert len(joins) == 1
 
 

@@ -16,10 +16,21 @@ from .overlap import overlaps
 TOL_GAP = 1e-6
 TOL_HDG = 1e-6
 
-SMALL = [(Params(randomize_lanes=bool(seed % 2), curved_roads=seed % 3 == 0,
-                 traffic_rule=TrafficRule.LHT if seed % 5 == 4 else TrafficRule.RHT), seed) for seed in range(20)]
-BIG = [(Params(width=1000, height=1000, randomize_lanes=r, curved_roads=True), seed)
-       for seed, r in ((100, False), (101, True), (102, True))]
+SMALL = [
+    (
+        Params(
+            randomize_lanes=bool(seed % 2),
+            curved_roads=seed % 3 == 0,
+            traffic_rule=TrafficRule.LHT if seed % 5 == 4 else TrafficRule.RHT,
+        ),
+        seed,
+    )
+    for seed in range(20)
+]
+BIG = [
+    (Params(width=1000, height=1000, randomize_lanes=r, curved_roads=True), seed)
+    for seed, r in ((100, False), (101, True), (102, True))
+]
 
 
 def _assert_map(params: Params, seed: int, tmp_path, version: str = "1.8") -> None:
@@ -75,8 +86,25 @@ def test_bytes_do_not_depend_on_the_hash_seed(tmp_path):
     for hs in ("1", "2"):
         out = tmp_path / f"h{hs}.xodr"
         env = dict(os.environ, PYTHONHASHSEED=hs)
-        subprocess.run([sys.executable, "-m", "junctionart", "generate", "--seed", "9", "--randomize-lanes", "true",
-                        "--curved-roads", "true", "-q", "-o", str(out)], check=True, env=env)
+        subprocess.run(
+            [
+                sys.executable,
+                "-m",
+                "junctionart",
+                "generate",
+                "--seed",
+                "9",
+                "--randomize-lanes",
+                "true",
+                "--curved-roads",
+                "true",
+                "-q",
+                "-o",
+                str(out),
+            ],
+            check=True,
+            env=env,
+        )
         outs.append(out.read_bytes())
     assert outs[0] == outs[1]
 
@@ -84,8 +112,14 @@ def test_bytes_do_not_depend_on_the_hash_seed(tmp_path):
 @pytest.mark.parametrize("seed", [0, 1, 2])
 def test_short_tapers_and_big_turn_radius_keep_every_lane_centre_above_the_bound(seed, tmp_path):
     """Lane splits and merges are lengthened until no lane centre bends tighter than min_turn_radius."""
-    params = Params(randomize_lanes=True, curved_roads=True, taper_length=5.0, min_turn_radius=12.0,
-                    turn_lane_probability=0.8, lane_distribution_side=(0.1, 0.2, 0.3, 0.4))
+    params = Params(
+        randomize_lanes=True,
+        curved_roads=True,
+        taper_length=5.0,
+        min_turn_radius=12.0,
+        turn_lane_probability=0.8,
+        lane_distribution_side=(0.1, 0.2, 0.3, 0.4),
+    )
     path = ja.write(ja.generate(params, seed), tmp_path / "t.xodr")
     m = measure(path)
     assert m.min_lane_radius >= 12.0

@@ -1,7 +1,6 @@
 """Every line xodrcheck's curvature rules measure stays within ``min_turn_radius``, for the whole range Params allow:
 the lane-0 line beside a drivable lane (C002), every drivable lane centre (C001), and no border folds (C003)."""
 
-
 import numpy as np
 import pytest
 
@@ -16,10 +15,23 @@ CURVATURE = ("C001", "C002", "C003")
 
 LANES = {
     "two-lane": {},
-    "random-curved": {"randomize_lanes": True, "curved_roads": True, "median_probability": 0.6, "median_width": 4.0,
-                      "turn_lane_probability": 0.7, "u_turn_probability": 1.0},
-    "narrow-lht": {"randomize_lanes": True, "lane_width": 2.0, "median_width": 0.5, "traffic_rule": "LHT",
-                   "taper_length": 5.0, "u_turn_probability": 1.0, "lane_distribution_side": (0.0, 0.2, 0.3, 0.5)},
+    "random-curved": {
+        "randomize_lanes": True,
+        "curved_roads": True,
+        "median_probability": 0.6,
+        "median_width": 4.0,
+        "turn_lane_probability": 0.7,
+        "u_turn_probability": 1.0,
+    },
+    "narrow-lht": {
+        "randomize_lanes": True,
+        "lane_width": 2.0,
+        "median_width": 0.5,
+        "traffic_rule": "LHT",
+        "taper_length": 5.0,
+        "u_turn_probability": 1.0,
+        "lane_distribution_side": (0.0, 0.2, 0.3, 0.5),
+    },
 }
 
 
@@ -39,10 +51,21 @@ def test_smallest_turn_radius_holds_on_every_measured_line(lanes, seed):
 @pytest.mark.parametrize("seed", [0, 1])
 def test_fuzzer_case_u_turn_beside_lane_zero(seed):
     """The fuzzer's map: 3 m lanes, 3 m bound; a U-turn's lane-0 line once had half the bound's radius."""
-    params = Params.create(width=150.0, height=150.0, line_spacing=(40.0, 40.0), snap_distance=0.0, min_distance=43.0,
-                           max_distance=43.0, randomize_lanes=True, lane_width=3.0, median_probability=0.0,
-                           split_strategy="split-first", turn_lane_probability=0.0, min_turn_radius=3.0,
-                           taper_length=10.0)
+    params = Params.create(
+        width=150.0,
+        height=150.0,
+        line_spacing=(40.0, 40.0),
+        snap_distance=0.0,
+        min_distance=43.0,
+        max_distance=43.0,
+        randomize_lanes=True,
+        lane_width=3.0,
+        median_probability=0.0,
+        split_strategy="split-first",
+        turn_lane_probability=0.0,
+        min_turn_radius=3.0,
+        taper_length=10.0,
+    )
     assert _curvature_findings(params, seed) == []
 
 

@@ -10,8 +10,14 @@ from xodrcheck.check import check
 from xodrcheck.lanes import geometry_of
 from xodrcheck.reader import read
 
-WIDE = {"randomize_lanes": True, "median_width": 4.0, "median_probability": 1.0, "width": 800.0, "height": 800.0,
-        "lane_distribution_side": (0.0, 0.2, 0.3, 0.5)}
+WIDE = {
+    "randomize_lanes": True,
+    "median_width": 4.0,
+    "median_probability": 1.0,
+    "width": 800.0,
+    "height": 800.0,
+    "lane_distribution_side": (0.0, 0.2, 0.3, 0.5),
+}
 
 
 def _same_end(road) -> bool:
@@ -58,8 +64,14 @@ def test_u_turns_where_wide_enough_meet_the_bound_and_turn_towards_the_centre(ru
 def test_default_widths_leave_no_room_for_a_u_turn(tmp_path):
     """3.5 m lanes and a 2 m median: the inner borders of the innermost lane in and the outermost lane out are at most
     9 m apart, a 4.5 m radius, under the 5 m bound: no U-turn, however likely."""
-    params = Params(randomize_lanes=True, u_turn_probability=1.0, median_probability=1.0,
-                    lane_distribution_side=(0.0, 0.0, 0.0, 1.0), width=600.0, height=600.0)
+    params = Params(
+        randomize_lanes=True,
+        u_turn_probability=1.0,
+        median_probability=1.0,
+        lane_distribution_side=(0.0, 0.0, 0.0, 1.0),
+        width=600.0,
+        height=600.0,
+    )
     path = ja.write(ja.generate(params, 1), tmp_path / "m.xodr")
     assert _u_turn_radii(path) == []
 
@@ -68,12 +80,17 @@ def test_probability_zero_gives_none_and_u_turns_change_nothing_else():
     with_all = ja.generate_layout(Params(u_turn_probability=1.0, **WIDE), 4).layout
     without = ja.generate_layout(Params(u_turn_probability=0.0, **WIDE), 4).layout
     assert with_all.roads == without.roads
-    turns = [c for j in with_all.junctions for c in j.connections if (c.in_road, c.in_contact) == (c.out_road, c.out_contact)]
+    turns = [
+        c for j in with_all.junctions for c in j.connections if (c.in_road, c.in_contact) == (c.out_road, c.out_contact)
+    ]
     assert turns
-    assert not [c for j in without.junctions for c in j.connections
-                if (c.in_road, c.in_contact) == (c.out_road, c.out_contact)]
-    rest = [[c for c in j.connections if (c.in_road, c.in_contact) != (c.out_road, c.out_contact)]
-            for j in with_all.junctions]
+    assert not [
+        c for j in without.junctions for c in j.connections if (c.in_road, c.in_contact) == (c.out_road, c.out_contact)
+    ]
+    rest = [
+        [c for c in j.connections if (c.in_road, c.in_contact) != (c.out_road, c.out_contact)]
+        for j in with_all.junctions
+    ]
     assert rest == [list(j.connections) for j in without.junctions]
 
 
@@ -81,8 +98,9 @@ def test_probability_is_honoured_roughly():
     counts = []
     for p in (0.0, 0.5, 1.0):
         lay = ja.generate_layout(Params(u_turn_probability=p, **WIDE), 5).layout
-        counts.append(sum((c.in_road, c.in_contact) == (c.out_road, c.out_contact)
-                          for j in lay.junctions for c in j.connections))
+        counts.append(
+            sum((c.in_road, c.in_contact) == (c.out_road, c.out_contact) for j in lay.junctions for c in j.connections)
+        )
     assert counts[0] == 0 < counts[1] < counts[2]
 
 

@@ -142,8 +142,10 @@ GENERATOR_GOLDEN = {
     "two_lane_500m_seed7": ({"width": 500, "height": 500}, 7),
     "two_lane_500m_seed42": ({"width": 500, "height": 500}, 42),
     "random_lane_1km_seed3": ({"width": 1000, "height": 1000, "randomize_lanes": True}, 3),
-    "random_lane_lht_curved_seed5": ({"width": 700, "height": 700, "randomize_lanes": True, "traffic_rule": "LHT",
-                                      "curved_roads": True}, 5),
+    "random_lane_lht_curved_seed5": (
+        {"width": 700, "height": 700, "randomize_lanes": True, "traffic_rule": "LHT", "curved_roads": True},
+        5,
+    ),
     "two_lane_v17_seed11": ({"width": 500, "height": 500, "version": "1.7"}, 11),
 }
 

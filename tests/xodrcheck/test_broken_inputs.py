@@ -146,9 +146,13 @@ CASES = [
     ),
     Case("road without planView", _cut(GOOD, b"<planView>", b"</planView>"), ("X203",)),
     Case("lanes without laneSection", _cut(GOOD, b"<laneSection", b"</laneSection>"), ("X203",)),
-    Case("records out of order", GOOD.replace(b'<laneSection s="0">', b'<laneSection s="0.5">').replace(
-        b"</lanes>", b'<laneSection s="0"><center><lane id="0" type="none"/></center></laneSection></lanes>'
-    ), ("X209",)),
+    Case(
+        "records out of order",
+        GOOD.replace(b'<laneSection s="0">', b'<laneSection s="0.5">').replace(
+            b"</lanes>", b'<laneSection s="0"><center><lane id="0" type="none"/></center></laneSection></lanes>'
+        ),
+        ("X209",),
+    ),
     Case("unknown lane type", GOOD.replace(b'type="driving"', b'type="carriageway"'), ("X208",), Severity.WARNING),
     Case("entity expansion bomb", billion_laughs(), ("X102", "X101")),
     Case("external entity naming a local file", external_entity, ("X102",)),
@@ -288,7 +292,9 @@ def test_info_command_exits_cleanly(case: Case, info_runs):
 
 # -------------------------------------------------------------------------------------------------------- every value
 #: A small document using every element the reader builds.
-RICH = DECL + b"""<OpenDRIVE><header revMajor="1" revMinor="8" name="rich" north="1" south="0" east="1" west="0">
+RICH = (
+    DECL
+    + b"""<OpenDRIVE><header revMajor="1" revMinor="8" name="rich" north="1" south="0" east="1" west="0">
 <geoReference><![CDATA[+proj=utm]]></geoReference><offset x="1" y="2" z="0" hdg="0"/></header>
 <road id="1" length="30" junction="-1" rule="RHT">
   <link><predecessor elementType="road" elementId="2" contactPoint="end"/>
@@ -323,17 +329,50 @@ RICH = DECL + b"""<OpenDRIVE><header revMajor="1" revMinor="8" name="rich" north
 </junction>
 </OpenDRIVE>
 """
+)
 
 #: Values every attribute is set to in turn.
 BAD_VALUES = ("", " ", "NaN", "-inf", "1e999", "-1", "1,5", "seven", "true", "start", "+", "0x10", "1_0", "\u00e9")
 #: Of those, the ones that are no number at all.
 NOT_NUMBERS = frozenset({"", " ", "NaN", "-inf", "1e999", "1,5", "seven", "true", "start", "+", "0x10", "\u00e9"})
 #: Attributes the reader reads as numbers (lane ``id`` and the lane-link ids are integers).
-NUMERIC = frozenset({
-    "s", "x", "y", "z", "hdg", "length", "curvature", "curvStart", "curvEnd", "a", "b", "c", "d",
-    "aU", "bU", "cU", "dU", "aV", "bV", "cV", "dV", "sOffset", "max", "north", "south", "east", "west",
-    "elementS", "revMajor", "revMinor", "from", "to", "width",
-})
+NUMERIC = frozenset(
+    {
+        "s",
+        "x",
+        "y",
+        "z",
+        "hdg",
+        "length",
+        "curvature",
+        "curvStart",
+        "curvEnd",
+        "a",
+        "b",
+        "c",
+        "d",
+        "aU",
+        "bU",
+        "cU",
+        "dU",
+        "aV",
+        "bV",
+        "cV",
+        "dV",
+        "sOffset",
+        "max",
+        "north",
+        "south",
+        "east",
+        "west",
+        "elementS",
+        "revMajor",
+        "revMinor",
+        "from",
+        "to",
+        "width",
+    }
+)
 
 
 def _attributes(data: bytes) -> list[tuple[str, int, int]]:

@@ -36,7 +36,9 @@ def test_whole_corpus_time(corpus_dir):
     for path in FILES:
         counts.update(f.code for f in check(path).findings)
     elapsed = time.perf_counter() - started
-    print(f"\nxodrcheck check over {len(FILES)} corpus files: {elapsed:.1f} s; findings by code: {dict(sorted(counts.items()))}")
+    print(
+        f"\nxodrcheck check over {len(FILES)} corpus files: {elapsed:.1f} s; findings by code: {dict(sorted(counts.items()))}"
+    )
     assert "X900" not in counts
 
 

@@ -19,9 +19,7 @@ def test_corpus_is_complete(corpus_dir: Path):
     assert len(corpus_files()) == CORPUS_SIZE, f"expected {CORPUS_SIZE} .xodr files under {corpus_dir}"
 
 
-@pytest.mark.parametrize(
-    "path", corpus_files(), ids=lambda p: p.relative_to(corpus_root()).as_posix()
-)
+@pytest.mark.parametrize("path", corpus_files(), ids=lambda p: p.relative_to(corpus_root()).as_posix())
 def test_info_exits_0(path: Path, corpus_dir: Path, capsys):
     code = main(["info", "--format", "json", str(path)])
     captured = capsys.readouterr()

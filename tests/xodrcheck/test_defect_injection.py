@@ -142,8 +142,19 @@ def parampoly3_length_wrong(tree):
     g = _geometries(road)[0]
     length = float(g.get("length"))
     g.remove(g.find("line"))
-    etree.SubElement(g, "paramPoly3", aU="0", bU=repr(length * 1.01), cU="0", dU="0", aV="0", bV="0", cV="0",
-                     dV="0", pRange="normalized")
+    etree.SubElement(
+        g,
+        "paramPoly3",
+        aU="0",
+        bU=repr(length * 1.01),
+        cU="0",
+        dU="0",
+        aV="0",
+        bV="0",
+        cV="0",
+        dV="0",
+        pRange="normalized",
+    )
     return road.get("id")
 
 

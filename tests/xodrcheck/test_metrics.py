@@ -33,7 +33,7 @@ def _lanes(left: int, right: int) -> str:
         for i in range(1, right + 1)
     )
     return (
-        "<lanes><laneSection s=\"0\">"
+        '<lanes><laneSection s="0">'
         + (f"<left>{lanes}</left>" if left else "")
         + '<center><lane id="0" type="none" level="false"/></center>'
         + (f"<right>{right_lanes}</right>" if right else "")
@@ -97,7 +97,9 @@ def _straight_cross(r: float):
 def _right_turns(r: float):
     """The four right turns of a cross: quarter circles of radius r (reference) centred on the corners (+-r, +-r)."""
     out = []
-    for k, (x, y, hdg) in enumerate([(-r, 0.0, 0.0), (0.0, -r, math.pi / 2), (r, 0.0, math.pi), (0.0, r, -math.pi / 2)]):
+    for k, (x, y, hdg) in enumerate(
+        [(-r, 0.0, 0.0), (0.0, -r, math.pi / 2), (r, 0.0, math.pi), (0.0, r, -math.pi / 2)]
+    ):
         incoming = (2, 3, 0, 1)[k]  # west, south, east, north legs (indices of angles 0, 90, 180, 270)
         outgoing = (3, 0, 1, 2)[k]
         out.append((incoming, outgoing, x, y, hdg, math.pi * r / 2, -1.0 / r))
@@ -254,7 +256,7 @@ def test_carla_towns_give_sane_metrics(corpus_dir):
             assert m.area > 0 and 0 <= m.conflict_area <= m.area + 1e-6
             for leg in m.leg_metrics:
                 assert 0 <= leg.fov <= 360 and 0 <= leg.corner_deviation <= 180
-                assert 0 <= leg.max_curvature and 0 <= leg.complexity <= 1
+                assert leg.max_curvature >= 0 and 0 <= leg.complexity <= 1
 
 
 def test_cli_csv_and_json(tmp_path, capsys):

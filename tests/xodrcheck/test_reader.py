@@ -106,7 +106,7 @@ def test_known_versions_read_without_findings(version):
 
 
 def test_versions_one_to_eight_are_known():
-    assert KNOWN_VERSIONS == {(1, minor) for minor in range(1, 9)}
+    assert {(1, minor) for minor in range(1, 9)} == KNOWN_VERSIONS
 
 
 @pytest.mark.parametrize("version", [(1, 9), (2, 0), (0, 4), (1, -1)])
@@ -259,8 +259,7 @@ def test_road_link_missing_element_id_is_ignored():
 
 def test_repeated_road_predecessor():
     link = (
-        '<link><predecessor elementType="road" elementId="a"/>\n'
-        '<predecessor elementType="road" elementId="b"/></link>'
+        '<link><predecessor elementType="road" elementId="a"/>\n<predecessor elementType="road" elementId="b"/></link>'
     )
     result = read(xodr(road(link)))
     assert only(result, "X204").line == 4
@@ -298,7 +297,14 @@ def test_every_geometry_kind():
     assert (pp_arc.cV, pp_arc.dV) == (0.2, -0.1)
     assert pp_norm.p_range is m.PRange.NORMALIZED
     assert (pp_norm.aU, pp_norm.bU, pp_norm.cU, pp_norm.dU, pp_norm.aV, pp_norm.bV, pp_norm.cV, pp_norm.dV) == (
-        1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0, 8.0,
+        1.0,
+        2.0,
+        3.0,
+        4.0,
+        5.0,
+        6.0,
+        7.0,
+        8.0,
     )
 
 
@@ -340,8 +346,14 @@ def test_geometry_missing_x_is_skipped_with_where_and_why():
 
 @pytest.mark.parametrize(
     ("value", "why"),
-    [("NaN", "not a finite number"), ("inf", "not a finite number"), ("-INF", "not a finite number"),
-     ("seven", "not a number"), ("1,5", "not a number"), ("", "not a number")],
+    [
+        ("NaN", "not a finite number"),
+        ("inf", "not a finite number"),
+        ("-INF", "not a finite number"),
+        ("seven", "not a number"),
+        ("1,5", "not a number"),
+        ("", "not a number"),
+    ],
 )
 def test_geometry_invalid_number_is_skipped(value, why):
     geometry = f'<geometry s="0" x="0" y="0" hdg="{value}" length="10"><line/></geometry>'

@@ -65,7 +65,12 @@ def test_lane_fields_and_records():
 def test_lane_defaults():
     got = first_road(xodr(road())).lane_sections[0].center[0]
     assert (got.level, got.predecessors, got.successors, got.widths, got.road_marks, got.speeds) == (
-        False, (), (), (), (), (),
+        False,
+        (),
+        (),
+        (),
+        (),
+        (),
     )
 
 
@@ -86,10 +91,19 @@ def test_several_lane_links_of_1_8():
 
 @pytest.mark.parametrize(
     ("spelling", "lane_type"),
-    [("driving", m.LaneType.DRIVING), ("Driving", m.LaneType.DRIVING), ("HOV", m.LaneType.HOV),
-     ("hov", m.LaneType.HOV), ("mwyentry", m.LaneType.MWY_ENTRY), ("roadWorks", m.LaneType.ROAD_WORKS),
-     ("roadworks", m.LaneType.ROAD_WORKS), ("onRamp", m.LaneType.ON_RAMP), ("curb", m.LaneType.CURB),
-     ("slipLane", m.LaneType.SLIP_LANE), ("none", m.LaneType.NONE)],
+    [
+        ("driving", m.LaneType.DRIVING),
+        ("Driving", m.LaneType.DRIVING),
+        ("HOV", m.LaneType.HOV),
+        ("hov", m.LaneType.HOV),
+        ("mwyentry", m.LaneType.MWY_ENTRY),
+        ("roadWorks", m.LaneType.ROAD_WORKS),
+        ("roadworks", m.LaneType.ROAD_WORKS),
+        ("onRamp", m.LaneType.ON_RAMP),
+        ("curb", m.LaneType.CURB),
+        ("slipLane", m.LaneType.SLIP_LANE),
+        ("none", m.LaneType.NONE),
+    ],
 )
 def test_lane_types_are_matched_without_case(spelling, lane_type):
     lane = f'<lane id="-1" type="{spelling}"/>'
@@ -215,8 +229,13 @@ def test_junction_and_connections():
     assert (j.id, j.name, j.type, j.line) == ("J1", "cross", m.JunctionType.DEFAULT, 4)
     first, second = j.connections
     assert first == m.Connection(
-        "0", "1", "10", None, m.ContactPoint.START,
-        (m.JunctionLaneLink(-1, -1, 4), m.JunctionLaneLink(-2, -1, 4)), 4,
+        "0",
+        "1",
+        "10",
+        None,
+        m.ContactPoint.START,
+        (m.JunctionLaneLink(-1, -1, 4), m.JunctionLaneLink(-2, -1, 4)),
+        4,
     )
     assert (second.incoming_road, second.connecting_road, second.contact_point) == ("2", "11", m.ContactPoint.END)
     assert j.incoming_roads == ("1", "2")

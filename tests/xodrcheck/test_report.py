@@ -29,8 +29,17 @@ def reports() -> list[Report]:
 
 def odd_report() -> Report:
     """Hand-made findings with characters the formats must escape, and no line."""
-    f1 = Finding("R010", "road-link-target-missing", Category.REFERENCE, Severity.ERROR,
-                 "100% wrong: a, b\nand more", road="7", lane=-2, s=1.5, line=12)
+    f1 = Finding(
+        "R010",
+        "road-link-target-missing",
+        Category.REFERENCE,
+        Severity.ERROR,
+        "100% wrong: a, b\nand more",
+        road="7",
+        lane=-2,
+        s=1.5,
+        line=12,
+    )
     f2 = Finding("X203", "missing-element", Category.SCHEMA, Severity.INFO, "whole file")
     return Report(path="dir/a,b:c.xodr", version=None, findings=(f1, f2), rules_run=("R010",))
 
@@ -66,7 +75,19 @@ def test_json_shape(reports):
     first = doc["files"][0]
     assert first["version"] == "1.7" and first["ok"] is False
     for finding in first["findings"]:
-        assert list(finding) == ["code", "name", "category", "severity", "message", "road", "lane", "s", "x", "y", "line"]
+        assert list(finding) == [
+            "code",
+            "name",
+            "category",
+            "severity",
+            "message",
+            "road",
+            "lane",
+            "s",
+            "x",
+            "y",
+            "line",
+        ]
     assert doc["files"][1]["findings"] == []
     summary = doc["summary"]
     assert summary["files"] == 2 and summary["errors"] == len(first["findings"]) and summary["ok"] is False

@@ -3,7 +3,6 @@ where xmlschema finds no error, and it must say so for valid files, or the speed
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 import pytest
@@ -44,14 +43,20 @@ def _doc(junctions: str = "", objects: str = "", extra_root: str = "") -> bytes:
         road.format(id=i, junction=j, link="", objects=objects if i == 1 else "")
         for i, j in ((1, "-1"), (2, "-1"), (3, "100"))
     )
-    return (f'<?xml version="1.0" encoding="UTF-8"?>\n<OpenDRIVE{extra_root}><header revMajor="1" revMinor="8"/>'
-            f"{roads}{junctions}</OpenDRIVE>").encode()
+    return (
+        f'<?xml version="1.0" encoding="UTF-8"?>\n<OpenDRIVE{extra_root}><header revMajor="1" revMinor="8"/>'
+        f"{roads}{junctions}</OpenDRIVE>"
+    ).encode()
 
 
-COMMON = ('<junction id="100" name="j"><connection id="0" incomingRoad="1" connectingRoad="3" contactPoint="start">'
-          '<laneLink from="-1" to="-1"/></connection></junction>')
-DIRECT = ('<junction id="100" name="j" type="direct"><connection id="0" incomingRoad="1" linkedRoad="2" '
-          'contactPoint="start"><laneLink from="-1" to="-1"/></connection></junction>')
+COMMON = (
+    '<junction id="100" name="j"><connection id="0" incomingRoad="1" connectingRoad="3" contactPoint="start">'
+    '<laneLink from="-1" to="-1"/></connection></junction>'
+)
+DIRECT = (
+    '<junction id="100" name="j" type="direct"><connection id="0" incomingRoad="1" linkedRoad="2" '
+    'contactPoint="start"><laneLink from="-1" to="-1"/></connection></junction>'
+)
 
 
 @pytest.mark.parametrize("junction", [COMMON, DIRECT], ids=["common", "direct"])
@@ -65,13 +70,25 @@ def test_valid_junctions_of_each_type_are_shown_valid(junction):
     ("name", "data"),
     [
         # an assertion (connection ids unique in a junction) is all that fails
-        ("assertion", _doc(COMMON.replace("</junction>", COMMON[COMMON.index("<connection"):COMMON.index("</junction>")]
-                                          + "</junction>"))),
+        (
+            "assertion",
+            _doc(
+                COMMON.replace(
+                    "</junction>", COMMON[COMMON.index("<connection") : COMMON.index("</junction>")] + "</junction>"
+                )
+            ),
+        ),
         # an alternative: a direct junction's connection needs linkedRoad, a common one's connectingRoad
         ("alternative", _doc(DIRECT.replace('linkedRoad="2"', 'connectingRoad="3"'))),
         # an object assertion: radius together with width and length
-        ("object-assertion", _doc(COMMON, objects='<objects><object id="o" s="1" t="0" zOffset="0" radius="1" '
-                                                  'width="1" length="1" type="pole" orientation="none"/></objects>')),
+        (
+            "object-assertion",
+            _doc(
+                COMMON,
+                objects='<objects><object id="o" s="1" t="0" zOffset="0" radius="1" '
+                'width="1" length="1" type="pole" orientation="none"/></objects>',
+            ),
+        ),
     ],
 )
 def test_xsd11_only_errors_are_not_shown_valid(name, data):
@@ -90,8 +107,12 @@ def test_where_libxml2_is_stricter_the_full_validator_decides():
 
 
 def test_xsi_attributes_go_to_the_full_validator():
-    tree = _tree(_doc(COMMON, extra_root=' xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" '
-                                         'xsi:noNamespaceSchemaLocation="x.xsd"'))
+    tree = _tree(
+        _doc(
+            COMMON,
+            extra_root=' xmlns:xsi="http://www.w3.org/2001/XMLSchema-instance" xsi:noNamespaceSchemaLocation="x.xsd"',
+        )
+    )
     assert not _fast(tree)
 
 
@@ -102,19 +123,17 @@ def test_comments_and_processing_instructions_are_skipped():
 
 @pytest.mark.parametrize("seed", [1, 2])
 def test_generated_maps_are_shown_valid(seed):
-    params = ja.Params(width=500, height=500, randomize_lanes=True, u_turn_probability=1.0, median_probability=0.6,
-                       median_width=8.0)
+    params = ja.Params(
+        width=500, height=500, randomize_lanes=True, u_turn_probability=1.0, median_probability=0.6, median_width=8.0
+    )
     tree = _tree(ja.to_bytes(ja.generate(params, seed)))
     assert _full(tree) == []
     assert _fast(tree)
 
 
-def _corpus_18() -> list[Path]:
-    root = os.environ.get("XODR_CORPUS")
-    if not root or not Path(root).is_dir():
-        return []
+def _corpus_18(corpus: Path) -> list[Path]:
     found = []
-    for path in sorted(Path(root).rglob("*.xodr")):
+    for path in sorted(corpus.rglob("*.xodr")):
         head = path.read_bytes()[:4000]
         if b'revMinor="8"' in head or b"revMinor='8'" in head:
             found.append(path)
@@ -122,10 +141,10 @@ def _corpus_18() -> list[Path]:
 
 
 @pytest.mark.corpus
-def test_corpus_18_files_get_the_same_verdict():
-    paths = _corpus_18()
+def test_corpus_18_files_get_the_same_verdict(corpus_dir):
+    paths = _corpus_18(corpus_dir)
     if not paths:
-        pytest.fail("no OpenDRIVE 1.8 file found under $XODR_CORPUS")
+        pytest.fail(f"no OpenDRIVE 1.8 file found under {corpus_dir}")
     for path in paths:
         tree = etree.parse(str(path), etree.XMLParser(resolve_entities=False, no_network=True, huge_tree=True))
         full = _full(tree)

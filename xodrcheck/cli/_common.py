@@ -85,6 +85,6 @@ def guarded(path: str, action: Callable[[], int]) -> int:
         return action()
     except (KeyboardInterrupt, BrokenPipeError):
         raise
-    except Exception as exc:  # noqa: BLE001 - the last line of defence, reported as a bug
+    except Exception as exc:
         error(f"internal error on {path}: {type(exc).__name__}: {exc}")
         return 2

@@ -44,7 +44,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--ignore", action="append", metavar="RULES", help="leave these rules out (same forms)")
     parser.add_argument("--strict", action="store_true", default=None, help="warnings fail the check too")
     parser.add_argument("--format", choices=FORMATS, default="text", help="report format (default: text)")
-    parser.add_argument("-o", "--output", metavar="FILE", help="write the report to FILE (atomically) instead of stdout")
+    parser.add_argument(
+        "-o", "--output", metavar="FILE", help="write the report to FILE (atomically) instead of stdout"
+    )
     parser.add_argument(
         "--tolerance",
         action="append",
@@ -111,7 +113,7 @@ def run(args: argparse.Namespace) -> int:
         except ReadError as exc:
             error(f"cannot read {name}: {exc}")
             unreadable = True
-        except Exception as exc:  # noqa: BLE001 - the last line of defence: one line, not a traceback
+        except Exception as exc:
             error(f"internal error on {name}: {type(exc).__name__}: {exc}")
             unreadable = True
     try:

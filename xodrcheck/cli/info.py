@@ -72,8 +72,11 @@ def to_text(info: MapInfo) -> str:
         (
             "junctions",
             f"{info.junctions}"
-            + (f"; by type: {_counts(info.junctions_by_type)}; by legs: {_counts(info.junctions_by_legs, '-leg')}"
-               if info.junctions else ""),
+            + (
+                f"; by type: {_counts(info.junctions_by_type)}; by legs: {_counts(info.junctions_by_legs, '-leg')}"
+                if info.junctions
+                else ""
+            ),
         ),
         ("lane sections", str(info.lane_sections)),
         ("lanes", f"{info.lanes} ({LANES_COUNTED}): {_counts(info.lanes_by_type)}"),

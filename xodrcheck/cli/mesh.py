@@ -48,7 +48,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="OUT",
         help=f"mesh file; format from the extension ({', '.join(FORMATS)})",
     )
-    parser.add_argument("--chord", type=positive_number, metavar="TOL", help="chord tolerance in metres (default: configured)")
+    parser.add_argument(
+        "--chord", type=positive_number, metavar="TOL", help="chord tolerance in metres (default: configured)"
+    )
     parser.add_argument(
         "--lane-types",
         type=_lane_types,

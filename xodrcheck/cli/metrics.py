@@ -24,8 +24,15 @@ NAME = "metrics"
 HELP = "Expressive-range metrics of every junction: FOV, maxCurvature, cornerDeviation, complexity, area, conflicts."
 
 JUNCTION_COLUMNS = (
-    "junction", "junction_name", "junction_type", "legs", "n_connection_lanes", "n_u_turn_lanes",
-    "area", "conflict_area", "conflict_ratio",
+    "junction",
+    "junction_name",
+    "junction_type",
+    "legs",
+    "n_connection_lanes",
+    "n_u_turn_lanes",
+    "area",
+    "conflict_area",
+    "conflict_ratio",
 )
 LEG_COLUMNS = ("leg", "road", "contact", "x", "y", "fov", "max_curvature", "corner_deviation", "complexity")
 #: CSV columns, in order.

@@ -34,7 +34,9 @@ CSV_COLUMNS = ("road", "section_s", "lane", "type", "kind", "s", "x", "y", "z", 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("file", metavar="FILE", help="OpenDRIVE file")
-    parser.add_argument("--step", type=positive_number, required=True, metavar="D", help="distance in s between samples (m)")
+    parser.add_argument(
+        "--step", type=positive_number, required=True, metavar="D", help="distance in s between samples (m)"
+    )
     parser.add_argument("--borders", action="store_true", help="also sample each lane's inner and outer border")
     parser.add_argument("--format", choices=("csv", "geojson"), default="csv", help="output format (default: csv)")
     parser.add_argument("-o", "--output", metavar="OUT", help="write here (atomically) instead of standard output")
@@ -53,8 +55,9 @@ def write_csv(lines, stream: IO[str]) -> None:
         prefix = f"{_csv_field(line.road)},{line.section_s:.6f},{line.lane},{_csv_field(line.lane_type)},{line.kind}"
         stream.writelines(
             f"{prefix},{s:.6f},{x:.6f},{y:.6f},{z:.6f},{h:.9f}\n"
-            for s, x, y, z, h in zip(line.s.tolist(), line.x.tolist(), line.y.tolist(), line.z.tolist(),
-                                     line.hdg.tolist())
+            for s, x, y, z, h in zip(
+                line.s.tolist(), line.x.tolist(), line.y.tolist(), line.z.tolist(), line.hdg.tolist()
+            )
         )
 
 

@@ -13,8 +13,10 @@ from xodrcheck.findings import ReadError
 from xodrcheck.snapshot import Snapshot, snapshot_of
 
 NAME = "snapshot"
-HELP = ("Write the invariants of a map as JSON: counts of roads, junctions and lanes, legs, lane length, lane graph "
-        "hash, bounding box and findings.")
+HELP = (
+    "Write the invariants of a map as JSON: counts of roads, junctions and lanes, legs, lane length, lane graph "
+    "hash, bounding box and findings."
+)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -38,7 +38,7 @@ def constructor(cls: type[T]) -> Callable[..., T]:
         namespace[f"_set_{f.name}"] = getattr(cls, f.name).__set__
     body = "".join(f"    _set_{f.name}(obj, {f.name})\n" for f in fields)
     source = f"def make({', '.join(params)}):\n    obj = _new(_cls)\n{body}    return obj\n"
-    exec(source, namespace)  # noqa: S102 - source built above from the dataclass's own field names
+    exec(source, namespace)
     make = namespace["make"]
     make.__name__ = make.__qualname__ = cls.__name__  # type: ignore[attr-defined]
     make.__doc__ = f"Build a {cls.__name__} (same parameters as the class)."

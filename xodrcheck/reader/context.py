@@ -215,8 +215,7 @@ class Context:
     def repeated(self, el: etree._Element, first: etree._Element) -> None:
         self.report(
             R.REPEATED_ELEMENT,
-            f"{describe(el)} repeats the {describe(first)}, which may appear only once; "
-            "only the first is read",
+            f"{describe(el)} repeats the {describe(first)}, which may appear only once; only the first is read",
             el,
         )
 

@@ -134,9 +134,7 @@ def build_document(ctx: Context, root: etree._Element, source: str | None) -> Do
         else:
             ctx.repeated(child, header_el)
     if header_el is None:
-        ctx.report(
-            R.MISSING_ELEMENT, f"{describe(root)} has no <header>; the OpenDRIVE version is unknown", root
-        )
+        ctx.report(R.MISSING_ELEMENT, f"{describe(root)} has no <header>; the OpenDRIVE version is unknown", root)
     for child in root:
         tag = child.tag
         if tag == "road":

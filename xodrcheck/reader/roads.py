@@ -247,7 +247,7 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
     else:
         junction = None if raw_junction.strip() == "-1" else raw_junction
         if junction is not None and not junction.strip():
-            ctx.invalid(el, "junction", raw_junction, 'which is empty', 'read as "-1" (not inside a junction)')
+            ctx.invalid(el, "junction", raw_junction, "which is empty", 'read as "-1" (not inside a junction)')
             junction = None
 
     rule = TrafficRule.RHT

@@ -163,7 +163,7 @@ def _check_declared_encoding(data: bytes, findings: list[Finding]) -> None:
     if name.lower() not in _UTF8_NAMES and not data.isascii():
         findings.append(
             R.ENCODING.finding(
-                f"the XML declaration says encoding=\"{name}\" and the file uses characters outside ASCII; it was read "
+                f'the XML declaration says encoding="{name}" and the file uses characters outside ASCII; it was read '
                 "as declared, but tools that expect UTF-8 will misread those characters",
                 line=1,
             )

@@ -32,6 +32,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from xodrcheck.lanes import RoadGeometry
 
+
 def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
     """The road's link at ``end``: its predecessor at the start, its successor at the end."""
     return road.predecessor if end is ContactPoint.START else road.successor

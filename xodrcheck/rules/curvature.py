@@ -159,6 +159,13 @@ def border_folds(ctx: Context):
                 f"{'left' if t[i] > 0 else 'right'} of a reference line turning with radius "
                 f"{1.0 / abs(float(k[i])):.3g} m at s={s[i]:.6g}: the border passes the centre of curvature and folds "
                 f"back; widen the curve or narrow the lanes",
-                **_where(road, index, lane_id, float(s[i]), float(points.x[i]), float(points.y[i]),
-                         lane.line if lane is not None else 0),
+                **_where(
+                    road,
+                    index,
+                    lane_id,
+                    float(s[i]),
+                    float(points.x[i]),
+                    float(points.y[i]),
+                    lane.line if lane is not None else 0,
+                ),
             )

@@ -160,7 +160,8 @@ def connection_contact_point(ctx: Context):
             if c.contact_point is None:
                 yield connection_contact_point.finding(
                     f"{at} has no contactPoint: which end of road {target.id} touches road {c.incoming_road}?",
-                    road=target.id, line=c.line or None,
+                    road=target.id,
+                    line=c.line or None,
                 )
                 continue
             link = link_at(target, c.contact_point)
@@ -170,7 +171,8 @@ def connection_contact_point(ctx: Context):
                     yield connection_contact_point.finding(
                         f"{at}: contactPoint {c.contact_point.value} says linked road {target.id} meets the junction "
                         f"at its {c.contact_point.value}, but its {word} is {_describe(link)}",
-                        road=target.id, line=c.line or None,
+                        road=target.id,
+                        line=c.line or None,
                     )
                 continue
             if link is not None and link.element_type is ElementType.ROAD and link.element_id == c.incoming_road:
@@ -183,7 +185,8 @@ def connection_contact_point(ctx: Context):
                 f"{at}: contactPoint {c.contact_point.value} says connecting road {target.id} "
                 f"{'starts' if c.contact_point is ContactPoint.START else 'ends'} at incoming road {c.incoming_road}, "
                 f"but its {word} is {_describe(link)}{hint}",
-                road=target.id, line=c.line or None,
+                road=target.id,
+                line=c.line or None,
             )
 
 
@@ -219,7 +222,9 @@ def junction_lane_link_direction(ctx: Context):
                 f"joins lane {a.id} of road {r.incoming.id}, which runs {'into' if into else 'out of'} the junction, "
                 f"to lane {b.id} of road {r.target.id}, which runs {'away from' if onward else 'toward'} road "
                 f"{r.incoming.id}: traffic would reverse where they meet",
-                road=r.incoming.id, lane=a.id, line=ll.line or r.connection.line or None,
+                road=r.incoming.id,
+                lane=a.id,
+                line=ll.line or r.connection.line or None,
             )
 
 
@@ -255,7 +260,10 @@ def junction_lane_link_outbound(ctx: Context):
                 f"junction {r.junction.id} connection {r.connection.id}: laneLink {ll.from_lane} -> {ll.to_lane} "
                 f"starts at lane {a.id} of road {r.incoming.id}, whose traffic ({r.incoming.rule.value}) leaves the "
                 "junction; list only lanes that enter it",
-                severity=severity, road=r.incoming.id, lane=a.id, line=ll.line or r.connection.line or None,
+                severity=severity,
+                road=r.incoming.id,
+                lane=a.id,
+                line=ll.line or r.connection.line or None,
             )
 
 
@@ -312,8 +320,11 @@ def incoming_lane_unconnected(ctx: Context):
                 yield incoming_lane_unconnected.finding(
                     f"road {road.id} lane {lane.id} ({lane.type.value}) runs into junction {junction.id} at the "
                     f"road's {end.value}, but no laneLink of the junction starts at it",
-                    road=road.id, lane=lane.id, section_s=section.s,
-                    s=section.s if end is ContactPoint.START else road.length, line=lane.line or None,
+                    road=road.id,
+                    lane=lane.id,
+                    section_s=section.s,
+                    s=section.s if end is ContactPoint.START else road.length,
+                    line=lane.line or None,
                 )
 
 
@@ -350,7 +361,9 @@ def junction_merge(ctx: Context):
         yield junction_merge.finding(
             f"junction {junction_id}: lane {lane_id} of road {target} at its {contact.value} is entered from "
             f"{len(distinct)} lanes ({names}); give each incoming lane its own connecting lane",
-            road=target, lane=lane_id, line=ll.line or c.line or None,
+            road=target,
+            lane=lane_id,
+            line=ll.line or c.line or None,
         )
 
 
@@ -385,14 +398,16 @@ def connection_duplicate(ctx: Context):
                 yield connection_duplicate.finding(
                     f"junction {junction.id}: connections {first_pair[pair].id} and {c.id} both lead from road "
                     f"{c.incoming_road} into connecting road {c.connecting_road}; merge them",
-                    road=c.connecting_road, line=c.line or None,
+                    road=c.connecting_road,
+                    line=c.line or None,
                 )
             elif one_per_road and c.connecting_road in first_road:
                 yield connection_duplicate.finding(
                     f"junction {junction.id}: connecting road {c.connecting_road} is in connections "
                     f"{first_road[c.connecting_road].id} and {c.id}; OpenDRIVE 1.7 allows one connection per "
                     "connecting road",
-                    road=c.connecting_road, line=c.line or None,
+                    road=c.connecting_road,
+                    line=c.line or None,
                 )
             first_pair.setdefault(pair, c)
             first_road.setdefault(c.connecting_road, c)
@@ -421,5 +436,6 @@ def connecting_road_is_incoming(ctx: Context):
                 yield connecting_road_is_incoming.finding(
                     f"junction {junction.id} connection {c.id}: incoming road {c.incoming_road} is also a connecting "
                     "road",
-                    road=c.incoming_road, line=c.line or None,
+                    road=c.incoming_road,
+                    line=c.line or None,
                 )

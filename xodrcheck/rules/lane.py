@@ -118,7 +118,9 @@ def centre_lane_invalid(ctx: Context):
                 if lane.id != 0:
                     yield centre_lane_invalid.finding(
                         f"{here}: the centre holds lane {lane.id}; only lane 0 belongs there",
-                        lane=lane.id, line=lane.line or None, **where,
+                        lane=lane.id,
+                        line=lane.line or None,
+                        **where,
                     )
             zeros = [lane for lane in section.center if lane.id == 0]
             for lane in zeros[1:]:
@@ -129,7 +131,9 @@ def centre_lane_invalid(ctx: Context):
                 if lane.id == 0:
                     yield centre_lane_invalid.finding(
                         f"{here}: lane 0 is under <left>/<right>; it belongs in <center>",
-                        lane=0, line=lane.line or None, **where,
+                        lane=0,
+                        line=lane.line or None,
+                        **where,
                     )
 
 
@@ -156,7 +160,10 @@ def centre_lane_width(ctx: Context):
                     yield centre_lane_width.finding(
                         f"road {road.id} lane section s={section.s:g}: the centre lane 0 has a <{kind}> record; "
                         "remove it (lane 0 has no width)",
-                        road=road.id, lane=0, section_s=section.s, s=section.s + record.s,
+                        road=road.id,
+                        lane=0,
+                        section_s=section.s,
+                        s=section.s + record.s,
                         line=record.line or lane.line or None,
                     )
 
@@ -187,7 +194,9 @@ def lane_id_sequence(ctx: Context):
                         yield lane_id_sequence.finding(
                             f"{here}: lane {lane.id} is under <{name}>; {name} lane ids are "
                             f"{'positive' if sign > 0 else 'negative'}",
-                            lane=lane.id, line=lane.line or None, **where,
+                            lane=lane.id,
+                            line=lane.line or None,
+                            **where,
                         )
                 ids = sorted({abs(lane.id) for lane in lanes if lane.id * sign > 0})
                 gaps = _gaps(ids)
@@ -195,7 +204,9 @@ def lane_id_sequence(ctx: Context):
                     first = next(lane for lane in lanes if lane.id * sign > 0)
                     yield lane_id_sequence.finding(
                         f"{here}: {name} lanes skip id(s) {_gap_text(gaps, sign)}",
-                        lane=gaps[0][0] * sign, line=first.line or None, **where,
+                        lane=gaps[0][0] * sign,
+                        line=first.line or None,
+                        **where,
                     )
 
 
@@ -214,7 +225,9 @@ def _gap_text(gaps: list[tuple[int, int]], sign: int, most: int = 5) -> str:
     parts = [str(a * sign) if a == b else f"{a * sign} to {b * sign}" for a, b in gaps[:most]]
     more = len(gaps) - most
     count = sum(b - a + 1 for a, b in gaps)
-    return ", ".join(parts) + (f" and {more} more run(s)" if more > 0 else "") + (f" ({count} ids)" if count > 3 else "")
+    return (
+        ", ".join(parts) + (f" and {more} more run(s)" if more > 0 else "") + (f" ({count} ids)" if count > 3 else "")
+    )
 
 
 # ------------------------------------------------------------------------------------------------ links at joints
@@ -228,6 +241,8 @@ def _continuity_severity(lane: Lane) -> Severity:
     if lane.drivable:
         return Severity.ERROR
     return Severity.WARNING if lane.type in _OTHER_TRAFFIC else Severity.INFO
+
+
 @rule("L010", "lane-not-continued", Category.LANE, Severity.ERROR)
 def lane_not_continued(ctx: Context):
     """A lane of non-zero width ends at a joint without a lane link to the other side.
@@ -398,7 +413,9 @@ def zero_width_lane_linked(ctx: Context):
                         f"{mine.describe()}: lane {lane.id} has zero width at its {mine.end.value} but a "
                         f"{_WORD[mine.end]} (lane {', '.join(map(str, targets))}); a lane that "
                         f"{'opens' if mine.end is ContactPoint.START else 'closes'} has none",
-                        severity=severity, line=lane.line or None, **mine.where(lane.id),
+                        severity=severity,
+                        line=lane.line or None,
+                        **mine.where(lane.id),
                     )
                 continue
             for target_id in targets:
@@ -410,7 +427,9 @@ def zero_width_lane_linked(ctx: Context):
                     f"{mine.describe()}: lane {lane.id}'s {_WORD[mine.end]} is lane {target_id} of "
                     f"{other.describe()}, which has zero width there (it "
                     f"{'opens' if other.end is ContactPoint.START else 'closes'}); link the continuing lane instead",
-                    severity=severity, line=lane.line or None, **mine.where(lane.id),
+                    severity=severity,
+                    line=lane.line or None,
+                    **mine.where(lane.id),
                 )
     yield from _zero_width_junction_links(ctx, severity)
 
@@ -438,6 +457,9 @@ def _zero_width_junction_links(ctx: Context, severity: Severity):
                         yield zero_width_lane_linked.finding(
                             f"junction {junction.id} connection {c.id}: laneLink {ll.from_lane} -> {ll.to_lane} "
                             f"uses lane {lane_id} of road {road.id}, which has zero width at its {end.value}",
-                            severity=severity, road=road.id, lane=lane_id,
-                            section_s=road.lane_sections[index].s, line=ll.line or c.line or None,
+                            severity=severity,
+                            road=road.id,
+                            lane=lane_id,
+                            section_s=road.lane_sections[index].s,
+                            line=ll.line or c.line or None,
                         )

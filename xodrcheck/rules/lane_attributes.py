@@ -34,7 +34,11 @@ def lane_level_one_side(ctx: Context):
                         yield lane_level_one_side.finding(
                             f"road {road.id} lane section s={section.s:g}: lane {lane.id} is not level but lies "
                             f"outside lane {level_seen}, which is",
-                            road=road.id, lane=lane.id, section_s=section.s, s=section.s, line=lane.line or None,
+                            road=road.id,
+                            lane=lane.id,
+                            section_s=section.s,
+                            s=section.s,
+                            line=lane.line or None,
                         )
 
 
@@ -69,7 +73,8 @@ def lane_level_changes(ctx: Context):
                 yield lane_level_changes.finding(
                     f"{mine.describe()}: lane {lane.id} (level={str(lane.level).lower()}) is linked to lane "
                     f"{target_id} of {other.describe()} (level={str(target.level).lower()})",
-                    line=lane.line or None, **mine.where(lane.id),
+                    line=lane.line or None,
+                    **mine.where(lane.id),
                 )
 
 
@@ -102,7 +107,7 @@ def lane_access_mixed(ctx: Context):
                 road = next((a for a in access.iterancestors("road")), None)
                 yield lane_access_mixed.finding(
                     f"lane {lane.get('id')} of road {road.get('id') if road is not None else '?'}: access records at "
-                    f"sOffset {offset} mix rule=\"{rules[key][0]}\" (line {rules[key][1]}) and rule=\"{rule_}\"",
+                    f'sOffset {offset} mix rule="{rules[key][0]}" (line {rules[key][1]}) and rule="{rule_}"',
                     road=road.get("id") if road is not None else None,
                     lane=_int(lane.get("id")),
                     line=access.sourceline,

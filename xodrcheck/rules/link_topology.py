@@ -65,8 +65,7 @@ def link_not_reciprocal(ctx: Context):
             if link.element_type is ElementType.JUNCTION:
                 if road.junction is not None and road.junction == link.element_id:
                     yield link_not_reciprocal.finding(
-                        f"{mine}, its own junction: a connecting road links to the roads it joins, not to its "
-                        "junction",
+                        f"{mine}, its own junction: a connecting road links to the roads it joins, not to its junction",
                         **where,
                     )
                 elif not _junction_refers_to(ctx, link.element_id, road):

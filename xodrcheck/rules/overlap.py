@@ -61,8 +61,9 @@ def _pairs(ctx: Context, drivable: bool) -> dict[tuple[str, str], _Pair]:
     return cache[drivable]
 
 
-def _message(ctx: Context, roads: tuple[str, str], area: float, lanes: list[tuple[int, int]], o: Overlap,
-             what: str) -> str:
+def _message(
+    ctx: Context, roads: tuple[str, str], area: float, lanes: list[tuple[int, int]], o: Overlap, what: str
+) -> str:
     shown = ", ".join(f"{a}/{b}" for a, b in lanes[:4]) + (" ..." if len(lanes) > 4 else "")
     return (
         f"{what}road {roads[0]} and road {roads[1]} overlap by {area:.1f} m2 in plan view (lanes {shown}) with "
@@ -150,8 +151,7 @@ def lane_fold(ctx: Context):
         road = ctx.road(key.road)
         yield lane_fold.finding(
             f"lane {key.lane} of road {key.road} (lane section at s={key.section_s:g}) covers {area:.1f} m2 of plan "
-            f"view twice: its surface folds over itself"
-            + (f" from s={surfaces.face_s[face]:.2f}" if flipped else ""),
+            f"view twice: its surface folds over itself" + (f" from s={surfaces.face_s[face]:.2f}" if flipped else ""),
             road=key.road,
             lane=key.lane,
             section_s=key.section_s,

@@ -63,14 +63,18 @@ def redundant_record(ctx: Context):
             for prev, nxt in _redundant(profile):
                 yield redundant_record.finding(
                     f"road {road.id}: the {name} record at s={nxt.s:g} continues the one at s={prev.s:g} unchanged",
-                    road=road.id, s=nxt.s, line=nxt.line or None,
+                    road=road.id,
+                    s=nxt.s,
+                    line=nxt.line or None,
                 )
         for first, second in zip(road.plan_view, road.plan_view[1:]):
             if isinstance(first, Line) and isinstance(second, Line) and _same_heading(first.hdg, second.hdg):
                 yield redundant_record.finding(
                     f"road {road.id}: the line at s={second.s:g} continues the line at s={first.s:g} in the same "
                     "heading; one line would do",
-                    road=road.id, s=second.s, line=second.line or None,
+                    road=road.id,
+                    s=second.s,
+                    line=second.line or None,
                 )
         for section in road.lane_sections:
             for lane in section.lanes:
@@ -79,7 +83,10 @@ def redundant_record(ctx: Context):
                         yield redundant_record.finding(
                             f"road {road.id} lane {lane.id} (lane section s={section.s:g}): the {name} record at "
                             f"sOffset={nxt.s:g} continues the one at sOffset={prev.s:g} unchanged",
-                            road=road.id, lane=lane.id, section_s=section.s, s=section.s + nxt.s,
+                            road=road.id,
+                            lane=lane.id,
+                            section_s=section.s,
+                            s=section.s + nxt.s,
                             line=nxt.line or None,
                         )
 

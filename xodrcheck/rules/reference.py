@@ -130,9 +130,11 @@ def road_link_target_missing(ctx: Context):
             kind = "predecessor" if end is ContactPoint.START else "successor"
             if link.element_type is ElementType.ROAD:
                 if ctx.road(link.element_id) is None:
-                    hint = " (a junction has that id: should elementType be junction?)" if ctx.junction(
-                        link.element_id
-                    ) else ""
+                    hint = (
+                        " (a junction has that id: should elementType be junction?)"
+                        if ctx.junction(link.element_id)
+                        else ""
+                    )
                     yield road_link_target_missing.finding(
                         f"road {road.id}: {kind} names road {link.element_id!r}, which does not exist{hint}",
                         road=road.id,
@@ -174,7 +176,9 @@ def connection_road_missing(ctx: Context):
                     f"{at}: incomingRoad {c.incoming_road!r} does not exist", **{**where, "road": None}
                 )
             target = ctx.connected_road_id(c)
-            attr = "linkedRoad" if direct or c.connecting_road is None and c.linked_road is not None else "connectingRoad"
+            attr = (
+                "linkedRoad" if direct or (c.connecting_road is None and c.linked_road is not None) else "connectingRoad"
+            )
             if target is None:
                 yield connection_road_missing.finding(f"{at} has no {attr}", **where)
             elif ctx.road(target) is None:
@@ -256,8 +260,10 @@ def connecting_road_outside_junction(ctx: Context):
             road = ctx.road(c.connecting_road)
             if road is None or road.junction == junction.id:
                 continue
-            belongs = "is not in a junction (junction=\"-1\")" if road.junction is None else (
-                f"says it belongs to junction {road.junction}"
+            belongs = (
+                'is not in a junction (junction="-1")'
+                if road.junction is None
+                else (f"says it belongs to junction {road.junction}")
             )
             yield connecting_road_outside_junction.finding(
                 f"junction {junction.id} connection {c.id}: connecting road {road.id} {belongs}",
@@ -288,7 +294,9 @@ def road_junction_missing(ctx: Context):
             )
 
 
-def _lane_link_targets(ctx: Context, road: Road, index: int, end: ContactPoint) -> tuple[str | None, LaneSection | None]:
+def _lane_link_targets(
+    ctx: Context, road: Road, index: int, end: ContactPoint
+) -> tuple[str | None, LaneSection | None]:
     """Where the lane links of section ``index`` at ``end`` point: a description and the lane section there.
 
     The description is ``None`` when the road has nothing there (no next section, no road link); the section is
@@ -335,7 +343,13 @@ def lane_link_missing_lane(ctx: Context):
                     continue
                 described, target_section = _lane_link_targets(ctx, road, index, end)
                 for lane in lanes_linking:
-                    where = {"road": road.id, "lane": lane.id, "section_s": section.s, "s": section.s, "line": lane.line or None}
+                    where = {
+                        "road": road.id,
+                        "lane": lane.id,
+                        "section_s": section.s,
+                        "s": section.s,
+                        "line": lane.line or None,
+                    }
                     if described is None:
                         targets = ", ".join(map(str, getattr(lane, attr)))
                         yield lane_link_missing_lane.finding(

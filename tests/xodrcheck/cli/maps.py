@@ -79,6 +79,7 @@ TWO_SECTIONS = document(
     )
 )
 
+
 def _links(pred: str, succ: str) -> str:
     return (
         f'<predecessor elementType="road" elementId="{pred}" contactPoint="end"/>'

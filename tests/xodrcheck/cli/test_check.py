@@ -181,7 +181,9 @@ def test_damaged_numbers_give_findings_not_numpy_warnings(tmp_path):
         '</center><right><lane id="-1" type="driving"><width sOffset="0" a="-1e308" b="0" c="0" d="0"/></lane>'
         "</right></laneSection></lanes></road></OpenDRIVE>\n"
     )
-    done = subprocess.run([sys.executable, "-m", "xodrcheck", "check", str(path)], check=False, capture_output=True, text=True)
+    done = subprocess.run(
+        [sys.executable, "-m", "xodrcheck", "check", str(path)], check=False, capture_output=True, text=True
+    )
     assert done.returncode == 1
     assert "G010" in done.stdout
     assert "Warning" not in done.stderr and "Traceback" not in done.stderr

@@ -68,8 +68,14 @@ def test_straight_road_centres(tmp_path, capsys):
 def test_borders_and_elevation(tmp_path, capsys):
     rows = sample_csv(capsys, write(tmp_path, maps.STRAIGHT_RISING), "--step", "30", "--borders")
     assert len(rows) == 2 * 3 * 5  # two lanes, three lines each, s = 0, 30, 60, 90, 100
-    expected_t = {(1, "inner"): 0, (1, "centre"): 1.75, (1, "outer"): 3.5,
-                  (-1, "inner"): 0, (-1, "centre"): -1.75, (-1, "outer"): -3.5}
+    expected_t = {
+        (1, "inner"): 0,
+        (1, "centre"): 1.75,
+        (1, "outer"): 3.5,
+        (-1, "inner"): 0,
+        (-1, "centre"): -1.75,
+        (-1, "outer"): -3.5,
+    }
     for (lane, kind), t in expected_t.items():
         s = column(rows, "s", lane=lane, kind=kind)
         np.testing.assert_allclose(s, [0, 30, 60, 90, 100])
@@ -121,8 +127,10 @@ def test_geojson(tmp_path, capsys):
 
 def test_output_file_is_written(tmp_path, capsys):
     out = tmp_path / "centres.geojson"
-    assert main(["sample", str(write(tmp_path, maps.STRAIGHT)), "--step", "50", "--format", "geojson", "-o",
-                 str(out)]) == 0
+    assert (
+        main(["sample", str(write(tmp_path, maps.STRAIGHT)), "--step", "50", "--format", "geojson", "-o", str(out)])
+        == 0
+    )
     assert capsys.readouterr().out == ""
     assert len(json.loads(out.read_text())["features"]) == 2
     assert sorted(p.name for p in tmp_path.iterdir()) == ["centres.geojson", "map.xodr"]

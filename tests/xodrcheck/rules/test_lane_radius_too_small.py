@@ -21,7 +21,7 @@ def test_a_lane_filed_on_the_wrong_side_is_skipped_not_a_crash(tmp_path):
     """Regression (found by fuzzing): lane 1 inside <right> has no place in the road; the rule skips it (and
     lane-id-sequence reports it) instead of failing with a KeyError."""
     text = fixture(RULE, "fail.xodr").read_text(encoding="utf-8")
-    left = text[text.index("<left>") + len("<left>"): text.index("</left>")]
+    left = text[text.index("<left>") + len("<left>") : text.index("</left>")]
     moved = text.replace(f"<left>{left}</left>", "").replace("<right>", "<right>" + left)
     path = tmp_path / "wrong_side.xodr"
     path.write_text(moved, encoding="utf-8")
