@@ -55,7 +55,9 @@ COLOURS = {
 }
 OTHER_COLOUR = (230, 0, 230, 255)
 
-_Y_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, -1.0], [0.0, 1.0, 0.0]])
+#: OpenDRIVE's z-up axes to y-up: ``(x, y, z) -> (x, z, -y)``, a rotation by -90 degrees about x (right-handed stays
+#: right-handed, so faces wound counter-clockwise seen from above still face up). Applied as ``vertices @ _Y_UP.T``.
+_Y_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
 
 
 class ExportError(ValueError):
