@@ -9,22 +9,30 @@ from __future__ import annotations
 import argparse
 import importlib
 import sys
+from types import ModuleType
 
-import numpy as np
-
-#: Subcommand modules, in the order ``--help`` lists them.
-SUBCOMMANDS = ("info", "sample", "check", "rules", "mesh", "metrics", "snapshot", "diff")
+#: Subcommands in the order ``--help`` lists them, with their one-line help (each module's ``HELP``; a test keeps them
+#: equal). The table lets ``xodrcheck --help`` and ``xodrcheck COMMAND`` import no subcommand module but the one used.
+COMMANDS = {
+    "info": "Summarise OpenDRIVE files: version, roads, junctions, lanes, geometry, extent and reader findings.",
+    "sample": "Sample every lane's centre line (and borders) at a fixed step, as CSV or GeoJSON.",
+    "check": "Check OpenDRIVE files against the conformance rules (exit 1 when an error is found).",
+    "rules": "List the checker's rules (code, name, category, severity, summary), or show one rule in full.",
+    "mesh": "Write the lane surfaces as a 3D mesh (.glb, .obj or .ply), coloured by lane type.",
+    "metrics": "Expressive-range metrics of every junction: FOV, maxCurvature, cornerDeviation, complexity, area, "
+    "conflicts.",
+    "snapshot": "Write the invariants of a map as JSON: counts of roads, junctions and lanes, legs, lane length, lane "
+    "graph hash, bounding box and findings.",
+    "diff": "Compare a map with its snapshot (from 'xodrcheck snapshot'): print what changed, exit 1 if anything did.",
+}
+SUBCOMMANDS = tuple(COMMANDS)
 
 EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
 
 
-def _modules():
-    for name in SUBCOMMANDS:
-        try:
-            yield importlib.import_module(f"xodrcheck.cli.{name}")
-        except ModuleNotFoundError as exc:  # a subcommand not built yet
-            if exc.name != f"xodrcheck.cli.{name}":
-                raise
+def command_module(name: str) -> ModuleType:
+    """The module of one subcommand (``NAME``, ``HELP``, ``add_arguments``, ``run``)."""
+    return importlib.import_module(f"xodrcheck.cli.{name}")
 
 
 class _Parser(argparse.ArgumentParser):
@@ -33,20 +41,33 @@ class _Parser(argparse.ArgumentParser):
         self.exit(EXIT_USAGE, f"{self.prog}: error: {message}\n")
 
 
-def build_parser() -> argparse.ArgumentParser:
+def _chosen(argv: list[str] | None) -> str | None:
+    """The subcommand named on the command line (its first word that is not an option), if any."""
+    words = sys.argv[1:] if argv is None else argv
+    first = next((w for w in words if not w.startswith("-")), None)
+    return first if first in COMMANDS else None
+
+
+def build_parser(only: str | None = None) -> argparse.ArgumentParser:
+    """The command-line parser. Every subcommand is listed; with ``only``, just that one's module is imported and its
+    arguments added (the others parse nothing, and are never run)."""
     parser = _Parser(prog="xodrcheck", description="Read, check and sample OpenDRIVE (.xodr) files from any tool.")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
-    for module in _modules():
-        p = sub.add_parser(module.NAME, help=module.HELP, description=module.HELP)
-        module.add_arguments(p)
-        p.set_defaults(_run=module.run)
+    for name, help_text in COMMANDS.items():
+        p = sub.add_parser(name, help=help_text, description=help_text)
+        if only is None or name == only:
+            module = command_module(name)
+            module.add_arguments(p)
+            p.set_defaults(_run=module.run)
     return parser
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = build_parser()
+    parser = build_parser(only=_chosen(argv) or "")
     args = parser.parse_args(argv)
+    import numpy as np  # here: `xodrcheck --help` and usage errors load no numpy
+
     try:
         # Damaged numbers (1e308 widths, say) overflow to inf/nan, which the rules report as findings; numpy's
         # floating-point warnings would only repeat that as noise on stderr. IEEE results are the same either way.

@@ -10,10 +10,12 @@ import tempfile
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from pathlib import Path
-from typing import IO
+from typing import IO, TYPE_CHECKING
 
 from xodrcheck.findings import ReadError, Severity
-from xodrcheck.reader import ReadResult, read
+
+if TYPE_CHECKING:
+    from xodrcheck.reader import ReadResult
 
 
 def positive_number(text: str) -> float:
@@ -34,6 +36,8 @@ def error(message: str) -> None:
 
 def read_file(path: str) -> ReadResult | None:
     """Read ``path``; on :class:`ReadError` print why and return ``None`` (the caller exits 2)."""
+    from xodrcheck.reader import read  # here: `xodrcheck --help` loads no reader
+
     try:
         return read(path)
     except ReadError as exc:

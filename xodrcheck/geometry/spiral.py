@@ -24,7 +24,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from scipy.special import fresnel
 
 from xodrcheck.geometry.pose import Pose, as_array
 from xodrcheck.model import Spiral
@@ -116,6 +115,8 @@ def _by_fresnel(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     b = np.abs(b)
     root = np.sqrt(b)
     w0 = a / (2.0 * root)  # a t + b t^2 = (sqrt(b) t + w0)^2 - w0^2
+    from scipy.special import fresnel  # here: scipy loads only when a spiral is evaluated
+
     s0, c0 = fresnel(w0 * _SQRT_2_OVER_PI)
     s1, c1 = fresnel((w0 + root) * _SQRT_2_OVER_PI)
     value = np.exp(-1j * w0 * w0) * (_SQRT_PI_OVER_2 * ((c1 - c0) + 1j * (s1 - s0))) / root

@@ -16,15 +16,18 @@ traffic enters the junction are followed (``junction-lane-link-outbound`` report
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
-import shapely
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Connection, ContactPoint, Junction, JunctionType, Road
 from xodrcheck.rules.context import Context, placed_lane_ids, travel_direction
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import end_s, road_end, section_samples, usable
+
+if TYPE_CHECKING:
+    import shapely
 
 
 @dataclass(frozen=True)
@@ -106,6 +109,8 @@ def _paths(ctx: Context, incoming: Road, end: ContactPoint, connections: list[Co
 
 def _parted(a: np.ndarray, b: shapely.LineString, tol: float) -> np.ndarray | None:
     """The part of polyline ``a`` from its first vertex further than ``tol`` from ``b`` on (``None``: never)."""
+    import shapely
+
     distance = shapely.distance(shapely.points(a), b)
     far = np.nonzero(distance > tol)[0]
     if not len(far) or len(a) - far[0] < 2:
@@ -115,6 +120,8 @@ def _parted(a: np.ndarray, b: shapely.LineString, tol: float) -> np.ndarray | No
 
 def _crossing(p: _Path, q: _Path, tol: float) -> np.ndarray | None:
     """A point where two paths meet other than their shared start (``None`` when they do not)."""
+    import shapely  # here: shapely loads only for junctions with paths to compare
+
     a, b = p.xy, q.xy
     if p.from_lane == q.from_lane:
         line_a, line_b = shapely.LineString(a), shapely.LineString(b)

@@ -19,11 +19,25 @@ from __future__ import annotations
 from collections import defaultdict
 from collections.abc import Iterator
 from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.footprint import DRIVABLE_TYPE_NAMES, Overlap, overlap_index
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:
+    from xodrcheck.footprint import Overlap, OverlapIndex
+
+
+def _overlap_index(ctx: Context) -> OverlapIndex:
+    """The file's :class:`~xodrcheck.footprint.OverlapIndex` (shapely loads here, when an overlap rule runs)."""
+    from xodrcheck.footprint import overlap_index
+
+    return overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time)
+
+
+def _swapped(o: Overlap) -> Overlap:
+    return type(o)(o.lane_b, o.lane_a, o.area, o.x, o.y, o.dz, o.s_b, o.s_a)
 
 
 @dataclass
@@ -39,8 +53,10 @@ def _pairs(ctx: Context, drivable: bool) -> dict[tuple[str, str], _Pair]:
     cache = ctx.__dict__.setdefault("_overlap_pairs", {})  # per file: O001, O003 and O004 share one pass
     if drivable in cache:
         return cache[drivable]
+    from xodrcheck.footprint import DRIVABLE_TYPE_NAMES
+
     tol = ctx.tolerances
-    index = overlap_index(ctx.document, tol.chord, ctx.out_of_time)
+    index = _overlap_index(ctx)
     surfaces = index.surfaces
     both: dict[bool, dict[tuple[str, str], _Pair]] = {True: defaultdict(_Pair), False: defaultdict(_Pair)}
     # a pair is named in file order, not id order, so that renaming roads changes nothing but the names
@@ -50,7 +66,7 @@ def _pairs(ctx: Context, drivable: bool) -> dict[tuple[str, str], _Pair]:
         types = surfaces.lane_types
         kind = types[o.lane_a] in DRIVABLE_TYPE_NAMES or types[o.lane_b] in DRIVABLE_TYPE_NAMES
         if (order.get(a.road, -1), a.lane) > (order.get(b.road, -1), b.lane):
-            o = Overlap(o.lane_b, o.lane_a, o.area, o.x, o.y, o.dz, o.s_b, o.s_a)
+            o = _swapped(o)
             a, b = b, a
         pair = both[kind][(a.road, b.road)]
         pair.area += o.area
@@ -73,7 +89,7 @@ def _message(
 
 
 def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: str) -> Iterator:
-    surfaces = overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time).surfaces
+    surfaces = _overlap_index(ctx).surfaces
     for roads, pair in sorted(_pairs(ctx, drivable).items()):
         members = [ctx.road(r) is not None and ctx.road(r).junction is not None for r in roads]
         if junction is not None and any(members) is not junction:
@@ -81,7 +97,7 @@ def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: 
         o, lanes = pair.largest, sorted(pair.lanes)
         if junction and not members[0]:  # name the connecting road first
             roads = (roads[1], roads[0])
-            o = Overlap(o.lane_b, o.lane_a, o.area, o.x, o.y, o.dz, o.s_b, o.s_a)
+            o = _swapped(o)
             lanes = sorted((b, a) for a, b in lanes)
         key = surfaces.lanes[o.lane_a]
         road = ctx.road(key.road)
@@ -135,7 +151,7 @@ def lane_fold(ctx: Context):
 
         <geometry ... length="6"><arc curvature="-0.5"/></geometry> ... <lane id="-1"><width a="3.5" .../>
     """
-    index = overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time)
+    index = _overlap_index(ctx)
     surfaces, footprints = index.surfaces, index.footprints
     for lane in footprints.invalid:
         if ctx.out_of_time():

@@ -1,0 +1,138 @@
+"""Structural test of the lazy imports: which third-party packages a command loads (run in a fresh interpreter, no
+timing). Heavy packages load only on the paths that need them: scipy for spirals, shapely for the overlap and junction
+geometry rules, trimesh for mesh export, matplotlib for figures, tqdm for progress bars on a terminal."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+import xodrcheck.cli
+from xodrcheck.cli import COMMANDS, command_module
+
+#: Third-party packages whose loading the tests watch.
+WATCHED = (
+    "numpy",
+    "scipy",
+    "shapely",
+    "trimesh",
+    "matplotlib",
+    "lxml",
+    "xmlschema",
+    "elementpath",
+    "tqdm",
+    "dask",
+    "distributed",
+    "junctionart",
+    "xodrcheck",
+)
+
+_PROBE = """
+import json, sys
+out = sys.argv[1]
+sys.argv = [sys.argv[2], *sys.argv[3:]]
+watched = set(json.loads({watched!r}))
+
+def report():
+    loaded = sorted({{m.split('.')[0] for m in sys.modules}} & watched)
+    with open(out, 'w') as f:
+        json.dump(loaded, f)
+
+try:
+    from {module} import main
+    code = main()
+except SystemExit as exc:
+    code = exc.code
+report()
+sys.exit(code or 0)
+"""
+
+# A file without spirals: lines and an arc, one lane each way, OpenDRIVE 1.6 (schema checked by lxml).
+PLAIN = """<?xml version="1.0" encoding="UTF-8"?>
+<OpenDRIVE>
+  <header revMajor="1" revMinor="6" name="plain"/>
+  <road id="1" length="30" junction="-1">
+    <link/>
+    <planView>
+      <geometry s="0" x="0" y="0" hdg="0" length="20"><line/></geometry>
+      <geometry s="20" x="20" y="0" hdg="0" length="10"><arc curvature="0.01"/></geometry>
+    </planView>
+    <lanes>
+      <laneSection s="0">
+        <left><lane id="1" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></left>
+        <center><lane id="0" type="none" level="false"/></center>
+        <right><lane id="-1" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>
+      </laneSection>
+    </lanes>
+  </road>
+</OpenDRIVE>
+"""
+
+
+def loaded(tmp_path: Path, module: str, *argv: str) -> set[str]:
+    """Top-level packages of :data:`WATCHED` loaded by ``module.main()`` run with ``argv`` in a new interpreter."""
+    out = tmp_path / "modules.json"
+    probe = _PROBE.format(watched=json.dumps(WATCHED), module=module)
+    subprocess.run(
+        [sys.executable, "-c", probe, str(out), *argv], cwd=tmp_path, capture_output=True, timeout=300, check=False
+    )
+    return set(json.loads(out.read_text()))
+
+
+@pytest.fixture
+def plain(tmp_path: Path) -> Path:
+    path = tmp_path / "plain.xodr"
+    path.write_text(PLAIN)
+    return path
+
+
+def test_help_loads_no_third_party_package(tmp_path: Path) -> None:
+    assert loaded(tmp_path, "xodrcheck.cli", "xodrcheck", "--help") == {"xodrcheck"}
+    assert loaded(tmp_path, "xodrcheck.cli", "xodrcheck", "check", "--help") == {"xodrcheck"}
+
+
+def test_plain_check_loads_what_the_rules_need(tmp_path: Path, plain: Path) -> None:
+    # numpy and lxml for reading and geometry, shapely for the overlap rules; no scipy (no spiral), no mesh export,
+    # no figures, no XSD 1.1 validator (a 1.6 file), no progress bar (one file, not a terminal), no generator
+    mods = loaded(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(plain))
+    assert mods == {"xodrcheck", "numpy", "lxml", "shapely"}
+
+
+def test_check_without_overlap_rules_loads_no_shapely(tmp_path: Path, plain: Path) -> None:
+    mods = loaded(tmp_path, "xodrcheck.cli", "xodrcheck", "check", "--ignore", "overlap", str(plain))
+    assert mods == {"xodrcheck", "numpy", "lxml"}
+
+
+def test_scipy_loads_when_a_spiral_is_evaluated(tmp_path: Path, plain: Path) -> None:
+    spiral = tmp_path / "spiral.xodr"
+    spiral.write_text(PLAIN.replace('<arc curvature="0.01"/>', '<spiral curvStart="0" curvEnd="0.01"/>'))
+    assert "scipy" in loaded(tmp_path, "xodrcheck.cli", "xodrcheck", "info", str(spiral))
+    assert "scipy" not in loaded(tmp_path, "xodrcheck.cli", "xodrcheck", "info", str(plain))
+
+
+def test_import_xodrcheck_loads_no_third_party_package(tmp_path: Path) -> None:
+    out = tmp_path / "modules.json"
+    code = (
+        "import json, sys; import xodrcheck; "
+        f"json.dump(sorted({{m.split('.')[0] for m in sys.modules}} & set({list(WATCHED)!r})), open({str(out)!r}, 'w'))"
+    )
+    subprocess.run([sys.executable, "-c", code], check=True, timeout=300)
+    assert set(json.loads(out.read_text())) == {"xodrcheck"}
+
+
+def test_generate_loads_no_checker_scipy_or_figures(tmp_path: Path) -> None:
+    mods = loaded(tmp_path, "junctionart.cli", "junctionart", "generate", "--size", "300x300", "-q", "-o", "m.xodr")
+    assert (tmp_path / "m.xodr").is_file()
+    assert mods <= {"junctionart", "numpy", "shapely", "xodrcheck"}
+    assert {"scipy", "matplotlib", "trimesh", "lxml", "tqdm"}.isdisjoint(mods)
+
+
+def test_command_table_matches_the_modules() -> None:
+    for name, help_text in COMMANDS.items():
+        module = command_module(name)
+        assert (module.NAME, module.HELP) == (name, help_text)
+    assert xodrcheck.cli.SUBCOMMANDS == tuple(COMMANDS)
