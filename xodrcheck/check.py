@@ -3,20 +3,22 @@
 >>> report = check("map.xodr")                       # doctest: +SKIP
 >>> report.ok, [f.code for f in report.findings]     # doctest: +SKIP
 
-Rules are selected by code (``R010``), code prefix (``R``, ``R01``), name (``link-not-reciprocal``) or category
-(``reference``). A rule that raises is reported as an ``X900 rule-crashed`` finding naming the rule and the exception;
-``check`` itself raises only :class:`~xodrcheck.findings.ReadError` (the input cannot be opened at all) and
-:class:`~xodrcheck.config.ConfigError` (a selector names no rule).
+Rules are selected by code (``R010``), code prefix (``R``, ``R01``), name (``link-not-reciprocal``), category
+(``reference``), or the UID of a rule of the standard, exact or as a UNIX-style pattern
+(``asam.net:xodr:*:road.lane.*``). A rule that raises is reported as an ``X900 rule-crashed`` finding naming the
+rule and the exception; ``check`` itself raises only :class:`~xodrcheck.findings.ReadError` (the input cannot be
+opened at all) and :class:`~xodrcheck.config.ConfigError` (a selector names no rule).
 """
 
 from __future__ import annotations
 
+import dataclasses
 import gzip
 import io
 import re
 import time
 import zlib
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -26,6 +28,7 @@ from xodrcheck.rules import load_rules
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.internal import RULE_CRASHED, RULE_OUT_OF_TIME
 from xodrcheck.rules.registry import Rule
+from xodrcheck.standard import annex_rules, applies, is_uid, uid_matches
 
 
 @dataclass(frozen=True)
@@ -72,7 +75,17 @@ def _matches(token: str, code: str, name: str, category: str) -> bool:
 
 
 def _rule_matches(token: str, rule: Rule) -> bool:
+    """Also by Annex F UID or UID pattern (``asam.net:xodr:*:road.lane.*``): a rule enforcing a matching UID."""
+    if is_uid(token.strip()):
+        return any(uid_matches(token.strip(), uid) for uid in rule.uids)
     return _matches(token, rule.code, rule.name, rule.category.value)
+
+
+def _finding_matches(token: str, finding: Finding) -> bool:
+    """A UID selector matches the findings that enforce a matching UID; other selectors match by rule."""
+    if is_uid(token.strip()):
+        return finding.rule_uid is not None and uid_matches(token.strip(), finding.rule_uid)
+    return _matches(token, finding.code, finding.name, finding.category.value)
 
 
 def validate_selectors(tokens: Iterable[str], rules: dict[str, Rule] | None = None) -> None:
@@ -83,12 +96,19 @@ def validate_selectors(tokens: Iterable[str], rules: dict[str, Rule] | None = No
             raise ConfigError(f"rule selectors are strings (codes, prefixes, names, categories), got {token!r}")
         if not token.strip():
             raise ConfigError("empty rule selector")
-        if not any(_rule_matches(token, r) for r in rules.values()):
+        if is_uid(token.strip()):
+            if not any(uid_matches(token.strip(), uid) for uid in annex_rules()):
+                raise ConfigError(f"no rule of the standard matches {token!r} (see `xodrcheck rules --standard`)")
+        elif not any(_rule_matches(token, r) for r in rules.values()):
             raise ConfigError(f"unknown rule, code prefix or category {token!r} (see `xodrcheck rules`)")
 
 
 class Selection:
-    """Which rules apply: those matching ``select`` (all when empty), minus those matching ``ignore``."""
+    """Which rules apply: those matching ``select`` (all when empty), minus those matching ``ignore``.
+
+    A UID pattern selects the rules that enforce a matching UID and, of their findings, those that name one; ignored,
+    it drops those findings, and the rules whose every UID matches.
+    """
 
     def __init__(self, select: Sequence[str] = (), ignore: Sequence[str] = ()) -> None:
         self.rules = load_rules()
@@ -96,16 +116,21 @@ class Selection:
         self.select = tuple(select)
         self.ignore = tuple(ignore)
 
-    def wants(self, code: str, name: str, category: str) -> bool:
-        if self.select and not any(_matches(t, code, name, category) for t in self.select):
-            return False
-        return not any(_matches(t, code, name, category) for t in self.ignore)
-
     def wants_rule(self, rule: Rule) -> bool:
-        return self.wants(rule.code, rule.name, rule.category.value)
+        if self.select and not any(_rule_matches(t, rule) for t in self.select):
+            return False
+        for token in self.ignore:
+            if is_uid(token.strip()):
+                if rule.uids and all(uid_matches(token.strip(), uid) for uid in rule.uids):
+                    return False
+            elif _rule_matches(token, rule):
+                return False
+        return True
 
     def wants_finding(self, finding: Finding) -> bool:
-        return self.wants(finding.code, finding.name, finding.category.value)
+        if self.select and not any(_finding_matches(t, finding) for t in self.select):
+            return False
+        return not any(_finding_matches(t, finding) for t in self.ignore)
 
 
 # ------------------------------------------------------------------------------------------------------ running
@@ -140,7 +165,7 @@ def run_rules(ctx: Context, selection: Selection) -> tuple[list[Finding], list[s
     findings: list[Finding] = []
     run: list[str] = []
     for rule in selection.rules.values():
-        if rule.check is None or not selection.wants_rule(rule):
+        if rule.check is None or not selection.wants_rule(rule) or not rule.runs_on(ctx.version):
             continue
         if ctx.out_of_time():
             findings.append(RULE_OUT_OF_TIME.finding(f"rule {rule.code} {rule.name} not run: time budget spent"))
@@ -203,10 +228,23 @@ def check(
     return Report(
         path=result.path,
         version=version,
-        findings=tuple(sorted(findings, key=_sort_key)),
+        findings=tuple(sorted(_by_version(findings, result.document, selection.rules), key=_sort_key)),
         rules_run=tuple(run),
         strict=config.strict,
     )
+
+
+def _by_version(findings: Iterable[Finding], document, rules: dict[str, Rule]) -> Iterator[Finding]:
+    """Drop the findings of Annex F rules that do not apply to the file's version; a rule that runs on every version
+    keeps its finding there without claiming the UID."""
+    version = None if document is None else document.version
+    for f in findings:
+        if f.rule_uid is not None and not applies(f.rule_uid, version):
+            rule = rules.get(f.code)
+            if rule is None or not rule.every_version:
+                continue
+            f = dataclasses.replace(f, rule_uid=None)
+        yield f
 
 
 def _raw(data: bytes | None, limit: int) -> bytes | None:

@@ -87,6 +87,7 @@ def test_json_shape(reports):
             "x",
             "y",
             "line",
+            "rule_uid",
         ]
     assert doc["files"][1]["findings"] == []
     summary = doc["summary"]

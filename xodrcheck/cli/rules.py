@@ -1,7 +1,11 @@
 """``xodrcheck rules [CODE]``: list the rules, or print one rule's documentation with its examples.
 
 ``CODE`` may be a code (``R010``) or a name (``road-link-target-missing``). JSON (``--format json``) gives a list of
-``{"code", "name", "category", "severity", "summary"}`` objects, or for one rule that object plus ``"doc"``.
+``{"code", "name", "category", "severity", "summary", "uids"}`` objects, or for one rule that object plus ``"doc"``.
+
+``xodrcheck rules --standard`` lists every checker rule of ASAM OpenDRIVE 1.9.0 (Annex F) by UID with its status,
+computed from the registry: enforced (by which codes), enforced in part (and what is left out) or not enforced (and
+why). ``--format md`` gives the same as a Markdown table.
 """
 
 from __future__ import annotations
@@ -19,7 +23,14 @@ HELP = "List the checker's rules (code, name, category, severity, summary), or s
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("code", nargs="?", metavar="CODE", help="a rule code or name: print its full documentation")
-    parser.add_argument("--format", choices=("text", "json"), default="text", help="output format (default: text)")
+    parser.add_argument(
+        "--standard",
+        action="store_true",
+        help="list the checker rules of ASAM OpenDRIVE 1.9.0 (Annex F) by UID, each with its status here",
+    )
+    parser.add_argument(
+        "--format", choices=("text", "json", "md"), default="text", help="output format (default: text; md: --standard)"
+    )
 
 
 def _as_dict(rule: Rule, full: bool = False) -> dict:
@@ -29,13 +40,47 @@ def _as_dict(rule: Rule, full: bool = False) -> dict:
         "category": rule.category.value,
         "severity": str(rule.severity),
         "summary": rule.summary,
+        "uids": list(rule.uids),
     }
     if full:
         d["doc"] = rule.doc
     return d
 
 
+def _standard(fmt: str) -> int:
+    from xodrcheck.standard.status import statuses, summary_line
+
+    table = statuses(load_rules())
+    if fmt == "json":
+        print(json.dumps({"summary": summary_line(table), "rules": [row.as_dict() for row in table]}, indent=2))
+        return 0
+    if fmt == "md":
+        print(f"{summary_line(table)}\n")
+        print("| UID | section | level | status | codes | note |\n|---|---|---|---|---|---|")
+        for row in table:
+            print(
+                f"| `{row.uid}` | {row.section} | {row.level} | {row.status} | {', '.join(row.codes)} | "
+                f"{row.note.replace('|', '/')} |"
+            )
+        return 0
+    width = max(len(row.uid) for row in table)
+    for row in table:
+        codes = ",".join(row.codes) or "-"
+        note = f"  ({row.note})" if row.note else ""
+        print(f"{row.uid:<{width}}  {row.section:<10} {row.level:<6} {row.status:<12} {codes}{note}")
+    print(summary_line(table))
+    return 0
+
+
 def run(args: argparse.Namespace) -> int:
+    if args.standard:
+        if args.code:
+            error("rules: --standard lists every rule of the standard; it takes no CODE")
+            return 2
+        return _standard(args.format)
+    if args.format == "md":
+        error("rules: --format md goes with --standard")
+        return 2
     rules = sorted(load_rules().values(), key=lambda r: r.code)
     if args.code:
         wanted = args.code.strip()
@@ -48,7 +93,10 @@ def run(args: argparse.Namespace) -> int:
             print(json.dumps(_as_dict(rule, full=True), indent=2))
         else:
             print(f"{rule.code} {rule.name} ({rule.category.value}, {rule.severity})\n")
-            print(rule.doc)
+            for uid in rule.uids:
+                part = f" (in part: {rule.partial[uid]})" if uid in rule.partial else ""
+                print(f"enforces {uid}{part}")
+            print(("\n" if rule.uids else "") + rule.doc)
         return 0
     if args.format == "json":
         print(json.dumps([_as_dict(r) for r in rules], indent=2))

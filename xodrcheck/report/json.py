@@ -1,7 +1,8 @@
 """JSON: ``{"files": [{"path", "version", "ok", "findings": [...]}], "summary": {...}}``.
 
-Every finding has the keys ``code name category severity message road lane s x y line`` (``null`` where a key does
-not apply), so consumers can rely on the shape.
+Every finding has the keys ``code name category severity message road lane s x y line rule_uid`` (``null`` where a
+key does not apply), so consumers can rely on the shape. ``rule_uid`` names the checker rule of the standard (ASAM
+OpenDRIVE Annex F) that the finding enforces.
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from collections.abc import Sequence
 from xodrcheck.findings import Finding
 from xodrcheck.report import summary
 
-FINDING_KEYS = ("code", "name", "category", "severity", "message", "road", "lane", "s", "x", "y", "line")
+FINDING_KEYS = ("code", "name", "category", "severity", "message", "road", "lane", "s", "x", "y", "line", "rule_uid")
 
 
 def _number(v):
@@ -33,6 +34,7 @@ def finding_dict(f: Finding) -> dict:
         "x": _number(f.x),
         "y": _number(f.y),
         "line": f.line,
+        "rule_uid": f.rule_uid,
     }
 
 

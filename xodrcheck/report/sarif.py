@@ -1,7 +1,9 @@
 """SARIF 2.1.0: one run of the tool ``xodrcheck`` over all files.
 
 ``tool.driver.rules`` lists every rule applied or reported (id = code, name, short and full description, default
-level); each result names its rule, level, message and ``physicalLocation`` (the file and, when known, the line).
+level, the UIDs of the standard's checker rules it enforces and a ``helpUri`` to the standard's annex of checker
+rules); each result names its rule, level, message, ``physicalLocation`` (the file and, when known, the line) and, in
+its properties, where on the map and the ``rule_uid`` it enforces.
 """
 
 from __future__ import annotations
@@ -12,6 +14,7 @@ from pathlib import Path
 
 from xodrcheck.findings import Finding, Severity
 from xodrcheck.rules import load_rules
+from xodrcheck.standard import ANNEX_URL
 
 SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
 LEVELS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
@@ -44,7 +47,11 @@ def _result(f: Finding, uri: str, index: int) -> dict:
         "message": {"text": f.message},
         "locations": [{"physicalLocation": physical}],
     }
-    where = {k: v for k, v in (("road", f.road), ("lane", f.lane), ("s", f.s), ("x", f.x), ("y", f.y)) if v is not None}
+    where = {
+        k: v
+        for k, v in (("road", f.road), ("lane", f.lane), ("s", f.s), ("x", f.x), ("y", f.y), ("rule_uid", f.rule_uid))
+        if v is not None
+    }
     if where:
         result["properties"] = where
     return result
@@ -72,7 +79,8 @@ def document(reports: Sequence) -> dict:
                 "shortDescription": {"text": rule.summary},
                 "fullDescription": {"text": rule.doc or rule.summary},
                 "defaultConfiguration": {"level": LEVELS[rule.severity]},
-                "properties": {"category": rule.category.value},
+                "properties": {"category": rule.category.value, "uids": list(rule.uids)},
+                **({"helpUri": ANNEX_URL} if rule.uids else {}),
             }
         )
     results = [_result(f, _uri(r.path), index[f.code]) for r in reports for f in r.findings]

@@ -1,7 +1,8 @@
-"""Plain text: one line per finding, ``path:line: CODE severity message [road/lane/s]``.
+"""Plain text: one line per finding, ``path:line: CODE severity message [road/lane/s] (UID)``.
 
 ``line`` is 0 for a finding about the whole file. The bracket names where on the map, as ``road/lane/s`` with ``-``
-for a part that does not apply; it is left out when the finding names no road.
+for a part that does not apply; it is left out when the finding names no road. The UID in parentheses is the checker
+rule of the standard (ASAM OpenDRIVE Annex F) that the finding enforces, where there is one.
 """
 
 from __future__ import annotations
@@ -21,7 +22,8 @@ def where(f: Finding) -> str:
 
 def line(path: str | None, f: Finding) -> str:
     message = " ".join(f.message.split())  # one line, whatever the message holds
-    return f"{path or '-'}:{f.line or 0}: {f.code} {f.severity} {message}{where(f)}"
+    uid = f" ({f.rule_uid})" if f.rule_uid else ""
+    return f"{path or '-'}:{f.line or 0}: {f.code} {f.severity} {message}{where(f)}{uid}"
 
 
 def render(reports: Sequence) -> str:

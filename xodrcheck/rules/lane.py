@@ -95,12 +95,26 @@ def pair_key(a: Side, a_id: int, b: Side, b_id: int) -> frozenset:
 
 
 # ------------------------------------------------------------------------------------------------ centre lane, ids
-@rule("L001", "centre-lane-invalid", Category.LANE, Severity.ERROR)
+_CENTRE_ID = "asam.net:xodr:1.4.0:road.lane.center_lane_id"
+_NUMBERING = "asam.net:xodr:1.4.0:road.lane.lanes_numbered_correctly"
+
+
+@rule(
+    "L001",
+    "centre-lane-invalid",
+    Category.LANE,
+    Severity.ERROR,
+    uids=(_CENTRE_ID, _NUMBERING),
+    partial={_NUMBERING: "lane 0 outside <center> only; the signs of side lanes are L003's"},
+    every_version=True,
+)
 def centre_lane_invalid(ctx: Context):
     """The ``<center>`` of a lane section does not hold exactly the one lane 0, or lane 0 is on a side.
 
-    Lane 0 is the reference line of the lanes (the standard: "the center lane ... shall have the id 0 and no width").
-    (A lane section without any centre lane is reported while reading, as ``missing-element``.)
+    Lane 0 is the reference line of the lanes: the centre lane has the id 0 (Annex F ``road.lane.center_lane_id``),
+    there is only one, and only side lanes, numbered away from it, sit under ``<left>`` and ``<right>``
+    (``road.lane.lanes_numbered_correctly``). (A lane section without any centre lane is reported while reading, as
+    ``missing-element``.)
 
     Passes::
 
@@ -118,6 +132,7 @@ def centre_lane_invalid(ctx: Context):
                 if lane.id != 0:
                     yield centre_lane_invalid.finding(
                         f"{here}: the centre holds lane {lane.id}; only lane 0 belongs there",
+                        uid=_CENTRE_ID,
                         lane=lane.id,
                         line=lane.line or None,
                         **where,
@@ -125,12 +140,13 @@ def centre_lane_invalid(ctx: Context):
             zeros = [lane for lane in section.center if lane.id == 0]
             for lane in zeros[1:]:
                 yield centre_lane_invalid.finding(
-                    f"{here}: more than one centre lane 0", lane=0, line=lane.line or None, **where
+                    f"{here}: more than one centre lane 0", uid=_CENTRE_ID, lane=0, line=lane.line or None, **where
                 )
             for lane in (*section.left, *section.right):
                 if lane.id == 0:
                     yield centre_lane_invalid.finding(
                         f"{here}: lane 0 is under <left>/<right>; it belongs in <center>",
+                        uid=_NUMBERING,
                         lane=0,
                         line=lane.line or None,
                         **where,

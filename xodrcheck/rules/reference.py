@@ -177,7 +177,9 @@ def connection_road_missing(ctx: Context):
                 )
             target = ctx.connected_road_id(c)
             attr = (
-                "linkedRoad" if direct or (c.connecting_road is None and c.linked_road is not None) else "connectingRoad"
+                "linkedRoad"
+                if direct or (c.connecting_road is None and c.linked_road is not None)
+                else "connectingRoad"
             )
             if target is None:
                 yield connection_road_missing.finding(f"{at} has no {attr}", **where)

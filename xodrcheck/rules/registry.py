@@ -6,13 +6,20 @@ Two kinds of rule share one registry:
 * *check rules* are functions of a :class:`~xodrcheck.rules.context.Context` yielding findings.
 
 Each rule's docstring carries a passing and a failing example; ``xodrcheck rules`` prints them.
+
+A rule names the checker rules of the standard (ASAM OpenDRIVE 1.9.0 Annex F, :mod:`xodrcheck.standard`) it
+enforces by their UIDs. A UID applies to a file only from the standard version in the UID on: a finding tagged with a
+UID that does not apply to the file is dropped, and a rule none of whose UIDs applies is not run, unless the rule is
+marked ``every_version`` (the project's own rule, which the annex later wrote down: it keeps checking older files,
+without claiming the UID there).
 """
 
 from __future__ import annotations
 
 import inspect
-from collections.abc import Callable, Iterable
-from dataclasses import dataclass
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass, field
+from types import MappingProxyType
 
 from xodrcheck.findings import Category, Finding, Severity
 
@@ -27,22 +34,41 @@ class Rule:
     severity: Severity
     doc: str
     check: CheckFn | None = None
+    #: Annex F UIDs this rule enforces (in full unless listed in ``partial``).
+    uids: tuple[str, ...] = ()
+    #: UIDs enforced only in part: UID -> what is not checked, in words.
+    partial: Mapping[str, str] = field(default_factory=lambda: MappingProxyType({}))
+    #: Run on files older than the rule's UIDs too (without claiming the UIDs there).
+    every_version: bool = False
 
     @property
     def summary(self) -> str:
         return self.doc.strip().splitlines()[0] if self.doc.strip() else self.name
 
-    def finding(self, message: str, *, severity: Severity | None = None, **where) -> Finding:
+    def finding(self, message: str, *, severity: Severity | None = None, uid: str | None = None, **where) -> Finding:
         """A finding of this rule; ``where`` takes the :class:`Finding` location fields (road, lane, section_s, s,
-        x, y, line)."""
+        x, y, line). ``uid`` is the Annex F rule the finding enforces; it defaults to the rule's only UID."""
+        if uid is None and len(self.uids) == 1:
+            uid = self.uids[0]
+        elif uid is not None and uid not in self.uids:
+            raise ValueError(f"rule {self.code} does not declare the UID {uid}")
         return Finding(
             code=self.code,
             name=self.name,
             category=self.category,
             severity=self.severity if severity is None else severity,
             message=message,
+            rule_uid=uid,
             **where,
         )
+
+    def runs_on(self, version: tuple[int, int] | None) -> bool:
+        """Whether the rule applies to a file of this OpenDRIVE version (see the module's version rule)."""
+        if self.every_version or not self.uids:
+            return True
+        from xodrcheck.standard import applies
+
+        return any(applies(uid, version) for uid in self.uids)
 
 
 RULES: dict[str, Rule] = {}
@@ -59,15 +85,68 @@ def _register(rule: Rule) -> Rule:
     return rule
 
 
-def declare(code: str, name: str, category: Category, severity: Severity, doc: str) -> Rule:
+def declare(
+    code: str,
+    name: str,
+    category: Category,
+    severity: Severity,
+    doc: str,
+    *,
+    uids: Iterable[str] = (),
+    partial: Mapping[str, str] | None = None,
+    every_version: bool = False,
+) -> Rule:
     """Register a reader rule (emitted while reading) and return it."""
-    return _register(Rule(code, name, category, severity, inspect.cleandoc(doc)))
+    return _register(
+        Rule(
+            code,
+            name,
+            category,
+            severity,
+            inspect.cleandoc(doc),
+            None,
+            _uids(uids, partial),
+            MappingProxyType(dict(partial or {})),
+            every_version,
+        )
+    )
 
 
-def rule(code: str, name: str, category: Category, severity: Severity) -> Callable[[CheckFn], Rule]:
-    """Decorator registering a check function as a rule; its docstring is the rule's documentation."""
+def rule(
+    code: str,
+    name: str,
+    category: Category,
+    severity: Severity,
+    *,
+    uids: Iterable[str] = (),
+    partial: Mapping[str, str] | None = None,
+    every_version: bool = False,
+) -> Callable[[CheckFn], Rule]:
+    """Decorator registering a check function as a rule; its docstring is the rule's documentation.
+
+    ``uids`` are the Annex F rules it enforces; ``partial`` maps those it enforces only in part to what it leaves out
+    (they are enforced UIDs too); ``every_version`` keeps it running on files older than its UIDs.
+    """
 
     def wrap(fn: CheckFn) -> Rule:
-        return _register(Rule(code, name, category, severity, inspect.cleandoc(fn.__doc__ or ""), fn))
+        return _register(
+            Rule(
+                code,
+                name,
+                category,
+                severity,
+                inspect.cleandoc(fn.__doc__ or ""),
+                fn,
+                _uids(uids, partial),
+                MappingProxyType(dict(partial or {})),
+                every_version,
+            )
+        )
 
     return wrap
+
+
+def _uids(uids: Iterable[str], partial: Mapping[str, str] | None) -> tuple[str, ...]:
+    out = list(dict.fromkeys(uids))
+    out.extend(uid for uid in (partial or {}) if uid not in out)
+    return tuple(out)

@@ -25,7 +25,7 @@ def test_json_list(capsys):
     assert main(["rules", "--format", "json"]) == 0
     items = json.loads(capsys.readouterr().out)
     assert {i["code"] for i in items} == set(load_rules())
-    assert all(set(i) == {"code", "name", "category", "severity", "summary"} for i in items)
+    assert all(set(i) == {"code", "name", "category", "severity", "summary", "uids"} for i in items)
 
 
 @pytest.mark.parametrize("which", ["R010", "r010", "road-link-target-missing"])

@@ -1,0 +1,85 @@
+"""Which rules of the standard xodrcheck enforces, computed from the rule registry.
+
+A UID is *enforced* when a registered rule declares it in full, *partial* when rules declare it only in part (each
+says what it leaves out), and *not enforced* otherwise; :data:`NOT_ENFORCED` gives the reason for each of those
+(a UID there that a rule enforces is a contradiction the tests catch).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+from xodrcheck.findings import Severity
+from xodrcheck.rules.registry import Rule
+from xodrcheck.standard import annex_rules
+
+#: Why a rule of the standard is not enforced, by UID.
+NOT_ENFORCED: dict[str, str] = {}
+
+#: Findings take the severity the standard's wording gives (shall -> error, should -> warning, may -> info), except
+#: for these UIDs: UID -> (severity, why).
+SEVERITY_DEVIATIONS: dict[str, tuple[Severity, str]] = {}
+
+
+def expected_severity(uid: str) -> Severity:
+    """The severity of a finding that enforces ``uid``."""
+    if uid in SEVERITY_DEVIATIONS:
+        return SEVERITY_DEVIATIONS[uid][0]
+    return annex_rules()[uid].severity
+
+
+ENFORCED, PARTIAL, MISSING = "enforced", "partial", "not enforced"
+
+
+@dataclass(frozen=True, slots=True)
+class UidStatus:
+    uid: str
+    section: str
+    level: str
+    status: str
+    #: Codes of the rules that enforce the UID (in full or in part).
+    codes: tuple[str, ...]
+    #: What is not checked (partial) or why nothing is (not enforced); empty when enforced in full.
+    note: str
+
+    def as_dict(self) -> dict:
+        return {
+            "uid": self.uid,
+            "section": self.section,
+            "level": self.level,
+            "status": self.status,
+            "codes": list(self.codes),
+            "note": self.note,
+        }
+
+
+def statuses(rules: Mapping[str, Rule]) -> list[UidStatus]:
+    """The status of every Annex F rule, in the annex's order."""
+    full: dict[str, list[str]] = {}
+    part: dict[str, list[tuple[str, str]]] = {}
+    for rule in rules.values():
+        for uid in rule.uids:
+            if uid in rule.partial:
+                part.setdefault(uid, []).append((rule.code, rule.partial[uid]))
+            else:
+                full.setdefault(uid, []).append(rule.code)
+    out = []
+    for uid, annex in annex_rules().items():
+        codes = tuple(sorted({*full.get(uid, ()), *(code for code, _ in part.get(uid, ()))}))
+        if uid in full:
+            status, note = ENFORCED, ""
+        elif uid in part:
+            status, note = PARTIAL, "; ".join(f"{code}: {why}" for code, why in part[uid])
+        else:
+            status, note = MISSING, NOT_ENFORCED.get(uid, "not implemented yet")
+        out.append(UidStatus(uid, annex.section, annex.level, status, codes, note))
+    return out
+
+
+def summary_line(table: list[UidStatus]) -> str:
+    counts = {s: sum(1 for row in table if row.status == s) for s in (ENFORCED, PARTIAL, MISSING)}
+    return (
+        f"{len(table)} checker rules of ASAM OpenDRIVE 1.9.0 (Annex F): {counts[ENFORCED]} enforced in full, "
+        f"{counts[PARTIAL]} in part, {counts[MISSING]} not enforced"
+    )
