@@ -27,6 +27,11 @@ class Category(enum.Enum):
     CURVATURE = "curvature"
     JUNCTION = "junction"
     OVERLAP = "overlap"
+    HEADER = "header"
+    OBJECT = "object"
+    SIGNAL = "signal"
+    RAILROAD = "railroad"
+    SURFACE = "surface"
 
     def __str__(self) -> str:
         return self.value

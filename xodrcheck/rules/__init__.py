@@ -19,6 +19,11 @@ prefix    category    codes
 ``J``     junction    ``J0xx`` junction topology (:mod:`.junction`); ``J1xx`` junction geometry
                       (:mod:`.junction_geometry`)
 ``O``     overlap     ``O0xx`` (:mod:`.overlap`)
+``H``     header      ``H0xx`` header, default regulations, whole-file recommendations
+``B``     object      ``B0xx`` road objects (outlines, skeletons, markings, borders, repeats, bridges, tunnels)
+``T``     signal      ``T0xx`` signals, signal references, boards, controllers
+``W``     railroad    ``W0xx`` railroads (tracks, switches, stations)
+``U``     surface     ``U0xx`` road surfaces (CRG, cross-section surfaces)
 ========  ==========  =========================================================================================
 """
 
