@@ -43,10 +43,3 @@ def line_of(path: Path, text: str, occurrence: int = 1) -> int:
     hits = [i for i, line in enumerate(path.read_text(encoding="utf-8").splitlines(), start=1) if text in line]
     assert len(hits) >= occurrence, f"{text!r} occurs {len(hits)} times in {path}"
     return hits[occurrence - 1]
-
-
-def assert_passes(rule_name: str) -> None:
-    files = passing(rule_name)
-    assert files, f"no pass fixture for {rule_name}"
-    for path in files:
-        assert findings(path, rule_name) == [], path.name

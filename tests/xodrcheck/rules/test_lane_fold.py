@@ -1,12 +1,8 @@
 """Rule lane-fold: a 3.5 m lane inside a 2 m radius folds over itself; inside a 20 m radius it does not."""
 
-from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture, line_of
+from tests.xodrcheck.rules.helpers import findings, fixture, line_of
 
 RULE = "lane-fold"
-
-
-def test_pass_fixtures_give_no_finding():
-    assert_passes(RULE)
 
 
 def test_lane_wider_than_the_radius_folds():

@@ -2,13 +2,9 @@
 
 import math
 
-from tests.xodrcheck.rules.helpers import assert_passes, findings, fixture, line_of
+from tests.xodrcheck.rules.helpers import findings, fixture, line_of
 
 RULE = "road-overlap"
-
-
-def test_pass_fixtures_give_no_finding():
-    assert_passes(RULE)
 
 
 def test_bridge_six_metres_above_is_no_overlap():
