@@ -54,6 +54,28 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="NAME=VALUE",
         help="override a tolerance, e.g. --tolerance position=0.01 (repeatable; `xodrcheck rules` lists the rules)",
     )
+    parser.add_argument(
+        "-j",
+        "--jobs",
+        type=_jobs,
+        metavar="N",
+        help="check N files at a time in worker processes (default: all cores); the report is the same as with -j 1",
+    )
+    parser.add_argument(
+        "--scheduler",
+        metavar="ADDRESS",
+        help="check the files on a Dask cluster (e.g. tcp://host:8786; needs the dask extra and the paths on its workers)",
+    )
+
+
+def _jobs(text: str) -> int:
+    try:
+        value = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"not a whole number: {text!r}") from None
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be at least 1, got {text!r}")
+    return value
 
 
 def _tolerance_overrides(items: list[str]) -> dict[str, str]:
@@ -81,7 +103,8 @@ def _expand(files: list[str]) -> list[str]:
 
 
 def run(args: argparse.Namespace) -> int:
-    from xodrcheck.check import Selection, check
+    from xodrcheck.batch import BatchError, check_files
+    from xodrcheck.check import Selection
 
     try:
         config = load_config(overrides=_tolerance_overrides(args.tolerance))
@@ -107,14 +130,18 @@ def run(args: argparse.Namespace) -> int:
     except ReadError as exc:
         error(f"cannot read {exc}")
         return 2
-    for name in files:
-        try:
-            reports.append(check(name, config))
-        except ReadError as exc:
-            error(f"cannot read {name}: {exc}")
-            unreadable = True
-        except Exception as exc:
-            error(f"internal error on {name}: {type(exc).__name__}: {exc}")
+    try:
+        outcomes = check_files(
+            files, config, jobs=args.jobs, scheduler=args.scheduler, progress=len(files) > 1 and sys.stderr.isatty()
+        )
+    except BatchError as exc:
+        error(f"check: {exc}")
+        return 2
+    for outcome in outcomes:  # in the order given, however the files were checked
+        if outcome.report is not None:
+            reports.append(outcome.report)
+        else:
+            error(outcome.error or f"cannot check {outcome.path}")
             unreadable = True
     try:
         with output(args.output) as stream:
