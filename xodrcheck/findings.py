@@ -41,10 +41,10 @@ class Category(enum.Enum):
 class Finding:
     """One problem found in a file.
 
-    ``code`` is stable (e.g. ``X101``); ``name`` is its kebab-case name. ``road``/``lane``/``s``/``x``/``y`` say where
-    on the map, ``line`` where in the file; each is ``None`` where it does not apply. ``lane`` is the lane id; with
-    ``section_s`` it completes the :class:`~xodrcheck.model.LaneKey`. ``rule_uid`` names the rule of the standard's
-    Annex F that the finding enforces, where there is one.
+    ``code`` is stable (e.g. ``X101``); ``name`` is its kebab-case name. ``road``/``lane``/``s``/``x``/``y``/``z`` say
+    where on the map, ``line`` where in the file; each is ``None`` where it does not apply. ``lane`` is the lane id;
+    with ``section_s`` it completes the :class:`~xodrcheck.model.LaneKey`. ``rule_uid`` names the rule of the
+    standard's Annex F that the finding enforces, where there is one.
     """
 
     code: str
@@ -62,6 +62,7 @@ class Finding:
     #: The ASAM OpenDRIVE Annex F rule this finding enforces (e.g.
     #: ``asam.net:xodr:1.7.0:road.lane.link.zero_width_at_start``); ``None`` for the project's own rules.
     rule_uid: str | None = None
+    z: float | None = None
 
     def to_dict(self) -> dict:
         d = asdict(self)

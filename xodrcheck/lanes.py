@@ -22,6 +22,12 @@ Conventions and decisions (ASAM OpenDRIVE 1.8 section numbers)
   the x/y plane (8.3) and the t-axis is rotated about it by superelevation only. (The two oracle readers disagree here:
   esmini, judging from its positions, turns the lateral axis by heading, pitch and roll, which adds an along-road
   shift of about ``t sin(phi) sin(pitch)``; CARLA's lane points carry heading and pitch but no roll.)
+* Lane height (11.7.3, ``<height inner outer>``) raises a lane's inner and outer border "along the h-coordinate",
+  normal to the (superelevated) road surface: by ``h cos(phi)`` in z and ``-h sin(phi)`` across the road in plan view
+  (straight up for a level lane or a road without superelevation). A record holds from its ``sOffset`` until the next
+  one (no interpolation along ``s``; 0 before the first), and the lane's centre is raised by the mean of ``inner`` and
+  ``outer``. The border lines shared by neighbouring lanes (:meth:`RoadGeometry.border_curves`) are the road surface
+  without lane height; :meth:`RoadGeometry.lane_points` with ``raised=True`` gives a lane's own raised lines.
 * ``z`` is the elevation profile (10.5) plus the superelevation height above. The header ``<offset>`` is not applied:
   it maps the file's local coordinates to world coordinates for georeferencing (8.5) and every lane position here is
   in the file's own inertial frame, as the geometry is written.
@@ -48,7 +54,7 @@ from xodrcheck.geometry import profile
 from xodrcheck.geometry.jet import Jet
 from xodrcheck.geometry.planview import ReferenceLine
 from xodrcheck.geometry.pose import Pose, as_array
-from xodrcheck.model import Document, Lane, Road, document_cache
+from xodrcheck.model import Cubic, Document, Lane, Road, document_cache
 from xodrcheck.sampling import sample_section
 
 _WHERE = ("centre", "inner", "outer")
@@ -84,7 +90,7 @@ class _Evaluation:
     of the superelevation's cosine and sine, ``None`` on a road without superelevation (no roll anywhere). The
     reference pose is evaluated on first use (lateral ``t`` alone does not need it)."""
 
-    __slots__ = ("_heading", "_pose", "_reference", "_s", "borders", "cos", "elevation", "sin")
+    __slots__ = ("_heading", "_pose", "_reference", "borders", "cos", "elevation", "s", "sin")
 
     def __init__(
         self,
@@ -96,7 +102,7 @@ class _Evaluation:
         elevation: np.ndarray,
     ):
         self._reference = reference
-        self._s = s
+        self.s = s
         self.borders = borders
         self.cos = cos
         self.sin = sin
@@ -107,7 +113,7 @@ class _Evaluation:
     @property
     def pose(self) -> Pose:
         if self._pose is None:
-            self._pose = self._reference.evaluate(self._s)
+            self._pose = self._reference.evaluate(self.s)
         return self._pose
 
     def heading(self) -> tuple[np.ndarray, np.ndarray]:
@@ -132,6 +138,7 @@ class RoadGeometry:
         self._roll = profile.Piecewise(road.superelevation)
         self._evaluations: dict[tuple[int, bytes], _Evaluation] = {}
         self._batches: dict[int, profile.Batch] = {}
+        self._heights: dict[tuple[int, int], tuple[Lane, profile.Piecewise, profile.Piecewise] | None] = {}
 
     # ---------------------------------------------------------------------------------------------------------------
     # Road level
@@ -251,15 +258,73 @@ class RoadGeometry:
             inner = lane.id
         return jets[inner].v.copy(), jets[lane_id].v.copy()
 
+    def _height_laws(
+        self, section_index: int, lane_id: int
+    ) -> tuple[Lane, profile.Piecewise, profile.Piecewise] | None:
+        """The lane and its compiled inner and outer height profiles (``None`` for a lane without ``<height>``): each
+        record is a constant, so the one profile evaluation serves (records relative to the lanes' section start)."""
+        key = (section_index, lane_id)
+        if key not in self._heights:
+            found = None
+            for side in self.side_lanes(section_index):
+                lane = next((lane for lane in side.lanes if lane.id == lane_id), None)
+                if lane is not None and lane.heights:
+                    inner = tuple(Cubic(h.s, h.inner, 0.0, 0.0, 0.0, h.line) for h in lane.heights)
+                    outer = tuple(Cubic(h.s, h.outer, 0.0, 0.0, 0.0, h.line) for h in lane.heights)
+                    found = (lane, profile.Piecewise(inner, side.origin), profile.Piecewise(outer, side.origin))
+                if lane is not None:
+                    break
+            self._heights[key] = found
+        return self._heights[key]
+
+    def has_height(self, section_index: int, lane_id: int) -> bool:
+        """Whether the lane has ``<height>`` records (its own lines differ from the shared border lines)."""
+        return self._height_laws(section_index, lane_id) is not None
+
+    def lane_height(self, section_index: int, lane_id: int, s) -> tuple[np.ndarray, np.ndarray]:
+        """Lane height (11.7.3) of a lane's inner and outer border at ``s``: 0 without ``<height>`` records."""
+        s = as_array(s)
+        laws = self._height_laws(section_index, lane_id)
+        if laws is None:
+            return np.zeros_like(s), np.zeros_like(s)
+        return laws[1].jet(s)[0], laws[2].jet(s)[0]
+
     # ---------------------------------------------------------------------------------------------------------------
     # Points
     # ---------------------------------------------------------------------------------------------------------------
-    def lane_points(self, section_index: int, lane_id: int, s, where: str = "centre") -> LanePoints:
-        """Points of a lane's centre, inner or outer border at ``s`` (lane 0: its line, whatever ``where``)."""
+    def lane_points(
+        self, section_index: int, lane_id: int, s, where: str = "centre", raised: bool = False
+    ) -> LanePoints:
+        """Points of a lane's centre, inner or outer border at ``s`` (lane 0: its line, whatever ``where``); with
+        ``raised``, lifted by the lane's height along the h-axis (see the module docstring)."""
         if where not in _WHERE:
             raise ValueError(f"where must be one of {_WHERE}, got {where!r}")
         evaluation = self._evaluate(section_index, as_array(s))
-        return self._place(evaluation, *self._projected(section_index, evaluation, lane_id, where))
+        lateral, height = self._projected(section_index, evaluation, lane_id, where)
+        if raised:
+            lateral, height = self._raised(section_index, evaluation, lane_id, where, lateral, height)
+        return self._place(evaluation, lateral, height)
+
+    def _raised(
+        self,
+        section_index: int,
+        evaluation: _Evaluation,
+        lane_id: int,
+        where: str,
+        lateral: Jet,
+        height: np.ndarray | float,
+    ) -> tuple[Jet, np.ndarray | float]:
+        """A lane line lifted by the lane's height along the h-axis: normal to the lane's surface, which is rolled by
+        the superelevation unless the lane is level."""
+        laws = self._height_laws(section_index, lane_id) if lane_id != 0 else None
+        if laws is None:
+            return lateral, height
+        lane, inner_law, outer_law = laws
+        inner, outer = Jet(*inner_law.jet(evaluation.s)), Jet(*outer_law.jet(evaluation.s))
+        lift = inner if where == "inner" else outer if where == "outer" else (inner + outer).scale(0.5)
+        if lane.level or evaluation.cos is None:
+            return lateral, height + lift.v
+        return lateral - lift * evaluation.sin, height + lift.v * evaluation.cos.v
 
     def border_curves(self, section_index: int, s) -> dict[int, LanePoints]:
         """Every lane's outer border (and lane 0's line) at ``s``: all the border polylines of the section."""

@@ -268,6 +268,17 @@ class Speed:
 
 
 @dataclass(frozen=True, slots=True)
+class LaneHeight:
+    """A lane's ``<height>`` (11.7.3): from ``s`` (``sOffset``) on, the lane's inner and outer border are raised by
+    ``inner`` and ``outer`` metres along the road's h-axis (normal to the superelevated surface)."""
+
+    s: float  # sOffset
+    inner: float
+    outer: float
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
 class Lane:
     id: int
     type: LaneType
@@ -280,6 +291,7 @@ class Lane:
     speeds: tuple[Speed, ...] = ()
     type_name: str = ""  # the type as spelled in the file (meaningful when ``type`` is UNKNOWN)
     line: int = 0
+    heights: tuple[LaneHeight, ...] = ()
 
     @property
     def side(self) -> Side:

@@ -4,6 +4,7 @@ the geometric promises measured through xodrcheck's own geometry."""
 from __future__ import annotations
 
 import math
+import re
 
 import pytest
 
@@ -124,3 +125,24 @@ def test_short_tapers_and_big_turn_radius_keep_every_lane_centre_above_the_bound
     m = measure(path)
     assert m.min_lane_radius >= 12.0
     assert m.min_radius >= 12.0
+
+
+def test_a_step_in_height_at_a_link_fails_the_check(tmp_path):
+    """A generated map with road 1 raised by 5 m (its ``<elevation a="5.0">``) fails: every road touching road 1 meets
+    it 5 m lower (issue 18: `check` used to say 0 errors)."""
+    from lxml import etree
+
+    import xodrcheck
+
+    path = ja.write(ja.generate(Params(), 0), tmp_path / "m.xodr")
+    assert xodrcheck.check(path).ok
+    tree = etree.parse(str(path))
+    (elevation,) = tree.getroot().findall("road[@id='1']/elevationProfile/elevation")
+    elevation.set("a", "5.0")
+    tree.write(str(path))
+    report = xodrcheck.check(path)
+    steps = [f for f in report.findings if f.code == "K104"]
+    assert not report.ok
+    assert steps and all(f.severity.name == "ERROR" for f in steps)
+    assert all("steps by 5 m" in f.message for f in steps), [f.message for f in steps]
+    assert all(re.search(r"\broad 1\b", f.message) for f in steps)  # every step is at one of road 1's ends

@@ -1,4 +1,5 @@
 import math
+from dataclasses import replace
 
 import numpy as np
 import pytest
@@ -6,7 +7,7 @@ import pytest
 from tests.xodrcheck.roadbuild import lane, section, straight, width
 from xodrcheck.geometry import spiral
 from xodrcheck.lanes import RoadGeometry, geometry_of
-from xodrcheck.model import Arc, Cubic, Document, Line, Road, Spiral
+from xodrcheck.model import Arc, Cubic, Document, Lane, LaneHeight, LaneType, Line, Road, Spiral
 
 S = np.array([0.0, 10.0, 37.5, 99.0])
 
@@ -184,6 +185,31 @@ def test_level_lane_stays_horizontal_from_its_inner_border():
     assert three.y[0] == pytest.approx(two.y[0] + math.cos(phi)) and three.z[0] == pytest.approx(
         two.z[0] + math.sin(phi)
     )
+
+
+def test_lane_height_lifts_a_lane_normal_to_the_rolled_surface():
+    """``<height>`` raises a lane's edges along the h-axis, normal to the superelevated surface (11.7.3); records hold
+    from their sOffset (relative to the section) on, the centre takes the mean; the shared border lines stay."""
+    phi, s = 0.1, np.array([5.0, 30.0])
+    raised = Lane(id=-2, type=LaneType.SIDEWALK, widths=width(2.0), heights=(LaneHeight(20.0, 0.1, 0.2),))
+    g = straight(
+        [section(0.0, right=[lane(-1, width(3.0))]), section(10.0, right=[lane(-1, width(3.0)), raised])],
+        superelevation=width(phi),
+    )
+    inner, outer = g.lane_height(1, -2, s)
+    assert list(inner) == [0.0, 0.1] and list(outer) == [0.0, 0.2]  # 0 before the first record (s < 10 + 20)
+    for where, t, h in (("inner", -3.0, 0.1), ("outer", -5.0, 0.2), ("centre", -4.0, 0.15)):
+        p = g.lane_points(1, -2, [30.0], where=where, raised=True)
+        assert p.y[0] == pytest.approx(t * math.cos(phi) - h * math.sin(phi))
+        assert p.z[0] == pytest.approx(t * math.sin(phi) + h * math.cos(phi))
+    plain = g.lane_points(1, -2, [30.0], where="outer")
+    assert plain.z[0] == pytest.approx(-5.0 * math.sin(phi))  # without raised: the road surface
+    level = straight(
+        [section(0.0, right=[lane(-1, width(3.0)), replace(raised, level=True)])], superelevation=width(phi)
+    )
+    p = level.lane_points(0, -2, [30.0], where="outer", raised=True)
+    assert p.y[0] == pytest.approx(-3.0 * math.cos(phi) - 2.0) and p.z[0] == pytest.approx(-3.0 * math.sin(phi) + 0.2)
+    assert not g.has_height(1, -1) and g.lane_height(1, -1, s)[1].tolist() == [0.0, 0.0]
 
 
 def test_changing_superelevation_enters_heading_and_curvature():

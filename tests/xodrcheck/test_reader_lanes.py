@@ -181,6 +181,21 @@ def test_lane_records_out_of_order():
     assert "<width>" in finding.message and finding.lane == -1
 
 
+def test_lane_heights():
+    """``<height sOffset inner outer>`` (11.7.3) is read in file order; a record missing a value is skipped with a
+    finding, and descending ``sOffset`` values are reported."""
+    lane = (
+        '<lane id="-2" type="sidewalk"><width sOffset="0" a="2" b="0" c="0" d="0"/>'
+        '<height sOffset="4" inner="0.12" outer="0.15"/><height sOffset="0" inner="0" outer="0.02"/>'
+        '<height sOffset="6" inner="0.1"/></lane>'
+    )
+    result = read(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>")))))
+    assert sorted(codes(result)) == ["X205", "X209"]
+    got = result.document.roads[0].lane_sections[0].right[0]
+    assert got.heights == (m.LaneHeight(4.0, 0.12, 0.15, 3), m.LaneHeight(0.0, 0.0, 0.02, 3))
+    assert "<height>" in only(result, "X209").message
+
+
 def test_lane_sections_out_of_order():
     result = read(xodr(road(lanes=lanes_of(section(CENTER, attrs='s="5"'), section(CENTER)))))
     assert "<laneSection>" in only(result, "X209").message

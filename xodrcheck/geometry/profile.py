@@ -19,12 +19,13 @@ Decisions
 
 from __future__ import annotations
 
+import math
 from functools import lru_cache
 
 import numpy as np
 
 from xodrcheck.geometry.pose import as_array
-from xodrcheck.model import Profile
+from xodrcheck.model import Cubic, Profile
 
 
 class Piecewise:
@@ -163,3 +164,23 @@ def second_derivative(profile: Profile, s, origin: float = 0.0) -> np.ndarray:
 def breakpoints(profile: Profile, origin: float = 0.0) -> np.ndarray:
     """Record starts (shifted by ``origin``), sorted."""
     return compiled(profile, origin).starts
+
+
+def jumps(profile: Profile, origin: float = 0.0) -> list[tuple[Cubic, float, float]]:
+    """Where the profile is discontinuous: for every record start after the first, the record in force from there (the
+    last of equal starts, as :meth:`Piecewise.jet` picks it), the value the record in force before reaches there and
+    the value the new one starts with. Pairs whose difference is not finite are left out (a damaged record)."""
+    records = sorted(profile, key=lambda r: r.s) if len(profile) > 1 else profile
+    out = []
+    previous = None
+    for k, record in enumerate(records):
+        if k + 1 < len(records) and records[k + 1].s == record.s:
+            continue  # a later record with the same start holds from there
+        if previous is not None and record.s > previous.s:
+            at = np.array([record.s + origin])
+            reached = float(Piecewise((previous,), origin).jet(at)[0][0])
+            starts = float(Piecewise((record,), origin).jet(at)[0][0])
+            if math.isfinite(reached - starts):
+                out.append((record, reached, starts))
+        previous = record
+    return out

@@ -55,6 +55,7 @@ make_road_link = constructor(model.RoadLink)
 make_road = constructor(model.Road)
 make_road_mark = constructor(model.RoadMark)
 make_speed = constructor(model.Speed)
+make_lane_height = constructor(model.LaneHeight)
 make_lane = constructor(model.Lane)
 make_lane_section = constructor(model.LaneSection)
 make_lane_link = constructor(model.JunctionLaneLink)
@@ -72,6 +73,7 @@ CONSTRUCTORS = {
     model.Road: make_road,
     model.RoadMark: make_road_mark,
     model.Speed: make_speed,
+    model.LaneHeight: make_lane_height,
     model.Lane: make_lane,
     model.LaneSection: make_lane_section,
     model.JunctionLaneLink: make_lane_link,

@@ -1,6 +1,6 @@
 """``<lanes>`` to the laneOffset profile and :class:`~xodrcheck.model.LaneSection` values.
 
-Records inside a lane (width, border, roadMark, speed) keep ``s`` = their ``sOffset``. A lane without a usable integer
+Records inside a lane (width, border, height, roadMark, speed) keep ``s`` = their ``sOffset``. A lane without a usable integer
 ``id`` is skipped (links name lanes by id); a lane whose type is unknown is kept as ``LaneType.UNKNOWN``.
 """
 
@@ -8,9 +8,10 @@ from __future__ import annotations
 
 from lxml import etree
 
-from xodrcheck.model import Cubic, Lane, LaneSection, LaneType, Profile, RoadMark, Speed
+from xodrcheck.model import Cubic, Lane, LaneHeight, LaneSection, LaneType, Profile, RoadMark, Speed
 from xodrcheck.reader.construct import (
     make_lane,
+    make_lane_height,
     make_lane_section,
     make_road_mark,
     make_speed,
@@ -70,6 +71,11 @@ def _speed(ctx: Context, el: etree._Element) -> Speed | None:
     return None if v is None else make_speed(v[0], v[1], el.get("unit"), el.sourceline)
 
 
+def _height(ctx: Context, el: etree._Element) -> LaneHeight | None:
+    v = ctx.floats(el, ("sOffset", "inner", "outer"), (0,), SKIP_RECORD)
+    return None if v is None else make_lane_height(v[0], v[1], v[2], el.sourceline)
+
+
 def _lane_type(ctx: Context, el: etree._Element, name: str | None) -> LaneType:
     if name is None:
         ctx.missing(el, "type", "the lane type is read as unknown")
@@ -114,6 +120,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
     borders: list[Cubic] = []
     marks: list[RoadMark] = []
     speeds: list[Speed] = []
+    heights: list[LaneHeight] = []
     for child in el:
         tag = child.tag
         if tag == "roadMark":
@@ -134,6 +141,10 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
             speed = _speed(ctx, child)
             if speed is not None:
                 speeds.append(speed)
+        elif tag == "height":
+            height = _height(ctx, child)
+            if height is not None:
+                heights.append(height)
     if len(widths) > 1:
         ctx.check_order(widths, "<width>", el)
     if len(borders) > 1:
@@ -142,6 +153,8 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         ctx.check_order(marks, "<roadMark>", el)
     if len(speeds) > 1:
         ctx.check_order(speeds, "<speed>", el)
+    if len(heights) > 1:
+        ctx.check_order(heights, "<height>", el)
     return make_lane(
         lane_id,
         lane_type,
@@ -154,6 +167,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         tuple(speeds),
         "" if type_name is None else type_name,
         el.sourceline,
+        tuple(heights),
     )
 
 

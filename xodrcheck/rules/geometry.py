@@ -5,7 +5,8 @@ Plan view: consecutive elements must join in position (``G001``) and heading (``
 without jumps (``G003``) up to the road's length (``G004``); a paramPoly3's declared length must be the curve's length
 over its parameter range (``G005``); elements must not be degenerate (``G006``, ``G007``). Lane sections must have a
 length (``G012``). A section so long that the geometric rules' samples would exceed ``max_samples_per_section`` is
-sampled more coarsely, and says so (``G013``).
+sampled more coarsely, and says so (``G013``). The elevation, superelevation and laneOffset profiles must not jump
+where a record starts (``G014``).
 """
 
 from __future__ import annotations
@@ -16,9 +17,10 @@ import math
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.geometry import profile
 from xodrcheck.geometry.parampoly3 import curve_of
 from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
-from xodrcheck.model import Geometry, ParamPoly3, PRange, Road, Spiral
+from xodrcheck.model import Cubic, Geometry, ParamPoly3, PRange, Road, Spiral
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import angle_between, grid_step, usable
@@ -350,4 +352,60 @@ def sampling_capped(ctx: Context):
                 section_s=section.s,
                 s=section.s,
                 line=section.line or road.line or None,
+            )
+
+
+#: The road-level profiles G014 checks: attribute of :class:`Road`, element name, unit and tolerance name.
+_PROFILES = (
+    ("elevation", "elevation", "m", "position"),
+    ("superelevation", "superelevation", "rad", "heading"),
+    ("lane_offset", "laneOffset", "m", "position"),
+)
+
+
+def profile_steps(road: Road, tolerances) -> list[tuple[str, str, Cubic, float, float]]:
+    """(element name, unit, record, value reached before it, value it starts with) for every jump of a road's
+    elevation, superelevation or laneOffset above its tolerance (``position`` for metres, ``heading`` for radians)."""
+    out = []
+    section_starts = {section.s for section in road.lane_sections}
+    for attribute, element, unit, tolerance in _PROFILES:
+        tol = getattr(tolerances, tolerance)
+        for record, reached, starts in profile.jumps(getattr(road, attribute)):
+            if attribute == "lane_offset" and record.s in section_starts:
+                continue  # lanes change there too: whether their borders continue is lane-border-discontinuous's
+            if abs(starts - reached) > tol:
+                out.append((element, unit, record, reached, starts))
+    return out
+
+
+@rule("G014", "profile-step", Category.GEOMETRY, Severity.ERROR)
+def profile_step(ctx: Context):
+    """The elevation, superelevation or laneOffset of a road jumps where a record starts: the surface steps.
+
+    Each ``<elevation>``, ``<superelevation>`` and ``<laneOffset>`` record holds until the next one starts; the next
+    one must start with the value the previous one reaches there (ASAM OpenDRIVE Annex D.1.4.1: "no vertical gaps in
+    the elevation definition and lateral profile definition of the road"; a laneOffset jump moves every lane sideways).
+    Heights and offsets use the ``position`` tolerance, superelevation (an angle) the ``heading`` tolerance. Where a
+    lane section starts, the laneOffset may jump with the lanes (their borders are checked by
+    ``lane-border-discontinuous``).
+
+    Passes (the second record starts at 0 + 0.02 * 50 = 1 m)::
+
+        <elevation s="0" a="0" b="0.02" c="0" d="0"/><elevation s="50" a="1.0" b="0.02" c="0" d="0"/>
+
+    Fails (it starts at 1.05 m: a 5 cm step)::
+
+        <elevation s="0" a="0" b="0.02" c="0" d="0"/><elevation s="50" a="1.05" b="0.02" c="0" d="0"/>
+    """
+    for road in ctx.document.roads:
+        for element, unit, record, reached, starts in profile_steps(road, ctx.tolerances):
+            size = abs(starts - reached)
+            shown = f"{math.degrees(size):.3g} deg ({size:.4g} rad)" if unit == "rad" else f"{size:.4g} m"
+            yield profile_step.finding(
+                f"road {road.id}: the {element} jumps by {shown} at s={record.s:g}: the record before reaches "
+                f"{reached:.6g} {unit} there, the <{element}> at s={record.s:g} starts at {starts:.6g} {unit}; make it "
+                f"start where the previous one ends",
+                road=road.id,
+                s=record.s,
+                line=record.line or road.line or None,
             )

@@ -13,7 +13,9 @@ joint is checked once.
 * Every pair of lanes linked across the joint (lane ``<link>`` records at a road link, ``<laneLink>`` records of a
   junction connection) must have coinciding borders: the two border points of one lane equal those of the other, in
   either order (``K103``).
-* Inside a road, lanes linked across a lane-section boundary keep their borders (``L101``).
+* The surfaces meet in height too (``K104``): the lane-0 lines (outside junctions) and the touching points of every
+  pair of linked lanes have the same z (elevation, superelevation, lane height; ASAM OpenDRIVE Annex D.1.4).
+* Inside a road, lanes linked across a lane-section boundary keep their borders, in plan view and in height (``L101``).
 
 Distances use the ``position`` tolerance, angles the ``heading`` tolerance. ASAM's
 ``lane.smoothness.contact_point_no_horizontal_gaps`` uses a fixed 1 cm and compares positions only.
@@ -23,14 +25,18 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from dataclasses import dataclass, field
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.lanes import RoadGeometry
 from xodrcheck.model import ContactPoint, ElementType, Road
 from xodrcheck.rules.context import Context, Neighbour, link_at
+from xodrcheck.rules.geometry import profile_steps
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import (
     EndPoint,
     RoadEnd,
+    SectionLines,
     angle_between,
     end_s,
     road_end,
@@ -67,6 +73,7 @@ def _where(road: Road, end: ContactPoint, point: EndPoint, line: int, lane: int 
         "s": end_s(road, end),
         "x": point.x,
         "y": point.y,
+        "z": point.z if math.isfinite(point.z) else None,
         "line": line or road.line or None,
     }
 
@@ -176,17 +183,28 @@ def _lane_pairs(road: Road, end: ContactPoint, neighbour: Neighbour) -> list[tup
     return [(a, b, line) for (a, b), line in pairs.items() if a != 0 and b != 0]
 
 
-def _border_gap(mine: RoadEnd, lane: int, theirs: RoadEnd, other: int) -> tuple[float, EndPoint] | None:
-    points = [e.border(lane_id, w) for e, lane_id in ((mine, lane), (theirs, other)) for w in ("inner", "outer")]
+def _plan_distance(p: EndPoint, q: EndPoint) -> float:
+    return math.hypot(p.x - q.x, p.y - q.y)
+
+
+def _touching(mine: RoadEnd, lane: int, theirs: RoadEnd, other: int) -> tuple[tuple[EndPoint, EndPoint], ...] | None:
+    """The touching points of two linked lanes (ASAM OpenDRIVE Annex D.1.1) as two pairs: each edge of ``lane`` (inner,
+    outer; raised by lane height) with the edge of ``other`` it meets, in the order that fits best in plan view (a
+    start-to-start link meets inner with outer). ``None`` when a lane is not there."""
+    points = [e.edge(lane_id, w) for e, lane_id in ((mine, lane), (theirs, other)) for w in ("inner", "outer")]
     if any(p is None for p in points):
         return None
-    inner_a, outer_a, inner_b, outer_b = points
+    inner_a, outer_a, inner_b, outer_b = points  # type: ignore[misc]
+    straight = ((inner_a, inner_b), (outer_a, outer_b))
+    crossed = ((inner_a, outer_b), (outer_a, inner_b))
+    return min(straight, crossed, key=lambda pairs: max(_plan_distance(p, q) for p, q in pairs))
 
-    def d(p: EndPoint, q: EndPoint) -> float:
-        return math.hypot(p.x - q.x, p.y - q.y)
 
-    gap = min(max(d(inner_a, inner_b), d(outer_a, outer_b)), max(d(inner_a, outer_b), d(outer_a, inner_b)))
-    return gap, outer_a
+def _border_gap(mine: RoadEnd, lane: int, theirs: RoadEnd, other: int) -> tuple[float, EndPoint] | None:
+    pairs = _touching(mine, lane, theirs, other)
+    if pairs is None:
+        return None
+    return max(_plan_distance(p, q) for p, q in pairs), pairs[1][0]
 
 
 @rule("K103", "lane-border-gap", Category.LINK, Severity.ERROR)
@@ -229,6 +247,94 @@ def lane_border_gap(ctx: Context):
             )
 
 
+@dataclass
+class _Step:
+    """The largest height difference found at one joint, and how many contacts there step."""
+
+    road: Road
+    end: ContactPoint
+    neighbour: Neighbour
+    size: float = 0.0
+    lane: int | None = None
+    other: int | None = None
+    points: tuple[EndPoint, EndPoint] | None = None
+    line: int = 0
+    lanes: set[tuple[int, int]] = field(default_factory=set)
+
+    def add(self, dz: float, pair: tuple[EndPoint, EndPoint], lanes: tuple[int, int] | None, line: int, tol: float):
+        if not dz > tol:  # NaN (a damaged elevation) too
+            return
+        if lanes is not None:
+            self.lanes.add(lanes)
+        if dz > self.size:
+            self.size, self.points, self.line = dz, pair, line
+            self.lane, self.other = lanes if lanes is not None else (None, None)
+
+
+def _steps(ctx: Context, tol: float) -> Iterator[_Step]:
+    """Per joint (pair of touching road ends), the height differences above ``tol`` between the lane-0 lines (road
+    links outside junctions) and between the touching points of every pair of linked lanes."""
+    steps: dict[frozenset, _Step] = {}
+    for road, end, neighbour in _joints(ctx, once=False):
+        key = frozenset({(road.id, end), (neighbour.road.id, neighbour.contact)})
+        step = steps.get(key)
+        if step is None:
+            step = steps[key] = _Step(road, end, neighbour)
+            if neighbour.connection is None and not _in_junction(ctx, road) and not _in_junction(ctx, neighbour.road):
+                centre = road_end(ctx, road, end).border(0, "outer")
+                theirs = road_end(ctx, neighbour.road, neighbour.contact).border(0, "outer")
+                if centre is not None and theirs is not None:
+                    line = _joint_line(road, end, neighbour)
+                    step.add(abs(centre.z - theirs.z), (centre, theirs), None, line, tol)
+        mine, theirs = road_end(ctx, road, end), road_end(ctx, neighbour.road, neighbour.contact)
+        flipped = step.road is not road  # the joint seen from its other road: keep the first road's view
+        for lane, other, line in _lane_pairs(road, end, neighbour):
+            pairs = _touching(mine, lane, theirs, other)
+            if pairs is None:
+                continue
+            for p, q in pairs:
+                pair, lanes = ((q, p), (other, lane)) if flipped else ((p, q), (lane, other))
+                step.add(abs(p.z - q.z), pair, lanes, line or _joint_line(road, end, neighbour), tol)
+    yield from (step for step in steps.values() if step.points is not None)
+
+
+@rule("K104", "link-step", Category.LINK, Severity.ERROR)
+def link_step(ctx: Context):
+    """Two linked roads or lanes do not meet in height: the road surface steps up or down at the contact.
+
+    Where two roads touch (a road link, or an incoming road and a connecting road of a junction connection), their
+    lane-0 lines (road links outside junctions) and every pair of linked lanes must meet in 3D, not only in plan view
+    (ASAM OpenDRIVE Annex D.1.4, "vertical gaps": the z of the touching points must match). ``z`` is evaluated exactly:
+    the elevation profile, the superelevation that tilts the lateral axis (a roll mismatch shows as a step at the lane
+    edges) and each lane's ``<height>``. Compared with the ``position`` tolerance; one finding per contact, at its
+    largest step, counting the lane pairs that step. Horizontal gaps are ``link-gap`` and ``lane-border-gap``.
+
+    Passes (both roads at 0 m where they meet)::
+
+        <road id="1" length="100"> ... <elevation s="0" a="0" b="0" c="0" d="0"/>
+        <road id="2" length="100"> ... <elevation s="0" a="0" b="0" c="0" d="0"/>
+
+    Fails (road 1 lies 5 m higher: a 5 m step where it meets road 2)::
+
+        <road id="1" length="100"> ... <elevation s="0" a="5.0" b="0" c="0" d="0"/>
+    """
+    for step in _steps(ctx, ctx.tolerances.position):
+        mine, theirs = step.points  # type: ignore[misc]
+        what = (
+            "their lane-0 lines"
+            if step.lane is None
+            else f"lane {step.lane} of road {step.road.id} and lane {step.other} of road {step.neighbour.road.id}"
+        )
+        lanes = f"; {len(step.lanes)} linked lane pair(s) step" if step.lanes else ""
+        joint = _describe(step.road, step.end, step.neighbour)
+        yield link_step.finding(
+            f"the road surface steps by {step.size:.4g} m in height between {joint}: {what} meet at "
+            f"({mine.x:.3f}, {mine.y:.3f}) at z={mine.z:.3f} and z={theirs.z:.3f}{lanes}; make the elevation, "
+            f"superelevation and lane heights continue across the contact",
+            **_where(step.road, step.end, mine, step.line, step.lane),
+        )
+
+
 def _inner_pairs(side):
     """(id of the lane whose outer border is the inner border, lane) for the lanes of one side, inner to outer."""
     inner = 0
@@ -246,6 +352,10 @@ def lane_border_discontinuous(ctx: Context):
     has at the end of its section, within the ``position`` tolerance. A lane that appears at full width beside a
     lane it is linked to, or a width record that does not continue the previous section's width, is reported.
 
+    The lanes must also meet in height: the z of each edge (elevation, superelevation unless the lane is ``level``,
+    and the lane's ``<height>``) must not step at the boundary (ASAM OpenDRIVE Annex D.1.4), within the same tolerance.
+    Where the road's own elevation or superelevation steps, ``profile-step`` reports it instead.
+
     Passes (lane -1 keeps 3.5 m across the boundary at s=50)::
 
         <laneSection s="0"> ... <lane id="-1"><link><successor id="-1"/></link><width a="3.5" .../>
@@ -261,6 +371,7 @@ def lane_border_discontinuous(ctx: Context):
         if geometry is None:
             continue
         sections = road.lane_sections
+        surface_steps: set[float] | None = None
         for i in range(1, len(sections)):
             before, after = sections[i - 1], sections[i]
             pairs: dict[tuple[int, int], int] = {}
@@ -272,27 +383,56 @@ def lane_border_discontinuous(ctx: Context):
                     pairs.setdefault((prev, lane.id), lane.line)
             if not pairs:
                 continue
+            if surface_steps is None:  # the road's own elevation or superelevation steps: profile-step says so
+                surface_steps = {
+                    r.s for name, _, r, _, _ in profile_steps(road, ctx.tolerances) if name != "laneOffset"
+                }
             old, new = section_lines(ctx, road, i - 1), section_lines(ctx, road, i)
             inner_of = {lane.id: inner for side in geometry.side_lanes(i - 1) for inner, lane in _inner_pairs(side)}
             inner_new = {lane.id: inner for side in geometry.side_lanes(i) for inner, lane in _inner_pairs(side)}
             for (a, b), line in sorted(pairs.items()):
                 if a == 0 or b == 0 or a not in old.t or b not in new.t:
                     continue  # a missing lane is lane-link-missing-lane's
-                inner_a, inner_b = float(old.t[inner_of[a]][-1]), float(new.t[inner_new[b]][0])
-                outer_a, outer_b = float(old.t[a][-1]), float(new.t[b][0])
-                jump = max(abs(inner_a - inner_b), abs(outer_a - outer_b))
-                if not jump > tol:
+                t_before = (float(old.t[inner_of[a]][-1]), float(old.t[a][-1]))
+                t_after = (float(new.t[inner_new[b]][0]), float(new.t[b][0]))
+                jump = max(abs(p - q) for p, q in zip(t_before, t_after))
+                z_before = _edge_heights(geometry, old, i - 1, a, inner_of[a], -1)
+                z_after = _edge_heights(geometry, new, i, b, inner_new[b], 0)
+                step = max(abs(p - q) for p, q in zip(z_before, z_after)) if after.s not in surface_steps else 0.0
+                if not (jump > tol or step > tol):
                     continue
+                what = []
+                if jump > tol:
+                    what.append(f"its borders jump by {jump:.4g} m ({_change(t_before, t_after)})")
+                if step > tol:
+                    what.append(f"its surface steps by {step:.4g} m in height (z {_change(z_before, z_after)})")
+                fix = ", heights and level flags" if step > tol else ""
                 point = new.borders[b]
                 yield lane_border_discontinuous.finding(
                     f"road {road.id}: lane {a} of the lane section at s={before.s:g} continues as lane {b} at "
-                    f"s={after.s:g}, but its borders jump by {jump:.4g} m (inner {inner_a:.3f} -> {inner_b:.3f}, "
-                    f"outer {outer_a:.3f} -> {outer_b:.3f}); make the widths continue or link the right lanes",
+                    f"s={after.s:g}, but {' and '.join(what)}; make the widths{fix} continue or link the right lanes",
                     road=road.id,
                     lane=b,
                     section_s=after.s,
                     s=after.s,
                     x=float(point.x[0]),
                     y=float(point.y[0]),
+                    z=z_after[1] if math.isfinite(z_after[1]) else None,
                     line=line or after.line or None,
                 )
+
+
+def _change(before: tuple[float, float], after: tuple[float, float]) -> str:
+    return f"inner {before[0]:.3f} -> {after[0]:.3f}, outer {before[1]:.3f} -> {after[1]:.3f}"
+
+
+def _edge_heights(
+    geometry: RoadGeometry, lines: SectionLines, index: int, lane_id: int, inner_id: int, k: int
+) -> tuple[float, float]:
+    """z of a lane's inner and outer edge at sample ``k`` of its section's lines, lane height included."""
+    if geometry.has_height(index, lane_id):
+        s = lines.s[k:][:1]
+        edges = (geometry.lane_points(index, lane_id, s, where, raised=True) for where in ("inner", "outer"))
+        inner, outer = (float(points.z[0]) for points in edges)
+        return inner, outer
+    return float(lines.borders[inner_id].z[k]), float(lines.borders[lane_id].z[k])

@@ -105,26 +105,35 @@ def end_s(road: Road, end: ContactPoint) -> float:
 
 @dataclass(frozen=True, slots=True)
 class EndPoint:
-    """A point of a lane line at a road end, with the heading pointing out of the road there."""
+    """A point of a lane line at a road end (x, y, z), with the heading pointing out of the road there."""
 
     x: float
     y: float
+    z: float
     outward: float
 
 
 @dataclass(frozen=True, slots=True)
 class RoadEnd:
     """Every lane line at one end of a road: ``outer[lane]`` is the lane's outer border (lane 0: the lane-0 line),
-    ``inner[lane]`` the id of the lane whose outer border is its inner border."""
+    ``inner[lane]`` the id of the lane whose outer border is its inner border. ``raised[(lane, where)]`` is the inner
+    or outer edge of a lane with ``<height>`` records, lifted by its height (other lanes' edges are the borders)."""
 
     outer: dict[int, EndPoint]
     inner: dict[int, int]
+    raised: dict[tuple[int, str], EndPoint]
 
     def border(self, lane_id: int, where: str) -> EndPoint | None:
         """A lane's ``"inner"`` or ``"outer"`` border (lane 0: its line); ``None`` when the lane is not there."""
         if lane_id not in self.outer:
             return None
         return self.outer.get(lane_id if where == "outer" or lane_id == 0 else self.inner[lane_id])
+
+    def edge(self, lane_id: int, where: str) -> EndPoint | None:
+        """A lane's own ``"inner"`` or ``"outer"`` edge in 3D: its border raised by the lane's height (ASAM OpenDRIVE
+        Annex D.1.1's touching point); ``None`` when the lane is not there."""
+        found = self.raised.get((lane_id, where))
+        return found if found is not None else self.border(lane_id, where)
 
 
 _ENDS: weakref.WeakKeyDictionary[Context, dict[tuple[str, ContactPoint], RoadEnd]] = weakref.WeakKeyDictionary()
@@ -148,15 +157,27 @@ def road_end(ctx: Context, road: Road, end: ContactPoint) -> RoadEnd:
             for lane in side.lanes:
                 inner[lane.id] = previous
                 previous = lane.id
+        raised = {
+            (lane_id, where): geometry.lane_points(index, lane_id, s, where, raised=True)
+            for lane_id in inner
+            if geometry.has_height(index, lane_id)
+            for where in ("inner", "outer")
+        }
         for k, e in enumerate(ends):
-            outer: dict[int, EndPoint] = {}
-            for lane_id, points in curves.items():
-                x, y, hdg = float(points.x[k]), float(points.y[k]), float(points.hdg[k])
-                if math.isfinite(x) and math.isfinite(y) and math.isfinite(hdg):
-                    outer[lane_id] = EndPoint(x, y, hdg if e is ContactPoint.END else hdg + math.pi)
-            cache[(road.id, e)] = RoadEnd(outer, inner)
+            outer = {lane_id: p for lane_id, points in curves.items() if (p := _end_point(points, k, e)) is not None}
+            lifted = {key: p for key, points in raised.items() if (p := _end_point(points, k, e)) is not None}
+            cache[(road.id, e)] = RoadEnd(outer, inner, lifted)
         found = cache[(road.id, end)]
     return found
+
+
+def _end_point(points: LanePoints, k: int, end: ContactPoint) -> EndPoint | None:
+    """Point ``k`` of a lane line as an :class:`EndPoint` at ``end`` (``None`` unless finite; z may be NaN only
+    where x, y are not)."""
+    x, y, z, hdg = float(points.x[k]), float(points.y[k]), float(points.z[k]), float(points.hdg[k])
+    if not (math.isfinite(x) and math.isfinite(y) and math.isfinite(hdg)):
+        return None
+    return EndPoint(x, y, z, hdg if end is ContactPoint.END else hdg + math.pi)
 
 
 def angle_between(a: float, b: float) -> float:

@@ -275,8 +275,8 @@ OUT_OF_ORDER = declare(
     Severity.ERROR,
     """
     Records that the standard orders by ``s`` come in descending order: geometries, elevation, superelevation,
-    laneOffset and lane-section starts along the road, or width, border, roadMark and speed ``sOffset`` values inside
-    a lane. Readers disagree about which record applies where. The records are kept in file order.
+    laneOffset and lane-section starts along the road, or width, border, height, roadMark and speed ``sOffset`` values
+    inside a lane. Readers disagree about which record applies where. The records are kept in file order.
 
     Passes::
 

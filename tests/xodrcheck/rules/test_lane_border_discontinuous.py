@@ -1,5 +1,7 @@
 """Rule lane-border-discontinuous: the finding each fail fixture gives."""
 
+import math
+
 import pytest
 
 from tests.xodrcheck.rules.helpers import findings, fixture
@@ -20,3 +22,20 @@ def test_full_width_lane_linked_in_place_of_the_continuing_one():
     (f,) = findings(path, RULE)
     assert (f.road, f.lane) == ("1", -2)
     assert "jump by 3.5 m" in f.message
+
+
+def test_lane_height_steps_at_a_section_boundary():
+    """A sidewalk raised 0.15 m in one lane section and not in the next: the borders stay, the surface steps."""
+    path = fixture(RULE, "fail_height.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane, f.s) == ("1", -2, 50.0)
+    assert "steps by 0.15 m in height" in f.message and "jump" not in f.message
+    assert f.z == pytest.approx(0.0)  # the edge after the boundary
+
+
+def test_level_flag_change_on_a_superelevated_road_steps():
+    """Lanes rolled by 0.05 rad up to s=50 and level after: lane -1's outer edge rises by 3.5 sin(0.05)."""
+    path = fixture(RULE, "fail_level.xodr")
+    by_lane = {f.lane: f for f in findings(path, RULE)}
+    assert sorted(by_lane) == [-2, -1]
+    assert f"steps by {3.5 * math.sin(0.05):.4g} m" in by_lane[-1].message
