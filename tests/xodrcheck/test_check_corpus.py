@@ -25,9 +25,13 @@ def test_corpus_is_complete(corpus_dir):
 
 @pytest.mark.parametrize("path", FILES, ids=lambda p: p.name)
 def test_no_crash(corpus_dir, path):
+    """No rule crashes or runs out of time, and every finding that names a place (a road and an s) says where it is in
+    x and y (issue 18: 581 of the corpus's 1,319 errors had no x)."""
     report = check(path)
     assert [f for f in report.findings if f.code in ("X900", "X901")] == []
     assert report.rules_run
+    unplaced = [f for f in report.findings if f.road is not None and f.s is not None and (f.x is None or f.y is None)]
+    assert unplaced == []
 
 
 def test_whole_corpus_time(corpus_dir):

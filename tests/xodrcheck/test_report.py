@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import json
 import re
+from dataclasses import replace
 
 import pytest
 from lxml import etree
@@ -18,7 +19,8 @@ BROKEN = fixture("road-link-target-missing", "fail.xodr")
 CLEAN = fixture("link-not-reciprocal", "pass.xodr")
 TEXT_LINE = re.compile(
     r"^(?P<path>[^:]+):(?P<line>\d+): (?P<code>[A-Z]\d{3}) (?P<severity>error|warning|info) (?P<message>.+?)"
-    r"(?: \[(?P<road>[^/\]]+)/(?P<lane>-?\d+|-)/(?P<s>-?\d+\.\d{3}|-)\])?$"
+    r"(?: \[(?P<road>[^/\]]+)/(?P<lane>-?\d+|-)/(?P<s>-?\d+\.\d{3}|-)"
+    r"(?: x=(?P<x>-?\d+\.\d{3}) y=(?P<y>-?\d+\.\d{3})(?: z=(?P<z>-?\d+\.\d{3}))?)?\])?$"
 )
 
 
@@ -59,6 +61,7 @@ def test_text_one_line_per_finding(reports):
         assert m, line
         assert (m["path"], int(m["line"]), m["code"], m["severity"]) == (str(BROKEN), f.line, f.code, str(f.severity))
         assert m["road"] == f.road
+        assert (float(m["x"]), float(m["y"])) == pytest.approx((f.x, f.y), abs=5e-4)  # every place has coordinates
 
 
 def test_text_location_bracket_and_single_line_message():
@@ -66,6 +69,17 @@ def test_text_location_bracket_and_single_line_message():
     assert len(lines) == 2
     assert lines[0] == "dir/a,b:c.xodr:12: R010 error 100% wrong: a, b and more [7/-2/1.500]"
     assert lines[1] == "dir/a,b:c.xodr:0: X203 info whole file"
+
+
+def test_text_prints_coordinates_and_height_where_it_is_not_zero():
+    """x, y of every place (issue 18: the text report gave ``[13/-3/1.383]`` only), z where the place is not at 0."""
+    base = Finding("K104", "link-step", Category.LINK, Severity.ERROR, "steps", road="1", lane=-3, s=1.3832)
+    placed = render("text", [Report("m.xodr", "1.7", (replace(base, x=12.3456, y=-7.0, z=5.0),), ())])
+    flat = render("text", [Report("m.xodr", "1.7", (replace(base, x=12.3456, y=-7.0, z=0.0001),), ())])
+    assert placed == "m.xodr:0: K104 error steps [1/-3/1.383 x=12.346 y=-7.000 z=5.000]\n"
+    assert flat == "m.xodr:0: K104 error steps [1/-3/1.383 x=12.346 y=-7.000]\n"
+    off_road = Finding("O001", "road-overlap", Category.OVERLAP, Severity.ERROR, "here", x=1.0, y=2.0)
+    assert render("text", [Report("m.xodr", "1.7", (off_road,), ())]) == "m.xodr:0: O001 error here [x=1.000 y=2.000]\n"
 
 
 def test_json_shape(reports):
@@ -86,6 +100,7 @@ def test_json_shape(reports):
             "s",
             "x",
             "y",
+            "z",
             "line",
             "rule_uid",
         ]

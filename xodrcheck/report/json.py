@@ -1,6 +1,6 @@
 """JSON: ``{"files": [{"path", "version", "ok", "findings": [...]}], "summary": {...}}``.
 
-Every finding has the keys ``code name category severity message road lane s x y line rule_uid`` (``null`` where a
+Every finding has the keys ``code name category severity message road lane s x y z line rule_uid`` (``null`` where a
 key does not apply), so consumers can rely on the shape. ``rule_uid`` names the checker rule of the standard (ASAM
 OpenDRIVE Annex F) that the finding enforces.
 """
@@ -14,7 +14,7 @@ from collections.abc import Sequence
 from xodrcheck.findings import Finding
 from xodrcheck.report import summary
 
-FINDING_KEYS = ("code", "name", "category", "severity", "message", "road", "lane", "s", "x", "y", "line", "rule_uid")
+FINDING_KEYS = tuple("code name category severity message road lane s x y z line rule_uid".split())
 
 
 def _number(v):
@@ -33,6 +33,7 @@ def finding_dict(f: Finding) -> dict:
         "s": _number(f.s),
         "x": _number(f.x),
         "y": _number(f.y),
+        "z": _number(f.z),
         "line": f.line,
         "rule_uid": f.rule_uid,
     }

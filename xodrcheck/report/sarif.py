@@ -9,6 +9,7 @@ its properties, where on the map and the ``rule_uid`` it enforces.
 from __future__ import annotations
 
 import json
+import math
 from collections.abc import Sequence
 from pathlib import Path
 
@@ -47,11 +48,16 @@ def _result(f: Finding, uri: str, index: int) -> dict:
         "message": {"text": f.message},
         "locations": [{"physicalLocation": physical}],
     }
-    where = {
-        k: v
-        for k, v in (("road", f.road), ("lane", f.lane), ("s", f.s), ("x", f.x), ("y", f.y), ("rule_uid", f.rule_uid))
-        if v is not None
-    }
+    fields = (
+        ("road", f.road),
+        ("lane", f.lane),
+        ("s", f.s),
+        ("x", f.x),
+        ("y", f.y),
+        ("z", f.z),
+        ("rule_uid", f.rule_uid),
+    )
+    where = {k: v for k, v in fields if v is not None and not (isinstance(v, float) and not math.isfinite(v))}
     if where:
         result["properties"] = where
     return result

@@ -1,23 +1,35 @@
-"""Plain text: one line per finding, ``path:line: CODE severity message [road/lane/s] (UID)``.
+"""Plain text: one line per finding, ``path:line: CODE severity message [road/lane/s x=X y=Y z=Z] (UID)``.
 
-``line`` is 0 for a finding about the whole file. The bracket names where on the map, as ``road/lane/s`` with ``-``
-for a part that does not apply; it is left out when the finding names no road. The UID in parentheses is the checker
-rule of the standard (ASAM OpenDRIVE Annex F) that the finding enforces, where there is one.
+``line`` is 0 for a finding about the whole file. The bracket names where on the map: ``road/lane/s`` with ``-`` for a
+part that does not apply (left out when the finding names no road), then the inertial coordinates in metres, ``z``
+only where the place is not at height 0 (a flat map prints ``x`` and ``y`` alone); the bracket is left out when the
+finding names no place. The UID in parentheses is the checker rule of the standard (ASAM OpenDRIVE Annex F) that the
+finding enforces, where there is one.
 """
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 
 from xodrcheck.findings import Finding
 
 
+def _finite(v: float | None) -> bool:
+    return v is not None and math.isfinite(v)
+
+
 def where(f: Finding) -> str:
-    if f.road is None:
-        return ""
-    lane = "-" if f.lane is None else str(f.lane)
-    s = "-" if f.s is None else f"{f.s:.3f}"
-    return f" [{f.road}/{lane}/{s}]"
+    parts = []
+    if f.road is not None:
+        lane = "-" if f.lane is None else str(f.lane)
+        s = "-" if f.s is None else f"{f.s:.3f}"
+        parts.append(f"{f.road}/{lane}/{s}")
+    if _finite(f.x) and _finite(f.y):
+        parts.append(f"x={f.x:.3f} y={f.y:.3f}")
+        if _finite(f.z) and abs(f.z) >= 0.0005:  # type: ignore[arg-type]
+            parts.append(f"z={f.z:.3f}")
+    return f" [{' '.join(parts)}]" if parts else ""
 
 
 def line(path: str | None, f: Finding) -> str:

@@ -6,6 +6,8 @@ for the other rules of the same file, so a rule pays only for what it asks.
 
 from __future__ import annotations
 
+import dataclasses
+import math
 import time
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -13,6 +15,7 @@ from functools import cached_property
 from typing import TYPE_CHECKING
 
 from xodrcheck.config import Config, Tolerances
+from xodrcheck.findings import Finding
 from xodrcheck.model import (
     Connection,
     ContactPoint,
@@ -87,6 +90,7 @@ class Context:
         self.deadline = deadline
         self._geometry: Mapping[str, RoadGeometry] | None = None
         self._widths: dict[tuple[int, int, int, float], float | None] = {}
+        self._positions: dict[tuple, tuple[float, float, float] | None] = {}
 
     # ---------------------------------------------------------------------------------------------------- basics
     @property
@@ -173,6 +177,67 @@ class Context:
         """Whether a lane has (numerically) zero width at its section's start or end; ``None`` when unknown."""
         width = self.width_at_end(road, section_index, lane_id, end)
         return None if width is None else abs(width) < self.tolerances.zero_width
+
+    # ---------------------------------------------------------------------------------------------------- places
+    def position(
+        self, road_id: str, s: float, lane: int | None = None, section_s: float | None = None
+    ) -> tuple[float, float, float] | None:
+        """Inertial (x, y, z) of a place named by road and ``s``, evaluated exactly once and cached: the centre of
+        ``lane`` (raised by its height) in the lane section starting at ``section_s`` (default: the section containing
+        ``s``), or the reference line at ``s`` (z: the elevation) without a lane, for lane 0 or for a lane the section
+        does not place. ``None`` for an unknown road, a road without a plan view or a point that is not finite."""
+        key = (road_id, s, lane, section_s)
+        if key not in self._positions:
+            self._positions[key] = self._position(road_id, s, lane, section_s)
+        return self._positions[key]
+
+    def _position(
+        self, road_id: str, s: float, lane: int | None, section_s: float | None
+    ) -> tuple[float, float, float] | None:
+        geometry = self.geometry(road_id)
+        if geometry is None or not geometry.road.plan_view or not math.isfinite(s):
+            return None
+        import numpy as np
+
+        at = np.array([float(s)])
+        sections = geometry.road.lane_sections
+        index = None
+        if lane and sections:
+            starts = [i for i, section in enumerate(sections) if section.s == section_s]
+            index = starts[0] if starts else int(geometry.section_index(at)[0])
+        with np.errstate(all="ignore"):
+            if index is not None and lane in placed_lane_ids(geometry, index):
+                p = geometry.lane_points(index, lane, at, "centre", raised=True)
+                x, y, z = float(p.x[0]), float(p.y[0]), float(p.z[0])
+            else:
+                pose = geometry.reference(at)
+                x, y, z = float(pose.x[0]), float(pose.y[0]), float(geometry.elevation(at)[0])
+        if not (math.isfinite(x) and math.isfinite(y)):
+            return None
+        return x, y, z if math.isfinite(z) else float("nan")
+
+    def locate(self, finding: Finding) -> Finding:
+        """``finding`` with x, y and z filled in from its road, ``s`` and lane (:meth:`position`) when it names a place
+        but not its coordinates; otherwise unchanged."""
+        if finding.x is not None or finding.road is None or finding.s is None:
+            return finding
+        found = self.position(finding.road, finding.s, finding.lane, finding.section_s)
+        if found is None:
+            return finding
+        x, y, z = found
+        return dataclasses.replace(finding, x=x, y=y, z=z if math.isfinite(z) else None)
+
+    @staticmethod
+    def end_at(road: Road, end: ContactPoint | None) -> dict:
+        """Finding location fields of a road's start or end: ``s`` (0 or the road's length) and ``section_s`` of the
+        lane section there (empty for an unknown end)."""
+        if end is None:
+            return {}
+        out: dict = {"s": 0.0 if end is ContactPoint.START else float(road.length)}
+        index = Context.section_index_at(road, end)
+        if index is not None:
+            out["section_s"] = road.lane_sections[index].s
+        return out
 
     # ---------------------------------------------------------------------------------------------------- lookups
     def road(self, road_id: str | None) -> Road | None:

@@ -172,6 +172,7 @@ def connection_contact_point(ctx: Context):
                         f"{at}: contactPoint {c.contact_point.value} says linked road {target.id} meets the junction "
                         f"at its {c.contact_point.value}, but its {word} is {_describe(link)}",
                         road=target.id,
+                        **ctx.end_at(target, c.contact_point),
                         line=c.line or None,
                     )
                 continue
@@ -186,6 +187,7 @@ def connection_contact_point(ctx: Context):
                 f"{'starts' if c.contact_point is ContactPoint.START else 'ends'} at incoming road {c.incoming_road}, "
                 f"but its {word} is {_describe(link)}{hint}",
                 road=target.id,
+                **ctx.end_at(target, c.contact_point),
                 line=c.line or None,
             )
 
@@ -224,6 +226,7 @@ def junction_lane_link_direction(ctx: Context):
                 f"{r.incoming.id}: traffic would reverse where they meet",
                 road=r.incoming.id,
                 lane=a.id,
+                **ctx.end_at(r.incoming, r.incoming_end),
                 line=ll.line or r.connection.line or None,
             )
 
@@ -263,6 +266,7 @@ def junction_lane_link_outbound(ctx: Context):
                 severity=severity,
                 road=r.incoming.id,
                 lane=a.id,
+                **ctx.end_at(r.incoming, r.incoming_end),
                 line=ll.line or r.connection.line or None,
             )
 

@@ -60,7 +60,7 @@ def link_not_reciprocal(ctx: Context):
             link = link_at(road, end)
             if link is None:
                 continue
-            where = {"road": road.id, "line": link.line or road.line or None}
+            where = {"road": road.id, **ctx.end_at(road, end), "line": link.line or road.line or None}
             mine = f"road {road.id}: {_WORD[end]} is {_describe(link)}"
             if link.element_type is ElementType.JUNCTION:
                 if road.junction is not None and road.junction == link.element_id:
@@ -127,6 +127,7 @@ def link_contact_point_missing(ctx: Context):
                 yield link_contact_point_missing.finding(
                     f"road {road.id}: {_WORD[end]} road {link.element_id} has no contactPoint (start or end)",
                     road=road.id,
+                    **ctx.end_at(road, end),
                     line=link.line or road.line or None,
                 )
 
@@ -173,5 +174,6 @@ def junction_needed(ctx: Context):
                 f"{len(links)} roads link directly to {at}: {names}; where more than two road ends meet, use a "
                 "junction",
                 road=road.id,
+                **ctx.end_at(road, end),
                 line=link.line or road.line or None,
             )

@@ -138,6 +138,7 @@ def road_link_target_missing(ctx: Context):
                     yield road_link_target_missing.finding(
                         f"road {road.id}: {kind} names road {link.element_id!r}, which does not exist{hint}",
                         road=road.id,
+                        **ctx.end_at(road, end),
                         line=link.line or road.line or None,
                     )
             elif ctx.junction(link.element_id) is None:
@@ -145,6 +146,7 @@ def road_link_target_missing(ctx: Context):
                 yield road_link_target_missing.finding(
                     f"road {road.id}: {kind} names junction {link.element_id!r}, which does not exist{hint}",
                     road=road.id,
+                    **ctx.end_at(road, end),
                     line=link.line or road.line or None,
                 )
 
@@ -224,7 +226,7 @@ def junction_lane_link_missing_lane(ctx: Context):
                         f"(lane section s={in_section.s:g})",
                         road=incoming.id,
                         lane=ll.from_lane,
-                        section_s=in_section.s,
+                        **ctx.end_at(incoming, in_end),
                         line=line,
                     )
                 if to_section is not None and to_section.lane(ll.to_lane) is None:
@@ -234,7 +236,7 @@ def junction_lane_link_missing_lane(ctx: Context):
                         f"(lane section s={to_section.s:g})",
                         road=target.id,
                         lane=ll.to_lane,
-                        section_s=to_section.s,
+                        **ctx.end_at(target, c.contact_point),
                         line=line,
                     )
 

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import dataclasses
+import math
 
 import pytest
 
@@ -100,3 +101,30 @@ def test_neighbours_through_a_direct_junction_run_both_ways(corpus_dir):
     assert (forward.road.id, forward.contact, forward.junction.id) == ("0", ContactPoint.START, "8")
     backward = ctx.neighbours(ctx.road("0"), ContactPoint.START)
     assert sorted((n.road.id, n.contact) for n in backward) == [("2", ContactPoint.END), ("5", ContactPoint.END)]
+
+
+def test_position_of_a_place_named_by_road_s_and_lane():
+    """Exact (x, y, z): the reference line (and elevation) without a lane, the lane's centre raised by its height with
+    one, in the section given or the one containing s; cached; None where there is no such place."""
+    ctx = context(fixture("link-step", "pass.xodr"))  # road 1: x = s, elevation 0.02 s, roll 0.03, sidewalks 0.15 up
+    phi = 0.03
+    assert ctx.position("1", 50.0) == pytest.approx((50.0, 0.0, 1.0))
+    x, y, z = ctx.position("1", 50.0, lane=-2)
+    t = -(3.5 + 1.0)  # the sidewalk's centre
+    assert (x, y) == pytest.approx((50.0, t * math.cos(phi) - 0.15 * math.sin(phi)))
+    assert z == pytest.approx(1.0 + t * math.sin(phi) + 0.15 * math.cos(phi))
+    assert ctx.position("1", 50.0, lane=-2, section_s=0.0) == (x, y, z)
+    assert ctx.position("1", 50.0, lane=-9) == pytest.approx((50.0, 0.0, 1.0))  # no such lane: the reference line
+    assert ctx.position("nope", 1.0) is None and ctx.position("1", math.nan) is None
+    assert ctx.position("1", 50.0, lane=-2) is ctx.position("1", 50.0, lane=-2)  # cached
+
+
+def test_locate_fills_coordinates_only_where_a_finding_names_a_place_without_them():
+    from xodrcheck.findings import Category, Finding, Severity
+
+    ctx = context(fixture("link-step", "pass.xodr"))
+    base = Finding("G901", "redundant-record", Category.GEOMETRY, Severity.INFO, "m", road="1", s=20.0)
+    assert (ctx.locate(base).x, ctx.locate(base).y, ctx.locate(base).z) == pytest.approx((20.0, 0.0, 0.4))
+    placed = dataclasses.replace(base, x=1.0, y=2.0)
+    assert ctx.locate(placed) is placed
+    assert ctx.locate(dataclasses.replace(base, s=None)).x is None
