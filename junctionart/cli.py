@@ -1,32 +1,59 @@
 """``junctionart generate`` and ``junctionart render``.
 
-Bad input (a parameter out of range, an unreadable control-line file, an unwritable output) gives one line on stderr
-and exit code 2, never a traceback, and no output file.
+Bad input (a parameter out of range, a map too large to finish in reasonable time, an unreadable control-line file,
+an unwritable output) gives one line on stderr and exit code 2, never a traceback, and no output file. Output files
+are written atomically (:mod:`xodrcheck.atomic`); Ctrl-C (exit 130) and SIGTERM (exit 143) leave no partial file.
 """
 
 from __future__ import annotations
 
 import argparse
+import enum
 import json
 import sys
 import time
 from collections.abc import Sequence
 from pathlib import Path
+from typing import Any, NamedTuple
 
-from .errors import InputError, JunctionArtError, ParamsError
+from .errors import JunctionArtError, OutputError, ParamsError
+from .params import size_check
 
 #: Single maps at least this large (m^2) show a progress bar over the stages.
 BIG_MAP_AREA = 4_000_000.0
+#: Single maps from control lines at least this long in total (m) show it too (about the lines of a 2 km x 2 km map).
+BIG_MAP_LINES = 25_000.0
 
 
-def _size(text: str) -> tuple[float, float]:
+class Size(NamedTuple):
+    """``--size WxH`` as numbers, and as the user typed it (for messages)."""
+
+    width: float
+    height: float
+    text: str
+
+
+def _size(text: str) -> Size:
     parts = text.lower().split("x")
     try:
         if len(parts) != 2:
             raise ValueError
-        return float(parts[0]), float(parts[1])
+        return Size(float(parts[0]), float(parts[1]), text)
     except ValueError:
         raise argparse.ArgumentTypeError(f"--size {text!r}: expected WxH in metres, e.g. 1000x800") from None
+
+
+def _default_text(value: Any) -> str:
+    """A parameter's default as a user would type it on the command line."""
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, enum.Enum):
+        return str(value.value)
+    if isinstance(value, tuple):
+        return ",".join(":".join(map(_default_text, v)) if isinstance(v, tuple) else _default_text(v) for v in value)
+    if isinstance(value, float):
+        return f"{value:g}"
+    return str(value)
 
 
 def _floats(n: int):
@@ -105,25 +132,42 @@ OPTIONS = [
 
 
 def _add_generate(sub: argparse._SubParsersAction) -> None:
+    from .params import MAX_AREA, MAX_SIDE, MIN_SIDE, Params
+
+    defaults = Params()
     p = sub.add_parser(
         "generate",
         help="generate a road network (.xodr)",
-        description="Generate an OpenDRIVE road network from automatic or given control lines.",
+        description="Generate an OpenDRIVE road network from automatic or given control lines. No map is thrown "
+        "away: where a junction does not fit, the generator repairs the network (merges or enlarges junctions, "
+        "removes or straightens roads); the summary line counts these repairs and --verbose lists them.",
     )
     p.add_argument(
         "-o",
         "--output",
         default="map.xodr",
-        help="output file; with --count, '{seed}' in the name is replaced by each seed",
+        help="output file (default: map.xodr); with --count, '{seed}' in the name is replaced by each seed",
     )
-    p.add_argument("--seed", type=int, default=0, help="random seed (same seed and parameters: identical file)")
-    p.add_argument("--count", type=int, default=1, help="generate this many maps, seeds SEED, SEED+1, ...")
-    p.add_argument("--size", type=_size, help="map size WxH in metres for automatic control lines")
-    p.add_argument("--control-lines", type=Path, help="JSON or GeoJSON control-line file")
-    p.add_argument("--version", choices=("1.8", "1.7"), default=None, help="OpenDRIVE version written (default 1.8)")
-    p.add_argument("--transitions", help="JSON object (or @file) of MDP transition probabilities")
+    p.add_argument("--seed", type=int, default=0, help="random seed (default: 0; same seed and parameters: same file)")
+    p.add_argument("--count", type=int, default=1, help="generate this many maps, seeds SEED, SEED+1, ... (default: 1)")
+    p.add_argument(
+        "--size",
+        type=_size,
+        help=f"map size WxH in metres for automatic control lines (default: "
+        f"{defaults.width:g}x{defaults.height:g}; each side {MIN_SIDE:g} to {MAX_SIDE:g}, W*H at most "
+        f"{MAX_AREA:.0e} m^2: a 10 km x 10 km map takes 1-2 minutes)",
+    )
+    p.add_argument("--control-lines", type=Path, help="JSON or GeoJSON control-line file (default: automatic lines)")
+    p.add_argument("--version", choices=("1.8", "1.7"), default=None, help="OpenDRIVE version written (default: 1.8)")
+    p.add_argument(
+        "--transitions", help="JSON object (or @file) of MDP transition probabilities (default: the paper's)"
+    )
     p.add_argument("-q", "--quiet", action="store_true", help="no summary line, no progress bar")
+    p.add_argument("-v", "--verbose", action="store_true", help="list each repair the generator made, on stderr")
     for opt, field, typ, help_ in OPTIONS:
+        default = getattr(defaults, field)
+        if default is not None:
+            help_ = f"{help_} (default: {_default_text(default) or 'none'})"
         p.add_argument(opt, dest=field, type=typ, default=None, help=help_, metavar=opt[2:].upper().replace("-", "_"))
 
 
@@ -132,7 +176,8 @@ def _params(args: argparse.Namespace):
 
     values = {field: getattr(args, field) for _, field, _, _ in OPTIONS if getattr(args, field) is not None}
     if args.size is not None:
-        values["width"], values["height"] = args.size
+        values["width"], values["height"] = args.size.width, args.size.height
+        size_check(args.size.width, args.size.height, f"--size {args.size.text}")
     if args.version is not None:
         values["version"] = args.version
     if args.transitions is not None:
@@ -158,12 +203,13 @@ def _generate(args: argparse.Namespace) -> int:
     out = str(args.output)
     if args.count > 1 and "{seed}" not in out:
         raise ParamsError(f"-o {out}: with --count > 1 the name must contain '{{seed}}'")
-    folder = Path(out).parent
-    if not folder.is_dir():
-        raise InputError(f"-o {out}: folder {folder} does not exist")
+    _check_target(out.replace("{seed}", str(args.seed)))
     seeds = range(args.seed, args.seed + args.count)
     bar = stage_bar = None
-    big = lines is None and params.width * params.height >= BIG_MAP_AREA
+    if lines is None:
+        big = params.width * params.height >= BIG_MAP_AREA
+    else:
+        big = sum(line.length for line in lines.lines) >= BIG_MAP_LINES
     if not args.quiet and args.count > 1:
         from tqdm import tqdm
 
@@ -191,30 +237,56 @@ def _generate(args: argparse.Namespace) -> int:
             print(
                 f"{path}: {len(lay.roads)} roads, {len(lay.junctions)} junctions, "
                 f"{sum(len(j.connections) for j in lay.junctions)} connection lanes, "
-                f"{len(lay.repairs)} repairs, {time.perf_counter() - t0:.2f} s"
+                f"{len(lay.repairs)} repairs (changes made so every junction fits"
+                f"{'' if args.verbose else '; --verbose lists them'}), {time.perf_counter() - t0:.2f} s"
             )
+        if args.verbose:
+            for repair in result.layout.repairs:
+                print(f"junctionart: seed {seed}: repair: {repair}", file=sys.stderr)
     if bar is not None:
         bar.close()
     return 0
 
 
 def _add_render(sub: argparse._SubParsersAction) -> None:
-    p = sub.add_parser("render", help="draw a .xodr file as a plan-view PNG")
+    from .render import FORMATS
+
+    p = sub.add_parser("render", help="draw a .xodr file as a plan view (PNG, JPEG, SVG, PDF or WebP)")
     p.add_argument("file", type=Path, help="OpenDRIVE file")
-    p.add_argument("-o", "--output", type=Path, required=True, help="PNG to write")
-    p.add_argument("--dpi", type=int, default=150)
-    p.add_argument("--title", default=None)
+    p.add_argument(
+        "-o",
+        "--output",
+        type=Path,
+        required=True,
+        help=f"image to write; its suffix sets the format ({', '.join(FORMATS)})",
+    )
+    p.add_argument("--dpi", type=int, default=150, help="resolution of raster formats (default: 150)")
+    p.add_argument("--title", default=None, help="title above the map (default: file name, roads and junctions)")
 
 
 def _render(args: argparse.Namespace) -> int:
-    from .render import render
+    from .render import image_format, render
 
-    if not args.output.parent.is_dir() and str(args.output.parent):
-        raise InputError(f"-o {args.output}: folder {args.output.parent} does not exist")
+    image_format(args.output)
+    _check_target(args.output)
     if not 10 <= args.dpi <= 1200:
         raise ParamsError(f"--dpi={args.dpi}: must be in [10, 1200]")
-    render(args.file, args.output, dpi=args.dpi, title=args.title)
+    done = render(args.file, args.output, dpi=args.dpi, title=args.title)
+    print(
+        f"{done.path}: {done.format.upper()} plan view of {args.file}, {done.roads} roads, {done.junctions} junctions"
+    )
     return 0
+
+
+def _check_target(path: str | Path) -> None:
+    """Fail before any work when ``path`` cannot be an output file (:func:`xodrcheck.atomic.check_target`)."""
+    from xodrcheck.atomic import OutputError as TargetError
+    from xodrcheck.atomic import check_target
+
+    try:
+        check_target(path)
+    except TargetError as exc:
+        raise OutputError(str(exc)) from None
 
 
 def _add_era(sub: argparse._SubParsersAction) -> None:
@@ -243,23 +315,34 @@ def main(argv: Sequence[str] | None = None) -> int:
     _add_render(sub)
     _add_era(sub)
     args = parser.parse_args(argv)
-    try:
-        if args.command == "generate":
-            return _generate(args)
-        if args.command == "era":
-            from .era import run as _era
+    from xodrcheck.atomic import EXIT_INTERRUPTED, EXIT_TERMINATED, Terminated, signals_raise
 
-            return _era(args)
-        return _render(args)
+    try:
+        with signals_raise():
+            return _command(args)
     except JunctionArtError as exc:
         print(f"junctionart: error: {exc}", file=sys.stderr)
         return 2
     except OSError as exc:
-        print(f"junctionart: error: {exc.filename or ''}: {exc.strerror or exc}", file=sys.stderr)
+        where = f"{exc.filename}: " if exc.filename else ""
+        print(f"junctionart: error: {where}{exc.strerror or exc}", file=sys.stderr)
         return 2
     except KeyboardInterrupt:
         print("junctionart: interrupted", file=sys.stderr)
-        return 130
+        return EXIT_INTERRUPTED
+    except Terminated:
+        print("junctionart: terminated", file=sys.stderr)
+        return EXIT_TERMINATED
+
+
+def _command(args: argparse.Namespace) -> int:
+    if args.command == "generate":
+        return _generate(args)
+    if args.command == "era":
+        from .era import run as _era
+
+        return _era(args)
+    return _render(args)
 
 
 if __name__ == "__main__":  # pragma: no cover

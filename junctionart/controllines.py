@@ -26,9 +26,17 @@ import numpy as np
 import shapely
 
 from .errors import InputError
-from .params import Params
+from .params import MAX_SIDE, Params
 
 MAX_FILE_BYTES = 20_000_000
+#: Largest total length (m) of the control lines of one file: about that of the automatic lines of the largest
+#: automatic map (10 km x 10 km: 554 km; 100 km x 1 km: 580 km), which take 1-4 minutes here (see
+#: :data:`junctionart.params.MAX_AREA`). Two parallel 300 km lines took 49 s; 1e12 m never finishes.
+MAX_TOTAL_LENGTH = 600_000.0
+#: Largest extent (m) of all control lines together, in x and in y: the largest side of an automatic map.
+MAX_EXTENT = MAX_SIDE
+#: Largest absolute coordinate (m): room for projected coordinates (UTM northings reach 1e7 m).
+MAX_COORDINATE = 1e7
 
 
 @dataclass(frozen=True)
@@ -170,6 +178,27 @@ def _group(where: str, raw: Any) -> int:
     return raw
 
 
+def _check_extent(source: str, lines: tuple[ControlLine, ...]) -> None:
+    """Refuse lines a map cannot be generated from in reasonable time (the bounds above), naming the bound."""
+    pts = np.array([p for ln in lines for p in ln.points])
+    if np.abs(pts).max() > MAX_COORDINATE:
+        raise InputError(
+            f"{source}: a coordinate is {np.abs(pts).max():.3g} m from the origin; at most {MAX_COORDINATE:.0e} m"
+        )
+    extent = pts.max(axis=0) - pts.min(axis=0)
+    if extent.max() > MAX_EXTENT:
+        raise InputError(
+            f"{source}: the control lines span {extent[0]:.6g} m x {extent[1]:.6g} m; at most {MAX_EXTENT:.6g} m each "
+            "way (the largest automatic map's side)"
+        )
+    total = sum(ln.length for ln in lines)
+    if total > MAX_TOTAL_LENGTH:
+        raise InputError(
+            f"{source}: the control lines are {total / 1000:.6g} km long in total; at most {MAX_TOTAL_LENGTH / 1000:g} "
+            "km (what a 10 km x 10 km automatic map has, generated in 1-2 minutes): split the network into smaller maps"
+        )
+
+
 def _assemble(source: str, entries: list[tuple[str, tuple, int, Any]], pairs_raw: list[Any]) -> ControlLines:
     if len(entries) < 2:
         raise InputError(f"{source}: needs at least 2 control lines, found {len(entries)}")
@@ -178,6 +207,7 @@ def _assemble(source: str, entries: list[tuple[str, tuple, int, Any]], pairs_raw
         dup = next(i for i in ids if ids.count(i) > 1)
         raise InputError(f"{source}: line id {dup!r} is used twice")
     lines = tuple(ControlLine(i, pts, grp, lanes) for i, pts, grp, lanes in entries)
+    _check_extent(source, lines)
     index = {ln.id: k for k, ln in enumerate(lines)}
     pairs: list[tuple[int, int]] = []
     for p in pairs_raw:

@@ -271,12 +271,12 @@ def _write_header(path: Path, columns: Iterable[str]) -> None:
 
 
 def _rewrite(path: Path, columns, rows) -> None:
-    tmp = path.with_suffix(".tmp")
-    with open(tmp, "w", newline="", encoding="utf-8") as stream:
+    from xodrcheck.atomic import atomic_file
+
+    with atomic_file(path, "w") as stream:
         writer = csv.DictWriter(stream, columns, lineterminator="\n")
         writer.writeheader()
         writer.writerows(rows)
-    os.replace(tmp, path)
 
 
 def select(rows: list[dict], run: str, n: int) -> list[dict]:

@@ -13,6 +13,8 @@ from pathlib import Path
 
 import numpy as np
 
+from xodrcheck.atomic import atomic_file
+
 #: (column, paper name, unit, paper figure, what the paper reports)
 LEG_METRICS = (
     ("complexity", "complexity", "", 13, "almost half of the intersections have complexity over 0.5"),
@@ -140,8 +142,7 @@ def distribution_figure(column: str, samples: Sequence[Sample], compare: Sample 
         ax.legend(fontsize=7)
     axes[0][0].set_ylabel("probability density")
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    _save(fig, path)
 
 
 def heatmap_figure(x: str, y: str, samples: Sequence[Sample], compare: Sample | None, path: Path) -> None:
@@ -178,8 +179,7 @@ def heatmap_figure(x: str, y: str, samples: Sequence[Sample], compare: Sample | 
         ax.set_xlabel(NAMES[x] + (f" ({UNITS[x]})" if UNITS[x] else ""))
         ax.set_ylabel(NAMES[y] + (f" ({UNITS[y]})" if UNITS[y] else ""))
     fig.tight_layout()
-    fig.savefig(path, dpi=110)
-    plt.close(fig)
+    _save(fig, path)
 
 
 def _median(values: np.ndarray) -> str:
@@ -269,5 +269,17 @@ def write_report(
             "",
         ]
     path = folder / "report.md"
-    path.write_text("\n".join(lines), encoding="utf-8")
+    with atomic_file(path, "w") as stream:
+        stream.write("\n".join(lines))
     return path
+
+
+def _save(fig, path: Path) -> None:
+    """Save a figure atomically (no partial PNG after an error, Ctrl-C or SIGTERM) and close it."""
+    import matplotlib.pyplot as plt
+
+    try:
+        with atomic_file(path, "wb") as stream:
+            fig.savefig(stream, dpi=110, format="png")
+    finally:
+        plt.close(fig)

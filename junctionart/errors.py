@@ -1,4 +1,4 @@
-"""The generator's error types: one for bad parameters, one for bad input files."""
+"""The generator's error types: bad parameters, bad input files, unwritable output files."""
 
 from __future__ import annotations
 
@@ -17,3 +17,8 @@ class InputError(JunctionArtError, ValueError):
 
 class GenerationError(JunctionArtError):
     """The generator could not finish a map (a bug guard: repairs always converge)."""
+
+
+class OutputError(JunctionArtError, OSError):
+    """An output file cannot be written; the message names the path as given and the cause (never a temporary
+    file)."""

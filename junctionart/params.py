@@ -40,6 +40,15 @@ DEFAULT_TRANSITIONS: dict[str, dict[str, float]] = {
 
 VERSIONS = ("1.8", "1.7")
 
+# Bounds of a map, set from measurements (2-core machine shared with other jobs, ``junctionart generate``, seed 1):
+# 5 km x 5 km 16 s; 10 km x 10 km 49-106 s and 0.4 GB; 100 km x 1 km 231 s; 1 km x 100 km 159 s; 14.1 km x 14.1 km
+# 203 s; time grows faster than the area (5 -> 10 km: x6.5) and with the total length of the control lines, about
+# 550-580 km in each of the 1e8 m^2 maps. 100 km x 100 km was still in its second stage after 400 s.
+#: Smallest and largest side (m) of an automatic map.
+MIN_SIDE, MAX_SIDE = 50.0, 100_000.0
+#: Largest area (m^2) of an automatic map: 100 km^2, e.g. 10 km x 10 km, which takes 1-2 minutes.
+MAX_AREA = 1e8
+
 
 def _frozen_transitions(t: dict[str, dict[str, float]]) -> tuple[tuple[str, tuple[tuple[str, float], ...]], ...]:
     return tuple((k, tuple(sorted(v.items()))) for k, v in sorted(t.items()))
@@ -179,10 +188,27 @@ def _check_transition_dict(t: Any) -> None:
         raise ParamsError(f"transitions: no row for state {missing[0]!r}")
 
 
+def size_check(width: Any, height: Any, typed: str | None = None) -> None:
+    """Raise :class:`ParamsError` when an automatic map of ``width`` x ``height`` is outside the bounds (each side in
+    [:data:`MIN_SIDE`, :data:`MAX_SIDE`], area at most :data:`MAX_AREA`). ``typed`` (``--size 0x0``) names the value
+    as the user gave it; without it the message names the parameters."""
+    for name, value in (("width", width), ("height", height)):
+        if typed is None:
+            _range(name, value, MIN_SIDE, MAX_SIDE)
+        elif not (math.isfinite(value) and MIN_SIDE <= value <= MAX_SIDE):
+            raise ParamsError(f"{typed}: the {name} must be in [{MIN_SIDE:g}, {MAX_SIDE:g}] m, got {value:g}")
+    area = float(width) * float(height)
+    if area > MAX_AREA:
+        what = typed or f"width={width!r}, height={height!r}"
+        raise ParamsError(
+            f"{what}: the map would cover {area:.3g} m^2, more than the bound of {MAX_AREA:.0e} m^2 (10 km x 10 km "
+            "takes 1-2 minutes; time grows faster than the area): generate several smaller maps"
+        )
+
+
 def validate(p: Params) -> None:
     """Raise :class:`ParamsError` for the first parameter outside its range."""
-    _range("width", p.width, 50.0, 100_000.0)
-    _range("height", p.height, 50.0, 100_000.0)
+    size_check(p.width, p.height)
     if p.n_lines is not None and (
         isinstance(p.n_lines, bool) or not isinstance(p.n_lines, int) or not 2 <= p.n_lines <= 1000
     ):

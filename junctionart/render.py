@@ -1,4 +1,5 @@
-"""Plan-view PNG of any .xodr file, read with xodrcheck's reader and lane geometry (not the generator's model).
+"""Plan view (PNG, JPEG, SVG, PDF or WebP, by the output's suffix) of any .xodr file, read with xodrcheck's reader
+and lane geometry (not the generator's model).
 
 Lanes are filled by type (driving grey, median green, sidewalk and shoulder lighter, others tan); lanes of connecting
 roads inside junctions are drawn in a light orange so junctions stand out; reference lines are thin dark lines.
@@ -7,10 +8,14 @@ roads inside junctions are drawn in a light orange so junctions stand out; refer
 from __future__ import annotations
 
 from pathlib import Path
+from typing import NamedTuple
 
 import numpy as np
 
-from .errors import InputError
+from xodrcheck.atomic import OutputError as TargetError
+from xodrcheck.atomic import atomic_file
+
+from .errors import InputError, OutputError, ParamsError
 
 COLOURS = {
     "driving": "#5f6368",
@@ -44,10 +49,36 @@ def _legend_entries(used: list[str]) -> list[tuple[str, str]]:
     return entries
 
 
+#: Image formats by file suffix (what matplotlib writes without extra packages).
+FORMATS = {".png": "png", ".jpg": "jpeg", ".jpeg": "jpeg", ".svg": "svg", ".pdf": "pdf", ".webp": "webp"}
+
+
+class Rendered(NamedTuple):
+    """What :func:`render` wrote: the file, its image format, and how many roads and junctions it shows."""
+
+    path: Path
+    format: str
+    roads: int
+    junctions: int
+
+
+def image_format(output: str | Path) -> str:
+    """The image format the suffix of ``output`` names; :class:`ParamsError` for a suffix not in :data:`FORMATS`."""
+    suffix = Path(output).suffix.lower()
+    if suffix not in FORMATS:
+        known = ", ".join(FORMATS)
+        raise ParamsError(f"-o {output}: unknown image format {suffix or '(no suffix)'!r}; use one of {known}")
+    return FORMATS[suffix]
+
+
 def render(
     source: str | Path, output: str | Path, *, dpi: int = 150, size: float = 10.0, title: str | None = None
-) -> Path:
-    """Draw ``source`` to ``output`` (PNG, written atomically); raises :class:`InputError` when it cannot be read."""
+) -> Rendered:
+    """Draw ``source`` to ``output`` in the format its suffix names (:data:`FORMATS`), written atomically. Raises
+    :class:`ParamsError` for an unknown suffix, :class:`InputError` when the map cannot be opened or read whole (as
+    every xodrcheck command refuses it: no image of part of a map) and :class:`OutputError` when ``output`` cannot be
+    written."""
+    fmt = image_format(output)
     import matplotlib
 
     matplotlib.use("Agg")
@@ -63,7 +94,10 @@ def render(
     try:
         result = read(source)
     except ReadError as exc:
-        raise InputError(f"{source}: {exc}") from None
+        raise InputError(str(exc)) from None
+    why = result.not_whole()
+    if why is not None:
+        raise InputError(f"cannot read {source} whole, so nothing is written for it: {why}")
     doc = result.document
     if doc is None or not doc.roads:
         raise InputError(f"{source}: no road could be read")
@@ -110,19 +144,16 @@ def render(
     ax.set_aspect("equal")
     ax.set_facecolor("#f7f7f2")
     n_j = len(doc.junctions)
-    ax.set_title(
-        title or f"{Path(str(source)).name}: {sum(r.junction is None for r in doc.roads)} roads, {n_j} junctions"
-    )
+    n_roads = sum(r.junction is None for r in doc.roads)
+    ax.set_title(title or f"{Path(str(source)).name}: {n_roads} roads, {n_j} junctions")
     ax.legend(handles=legend, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False, fontsize=9)
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
-    out = Path(output)
-    tmp = out.with_name(f".{out.name}.tmp.png")
     try:
-        fig.savefig(tmp, dpi=dpi, bbox_inches="tight")
-        tmp.replace(out)
+        with atomic_file(output, "wb") as stream:
+            fig.savefig(stream, dpi=dpi, bbox_inches="tight", format=fmt)
+    except TargetError as exc:
+        raise OutputError(str(exc)) from None
     finally:
         plt.close(fig)
-        if tmp.exists():
-            tmp.unlink()
-    return out
+    return Rendered(Path(output), fmt, n_roads, n_j)

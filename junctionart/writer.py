@@ -4,7 +4,8 @@ The text is built directly, line by line, in lxml's pretty-print layout (an elem
 time); element order follows the schema of the declared version. Floats are written with ``repr`` (the shortest
 string that reads back to the same double), so the file round-trips exactly; the output bytes depend only on the
 document.
-Files are written atomically: a temporary file in the target folder, then ``os.replace``.
+Files are written atomically: a temporary file in the target folder, then ``os.replace``
+(:func:`xodrcheck.atomic.atomic_file`).
 """
 
 from __future__ import annotations
@@ -13,10 +14,9 @@ import functools
 import math
 import os
 import re
-import tempfile
 from pathlib import Path
 
-from .errors import JunctionArtError
+from .errors import JunctionArtError, OutputError
 from .opendrive import (
     Arc,
     Cubic,
@@ -234,39 +234,15 @@ def to_bytes(doc: Document, version: str = "1.8") -> bytes:
     return "\n".join(out.lines).encode("utf-8")
 
 
-def _umask() -> int:
-    """The process's umask (read from /proc where it can be, so that it is never changed, even briefly)."""
-    try:
-        with open("/proc/self/status", encoding="ascii") as fh:
-            for line in fh:
-                if line.startswith("Umask:"):
-                    return int(line.split()[1], 8)
-    except (OSError, ValueError):
-        pass
-    mask = os.umask(0o022)
-    os.umask(mask)
-    return mask
-
-
 def write(doc: Document, path: str | os.PathLike[str], version: str = "1.8") -> Path:
-    """Write ``doc`` to ``path`` atomically; on any error no file (and no temporary file) is left behind."""
-    data = to_bytes(doc, version)
-    target = Path(path)
-    folder = target.parent if str(target.parent) else Path(".")
-    if not folder.is_dir():
-        raise JunctionArtError(f"{target}: folder {folder} does not exist")
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
+    """Write ``doc`` to ``path`` atomically (:mod:`xodrcheck.atomic`, shared by every command of both tools): on any
+    error, Ctrl-C or SIGTERM no file and no temporary file is left behind. Raises :class:`OutputError` naming
+    ``path`` and the cause when it cannot be written."""
+    from xodrcheck.atomic import OutputError as _TargetError
+    from xodrcheck.atomic import check_target, write_bytes
+
     try:
-        os.fchmod(fd, 0o666 & ~_umask())  # mkstemp makes the file 0600; give it the mode of any new file
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, target)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except FileNotFoundError:
-            pass
-        raise
-    return target
+        check_target(path)  # before the document is serialised
+        return write_bytes(path, to_bytes(doc, version))
+    except _TargetError as exc:
+        raise OutputError(str(exc)) from None

@@ -44,7 +44,7 @@ def check_one(path: str, config: Config | None = None) -> Outcome:
         with np.errstate(all="ignore"):  # as the command line: damaged numbers are findings, not warnings
             return Outcome(path, report=check(path, config))
     except ReadError as exc:
-        return Outcome(path, error=f"cannot read {path}: {exc}")
+        return Outcome(path, error=str(exc))
     except Exception as exc:  # noqa: BLE001 - one file's crash must not lose the others' results
         return Outcome(path, error=f"internal error on {path}: {type(exc).__name__}: {exc}")
 

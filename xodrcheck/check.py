@@ -26,6 +26,7 @@ from xodrcheck.config import Config, ConfigError
 from xodrcheck.findings import Finding, OutOfTime, Severity
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.context import Context
+from xodrcheck.rules.internal import ENGINE_CODES as _ENGINE_CODES
 from xodrcheck.rules.internal import RULE_CRASHED, RULE_OUT_OF_TIME
 from xodrcheck.rules.registry import Rule
 from xodrcheck.standard import annex_rules, applies, is_uid, uid_matches
@@ -45,8 +46,14 @@ class Report:
     strict: bool = False
 
     @property
+    def complete(self) -> bool:
+        """Every selected rule ran to its end: no ``X900 rule-crashed``, no ``X901 rule-out-of-time``. An incomplete
+        report is never :attr:`ok` (both findings are errors): what was not checked is not known to be right."""
+        return not any(f.code in _ENGINE_CODES for f in self.findings)
+
+    @property
     def ok(self) -> bool:
-        """No error-level finding (with ``strict``: no warning either)."""
+        """No error-level finding (with ``strict``: no warning either); so also :attr:`complete`."""
         worst = Severity.WARNING if self.strict else Severity.ERROR
         return not any(f.severity >= worst for f in self.findings)
 
@@ -146,8 +153,8 @@ def _run_rule(rule: Rule, ctx: Context) -> list[Finding]:
     except OutOfTime as exc:
         out.append(
             RULE_OUT_OF_TIME.finding(
-                f"rule {rule.code} {rule.name} stopped ({exc}): time budget spent; {len(out)} finding(s) it gave "
-                f"before are kept"
+                f"rule {rule.code} {rule.name} stopped ({exc}): the time budget (tolerance time_budget) was spent; "
+                f"the check is incomplete; {len(out)} finding(s) it gave before are kept"
             )
         )
     except Exception as exc:
@@ -168,14 +175,16 @@ def run_rules(ctx: Context, selection: Selection) -> tuple[list[Finding], list[s
         if rule.check is None or not selection.wants_rule(rule) or not rule.runs_on(ctx.version):
             continue
         if ctx.out_of_time():
-            findings.append(RULE_OUT_OF_TIME.finding(f"rule {rule.code} {rule.name} not run: time budget spent"))
+            findings.append(
+                RULE_OUT_OF_TIME.finding(
+                    f"rule {rule.code} {rule.name} not run: the time budget (tolerance time_budget) was spent; "
+                    "the check is incomplete"
+                )
+            )
             continue
         findings.extend(_run_rule(rule, ctx))
         run.append(rule.code)
     return findings, run
-
-
-_ENGINE_CODES = frozenset({RULE_CRASHED.code, RULE_OUT_OF_TIME.code})
 
 
 def _version_text(ctx_version: tuple[int, int] | None) -> str | None:
@@ -219,7 +228,7 @@ def check(
                 config,
                 path=result.path,
                 data=data,
-                deadline=started + config.tolerances.time_budget,
+                deadline=_deadline(started, config.tolerances.time_budget),
             )
             version = _version_text(ctx.version)
             more, ran = run_rules(ctx, selection)
@@ -248,6 +257,11 @@ def _by_version(findings: Iterable[Finding], document, rules: dict[str, Rule]) -
         yield f
 
 
+def _deadline(started: float, budget: float) -> float | None:
+    """The monotonic time past which rules stop; ``None`` (no bound) for a budget of 0, the default."""
+    return started + budget if budget > 0 else None
+
+
 def _raw(data: bytes | None, limit: int) -> bytes | None:
     """The XML bytes the reader parsed: gzip-compressed files (``.xodrz``) are decompressed."""
     if data is None or not data.startswith(b"\x1f\x8b"):
@@ -270,7 +284,8 @@ def _read_bytes(path: str | None) -> bytes | None:
 
 
 def is_valid(source: str | Path | bytes, config: Config | None = None) -> bool:
-    """True when :func:`check` finds no error (shapely's ``is_valid``)."""
+    """True when :func:`check` finds no error and every rule ran to its end (shapely's ``is_valid``). Raises
+    :class:`~xodrcheck.findings.ReadError`, naming the path, when the file cannot be opened at all."""
     return check(source, config).ok
 
 

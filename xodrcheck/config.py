@@ -44,13 +44,18 @@ class Tolerances:
     overlap_area: float = 0.5
     #: Vertical clearance (m): surfaces further apart than this in z do not overlap (bridges).
     clearance: float = 4.5
-    #: Wall-clock budget (s) for one file's expensive rules; rules past it report that they stopped.
-    time_budget: float = 120.0
+    #: Wall-clock bound (s) on checking one file; 0 (the default): none, every rule runs to its end, so the verdict
+    #: never depends on the machine's speed. With a bound, rules past it stop and report X901 (an error: the check is
+    #: incomplete, exit code 3).
+    time_budget: float = 0.0
     #: Most ``s`` samples one lane section gets per sampling stage (checker grid, mesh, info). A longer section (a road
     #: of 1e9 m) is sampled with proportionally longer steps, so time and memory stay bounded; rule G013 reports it.
     max_samples_per_section: int = 200_000
     #: Files larger than this many bytes are refused with a clear error.
     max_file_bytes: int = 512 * 1024 * 1024
+    #: Most points ``xodrcheck sample`` writes and most vertices ``xodrcheck mesh`` builds (10 million: about 0.7 GB
+    #: of CSV); a step or chord needing more is refused (exit 2) before anything is written.
+    max_output_points: int = 10_000_000
 
 
 @dataclass(frozen=True)

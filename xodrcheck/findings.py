@@ -76,7 +76,15 @@ class XodrError(Exception):
 
 
 class ReadError(XodrError):
-    """The input cannot be read at all (missing file, not a file, too large to be an OpenDRIVE file)."""
+    """The input cannot be read at all (missing file, not a file, too large to be an OpenDRIVE file).
+
+    ``reason`` says why and ``path`` names the file (``None`` for bytes); the message names both:
+    ``cannot read maps/a.xodr: no such file``."""
+
+    def __init__(self, reason: str, path: str | None = None) -> None:
+        super().__init__(f"cannot read {path}: {reason}" if path is not None else reason)
+        self.reason = reason
+        self.path = path
 
 
 class OutOfTime(XodrError):

@@ -150,6 +150,10 @@ def _strip_faces(lane_count: int, n: int, left: np.ndarray) -> np.ndarray:
     return tris.reshape(lane_count, -1, 3)
 
 
+class MeshTooLarge(ValueError):
+    """The mesh would have more vertices than the bound it was built with."""
+
+
 def _road_geometry(document: Document, road: Road, geometries: Mapping[str, RoadGeometry]) -> RoadGeometry:
     rg = geometries[road.id]
     return rg if rg.road is road else RoadGeometry(road)  # a duplicated id: the mapping holds the first road
@@ -160,12 +164,14 @@ def build_surfaces(
     chord: float | None = None,
     lane_types: Collection[str] | None = None,
     max_step: float | None = None,
+    max_vertices: int | None = None,
 ) -> LaneSurfaces:
     """Mesh every lane of every road with a plan view (centre lanes have no surface).
 
     ``lane_types`` keeps only lanes of those types (names as the standard spells them; ``None``: all). Lane sections
     that do not end after they start, and sections whose geometry does not evaluate to finite numbers or lies beyond
-    :data:`MAX_COORDINATE` (a damaged width or position: other rules report it), are skipped.
+    :data:`MAX_COORDINATE` (a damaged width or position: other rules report it), are skipped. With ``max_vertices``,
+    a mesh that would have more vertices raises :class:`MeshTooLarge` as soon as it passes the bound.
     """
     defaults = Tolerances()
     chord = defaults.chord if chord is None else chord
@@ -216,6 +222,8 @@ def build_surfaces(
             s_blocks.append(np.tile(np.repeat(s[:-1], 2), len(pairs)))
             lane_sizes.append(np.full(len(pairs), n))
             vertex_total += len(block)
+            if max_vertices is not None and vertex_total > max_vertices:
+                raise MeshTooLarge(f"the mesh has more than {max_vertices:,} vertices (tolerance max_output_points)")
             keys.extend(LaneKey(road.id, section.s, lane.id) for lane, _ in pairs)
             types.extend(lane_type_name(lane) for lane, _ in pairs)
     sizes = np.concatenate(lane_sizes) if lane_sizes else np.zeros(0, dtype=np.int64)

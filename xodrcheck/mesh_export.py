@@ -12,12 +12,11 @@ is written to a temporary file beside the target and moved into place, so a fail
 
 from __future__ import annotations
 
-import os
-import tempfile
 from pathlib import Path
 
 import numpy as np
 
+from xodrcheck.atomic import write_bytes
 from xodrcheck.mesh import LaneSurfaces
 
 #: Output formats by file extension.
@@ -120,18 +119,8 @@ def encode(surfaces: LaneSurfaces, fmt: str) -> bytes:
 
 
 def write(surfaces: LaneSurfaces, path: str | Path) -> int:
-    """Write the mesh to ``path`` (format from its extension) atomically; return the number of bytes written."""
+    """Write the mesh to ``path`` (format from its extension) atomically; return the number of bytes written. A
+    target that cannot be written raises :class:`~xodrcheck.atomic.OutputError` naming ``path``."""
     data = encode(surfaces, format_of(path))
-    target = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
-    try:
-        mask = os.umask(0o022)
-        os.umask(mask)
-        os.fchmod(fd, 0o666 & ~mask)
-        with os.fdopen(fd, "wb") as stream:
-            stream.write(data)
-        os.replace(tmp, target)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    write_bytes(path, data)
     return len(data)

@@ -54,17 +54,36 @@ def section_s_values(start: float, end: float, step: float, budget: int | None =
     return np.concatenate([grid if count else [start], [end]])
 
 
+def sample_count(document: Document, step: float, kinds: Sequence[str] = ("centre",)) -> float:
+    """How many points :func:`sample_lanes` gives at ``step`` without a per-section bound (a float: absurd steps give
+    counts past any integer type; lanes a ``singleSide`` section continues are not counted). Costs no geometry."""
+    total = 0.0
+    for road in document.roads:
+        if not road.plan_view:
+            continue
+        for index, section in enumerate(road.lane_sections):
+            length = road.section_end(index) - section.s
+            if not length > 0:
+                continue
+            lanes = sum(1 for lane in (*section.left, *section.right) if lane.id != 0)
+            total += lanes * len(kinds) * (math.ceil(length / step) + 1)
+    return total
+
+
 def sample_lanes(
     document: Document,
     step: float,
     kinds: Sequence[str] = ("centre",),
     geometry: Mapping[str, RoadGeometry] | None = None,
+    budget: int | None = None,
 ) -> Iterator[LaneLine]:
     """Sample every lane (centre lanes excluded) of every road that has a plan view.
 
     Roads in file order, lane sections in order, lanes from the leftmost to the rightmost, ``kinds`` in the order given.
     A ``singleSide`` section also yields the lanes its other side continues from an earlier section. A lane section that
-    does not end after it starts (the reader reports such sections) is skipped.
+    does not end after it starts (the reader reports such sections) is skipped. A section that needs more than
+    ``budget`` points per line (default ``Tolerances.max_samples_per_section``) is stepped more coarsely: the command
+    line refuses such steps beforehand (:func:`sample_count`) and passes its own bound.
     """
     unknown = [k for k in kinds if k not in KINDS]
     if unknown:
@@ -72,6 +91,7 @@ def sample_lanes(
     if not (math.isfinite(step) and step > 0):
         raise ValueError(f"step must be a finite number > 0, got {step!r}")
     geometry = geometry_of(document) if geometry is None else geometry
+    budget = Tolerances().max_samples_per_section if budget is None else budget
     for road in document.roads:
         if not road.plan_view:
             continue
@@ -82,7 +102,7 @@ def sample_lanes(
             end = road.section_end(index)
             if not end > section.s:
                 continue
-            s = section_s_values(section.s, end, step, Tolerances().max_samples_per_section)
+            s = section_s_values(section.s, end, step, budget)
             left, right = rg.side_lanes(index)  # the lanes in effect (a singleSide section keeps the other side's)
             for lane in (*reversed(left.lanes), *right.lanes):
                 for kind in kinds:

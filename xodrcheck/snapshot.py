@@ -181,17 +181,27 @@ def _rounded(value: float) -> float:
     return round(value, _DECIMALS) if math.isfinite(value) else value
 
 
+class NotReadWhole(ValueError):
+    """The map cannot be read whole (``why``: the reader's finding), so it has no snapshot."""
+
+    def __init__(self, why: str) -> None:
+        super().__init__(f"it cannot be read whole: {why}")
+        self.why = why
+
+
 def snapshot_of(source: str | Path | bytes, config: Config | None = None) -> Snapshot:
     """Read ``source`` (a path or a file's bytes), check it and take its snapshot.
 
-    Raises :class:`xodrcheck.findings.ReadError` when it cannot be opened at all and :class:`ValueError` when no
-    document could be read from it (not XML, not OpenDRIVE)."""
+    Raises :class:`xodrcheck.findings.ReadError` when it cannot be opened at all and :class:`ValueError` when it
+    cannot be read whole (not well-formed, not OpenDRIVE: :meth:`~xodrcheck.reader.ReadResult.not_whole`), so that a
+    snapshot never describes part of a file."""
     config = config or Config()
     result = read(source, max_bytes=config.tolerances.max_file_bytes)
+    why = result.not_whole()
+    if why is not None:
+        raise NotReadWhole(why)
     doc = result.document
-    if doc is None:
-        first = next((f"{f.code} {f.name}: {f.message}" for f in result.findings), "nothing readable")
-        raise ValueError(f"no OpenDRIVE document could be read ({first})")
+    assert doc is not None  # not_whole() says so when there is no document
     lanes = Counter(
         lane_type_name(lane)
         for road in doc.roads

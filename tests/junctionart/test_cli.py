@@ -81,7 +81,9 @@ def test_console_script_entry_point(tmp_path):
         check=False,
     )
     assert proc.returncode == 2
-    assert "width=10.0" in proc.stderr and "Traceback" not in proc.stderr
+    # the value as the user typed it, not the parameter it fills ("width=10.0")
+    assert "--size 10x10: the width must be in [50, 100000] m, got 10" in proc.stderr
+    assert "Traceback" not in proc.stderr
 
 
 def test_stages_are_reported_in_order():

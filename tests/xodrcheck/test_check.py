@@ -121,12 +121,35 @@ def test_crash_is_reported_even_when_its_rule_family_is_selected_away(monkeypatc
     assert "X900" in codes(check(CLEAN, select=("R001",)))
 
 
-def test_time_budget_spent_skips_rules_with_a_finding():
-    config = Config(tolerances=Tolerances(time_budget=0.0))
+def test_a_time_budget_set_and_spent_makes_the_check_incomplete_and_failed():
+    """A bound the user sets trades completeness for time: the rules it skips are X901 errors, so the file is not
+    valid (it used to be a warning: "0 error(s)" and exit 0 for a check that did not run)."""
+    config = Config(tolerances=Tolerances(time_budget=1e-9))
     report = check(CLEAN, config)
     skipped = [f for f in report.findings if f.code == "X901"]
-    assert skipped and all(f.severity is Severity.WARNING for f in skipped)
+    assert skipped and all(f.severity is Severity.ERROR for f in skipped)
+    assert "the check is incomplete" in skipped[0].message
     assert not [c for c in report.rules_run if c.startswith("R")]
+    assert not report.complete and not report.ok
+    assert not is_valid(CLEAN, config) and is_valid_reason(CLEAN, config).startswith("X901 rule-out-of-time")
+
+
+def test_no_time_budget_by_default_so_the_verdict_does_not_depend_on_speed(monkeypatch):
+    """A machine so slow that every rule starts hours after the file was read still runs every rule."""
+    from xodrcheck.rules import context
+
+    clock = iter(range(0, 10**9, 3600))
+    monkeypatch.setattr(context.time, "monotonic", lambda: float(next(clock)))
+    assert Tolerances().time_budget == 0
+    report = check(CLEAN)
+    assert report.complete and report.ok and "X901" not in codes(report)
+    assert {"R010", "K001", "O001"} <= set(report.rules_run)
+
+
+def test_is_valid_of_a_missing_file_names_the_path(tmp_path):
+    missing = tmp_path / "nowhere" / "map.xodr"
+    with pytest.raises(xodrcheck.ReadError, match=f"cannot read {missing}: no such file"):
+        is_valid(missing)
 
 
 def test_not_well_formed_file_is_checked_as_far_as_it_was_read():
@@ -163,7 +186,7 @@ def test_footprint_union_stops_when_out_of_time():
         OverlapIndex(document, out_of_time=lambda: True)
 
 
-def test_rule_stopped_by_the_budget_keeps_a_warning_not_a_crash(monkeypatch):
+def test_rule_stopped_by_the_budget_keeps_an_x901_error_not_a_crash(monkeypatch):
     """A rule interrupted part way (here: the overlap index while it unites a folded strip) reports X901 'stopped'."""
     from xodrcheck.rules import context
 
@@ -177,6 +200,7 @@ def test_rule_stopped_by_the_budget_keeps_a_warning_not_a_crash(monkeypatch):
     report = check(fixture("lane-fold", "fail.xodr"), select=("O001",))
     (stopped,) = [f for f in report.findings if f.code == "X901"]
     assert "O001 road-overlap stopped (building lane footprints)" in stopped.message
+    assert stopped.severity is Severity.ERROR and not report.complete and not report.ok
     assert "X900" not in codes(report)
 
 

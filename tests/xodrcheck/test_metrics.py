@@ -266,11 +266,16 @@ def test_cli_csv_and_json(tmp_path, capsys):
     assert cli_main(["metrics", str(path), "-o", str(out)]) == 0
     rows = list(csv.DictReader(io.StringIO(out.read_text())))
     assert len(rows) == 4 and {r["road"] for r in rows} == {"L0", "L1", "L2", "L3"}
-    assert float(rows[0]["fov"]) == pytest.approx(90.0) and rows[0]["legs"] == "4"
+    assert float(rows[0]["fov_deg"]) == pytest.approx(90.0) and rows[0]["legs"] == "4"
+    # every column that has a unit says it in its name
+    assert {"x_m", "y_m", "area_m2", "conflict_area_m2", "max_curvature_deg_per_m", "corner_deviation_deg"} <= set(
+        rows[0]
+    )
+    assert not {"fov", "area", "max_curvature", "x"} & set(rows[0])
     assert cli_main(["metrics", "--format", "json", str(path)]) == 0
     doc = json.loads(capsys.readouterr().out)
     (junction,) = doc["junctions"]
-    assert junction["conflict_area"] == pytest.approx(4 * W * W) and len(junction["leg_metrics"]) == 4
+    assert junction["conflict_area_m2"] == pytest.approx(4 * W * W) and len(junction["leg_metrics"]) == 4
 
 
 def test_cli_bad_input_is_one_line(tmp_path, capsys):
@@ -279,6 +284,6 @@ def test_cli_bad_input_is_one_line(tmp_path, capsys):
     assert err.count("\n") == 1 and "no such file" in err
     garbage = tmp_path / "g.xodr"
     garbage.write_text("<OpenDRIVE><road")
-    assert cli_main(["metrics", str(garbage)]) == 1  # read with error-level findings, summarised on one line
-    err = capsys.readouterr().err
-    assert err.count("\n") == 1 and "Traceback" not in err
+    assert cli_main(["metrics", str(garbage)]) == 2  # cannot be read whole: one line, no CSV header either
+    out, err = capsys.readouterr()
+    assert out == "" and err.count("\n") == 1 and "whole" in err and "Traceback" not in err

@@ -1,7 +1,10 @@
 """``xodrcheck`` command line: one module per subcommand.
 
 Each subcommand module exposes ``NAME``, ``HELP``, ``add_arguments(parser)`` and ``run(args) -> int``.
-Exit codes: 0 no error-level finding, 1 an error-level finding (``--strict``: a warning too), 2 usage or I/O error.
+Exit codes (the README's table): 0 ok, 1 findings (``check``: an error-level finding, ``--strict`` a warning too;
+the data commands: the output was written but the reader found errors in the file; ``diff``: the map changed),
+2 usage or I/O error (nothing written), 3 ``check`` incomplete (a rule did not run to its end and nothing else failed),
+130 Ctrl-C, 143 SIGTERM (no partial file either way).
 """
 
 from __future__ import annotations
@@ -26,8 +29,7 @@ COMMANDS = {
     "diff": "Compare a map with its snapshot (from 'xodrcheck snapshot'): print what changed, exit 1 if anything did.",
 }
 SUBCOMMANDS = tuple(COMMANDS)
-
-EXIT_OK, EXIT_FINDINGS, EXIT_USAGE = 0, 1, 2
+EXIT_OK, EXIT_FINDINGS, EXIT_USAGE, EXIT_INCOMPLETE = 0, 1, 2, 3
 
 
 def command_module(name: str) -> ModuleType:
@@ -66,18 +68,28 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser(only=_chosen(argv) or "")
     args = parser.parse_args(argv)
-    import numpy as np  # here: `xodrcheck --help` and usage errors load no numpy
+    from xodrcheck.atomic import EXIT_INTERRUPTED, EXIT_TERMINATED, Terminated, signals_raise
 
     try:
-        # Damaged numbers (1e308 widths, say) overflow to inf/nan, which the rules report as findings; numpy's
-        # floating-point warnings would only repeat that as noise on stderr. IEEE results are the same either way.
-        with np.errstate(all="ignore"):
-            return int(args._run(args))
+        with signals_raise():
+            return _run(args)
     except KeyboardInterrupt:
         print("xodrcheck: interrupted", file=sys.stderr)
-        return 130
+        return EXIT_INTERRUPTED
+    except Terminated:
+        print("xodrcheck: terminated", file=sys.stderr)
+        return EXIT_TERMINATED
     except BrokenPipeError:
         return EXIT_OK
+
+
+def _run(args: argparse.Namespace) -> int:
+    import numpy as np  # here: `xodrcheck --help` and usage errors load no numpy
+
+    # Damaged numbers (1e308 widths, say) overflow to inf/nan, which the rules report as findings; numpy's
+    # floating-point warnings would only repeat that as noise on stderr. IEEE results are the same either way.
+    with np.errstate(all="ignore"):
+        return int(args._run(args))
 
 
 if __name__ == "__main__":

@@ -1,17 +1,20 @@
-"""What the subcommands share: reading a file with one clear line per problem, and writing output atomically."""
+"""What the subcommands share: reading a file with one clear line per problem, and writing output atomically.
+
+The rules every subcommand follows (the README's table): an input that cannot be opened or read whole gives one line
+and exit 2, and nothing is written for it; ``-o FILE`` is checked before any work and written whole or not at all
+(:mod:`xodrcheck.atomic`), also on Ctrl-C (exit 130) and SIGTERM (exit 143); exit 2 never leaves a new file.
+"""
 
 from __future__ import annotations
 
 import argparse
 import math
-import os
 import sys
-import tempfile
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
-from pathlib import Path
 from typing import IO, TYPE_CHECKING
 
+from xodrcheck.atomic import OutputError, atomic_file, check_target
 from xodrcheck.findings import ReadError, Severity
 
 if TYPE_CHECKING:
@@ -35,14 +38,26 @@ def error(message: str) -> None:
 
 
 def read_file(path: str) -> ReadResult | None:
-    """Read ``path``; on :class:`ReadError` print why and return ``None`` (the caller exits 2)."""
+    """Read ``path`` for a command that turns a map into data. ``None`` after one line on stderr (the caller exits 2,
+    writing nothing for this file) when it cannot be opened or cannot be read whole (see
+    :meth:`~xodrcheck.reader.ReadResult.not_whole`: not well-formed, not OpenDRIVE, entity references left out)."""
     from xodrcheck.reader import read  # here: `xodrcheck --help` loads no reader
 
     try:
-        return read(path)
+        result = read(path)
     except ReadError as exc:
-        error(f"cannot read {path}: {exc}")
+        error(str(exc))
         return None
+    why = result.not_whole()
+    if why is not None:
+        error(not_whole_message(path, why))
+        return None
+    return result
+
+
+def not_whole_message(path: str, why: str) -> str:
+    """The one line every command prints for a file it cannot read whole."""
+    return f"cannot read {path} whole, so nothing is written for it: {why}"
 
 
 def report_errors(path: str, result: ReadResult) -> bool:
@@ -57,30 +72,30 @@ def report_errors(path: str, result: ReadResult) -> bool:
     return True
 
 
-def _umask() -> int:
-    mask = os.umask(0o022)
-    os.umask(mask)
-    return mask
+def target_ok(path: str | None) -> bool:
+    """Whether ``-o path`` can be written, checked before any work (one line on stderr when it cannot: exit 2).
+    ``None`` and ``-`` (standard output) always can."""
+    if path is None or path == "-":
+        return True
+    try:
+        check_target(path)
+    except OutputError as exc:
+        error(str(exc))
+        return False
+    return True
 
 
 @contextmanager
 def output(path: str | None) -> Iterator[IO[str]]:
-    """A text stream for ``path`` (stdout for ``None`` or ``-``). A file is written to a temporary file beside it and
-    moved into place only when the block finishes without an exception, so a failed run leaves no partial file."""
+    """A text stream for ``path`` (stdout for ``None`` or ``-``). A file is written whole or not at all
+    (:func:`xodrcheck.atomic.atomic_file`): a failed or interrupted run leaves no partial file, and a problem with the
+    target raises :class:`~xodrcheck.atomic.OutputError` naming ``path``."""
     if path is None or path == "-":
         yield sys.stdout
         sys.stdout.flush()
         return
-    target = Path(path)
-    fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=target.parent)
-    try:
-        os.fchmod(fd, 0o666 & ~_umask())
-        with os.fdopen(fd, "w", encoding="utf-8", newline="") as stream:
-            yield stream
-        os.replace(tmp, target)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    with atomic_file(path, "w") as stream:
+        yield stream
 
 
 def guarded(path: str, action: Callable[[], int]) -> int:

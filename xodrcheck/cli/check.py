@@ -1,7 +1,10 @@
 """``xodrcheck check FILE...``: run the conformance rules and report what they find.
 
 Exit codes: 0 no error-level finding, 1 an error-level finding (``--strict``: a warning too), 2 a usage error (an
-unknown rule selector, a bad ``--tolerance``) or a file that cannot be read at all.
+unknown rule selector, a bad ``--tolerance``, an unwritable ``-o``) or a file that cannot be opened at all (then no
+``-o`` file is written), 3 the check is incomplete: a rule crashed (X900) or a time bound set with ``time_budget``
+stopped rules (X901), and nothing else failed. A file whose content cannot be read (empty, not XML, truncated) is not
+exit 2 here: that is what the check reports (X101, exit 1).
 
 Configuration comes from ``xodrcheck.toml`` or ``[tool.xodrcheck]`` in the nearest ``pyproject.toml`` (keys
 ``select``, ``ignore``, ``strict`` and a ``tolerances`` table); ``--select``/``--ignore`` replace the configured lists,
@@ -15,10 +18,12 @@ import dataclasses
 import sys
 from pathlib import Path
 
-from xodrcheck.cli._common import error, output
+from xodrcheck.atomic import OutputError
+from xodrcheck.cli._common import error, output, target_ok
 from xodrcheck.config import ConfigError, load_config
-from xodrcheck.findings import ReadError
+from xodrcheck.findings import ReadError, Severity
 from xodrcheck.report import FORMATS, render, summary
+from xodrcheck.rules.internal import ENGINE_CODES
 
 NAME = "check"
 HELP = "Check OpenDRIVE files against the conformance rules (exit 1 when an error is found)."
@@ -95,7 +100,7 @@ def _expand(files: list[str]) -> list[str]:
         if p.is_dir():
             found = sorted(str(f) for f in p.rglob("*.xodr") if f.is_file())
             if not found:
-                raise ReadError(f"{name}: a folder without .xodr files")
+                raise ReadError("a folder without .xodr files", name)
             out.extend(found)
         else:
             out.append(name)
@@ -123,12 +128,14 @@ def run(args: argparse.Namespace) -> int:
         error(f"check: configuration: {exc}")
         return 2
 
+    if not target_ok(args.output):
+        return 2
     reports = []
     unreadable = False  # a file that could not be checked: exit 2
     try:
         files = _expand(args.files)
     except ReadError as exc:
-        error(f"cannot read {exc}")
+        error(str(exc))
         return 2
     try:
         outcomes = check_files(
@@ -143,18 +150,45 @@ def run(args: argparse.Namespace) -> int:
         else:
             error(outcome.error or f"cannot check {outcome.path}")
             unreadable = True
+    if unreadable and args.output not in (None, "-"):
+        if reports:  # the others could be: say why their findings are not in the file either
+            error(f"nothing written to {args.output}: a file could not be checked")
+        return 2
     try:
         with output(args.output) as stream:
             stream.write(render(args.format, reports))
-    except OSError as exc:
-        error(f"cannot write {args.output}: {exc}")
+    except OutputError as exc:
+        error(str(exc))
         return 2
     if args.format == "text" and reports:
-        s = summary(reports)
-        print(
-            f"{s['files']} file(s) checked: {s['errors']} error(s), {s['warnings']} warning(s), {s['infos']} info",
-            file=sys.stderr,
-        )
+        print(_summary_line(reports), file=sys.stderr)
+    return exit_code(reports, unreadable)
+
+
+def exit_code(reports: list, unreadable: bool = False) -> int:
+    """2 when a file could not be checked, else 1 when a file fails for a finding of its own, else 3 when a check is
+    incomplete (a rule crashed or ran out of time, and nothing else failed), else 0."""
     if unreadable:
         return 2
-    return 0 if all(r.ok for r in reports) else 1
+    if any(not r.ok and not _fails_only_for_incompleteness(r) for r in reports):
+        return 1
+    if any(not r.complete for r in reports):
+        return 3
+    return 0
+
+
+def _fails_only_for_incompleteness(report) -> bool:
+    worst = Severity.WARNING if report.strict else Severity.ERROR
+    return all(f.code in ENGINE_CODES for f in report.findings if f.severity >= worst)
+
+
+def _summary_line(reports: list) -> str:
+    s = summary(reports)
+    line = f"{s['files']} file(s) checked: {s['errors']} error(s), {s['warnings']} warning(s), {s['infos']} info"
+    if s["files_incomplete"]:
+        stopped = sum(1 for r in reports for f in r.findings if f.code in ENGINE_CODES)
+        line += (
+            f"; INCOMPLETE: {stopped} rule(s) did not run to their end in {s['files_incomplete']} file(s) "
+            "(X900/X901): the verdict is not known"
+        )
+    return line

@@ -8,7 +8,11 @@ junction), ``junctions`` ({``total``: int, ``by_type``: {type: int}, ``by_legs``
 (int), ``lanes`` ({``total``: int, ``by_type``: {type: int}, ``counted``: "per lane section, centre lanes excluded"}),
 ``reference_line_length_m`` (float), ``geometry`` ({kind: int}), ``bounding_box`` ({``min_x``, ``min_y``, ``max_x``,
 ``max_y``: float, ``basis``: "lane borders" | "reference line" | "lane borders and reference line"} or null),
-``findings`` ({``error``, ``warning``, ``info``: int}).
+``findings`` ({``error``, ``warning``, ``info``: int}: what the reader found; the rules are not run, so a file
+``xodrcheck check`` fails may show 0 errors here), ``findings_counted`` (str, says so).
+
+A file that cannot be read whole (not well-formed, not OpenDRIVE) prints nothing and exits 2, as in every command; a
+file read whole with reader errors is summarised and exits 1.
 """
 
 from __future__ import annotations
@@ -26,6 +30,8 @@ HELP = "Summarise OpenDRIVE files: version, roads, junctions, lanes, geometry, e
 
 #: How lanes are counted, as printed.
 LANES_COUNTED = "per lane section, centre lanes excluded"
+#: What the findings counts cover, as printed: ``info`` reads, it does not check.
+FINDINGS_COUNTED = "found while reading (the rules are not run: `xodrcheck check` runs them)"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -54,6 +60,7 @@ def to_json(info: MapInfo) -> dict:
         if box is None
         else {"min_x": box.min_x, "min_y": box.min_y, "max_x": box.max_x, "max_y": box.max_y, "basis": box.basis},
         "findings": dict(info.findings),
+        "findings_counted": FINDINGS_COUNTED,
     }
 
 
@@ -89,7 +96,7 @@ def to_text(info: MapInfo) -> str:
             else f"x {box.min_x:.3f} .. {box.max_x:.3f}, y {box.min_y:.3f} .. {box.max_y:.3f} "
             f"({box.max_x - box.min_x:.1f} m x {box.max_y - box.min_y:.1f} m, {box.basis})",
         ),
-        ("findings", ", ".join(f"{n} {sev}" for sev, n in info.findings.items())),
+        ("findings", ", ".join(f"{n} {sev}" for sev, n in info.findings.items()) + f" {FINDINGS_COUNTED}"),
     ]
     width = max(len(label) for label, _ in rows)
     return "\n".join([str(info.path), *(f"  {label:<{width}}  {value}" for label, value in rows)])

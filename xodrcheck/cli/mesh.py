@@ -3,23 +3,25 @@
 Lanes are meshed under a chord tolerance (``--chord``, default the configured ``Tolerances.chord``), elevation and
 superelevation applied; ``--lane-types`` keeps only some lane types. Colours and grouping by lane type, axes and
 atomic writing: :mod:`xodrcheck.mesh_export`. Exit 0 when written, 1 when written but the reader found errors in the
-file (or there was nothing to mesh), 2 for a usage or I/O error (unknown extension, unreadable input, unwritable
-output).
+file (or there was nothing to mesh: no file then), 2 for a usage or I/O error (unknown extension, an input that cannot
+be read whole, an unwritable output, a mesh of more than ``max_output_points`` vertices): nothing written.
 """
 
 from __future__ import annotations
 
 import argparse
 
+from xodrcheck.atomic import OutputError
 from xodrcheck.cli._common import (
     error,
     guarded,
     positive_number,
     read_file,
     report_errors,
+    target_ok,
 )
 from xodrcheck.config import ConfigError, load_config
-from xodrcheck.mesh import build_surfaces
+from xodrcheck.mesh import MeshTooLarge, build_surfaces
 from xodrcheck.mesh_export import FORMATS, ExportError, format_of, write
 from xodrcheck.model import LaneType
 
@@ -65,28 +67,36 @@ def run(args: argparse.Namespace) -> int:
     except ExportError as exc:
         error(str(exc))
         return 2
+    if not target_ok(args.output):
+        return 2
 
     def one() -> int:
         try:
-            chord = args.chord if args.chord is not None else load_config().tolerances.chord
+            tolerances = load_config().tolerances
         except ConfigError as exc:
             error(f"configuration: {exc}")
             return 2
+        chord = args.chord if args.chord is not None else tolerances.chord
         result = read_file(args.file)
         if result is None:
             return 2
         failed = report_errors(args.file, result)
-        if result.document is None:
-            return 1
-        surfaces = build_surfaces(result.document, chord=chord, lane_types=args.lane_types)
+        try:
+            surfaces = build_surfaces(
+                result.document, chord=chord, lane_types=args.lane_types, max_vertices=tolerances.max_output_points
+            )
+        except MeshTooLarge as exc:
+            error(f"mesh: at --chord {chord:g}, {exc}; use a larger chord")
+            return 2
         try:
             write(surfaces, args.output)
         except ExportError as exc:
             error(f"{args.file}: {exc}")
             return 1
-        except OSError as exc:
-            error(f"cannot write {args.output}: {exc.strerror or exc}")
+        except OutputError as exc:
+            error(str(exc))
             return 2
+        print(f"{args.output}: {len(surfaces.vertices):,} vertices, {len(surfaces.faces):,} triangles")
         return 1 if failed else 0
 
     return guarded(args.file, one)

@@ -1,7 +1,9 @@
 """``xodrcheck metrics FILE... --format json|csv [-o OUT]``: expressive-range metrics of every junction.
 
-The metrics are defined in :mod:`xodrcheck.metrics`. Angles are in degrees, curvature in degrees per metre, areas in
-square metres; a value that does not apply is null (JSON) or empty (CSV).
+The metrics are defined in :mod:`xodrcheck.metrics`. Column names carry their unit: ``_m`` metres, ``_m2`` square
+metres, ``_deg`` degrees, ``_deg_per_m`` degrees per metre; ``conflict_ratio`` (conflict area / area) and
+``complexity`` are ratios in [0, 1], ``legs`` and the ``n_`` columns counts. A value that does not apply is null (JSON)
+or empty (CSV).
 
 * ``--format csv`` (default): one row per junction leg, with the junction's own columns repeated on each of its legs
   (a junction without legs gets one row with empty leg columns). Columns: :data:`COLUMNS`.
@@ -16,8 +18,10 @@ import csv
 import json
 import sys
 from collections.abc import Iterator
+from typing import IO
 
-from xodrcheck.cli._common import error, guarded, output, read_file, report_errors
+from xodrcheck.atomic import OutputError
+from xodrcheck.cli._common import error, guarded, output, read_file, report_errors, target_ok
 from xodrcheck.metrics import JunctionMetrics, LegMetrics, map_metrics
 
 NAME = "metrics"
@@ -30,11 +34,21 @@ JUNCTION_COLUMNS = (
     "legs",
     "n_connection_lanes",
     "n_u_turn_lanes",
-    "area",
-    "conflict_area",
+    "area_m2",
+    "conflict_area_m2",
     "conflict_ratio",
 )
-LEG_COLUMNS = ("leg", "road", "contact", "x", "y", "fov", "max_curvature", "corner_deviation", "complexity")
+LEG_COLUMNS = (
+    "leg",
+    "road",
+    "contact",
+    "x_m",
+    "y_m",
+    "fov_deg",
+    "max_curvature_deg_per_m",
+    "corner_deviation_deg",
+    "complexity",
+)
 #: CSV columns, in order.
 COLUMNS = ("file", *JUNCTION_COLUMNS, *LEG_COLUMNS)
 
@@ -53,8 +67,8 @@ def junction_fields(m: JunctionMetrics) -> dict:
         "legs": m.legs,
         "n_connection_lanes": m.n_connection_lanes,
         "n_u_turn_lanes": m.n_u_turn_lanes,
-        "area": m.area,
-        "conflict_area": m.conflict_area,
+        "area_m2": m.area,
+        "conflict_area_m2": m.conflict_area,
         "conflict_ratio": m.conflict_ratio,
     }
 
@@ -66,11 +80,11 @@ def leg_fields(index: int | None, leg: LegMetrics | None) -> dict:
         "leg": index,
         "road": leg.road,
         "contact": leg.end.value,
-        "x": leg.x,
-        "y": leg.y,
-        "fov": leg.fov,
-        "max_curvature": leg.max_curvature,
-        "corner_deviation": leg.corner_deviation,
+        "x_m": leg.x,
+        "y_m": leg.y,
+        "fov_deg": leg.fov,
+        "max_curvature_deg_per_m": leg.max_curvature,
+        "corner_deviation_deg": leg.corner_deviation,
         "complexity": leg.complexity,
     }
 
@@ -98,35 +112,68 @@ def _cell(value):
     return "" if value is None else value
 
 
-def run(args: argparse.Namespace) -> int:
+def _measure(path: str) -> tuple[int, tuple[JunctionMetrics, ...] | None]:
+    """Exit code and metrics of one file (``None`` when it cannot be read whole: one line on stderr)."""
+    result = read_file(path)
+    if result is None:
+        return 2, None
+    metrics = map_metrics(result.document)
+    return (1 if report_errors(path, result) else 0), metrics
+
+
+class _Writer:
+    """Writes the files' metrics in the chosen format; the CSV header goes out with the first rows (a run whose
+    files all fail to read prints nothing)."""
+
+    def __init__(self, stream: IO[str], fmt: str) -> None:
+        self.stream, self.fmt, self.csv = stream, fmt, None
+
+    def add(self, path: str, metrics: tuple[JunctionMetrics, ...]) -> None:
+        if self.fmt == "json":
+            self.stream.write(json.dumps(to_json(path, metrics)) + "\n")
+            return
+        if self.csv is None:
+            self.csv = csv.DictWriter(self.stream, fieldnames=COLUMNS, lineterminator="\n")
+            self.csv.writeheader()
+        self.csv.writerows({k: _cell(v) for k, v in row.items()} for row in rows(path, metrics))
+
+
+def _measure_all(files: list[str], sink) -> int:
+    """Measure each file and hand its metrics to ``sink(path, metrics)``; return the worst exit code."""
     worst = 0
+    for path in files:
+
+        def one(path: str = path) -> int:
+            result = read_file(path)
+            if result is None:
+                return 2
+            code = 1 if report_errors(path, result) else 0
+            sink(path, map_metrics(result.document))
+            return code
+
+        worst = max(worst, guarded(path, one))
+    return worst
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.output in (None, "-"):  # standard output: each file's metrics as soon as they are measured
+        worst = _measure_all(args.files, _Writer(sys.stdout, args.format).add)
+        sys.stdout.flush()
+        return worst
+    if not target_ok(args.output):
+        return 2
+    measured: list[tuple[str, tuple[JunctionMetrics, ...]]] = []
+    worst = _measure_all(args.files, lambda path, metrics: measured.append((path, metrics)))
+    if worst == 2:
+        if measured:  # the others could be: say why their metrics are not in the file either
+            error(f"nothing written to {args.output}: a file could not be measured")
+        return 2
     try:
         with output(args.output) as stream:
-            writer = None
-            if args.format == "csv":
-                writer = csv.DictWriter(stream, fieldnames=COLUMNS, lineterminator="\n")
-                writer.writeheader()
-            for path in args.files:
-
-                def one(path: str = path) -> int:
-                    result = read_file(path)
-                    if result is None:
-                        return 2
-                    if result.document is None:
-                        report_errors(path, result)
-                        return 2
-                    metrics = map_metrics(result.document)
-                    if writer is not None:
-                        writer.writerows({k: _cell(v) for k, v in row.items()} for row in rows(path, metrics))
-                    else:
-                        stream.write(json.dumps(to_json(path, metrics)) + "\n")
-                    return 1 if report_errors(path, result) else 0
-
-                worst = max(worst, guarded(path, one))
-    except BrokenPipeError:
-        raise
-    except OSError as exc:
-        error(f"cannot write {args.output}: {exc.strerror or exc}")
+            writer = _Writer(stream, args.format)
+            for path, metrics in measured:
+                writer.add(path, metrics)
+    except OutputError as exc:
+        error(str(exc))
         return 2
-    sys.stdout.flush()
     return worst

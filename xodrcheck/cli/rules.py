@@ -1,7 +1,8 @@
 """``xodrcheck rules [CODE]``: list the rules, or print one rule's documentation with its examples.
 
 ``CODE`` may be a code (``R010``) or a name (``road-link-target-missing``). JSON (``--format json``) gives a list of
-``{"code", "name", "category", "severity", "summary", "uids"}`` objects, or for one rule that object plus ``"doc"``.
+``{"code", "name", "category", "severity", "summary", "uids"}`` objects, or for one rule that object plus ``"doc"``. Text is
+plain (the docstrings' reStructuredText markup taken out); ``summary`` is the documentation's first sentence, whole.
 
 ``xodrcheck rules --standard`` lists every checker rule of ASAM OpenDRIVE 1.9.0 (Annex F) by UID with its status,
 computed from the registry: enforced (by which codes), enforced in part (and what is left out) or not enforced (and
@@ -15,6 +16,7 @@ import json
 
 from xodrcheck.cli._common import error
 from xodrcheck.rules import load_rules
+from xodrcheck.rules.plaintext import plain
 from xodrcheck.rules.registry import Rule
 
 NAME = "rules"
@@ -96,7 +98,7 @@ def run(args: argparse.Namespace) -> int:
             for uid in rule.uids:
                 part = f" (in part: {rule.partial[uid]})" if uid in rule.partial else ""
                 print(f"enforces {uid}{part}")
-            print(("\n" if rule.uids else "") + rule.doc)
+            print(("\n" if rule.uids else "") + plain(rule.doc))
         return 0
     if args.format == "json":
         print(json.dumps([_as_dict(r) for r in rules], indent=2))

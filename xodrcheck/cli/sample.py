@@ -8,14 +8,19 @@ are not sampled (with ``--borders`` their line is every ±1 lane's inner border)
   lengths in metres with 6 decimals).
 * ``geojson``: a FeatureCollection with one LineString per lane line, coordinates ``[x, y, z]`` in the map's own
   metric frame (not WGS 84), properties ``road``, ``section_s``, ``lane``, ``kind``, ``type``.
+
+A step that would give more than ``max_output_points`` points (10 million by default) is refused before anything is
+written, with the smallest step that fits (exit 2).
 """
 
 from __future__ import annotations
 
 import argparse
 import json
+import math
 from typing import IO
 
+from xodrcheck.atomic import OutputError
 from xodrcheck.cli._common import (
     error,
     guarded,
@@ -23,8 +28,10 @@ from xodrcheck.cli._common import (
     positive_number,
     read_file,
     report_errors,
+    target_ok,
 )
-from xodrcheck.sample import LaneLine, sample_lanes
+from xodrcheck.config import ConfigError, load_config
+from xodrcheck.sample import LaneLine, sample_count, sample_lanes
 
 NAME = "sample"
 HELP = "Sample every lane's centre line (and borders) at a fixed step, as CSV or GeoJSON."
@@ -85,24 +92,46 @@ def write_geojson(lines, stream: IO[str]) -> None:
     stream.write("\n]}\n")
 
 
+def _step_that_fits(document, step: float, kinds: tuple[str, ...], cap: int) -> float:
+    """The smallest step of three significant digits, from ``step`` up, whose sample count is within ``cap``."""
+    while True:
+        exponent = math.floor(math.log10(step)) - 2
+        rounded = math.ceil(step / 10.0**exponent) * 10.0**exponent
+        if sample_count(document, rounded, kinds) <= cap:
+            return rounded
+        step = rounded * 1.001
+
+
 def run(args: argparse.Namespace) -> int:
+    if not target_ok(args.output):
+        return 2
+
     def one() -> int:
+        try:
+            cap = load_config().tolerances.max_output_points
+        except ConfigError as exc:
+            error(f"configuration: {exc}")
+            return 2
         result = read_file(args.file)
         if result is None:
             return 2
         failed = report_errors(args.file, result)
-        if result.document is None:
-            return 1
         kinds = ("centre", "inner", "outer") if args.borders else ("centre",)
-        lines = sample_lanes(result.document, args.step, kinds)
+        count = sample_count(result.document, args.step, kinds)
+        if count > cap:
+            fits = _step_that_fits(result.document, args.step * count / cap, kinds, cap)
+            error(
+                f"sample: --step {args.step:g} would give {count:.3g} points, more than the bound of {cap:,} "
+                f"(tolerance max_output_points); use a step of at least {fits:g} m"
+            )
+            return 2
+        lines = sample_lanes(result.document, args.step, kinds, budget=cap)
         writer = write_geojson if args.format == "geojson" else write_csv
         try:
             with output(args.output) as stream:
                 writer(lines, stream)
-        except BrokenPipeError:
-            raise
-        except OSError as exc:
-            error(f"cannot write {args.output}: {exc.strerror or exc}")
+        except OutputError as exc:
+            error(str(exc))
             return 2
         return 1 if failed else 0
 

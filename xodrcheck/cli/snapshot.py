@@ -1,5 +1,6 @@
 """``xodrcheck snapshot FILE.xodr [-o SNAP.json]``: write the invariants of a map as JSON (see
-:mod:`xodrcheck.snapshot`). Exit 0 when the snapshot was written, 2 when the file or the configuration cannot be read.
+:mod:`xodrcheck.snapshot`). Exit 0 when the snapshot was written, 2 when the file cannot be read whole, the
+configuration cannot be read or the output cannot be written (nothing written then).
 """
 
 from __future__ import annotations
@@ -7,10 +8,11 @@ from __future__ import annotations
 import argparse
 import json
 
-from xodrcheck.cli._common import error, guarded, output
+from xodrcheck.atomic import OutputError
+from xodrcheck.cli._common import error, guarded, not_whole_message, output, target_ok
 from xodrcheck.config import Config, ConfigError, load_config
 from xodrcheck.findings import ReadError
-from xodrcheck.snapshot import Snapshot, snapshot_of
+from xodrcheck.snapshot import NotReadWhole, Snapshot, snapshot_of
 
 NAME = "snapshot"
 HELP = (
@@ -33,8 +35,11 @@ def snapshot_or_error(path: str, config: Config) -> Snapshot | None:
     """The snapshot of the map at ``path``, or ``None`` after one error line when it cannot be taken."""
     try:
         return snapshot_of(path, config)
-    except (ReadError, ValueError) as exc:
-        error(f"cannot snapshot {path}: {exc}")
+    except ReadError as exc:
+        error(str(exc))
+        return None
+    except NotReadWhole as exc:
+        error(not_whole_message(path, exc.why))
         return None
 
 
@@ -49,7 +54,7 @@ def config_or_error() -> Config | None:
 
 def run(args: argparse.Namespace) -> int:
     config = config_or_error()
-    if config is None:
+    if config is None or not target_ok(args.output):
         return 2
 
     def one() -> int:
@@ -59,8 +64,8 @@ def run(args: argparse.Namespace) -> int:
         try:
             with output(args.output) as stream:
                 stream.write(dumps(snap.to_json()))
-        except OSError as exc:
-            error(f"cannot write {args.output}: {exc}")
+        except OutputError as exc:
+            error(str(exc))
             return 2
         return 0
 

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from xodrcheck.config import Tolerances
-from xodrcheck.findings import Finding, ReadError
+from xodrcheck.findings import Finding, ReadError, Severity
 from xodrcheck.model import Document
 from xodrcheck.reader.context import Context
 from xodrcheck.reader.document import KNOWN_VERSIONS, build_document
@@ -29,6 +29,8 @@ from xodrcheck.rules import xml as R
 __all__ = ["KNOWN_VERSIONS", "ReadResult", "parse", "read"]
 
 _GZIP_MAGIC = b"\x1f\x8b"
+#: Reader findings after which the file counts as not read whole (see :meth:`ReadResult.not_whole`).
+_NOT_WHOLE = frozenset({R.NOT_WELL_FORMED.code, R.DOCTYPE.code, R.WRONG_ROOT.code})
 
 
 @dataclass(frozen=True)
@@ -39,37 +41,52 @@ class ReadResult:
     findings: tuple[Finding, ...]
     path: str | None
 
+    def not_whole(self) -> str | None:
+        """Why the file could not be read whole (``None`` when it was): it is not well-formed XML (``X101``: nothing,
+        or only what a recovering parser kept, was read), its root is not ``<OpenDRIVE>`` (``X201``), or entity
+        references were left out (``X102`` at error level). The commands that turn a map into data (``info``,
+        ``sample``, ``mesh``, ``metrics``, ``snapshot``, ``diff``, ``junctionart render``) refuse such a file rather
+        than give data about part of it; ``check`` reports these findings like any other."""
+        for f in self.findings:
+            if f.code in _NOT_WHOLE and f.severity >= Severity.ERROR:
+                return f"{f.code} {f.name}: {f.message}"
+        if self.document is None:
+            return "no OpenDRIVE document could be read"
+        return None
+
 
 def _size(n: int) -> str:
     return f"{n / 2**20:.1f} MiB" if n >= 2**20 else f"{n} bytes"
 
 
-def _too_large(n: int, limit: int) -> ReadError:
-    return ReadError(f"it is larger than the limit of {_size(limit)} (tolerance max_file_bytes); raise it to read it")
+def _too_large(n: int, limit: int, path: str | None) -> ReadError:
+    return ReadError(
+        f"it is larger than the limit of {_size(limit)} (tolerance max_file_bytes); raise it to read it", path
+    )
 
 
 def _load(path: str, limit: int) -> bytes:
     try:
         info = os.stat(path)
     except FileNotFoundError:
-        raise ReadError("no such file") from None
+        raise ReadError("no such file", path) from None
     except OSError as exc:
-        raise ReadError(exc.strerror or str(exc)) from None
+        raise ReadError(exc.strerror or str(exc), path) from None
     if stat.S_ISDIR(info.st_mode):
-        raise ReadError("it is a directory, not a file")
+        raise ReadError("it is a directory, not a file", path)
     if info.st_size > limit:
-        raise _too_large(info.st_size, limit)
+        raise _too_large(info.st_size, limit, path)
     try:
         with open(path, "rb") as stream:
             data = stream.read(limit + 1)  # not a regular file (a pipe): the limit still holds
     except OSError as exc:
-        raise ReadError(exc.strerror or str(exc)) from None
+        raise ReadError(exc.strerror or str(exc), path) from None
     if len(data) > limit:
-        raise _too_large(len(data), limit)
+        raise _too_large(len(data), limit, path)
     return data
 
 
-def _gunzip(data: bytes, limit: int, findings: list[Finding]) -> bytes | None:
+def _gunzip(data: bytes, limit: int, findings: list[Finding], path: str | None) -> bytes | None:
     try:
         with gzip.GzipFile(fileobj=io.BytesIO(data)) as stream:
             out = stream.read(limit + 1)
@@ -82,7 +99,7 @@ def _gunzip(data: bytes, limit: int, findings: list[Finding]) -> bytes | None:
         )
         return None
     if len(out) > limit:
-        raise ReadError(f"decompressed, it is larger than the limit of {_size(limit)} (tolerance max_file_bytes)")
+        raise ReadError(f"decompressed, it is larger than the limit of {_size(limit)} (tolerance max_file_bytes)", path)
     return out
 
 
@@ -97,13 +114,13 @@ def read(source: str | os.PathLike[str] | bytes, *, max_bytes: int | None = None
         data = bytes(source)
         path = None
         if len(data) > limit:
-            raise _too_large(len(data), limit)
+            raise _too_large(len(data), limit, None)
     else:
         path = str(Path(source))
         data = _load(path, limit)
     findings: list[Finding] = []
     if data.startswith(_GZIP_MAGIC):
-        unpacked = _gunzip(data, limit, findings)
+        unpacked = _gunzip(data, limit, findings, path)
         if unpacked is None:
             return ReadResult(None, tuple(findings), path)
         data = unpacked

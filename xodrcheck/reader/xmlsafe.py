@@ -14,6 +14,8 @@ of hundreds of MB through. A file that is not well-formed is parsed again in rec
 
 from __future__ import annotations
 
+import dataclasses
+
 import re
 
 from lxml import etree
@@ -170,11 +172,12 @@ def _check_declared_encoding(data: bytes, findings: list[Finding]) -> None:
         )
 
 
-def _drop_doctype(data: bytes, findings: list[Finding]) -> bytes | None:
-    """Replace a DOCTYPE in the prolog by as many newlines; ``None`` when it never ends."""
+def _drop_doctype(data: bytes, findings: list[Finding]) -> tuple[bytes | None, frozenset[str]]:
+    """Replace a DOCTYPE in the prolog by as many newlines (``None`` when it never ends); also the names of the
+    entities it declared."""
     pos = _PROLOG_SKIP.match(data).end()
     if not data.startswith(b"<!DOCTYPE", pos):
-        return data
+        return data, frozenset()
     in_subset = False
     end = -1
     for token in _DOCTYPE_TOKEN.finditer(data, pos + 9):
@@ -191,7 +194,7 @@ def _drop_doctype(data: bytes, findings: list[Finding]) -> bytes | None:
         findings.append(
             R.NOT_WELL_FORMED.finding(f"the DOCTYPE at line {line} never ends; nothing could be read", line=line)
         )
-        return None
+        return None, frozenset()
     doctype = data[pos:end]
     entities = [m.group(2).decode("utf-8", "replace") for m in _ENTITY_DECL.finditer(doctype)]
     external = b"SYSTEM" in doctype or b"PUBLIC" in doctype
@@ -208,7 +211,7 @@ def _drop_doctype(data: bytes, findings: list[Finding]) -> bytes | None:
         message = f"the DOCTYPE at line {line} {what}; it was ignored"
         severity = Severity.WARNING
     findings.append(R.DOCTYPE.finding(message, severity=severity, line=line))
-    return data[:pos] + b"\n" * doctype.count(b"\n") + data[end:]
+    return data[:pos] + b"\n" * doctype.count(b"\n") + data[end:], frozenset(entities)
 
 
 def _syntax_message(error: etree._LogEntry | None, data: bytes) -> tuple[str, int | None]:
@@ -250,7 +253,7 @@ def parse(
         _check_declared_encoding(data, findings)
     else:
         data = _drop_prefix(wide, findings)
-    stripped = _drop_doctype(data, findings)
+    stripped, declared = _drop_doctype(data, findings)
     if stripped is None:
         return None, findings
     data = stripped
@@ -260,13 +263,19 @@ def parse(
         root = etree.fromstring(data, parser)
     except etree.XMLSyntaxError:
         errors = [e for e in parser.error_log if e.level >= etree.ErrorLevels.ERROR]
-        message, line = _syntax_message(errors[0] if errors else None, data)
+        references = [e for e in errors if _declared_entity(e, declared)]
+        errors = [e for e in errors if not _declared_entity(e, declared)]
         root = None
-        if recover and data.strip():
+        if (recover or not errors) and data.strip():
             try:
                 root = etree.fromstring(data, _parser(recover=True))
             except etree.XMLSyntaxError:
                 pass
+        if references:
+            _count_references(findings, references)
+        if not errors and root is not None:  # only references to the DOCTYPE's entities, which X102 reports
+            return _finish(root, strip_namespaces), findings
+        message, line = _syntax_message(errors[0] if errors else None, data)
         where = f" at line {line}" if line else ""
         then = (
             "xodrcheck read what a recovering parser could build, so parts of the map may be missing"
@@ -274,8 +283,35 @@ def parse(
             else "nothing could be read"
         )
         findings.append(R.NOT_WELL_FORMED.finding(f"not well-formed XML{where}: {message}; {then}", line=line))
+    return _finish(root, strip_namespaces), findings
+
+
+def _finish(root: etree._Element | None, strip_namespaces: bool) -> etree._Element | None:
     if root is not None and strip_namespaces:
         tag = root.tag
         if isinstance(tag, str) and tag[0] == "{":
             _strip_namespaces(root)
-    return root, findings
+    return root
+
+
+_UNDECLARED = re.compile(r"Entity '([^']+)' not defined")
+
+
+def _declared_entity(error: etree._LogEntry, declared: frozenset[str]) -> bool:
+    """Whether ``error`` is a reference to an entity the dropped DOCTYPE declared (X102 covers it, not X101)."""
+    found = _UNDECLARED.search(error.message or "")
+    return found is not None and found.group(1) in declared
+
+
+def _count_references(findings: list[Finding], references: list[etree._LogEntry]) -> None:
+    """Say in the X102 finding how many references were left out and where the first is."""
+    for k, f in enumerate(findings):
+        if f.code == R.DOCTYPE.code:
+            n = len(references)
+            first = f", the first at line {references[0].line}" if references[0].line else ""
+            message = f.message.replace(
+                "so every reference to them is left out",
+                f"so the {n} reference{'' if n == 1 else 's'} to them{first}, {'was' if n == 1 else 'were'} left out",
+            )
+            findings[k] = dataclasses.replace(f, message=message)
+            return

@@ -37,6 +37,7 @@ def summary(reports: Sequence[Report]) -> dict:
     return {
         "files": len(reports),
         "files_failed": sum(1 for r in reports if not r.ok),
+        "files_incomplete": sum(1 for r in reports if not r.complete),
         "findings": sum(len(r.findings) for r in reports),
         "errors": counts["error"],
         "warnings": counts["warning"],

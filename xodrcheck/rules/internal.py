@@ -13,7 +13,8 @@ RULE_CRASHED = declare(
     """A rule raised an exception instead of reporting; the file could not be fully checked.
 
     This is a fault of xodrcheck, not necessarily of the file: please report it with the file. The finding names the
-    rule and the exception; the other rules still ran.
+    rule and the exception; the other rules still ran. The check is incomplete: ``xodrcheck check`` exits with 3 when
+    nothing else failed.
 
     Passing example: any file on which every rule runs to its end.
 
@@ -25,14 +26,20 @@ RULE_OUT_OF_TIME = declare(
     "X901",
     "rule-out-of-time",
     Category.XML,
-    Severity.WARNING,
-    """A rule was not run, or was stopped part way, because the file's time budget (tolerance ``time_budget``) was
-    spent. A stopped rule keeps the findings it gave before.
+    Severity.ERROR,
+    """A rule was not run, or was stopped part way, because the check's time bound (tolerance ``time_budget``) was
+    reached: the check is incomplete. A stopped rule keeps the findings it gave before.
 
-    Raise ``time_budget`` (``--tolerance time_budget=600``) to check large maps completely.
+    There is no time bound unless one is set (``time_budget`` is 0 by default), so a verdict never depends on how fast
+    the machine is. A bound set with ``--tolerance time_budget=600`` (or in a configuration file) trades completeness
+    for time: what was not checked is not known to be right, so this finding is an error and ``xodrcheck check`` exits
+    with 3 ("incomplete") when nothing else failed.
 
-    Passing example: a file whose rules all finish within the budget.
+    Passing example: any file checked without a time bound, or whose rules all finish within it.
 
     Failing example: a map of several hundred megabytes checked with ``--tolerance time_budget=1``.
     """,
 )
+
+#: Codes of the engine's own findings: a report with one of them is incomplete.
+ENGINE_CODES = frozenset({RULE_CRASHED.code, RULE_OUT_OF_TIME.code})

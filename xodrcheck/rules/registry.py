@@ -43,7 +43,10 @@ class Rule:
 
     @property
     def summary(self) -> str:
-        return self.doc.strip().splitlines()[0] if self.doc.strip() else self.name
+        """The documentation's first sentence, whole, as plain text."""
+        from xodrcheck.rules.plaintext import summary
+
+        return summary(self.doc) if self.doc.strip() else self.name
 
     def finding(self, message: str, *, severity: Severity | None = None, uid: str | None = None, **where) -> Finding:
         """A finding of this rule; ``where`` takes the :class:`Finding` location fields (road, lane, section_s, s,

@@ -44,9 +44,11 @@ DOCTYPE = declare(
     The file has a DOCTYPE; xodrcheck neither loads DTDs nor expands entities.
 
     OpenDRIVE never needs a DOCTYPE. Entity declarations in one are how "billion laughs" expansion bombs and external
-    entities that read local files work, so the reader drops the DOCTYPE before parsing: entity references become
-    undefined (and are left out, with an ``xml-not-well-formed`` finding) and no file or URL named in it is ever
-    opened. An error when the DOCTYPE declares entities, a warning for a bare one.
+    entities that read local files work, so the reader drops the DOCTYPE before parsing: references to its entities
+    are left out (this finding counts them and names the line of the first; they are not reported again as
+    ``xml-not-well-formed``) and no file or URL named in it is ever opened. An error when the DOCTYPE declares
+    entities, a warning for a bare one. A file with left-out references is not read whole: the commands that turn a
+    map into data refuse it.
 
     Passes::
 
@@ -155,8 +157,8 @@ MISSING_ELEMENT = declare(
     Category.SCHEMA,
     Severity.ERROR,
     """
-    An element the model needs is missing: ``<header>``, a road's ``<planView>`` or ``<lanes>``, a ``<laneSection>``
-    in ``<lanes>``, a geometry in ``<planView>``, or the centre lane 0 of a lane section.
+    An element the model needs is missing. It is one of: ``<header>``, a road's ``<planView>`` or ``<lanes>``, a
+    ``<laneSection>`` in ``<lanes>``, a geometry in ``<planView>``, or the centre lane 0 of a lane section.
 
     The parent is kept (a road without ``<planView>`` has no reference line, a lane section without lane 0 keeps its
     other lanes) so that the rest of the map can still be checked.
@@ -215,9 +217,9 @@ INVALID_ATTRIBUTE = declare(
     Category.SCHEMA,
     Severity.ERROR,
     """
-    An attribute's value is not valid: not a number (``"seven"``, ``"1,5"``), not finite (``NaN``, ``INF``), negative
-    where the standard requires a value >= 0 (a length, an ``s``), not an integer where one is required (a lane id,
-    ``revMinor``), or not one of the values the standard allows (``contactPoint="middle"``).
+    An attribute's value is not valid. It is not a number (``"seven"``, ``"1,5"``), not finite (``NaN``, ``INF``),
+    negative where the standard requires a value >= 0 (a length, an ``s``), not an integer where one is required (a
+    lane id, ``revMinor``), or not one of the values the standard allows (``contactPoint="middle"``).
 
     Passes::
 
@@ -274,9 +276,10 @@ OUT_OF_ORDER = declare(
     Category.SCHEMA,
     Severity.ERROR,
     """
-    Records that the standard orders by ``s`` come in descending order: geometries, elevation, superelevation,
-    laneOffset and lane-section starts along the road, or width, border, height, roadMark and speed ``sOffset`` values
-    inside a lane. Readers disagree about which record applies where. The records are kept in file order.
+    Records that the standard orders by ``s`` come in descending order. These are geometries, elevation,
+    superelevation, laneOffset and lane-section starts along the road, or width, border, height, roadMark and speed
+    ``sOffset`` values inside a lane. Readers disagree about which record applies where. The records are kept in file
+    order.
 
     Passes::
 

@@ -16,6 +16,7 @@ EXAMPLE = REPO / "examples" / "t-junction.xodr"
 
 JSON_KEYS = {
     "file",
+    "findings_counted",
     "opendrive_version",
     "roads",
     "junction_roads",
@@ -128,6 +129,8 @@ def test_text_output(tmp_path, capsys):
     assert "3 (per lane section, centre lanes excluded): driving 2, sidewalk 1" in out
     assert "100.000 m of reference line" in out
     assert "x 0.000 .. 100.000, y -5.500 .. 0.000" in out
+    # info reads, it does not check: its counts must not read as the check's verdict
+    assert "0 error, 0 warning, 0 info found while reading (the rules are not run" in out
 
 
 def test_several_files_print_one_object_each(tmp_path, capsys):
@@ -159,13 +162,18 @@ def test_worst_exit_code_wins_and_good_files_are_still_reported(tmp_path, capsys
     assert [i["file"] for i in infos] == [str(good)]
 
 
-def test_not_xml_is_an_error_finding_exit_1(tmp_path, capsys):
+def test_not_xml_cannot_be_read_whole_exit_2_and_nothing_printed(tmp_path, capsys):
     path = write(tmp_path, "this is not < xml")
+    code, infos, err = info_json(capsys, path)
+    assert code == 2 and infos == []
+    assert err.count("\n") == 1 and f"cannot read {path} whole" in err and "X101" in err
+
+
+def test_reader_errors_in_a_file_read_whole_exit_1_with_the_summary(tmp_path, capsys):
+    path = write(tmp_path, maps.STRAIGHT.replace('length="100"', 'length="seven"', 1))
     code, (info,), err = info_json(capsys, path)
-    assert code == 1
-    assert info["findings"]["error"] >= 1
-    assert info["roads"] == 0 and info["bounding_box"] is None
-    assert err.count("\n") == 1 and str(path) in err
+    assert code == 1 and info["findings"]["error"] >= 1
+    assert err.count("\n") == 1 and "X206" in err
 
 
 def test_usage_error_exits_2(capsys):

@@ -33,7 +33,33 @@ def test_one_rule_prints_its_full_doc_with_examples(capsys, which):
     assert main(["rules", which]) == 0
     out = capsys.readouterr().out
     assert out.startswith("R010 road-link-target-missing (reference, error)")
-    assert "Passes::" in out and "Fails" in out and "<successor" in out
+    assert "Passes" in out and "Fails" in out and "<successor" in out
+    assert "::" not in out and "``" not in out  # plain text, not reStructuredText
+
+
+def test_list_is_plain_text_with_whole_sentences(capsys):
+    """Summaries were the docstring's first line: markup (``min_radius``) and sentences cut at the line end (X203
+    ended in "a ``<laneSection>``")."""
+    assert main(["rules"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines and not any("``" in line or ":class:" in line for line in lines)
+    assert all(line.rstrip().endswith((".", "!", "?", ")")) for line in lines), [
+        line for line in lines if not line.rstrip().endswith((".", "!", "?", ")"))
+    ]
+    (x203,) = [line for line in lines if line.startswith("X203")]
+    assert x203.endswith("An element the model needs is missing.")
+
+
+def test_plain_text_conversion():
+    from xodrcheck.rules.plaintext import plain, summary
+
+    assert plain("a ``min_radius`` and :class:`~xodrcheck.config.Tolerances` and `x`") == (
+        "a min_radius and Tolerances and x"
+    )
+    assert plain("Passes (an arc)::\n\n    <arc/>") == "Passes (an arc):\n\n    <arc/>"
+    assert summary("One sentence that goes on\n   over two lines, e.g. this. Another.") == (
+        "One sentence that goes on over two lines, e.g. this."
+    )
 
 
 def test_one_rule_as_json(capsys):
@@ -50,5 +76,5 @@ def test_unknown_rule_exits_2(capsys):
 @pytest.mark.parametrize("rule", sorted(load_rules().values(), key=lambda r: r.code), ids=lambda r: r.code)
 def test_every_rule_documents_a_passing_and_a_failing_example(rule):
     doc = rule.doc
-    assert rule.summary and len(rule.summary) <= 120
+    assert rule.summary and len(rule.summary) <= 140 and rule.summary.endswith((".", "!", "?", ")")), rule.summary
     assert "Pass" in doc and "Fail" in doc, rule.code
