@@ -23,7 +23,7 @@ pytestmark = pytest.mark.slow
 def _schema_files() -> set[str]:
     """Schema files of the source tree, relative to ``schemas/``."""
     files = {p.relative_to(SCHEMAS).as_posix() for p in SCHEMAS.rglob("*.xsd")}
-    assert len(files) > 20, "the source tree should hold the XSDs of OpenDRIVE 1.1 to 1.8.1"
+    assert len(files) > 20, "the source tree should hold the XSDs of OpenDRIVE 1.1 to 1.9.0"
     return files | {"NOTICE.md"}
 
 

@@ -1,6 +1,6 @@
 """The OpenDRIVE XML schema of a declared version, compiled once per process, and validation with source lines.
 
-Versions 1.1 to 1.7 use XSD 1.0 and compile in lxml in milliseconds. 1.8 uses XSD 1.1 (``xs:assert``,
+Versions 1.1 to 1.7 use XSD 1.0 and compile in lxml in milliseconds. 1.8 and 1.9 use XSD 1.1 (``xs:assert``,
 ``xs:alternative``), which lxml cannot compile: xmlschema's ``XMLSchema11`` validator is used, and since building it
 takes about half a second, the compiled schema is cached per version. xmlschema validates about 1 MB/s, so a file is
 first given a fast verdict (:mod:`xodrcheck.schema_fast`: lxml on the XSD 1.0 part, with the alternatives made
@@ -10,8 +10,10 @@ which reports its errors.
 Which schema a version gets (:data:`SCHEMA_FOLDERS`): the header has only ``revMajor`` and ``revMinor`` (its
 ``version`` attribute is the map's own version, not the standard's), so a patch release cannot be told apart from its
 minor release. Each minor version therefore gets its latest patch release shipped here: 1.6 -> 1.6.1, 1.7 -> 1.7.0,
-1.8 -> 1.8.1. 1.8.1 is the 1.8 errata release (it adds id-uniqueness asserts and fixes the signal-board and
-outline definitions); a 1.8.0 map that 1.8.1 rejects is also wrong by 1.8.0's prose.
+1.8 -> 1.8.1, 1.9 -> 1.9.0. 1.8.1 is the 1.8 errata release (it adds id-uniqueness asserts and fixes the signal-board
+and outline definitions); a 1.8.0 map that 1.8.1 rejects is also wrong by 1.8.0's prose. 1.8.1 and 1.9.0 are used in
+their corrected copies (``1.8.1-corrected``, ``1.9.0-corrected``: the official files with the edits of
+:mod:`xodrcheck.schema_errata`, without which every multiBoard signal, vmsGroup and defaultRegulations is invalid).
 """
 
 from __future__ import annotations
@@ -33,11 +35,12 @@ SCHEMA_FOLDERS: dict[tuple[int, int], tuple[str, str]] = {
     (1, 5): ("1.5", "OpenDRIVE_1.5M.xsd"),
     (1, 6): ("1.6.1", "opendrive_16_core.xsd"),
     (1, 7): ("1.7.0", "opendrive_17_core.xsd"),
-    (1, 8): ("1.8.1", "OpenDRIVE_Core.xsd"),
+    (1, 8): ("1.8.1-corrected", "OpenDRIVE_Core.xsd"),
+    (1, 9): ("1.9.0-corrected", "OpenDRIVE_Core.xsd"),
 }
 
 #: Versions whose schema needs an XSD 1.1 processor.
-XSD11 = frozenset({(1, 8)})
+XSD11 = frozenset({(1, 8), (1, 9)})
 
 _lock = threading.Lock()
 
@@ -53,7 +56,7 @@ class SchemaError:
 def schema_name(version: tuple[int, int]) -> str | None:
     """The schema release used for a declared version, e.g. ``"1.8.1"`` (``None``: no schema for it)."""
     entry = SCHEMA_FOLDERS.get(version)
-    return None if entry is None else entry[0]
+    return None if entry is None else entry[0].removesuffix("-corrected")
 
 
 def _schema_file(version: tuple[int, int]):

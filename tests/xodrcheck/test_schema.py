@@ -19,9 +19,10 @@ def test_minor_versions_map_to_their_latest_patch_release():
     assert schema.schema_name((1, 6)) == "1.6.1"
     assert schema.schema_name((1, 7)) == "1.7.0"
     assert schema.schema_name((1, 8)) == "1.8.1"
-    assert schema.schema_name((1, 9)) is None and schema.schema_name((2, 0)) is None
+    assert schema.schema_name((1, 9)) == "1.9.0"
+    assert schema.schema_name((1, 10)) is None and schema.schema_name((2, 0)) is None
     with pytest.raises(KeyError):
-        schema.compiled((1, 9))
+        schema.compiled((1, 10))
 
 
 def _doc(minor: int, header_extra: str = "") -> etree._ElementTree:
@@ -35,12 +36,12 @@ def _doc(minor: int, header_extra: str = "") -> etree._ElementTree:
     return etree.ElementTree(etree.fromstring(text.encode()))
 
 
-@pytest.mark.parametrize("minor", [6, 7, 8])
+@pytest.mark.parametrize("minor", [6, 7, 8, 9])
 def test_a_minimal_map_is_valid(minor):
     assert list(schema.validate(_doc(minor), (1, minor))) == []
 
 
-@pytest.mark.parametrize("minor", [6, 7, 8])
+@pytest.mark.parametrize("minor", [6, 7, 8, 9])
 def test_an_error_carries_its_line(minor):
     (err,) = list(schema.validate(_doc(minor, ' bogus="1"'), (1, minor)))
     assert err.line == 2 and "bogus" in err.message

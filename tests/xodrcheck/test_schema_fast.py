@@ -1,5 +1,5 @@
-"""The fast XSD 1.1 verdict (xodrcheck.schema_fast) against the full validator (xmlschema): it may only say "valid"
-where xmlschema finds no error, and it must say so for valid files, or the speed is lost."""
+"""The fast XSD 1.1 verdict (xodrcheck.schema_fast) against the full validator (xmlschema), for OpenDRIVE 1.8 and 1.9:
+it may only say "valid" where xmlschema finds no error, and it must say so for valid files, or the speed is lost."""
 
 from __future__ import annotations
 
@@ -15,7 +15,8 @@ from fuzz.mutations import damaged_documents
 from xodrcheck import schema, schema_fast
 
 V18 = (1, 8)
-FOLDER, MAIN = schema.SCHEMA_FOLDERS[V18]
+V19 = (1, 9)
+XSD11_VERSIONS = pytest.mark.parametrize("version", [V18, V19], ids=["1.8", "1.9"])
 
 
 def _tree(data: bytes):
@@ -23,28 +24,40 @@ def _tree(data: bytes):
     return etree.ElementTree(etree.fromstring(data, parser))
 
 
-def _fast(tree) -> bool:
-    return schema_fast.is_valid(tree, schema.compiled(V18), FOLDER, MAIN)
+def _version_of(tree) -> tuple[int, int]:
+    header = tree.getroot().find("header")
+    return (1, int(header.get("revMinor"))) if header is not None else V18
 
 
-def _full(tree) -> list[str]:
+def _fast(tree, version=None) -> bool:
+    version = version or _version_of(tree)
+    folder, main = schema.SCHEMA_FOLDERS[version]
+    return schema_fast.is_valid(tree, schema.compiled(version), folder, main)
+
+
+def _full(tree, version=None) -> list[str]:
     """Errors of the full XSD 1.1 validator alone."""
-    return [str(e.reason or e.message) for e in schema.compiled(V18).iter_errors(tree)]
+    version = version or _version_of(tree)
+    return [str(e.reason or e.message) for e in schema.compiled(version).iter_errors(tree)]
 
 
-def _doc(junctions: str = "", objects: str = "", extra_root: str = "") -> bytes:
+LANES = """<lanes><laneSection s="0"><center><lane id="0" type="none" level="false"/></center>
+      <right><lane id="-1" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>
+    </laneSection></lanes>"""
+
+
+def _doc(junctions: str = "", objects: str = "", extra_root: str = "", minor: int = 8, lanes: str = LANES) -> bytes:
+    """Three roads (the third inside junction 100) and ``junctions``; road 1 has ``lanes`` and ``objects``."""
     road = """<road id="{id}" length="10" junction="{junction}">{link}
     <planView><geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry></planView>
-    <lanes><laneSection s="0"><center><lane id="0" type="none" level="false"/></center>
-      <right><lane id="-1" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane></right>
-    </laneSection></lanes>{objects}
+    {lanes}{objects}
   </road>"""
     roads = "".join(
-        road.format(id=i, junction=j, link="", objects=objects if i == 1 else "")
+        road.format(id=i, junction=j, link="", objects=objects if i == 1 else "", lanes=lanes if i == 1 else LANES)
         for i, j in ((1, "-1"), (2, "-1"), (3, "100"))
     )
     return (
-        f'<?xml version="1.0" encoding="UTF-8"?>\n<OpenDRIVE{extra_root}><header revMajor="1" revMinor="8"/>'
+        f'<?xml version="1.0" encoding="UTF-8"?>\n<OpenDRIVE{extra_root}><header revMajor="1" revMinor="{minor}"/>'
         f"{roads}{junctions}</OpenDRIVE>"
     ).encode()
 
@@ -59,48 +72,63 @@ DIRECT = (
 )
 
 
+@XSD11_VERSIONS
 @pytest.mark.parametrize("junction", [COMMON, DIRECT], ids=["common", "direct"])
-def test_valid_junctions_of_each_type_are_shown_valid(junction):
-    tree = _tree(_doc(junction))
+def test_valid_junctions_of_each_type_are_shown_valid(junction, version):
+    tree = _tree(_doc(junction, minor=version[1]))
     assert _full(tree) == []
     assert _fast(tree)
 
 
-@pytest.mark.parametrize(
-    ("name", "data"),
-    [
-        # an assertion (connection ids unique in a junction) is all that fails
-        (
-            "assertion",
-            _doc(
-                COMMON.replace(
-                    "</junction>", COMMON[COMMON.index("<connection") : COMMON.index("</junction>")] + "</junction>"
-                )
-            ),
-        ),
-        # an alternative: a direct junction's connection needs linkedRoad, a common one's connectingRoad
-        ("alternative", _doc(DIRECT.replace('linkedRoad="2"', 'connectingRoad="3"'))),
-        # an object assertion: radius together with width and length
-        (
-            "object-assertion",
-            _doc(
-                COMMON,
-                objects='<objects><object id="o" s="1" t="0" zOffset="0" radius="1" '
-                'width="1" length="1" type="pole" orientation="none"/></objects>',
-            ),
-        ),
-    ],
+_PERMANENT_WITH_LENGTH = (
+    '<lanes layer="permanent"><laneSection s="0" length="10"><center><lane id="0" type="none" level="false"/>'
+    '</center><right><lane id="-1" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/>'
+    "</lane></right></laneSection></lanes>"
 )
-def test_xsd11_only_errors_are_not_shown_valid(name, data):
-    tree = _tree(data)
+
+#: name -> (minor versions, document builder): documents only an XSD 1.1 part of the schema rejects
+XSD11_ONLY_ERRORS = {
+    # an assertion (connection ids unique in a junction) is all that fails
+    "assertion": (
+        (8, 9),
+        lambda minor: _doc(
+            COMMON.replace(
+                "</junction>", COMMON[COMMON.index("<connection") : COMMON.index("</junction>")] + "</junction>"
+            ),
+            minor=minor,
+        ),
+    ),
+    # an alternative: a direct junction's connection needs linkedRoad, a common one's connectingRoad
+    "alternative": ((8, 9), lambda minor: _doc(DIRECT.replace('linkedRoad="2"', 'connectingRoad="3"'), minor=minor)),
+    # an object assertion: radius together with width and length
+    "object-assertion": (
+        (8, 9),
+        lambda minor: _doc(
+            COMMON,
+            objects='<objects><object id="o" s="1" t="0" zOffset="0" radius="1" '
+            'width="1" length="1" type="pole" orientation="none"/></objects>',
+            minor=minor,
+        ),
+    ),
+    # 1.9: a lane section of the permanent layer has no length (11.2)
+    "lane-layer-assertion": ((9,), lambda minor: _doc(COMMON, minor=minor, lanes=_PERMANENT_WITH_LENGTH)),
+}
+
+
+@pytest.mark.parametrize(
+    ("name", "minor"), [(name, minor) for name, (minors, _) in XSD11_ONLY_ERRORS.items() for minor in minors]
+)
+def test_xsd11_only_errors_are_not_shown_valid(name, minor):
+    tree = _tree(XSD11_ONLY_ERRORS[name][1](minor))
     assert _full(tree), name  # the case is invalid for the full validator ...
     assert not _fast(tree)  # ... and the fast verdict does not hide it
-    assert list(schema.validate(tree, V18))  # so validate() reports it
+    assert list(schema.validate(tree, (1, minor)))  # so validate() reports it
 
 
 def test_where_libxml2_is_stricter_the_full_validator_decides():
     """A junction connection naming a road that does not exist breaks keyref r_junction_connection_incomingRoad;
-    libxml2 sees it, xmlschema 4 does not. S001 stays the XSD 1.1 validator's verdict (rule R011 reports the missing road)."""
+    libxml2 sees it, xmlschema 4 does not. S001 stays the XSD 1.1 validator's verdict (rule R011 reports the missing
+    road)."""
     tree = _tree(_doc(COMMON.replace('incomingRoad="1"', 'incomingRoad="9"')))
     assert not _fast(tree)
     assert list(schema.validate(tree, V18)) == _full(tree) == []
@@ -152,22 +180,44 @@ def test_corpus_18_files_get_the_same_verdict(corpus_dir):
 
 
 _V18_DOCS = opendrive_documents(versions=(V18,), max_roads_per_chain=2, max_elements=2, max_lanes=2)
+_V19_DOCS = opendrive_documents(versions=(V19,), max_roads_per_chain=2, max_elements=2, max_lanes=2)
 
 
-@settings(max_examples=40, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
-@given(_V18_DOCS)
-def test_valid_documents_take_the_fast_path(data):
+def _takes_the_fast_path(data: bytes) -> None:
     tree = _tree(data)
     assert _full(tree) == []
     assert _fast(tree)
 
 
-@settings(max_examples=200, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
-@given(damaged_documents(base=_V18_DOCS, min_mutations=1, max_mutations=3))
-def test_damaged_documents_are_never_shown_valid_when_they_are_not(data):
+def _damaged_is_not_shown_valid(data: bytes) -> None:
     try:
         tree = _tree(data)
     except etree.XMLSyntaxError:
         return  # not well-formed: no schema validation at all
     full = _full(tree)
     assert not (_fast(tree) and full), full[:3]
+
+
+@settings(max_examples=40, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(_V18_DOCS)
+def test_valid_documents_take_the_fast_path(data):
+    _takes_the_fast_path(data)
+
+
+@settings(max_examples=200, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(damaged_documents(base=_V18_DOCS, min_mutations=1, max_mutations=3))
+def test_damaged_documents_are_never_shown_valid_when_they_are_not(data):
+    _damaged_is_not_shown_valid(data)
+
+
+@settings(max_examples=20, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(_V19_DOCS)
+def test_valid_19_documents_take_the_fast_path(data):
+    assert b'revMinor="9"' in data
+    _takes_the_fast_path(data)
+
+
+@settings(max_examples=100, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(damaged_documents(base=_V19_DOCS, min_mutations=1, max_mutations=3))
+def test_damaged_19_documents_are_never_shown_valid_when_they_are_not(data):
+    _damaged_is_not_shown_valid(data)

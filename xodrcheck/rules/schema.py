@@ -15,10 +15,12 @@ MAX_REPORTED = 200
 def schema_invalid(ctx: Context):
     """The file does not validate against the XSD of the OpenDRIVE version its header declares.
 
-    1.1 to 1.7 are validated with lxml, 1.8 with an XSD 1.1 validator (its schema uses assertions and type
+    1.1 to 1.7 are validated with lxml, 1.8 and 1.9 with an XSD 1.1 validator (their schemas use assertions and type
     alternatives; a fast verdict, :mod:`xodrcheck.schema_fast`, spares valid files the slow one). A 1.6 file is
-    checked against the 1.6.1 schema, 1.7 against 1.7.0, 1.8 against 1.8.1 (see :mod:`xodrcheck.schema`). Each schema
-    error is one finding at its line, up to 200 per file.
+    checked against the 1.6.1 schema, 1.7 against 1.7.0, 1.8 against 1.8.1, 1.9 against 1.9.0 (see
+    :mod:`xodrcheck.schema`; 1.8.1 and 1.9.0 with the corrections of :mod:`xodrcheck.schema_errata`, without which
+    every multiBoard signal, vmsGroup and defaultRegulations would be invalid). Each schema error is one finding at
+    its line, up to 200 per file.
 
     Passes (1.7: a lane with its required ``type``)::
 
@@ -48,7 +50,7 @@ def schema_invalid(ctx: Context):
 
 @rule("S002", "schema-not-validated", Category.SCHEMA, Severity.INFO)
 def schema_not_validated(ctx: Context):
-    """The file could not be validated: its header declares no OpenDRIVE version that has a schema (1.1 to 1.8).
+    """The file could not be validated: its header declares no OpenDRIVE version that has a schema (1.1 to 1.9).
 
     The reader reports the missing or unknown version itself; this finding says that schema validation did not
     happen, so that an empty schema report is not mistaken for a valid file.
@@ -59,7 +61,7 @@ def schema_not_validated(ctx: Context):
 
     Fails::
 
-        <header revMajor="1" revMinor="9"/>
+        <header revMajor="1" revMinor="10"/>
     """
     if ctx.tree is None:
         return
@@ -69,6 +71,6 @@ def schema_not_validated(ctx: Context):
     elif schema.schema_name(version) is None:
         header = ctx.document.header
         yield schema_not_validated.finding(
-            f"no schema validation: no schema for OpenDRIVE {version[0]}.{version[1]} (known: 1.1 to 1.8)",
+            f"no schema validation: no schema for OpenDRIVE {version[0]}.{version[1]} (known: 1.1 to 1.9)",
             line=header.line if header is not None and header.line else None,
         )

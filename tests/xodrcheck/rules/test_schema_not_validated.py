@@ -10,4 +10,4 @@ def test_unknown_version_gives_one_finding_at_the_header():
     path = fixture(RULE, "fail.xodr")
     (f,) = findings(path, RULE)
     assert f.line == line_of(path, "<header")
-    assert f.severity is Severity.INFO and "1.9" in f.message
+    assert f.severity is Severity.INFO and "1.10" in f.message
