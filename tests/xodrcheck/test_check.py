@@ -17,7 +17,7 @@ from xodrcheck.rules.registry import RULES
 
 CLEAN = fixture("link-not-reciprocal", "pass_junction.xodr")
 BROKEN = fixture("road-link-target-missing", "fail.xodr")  # R010 error plus a K001 error
-WARNING_ONLY = fixture("lane-link-missing-lane", "fail_dangling.xodr")  # one R015 warning
+WARNING_ONLY = fixture("short-lane-section", "fail.xodr")  # one G012 warning
 
 
 def codes(report: Report) -> set[str]:

@@ -60,8 +60,8 @@ EXPECTED = {
     "carla-towns/OpenDrive/Town03.xodr": {"G901", "J005", "K001", "L010", "L011", "L012"},
     # Connection 2: incoming 103, connecting 151 contactPoint "start", but 151 starts at road 101 (J002); lane 1 of
     # section s=0.1 of road 103 narrows to 1.5 m and has no successor (L010); lanes link across road ends that have no
-    # road link (R015 warnings); <geoReference> stands beside <header>, 1.4 wants it inside (S001); repeated
-    # laneOffset records (G901).
+    # road link (R015, Annex F road.lane.link.no_link); <geoReference> stands beside <header>, 1.4 wants it inside
+    # (S001); repeated laneOffset records (G901).
     "ika-roadgeneration/test/gt/junction_ma.xodr": {"G901", "J002", "L010", "R015", "S001"},
     # Connection 2 links lane -1 of road 2 to lane -3 of road 4, which has only lane -1 (R012); 1.6 connections list
     # both directions of bidirectional connecting roads (J004 infos).

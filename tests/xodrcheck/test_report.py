@@ -150,7 +150,7 @@ def test_junit_parses_one_suite_per_file_one_case_per_rule(reports):
 
 
 def test_junit_warnings_fail_only_in_strict_mode():
-    path = fixture("lane-link-missing-lane", "fail_dangling.xodr")
+    path = fixture("short-lane-section", "fail.xodr")  # one warning
     for strict, failures in ((False, "0"), (True, "1")):
         root = etree.fromstring(render("junit", [check(path, Config(strict=strict))]).encode("utf-8"))
         assert root.find("testsuite").get("failures") == failures

@@ -17,7 +17,7 @@ from xodrcheck.findings import Finding, Severity
 from xodrcheck.model import Cubic, Profile
 from xodrcheck.reader.construct import make_cubic
 from xodrcheck.rules import xml as R
-from xodrcheck.rules.registry import Rule
+from xodrcheck.rules.registry import NO_UID, Rule
 
 T = TypeVar("T")
 
@@ -104,12 +104,17 @@ class Context:
         el: etree._Element | None = None,
         severity: Severity | None = None,
         line: int | None = None,
+        uid: str | None = None,
     ) -> None:
-        """Record a finding of ``rule`` located at ``el`` (or ``line``) inside the current road / lane."""
+        """Record a finding of ``rule`` located at ``el`` (or ``line``) inside the current road / lane.
+
+        ``uid`` is the Annex F rule the finding enforces. A reader rule reports many kinds of defect and declares the
+        UIDs of only some, so a finding without ``uid`` names none (never the rule's only UID by default)."""
         self.findings.append(
             rule.finding(
                 self.where() + message,
                 severity=severity,
+                uid=NO_UID if uid is None else uid,
                 road=self.road,
                 lane=self.lane,
                 section_s=self.section_s,
@@ -117,21 +122,31 @@ class Context:
             )
         )
 
-    def missing(self, el: etree._Element, name: str, then: str, severity: Severity | None = None) -> None:
-        self.report(R.MISSING_ATTRIBUTE, f"{describe(el)} has no '{name}' attribute; {then}", el, severity)
+    def missing(
+        self, el: etree._Element, name: str, then: str, severity: Severity | None = None, uid: str | None = None
+    ) -> None:
+        self.report(R.MISSING_ATTRIBUTE, f"{describe(el)} has no '{name}' attribute; {then}", el, severity, uid=uid)
 
     def invalid(self, el: etree._Element, name: str, raw: str, why: str, then: str) -> None:
         self.report(R.INVALID_ATTRIBUTE, f'{describe(el)} has {name}="{_show(raw)}", {why}; {then}', el)
 
     # ---------------------------------------------------------------------------------------------------- values
     def number(
-        self, el: etree._Element, name: str, then: str, *, required: bool = True, nonneg: bool = False
+        self,
+        el: etree._Element,
+        name: str,
+        then: str,
+        *,
+        required: bool = True,
+        nonneg: bool = False,
+        uid: str | None = None,
     ) -> float | None:
-        """A finite float (>= 0 with ``nonneg``), or ``None`` with a finding (none for an absent optional one)."""
+        """A finite float (>= 0 with ``nonneg``), or ``None`` with a finding (none for an absent optional one);
+        ``uid`` names the Annex F rule an absent required attribute breaks."""
         raw = el.get(name)
         if raw is None:
             if required:
-                self.missing(el, name, then)
+                self.missing(el, name, then, uid=uid)
             return None
         try:
             value = float(raw)
@@ -212,14 +227,15 @@ class Context:
         return value
 
     # ---------------------------------------------------------------------------------------------------- structure
-    def repeated(self, el: etree._Element, first: etree._Element) -> None:
+    def repeated(self, el: etree._Element, first: etree._Element, uid: str | None = None) -> None:
         self.report(
             R.REPEATED_ELEMENT,
             f"{describe(el)} repeats the {describe(first)}, which may appear only once; only the first is read",
             el,
+            uid=uid,
         )
 
-    def check_order(self, records: Sequence, what: str, parent: etree._Element) -> None:
+    def check_order(self, records: Sequence, what: str, parent: etree._Element, uid: str | None = None) -> None:
         """Report the first record whose ``s`` is smaller than its predecessor's."""
         for prev, rec in pairwise(records):
             if rec.s < prev.s:
@@ -229,6 +245,7 @@ class Context:
                     f"({prev.s:g}); the standard wants them in ascending order of s (in {describe(parent)}); "
                     "they are kept in file order",
                     line=rec.line,
+                    uid=uid,
                 )
                 return
 
@@ -257,8 +274,8 @@ def cubic(ctx: Context, el: etree._Element, offset: bool = False) -> Cubic | Non
     return None if v is None else make_cubic(v[0], v[1], v[2], v[3], v[4], el.sourceline)
 
 
-def cubics(ctx: Context, parent: etree._Element, tag: str) -> Profile:
-    """The ``<tag s a b c d>`` records under ``parent``, checked for order."""
+def cubics(ctx: Context, parent: etree._Element, tag: str, uid: str | None = None) -> Profile:
+    """The ``<tag s a b c d>`` records under ``parent``, checked for order (``uid``: the Annex F rule on the order)."""
     out = []
     for rec in parent:
         if rec.tag == tag:
@@ -266,5 +283,5 @@ def cubics(ctx: Context, parent: etree._Element, tag: str) -> Profile:
             if record is not None:
                 out.append(record)
     if len(out) > 1:
-        ctx.check_order(out, f"<{tag}>", parent)
+        ctx.check_order(out, f"<{tag}>", parent, uid)
     return tuple(out)

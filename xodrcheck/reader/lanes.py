@@ -17,6 +17,7 @@ from xodrcheck.reader.construct import (
     make_speed,
 )
 from xodrcheck.reader.context import SKIP_RECORD, Context, cubic, describe
+from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules import xml as R
 
 #: Lane type names in lower case -> type: the file's spelling is matched without regard to case.
@@ -146,15 +147,15 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
             if height is not None:
                 heights.append(height)
     if len(widths) > 1:
-        ctx.check_order(widths, "<width>", el)
+        ctx.check_order(widths, "<width>", el, U.WIDTH_ORDER)
     if len(borders) > 1:
-        ctx.check_order(borders, "<border>", el)
+        ctx.check_order(borders, "<border>", el, U.BORDER_ORDER)
     if len(marks) > 1:
-        ctx.check_order(marks, "<roadMark>", el)
+        ctx.check_order(marks, "<roadMark>", el, U.ROAD_MARK_ORDER)
     if len(speeds) > 1:
-        ctx.check_order(speeds, "<speed>", el)
+        ctx.check_order(speeds, "<speed>", el, U.SPEED_ORDER)
     if len(heights) > 1:
-        ctx.check_order(heights, "<height>", el)
+        ctx.check_order(heights, "<height>", el, U.HEIGHT_ORDER)
     return make_lane(
         lane_id,
         lane_type,
@@ -177,7 +178,9 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
         if s - s != 0.0 or s < 0.0:
             raise ValueError
     except (TypeError, ValueError):
-        s = ctx.number(el, "s", "the lane section and its lanes are skipped", nonneg=True)  # type: ignore[assignment]
+        s = ctx.number(  # type: ignore[assignment]
+            el, "s", "the lane section and its lanes are skipped", nonneg=True, uid=U.S_ATTR_VALUE
+        )
         if s is None:
             return None
     single_side = None
@@ -190,7 +193,7 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
         tag = child.tag
         if tag == "left" or tag == "center" or tag == "right":
             if tag in seen:
-                ctx.repeated(child, seen[tag])
+                ctx.repeated(child, seen[tag], U.CENTER_ELEM_DEFINITION if tag == "center" else None)
                 continue
             seen[tag] = child
             built = []
@@ -217,6 +220,7 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
             f"{describe(el)} has no centre lane 0 ({where}); the other lanes are kept, measured from the "
             "reference line (shifted by laneOffset)",
             el,
+            uid=None if "center" in seen else U.CENTER_ELEM_DEFINITION,
         )
     ctx.section_s = None
     return make_lane_section(s, single_side, left, center, right, el.sourceline)
@@ -239,9 +243,14 @@ def build_lanes(ctx: Context, el: etree._Element) -> tuple[Profile, tuple[LaneSe
             if record is not None:
                 offsets.append(record)
     if len(offsets) > 1:
-        ctx.check_order(offsets, "<laneOffset>", el)
+        ctx.check_order(offsets, "<laneOffset>", el, U.LANE_OFFSET_ORDER)
     if not seen:
-        ctx.report(R.MISSING_ELEMENT, f"{describe(el)} has no <laneSection>; the road has no lanes", el)
+        ctx.report(
+            R.MISSING_ELEMENT,
+            f"{describe(el)} has no <laneSection>; the road has no lanes",
+            el,
+            uid=U.LANE_SECT_MIN_AMOUNT,
+        )
     elif len(sections) > 1:
-        ctx.check_order(sections, "<laneSection>", el)
+        ctx.check_order(sections, "<laneSection>", el, U.SECTION_ORDER)
     return tuple(offsets), tuple(sections)

@@ -33,6 +33,7 @@ from xodrcheck.reader.construct import (
 from xodrcheck.reader.context import Context, cubics, describe
 from xodrcheck.reader.lanes import build_lanes
 from xodrcheck.rules import xml as R
+from xodrcheck.rules.lane_uids import SECTION_REQ as LANE_SECTION_REQUIRED
 
 ELEMENT_TYPES = {"road": ElementType.ROAD, "junction": ElementType.JUNCTION}
 CONTACT_POINTS = {"start": ContactPoint.START, "end": ContactPoint.END}
@@ -267,7 +268,9 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
 
     lanes = first.get("lanes")
     if lanes is None:
-        ctx.report(R.MISSING_ELEMENT, f"{describe(el)} has no <lanes>; the road has no lanes", el)
+        ctx.report(
+            R.MISSING_ELEMENT, f"{describe(el)} has no <lanes>; the road has no lanes", el, uid=LANE_SECTION_REQUIRED
+        )
         lane_offset: Profile = ()
         sections = ()
     else:

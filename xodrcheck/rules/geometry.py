@@ -22,7 +22,8 @@ from xodrcheck.geometry.parampoly3 import curve_of
 from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
 from xodrcheck.model import Cubic, Geometry, ParamPoly3, PRange, Road, Spiral
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.registry import rule
+from xodrcheck.rules.lane_uids import SECTION_VALID_LENGTH
+from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.rules.sampled import angle_between, grid_step, usable
 from xodrcheck.sampling import capped, knots
 
@@ -285,11 +286,21 @@ def spiral_constant_curvature(ctx: Context):
                 )
 
 
-@rule("G012", "short-lane-section", Category.GEOMETRY, Severity.WARNING)
+@rule(
+    "G012",
+    "short-lane-section",
+    Category.GEOMETRY,
+    Severity.WARNING,
+    uids=(SECTION_VALID_LENGTH,),
+    every_version=True,
+)
 def short_lane_section(ctx: Context):
     """A lane section is shorter than ``min_section_length`` (1 cm by default), or has no length at all.
 
-    Such a section describes no road; tools that build lane polylines fail on it (pyxodr does).
+    Such a section describes no road; tools that build lane polylines fail on it (pyxodr does). A section of zero or
+    negative length (the next one starts where it starts, or the road ends there) is an error: Annex F
+    ``road.lane_section.valid_length`` wants every lane section longer than zero. A shorter one than the tolerance is a
+    warning.
 
     Passes::
 
@@ -306,9 +317,12 @@ def short_lane_section(ctx: Context):
         for index, section in enumerate(road.lane_sections):
             length = road.section_end(index) - section.s
             if math.isfinite(length) and length < tol:
+                empty = length <= 0.0
                 yield short_lane_section.finding(
-                    f"road {road.id}: the lane section at s={section.s:g} is {length:.3g} m long; remove it or merge it "
-                    f"with its neighbour",
+                    f"road {road.id}: the lane section at s={section.s:g} is {length:.3g} m long; remove it or merge "
+                    "it with its neighbour" + (" (a lane section is longer than zero)" if empty else ""),
+                    severity=Severity.ERROR if empty else None,
+                    uid=SECTION_VALID_LENGTH if empty else NO_UID,
                     road=road.id,
                     section_s=section.s,
                     s=section.s,

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, LaneType, Road
+from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, link_at, travel_direction
 from xodrcheck.rules.registry import rule
 
@@ -95,8 +96,8 @@ def pair_key(a: Side, a_id: int, b: Side, b_id: int) -> frozenset:
 
 
 # ------------------------------------------------------------------------------------------------ centre lane, ids
-_CENTRE_ID = "asam.net:xodr:1.4.0:road.lane.center_lane_id"
-_NUMBERING = "asam.net:xodr:1.4.0:road.lane.lanes_numbered_correctly"
+_CENTRE_ID = U.CENTER_LANE_ID
+_NUMBERING = U.LANES_NUMBERED_CORRECTLY
 
 
 @rule(
@@ -105,16 +106,15 @@ _NUMBERING = "asam.net:xodr:1.4.0:road.lane.lanes_numbered_correctly"
     Category.LANE,
     Severity.ERROR,
     uids=(_CENTRE_ID, _NUMBERING),
-    partial={_NUMBERING: "lane 0 outside <center> only; the signs of side lanes are L003's"},
     every_version=True,
 )
 def centre_lane_invalid(ctx: Context):
     """The ``<center>`` of a lane section does not hold exactly the one lane 0, or lane 0 is on a side.
 
     Lane 0 is the reference line of the lanes: the centre lane has the id 0 (Annex F ``road.lane.center_lane_id``),
-    there is only one, and only side lanes, numbered away from it, sit under ``<left>`` and ``<right>``
-    (``road.lane.lanes_numbered_correctly``). (A lane section without any centre lane is reported while reading, as
-    ``missing-element``.)
+    there is only one, and only side lanes, numbered away from it, sit under
+    ``<left>`` and ``<right>`` (``road.lane.lanes_numbered_correctly``, with ``lane-id-sequence`` for the signs of side
+    lanes). (A lane section without any centre lane is reported while reading, as ``missing-element``.)
 
     Passes::
 
@@ -140,7 +140,11 @@ def centre_lane_invalid(ctx: Context):
             zeros = [lane for lane in section.center if lane.id == 0]
             for lane in zeros[1:]:
                 yield centre_lane_invalid.finding(
-                    f"{here}: more than one centre lane 0", uid=_CENTRE_ID, lane=0, line=lane.line or None, **where
+                    f"{here}: more than one centre lane 0; a lane section has exactly one centre lane",
+                    uid=_CENTRE_ID,
+                    lane=0,
+                    line=lane.line or None,
+                    **where,
                 )
             for lane in (*section.left, *section.right):
                 if lane.id == 0:
@@ -153,11 +157,12 @@ def centre_lane_invalid(ctx: Context):
                     )
 
 
-@rule("L002", "centre-lane-width", Category.LANE, Severity.ERROR)
+@rule("L002", "centre-lane-width", Category.LANE, Severity.ERROR, uids=(U.CENTER_LANE_NO_WIDTH,), every_version=True)
 def centre_lane_width(ctx: Context):
     """The centre lane 0 has ``<width>`` or ``<border>`` records: it has no width by definition.
 
-    Readers ignore them, so the writer's idea of the lane layout and the readers' differ.
+    Readers ignore them, so the writer's idea of the lane layout and the readers' differ (Annex F
+    ``road.lane.center_lane_no_width``).
 
     Passes::
 
@@ -184,12 +189,21 @@ def centre_lane_width(ctx: Context):
                     )
 
 
-@rule("L003", "lane-id-sequence", Category.LANE, Severity.ERROR)
+@rule(
+    "L003",
+    "lane-id-sequence",
+    Category.LANE,
+    Severity.ERROR,
+    uids=(U.LANES_NUMBERED_CORRECTLY, U.LANE_ORDER, U.LANE_ORDER_NO_GAPS),
+    every_version=True,
+)
 def lane_id_sequence(ctx: Context):
     """Lane ids of a side are not 1, 2, 3... (left) or -1, -2, -3... (right) without gaps, or sit on the wrong side.
 
     Readers number lanes outward from the centre and place each lane outside the previous id; a gap or a positive id
-    under ``<right>`` makes them disagree about where a lane is.
+    under ``<right>`` makes them disagree about where a lane is. Annex F: a lane on the wrong side breaks
+    ``road.lane.lanes_numbered_correctly``, a side whose numbering does not start at 1 (-1) ``road.lane.lane_order``,
+    a gap further out ``road.lane.lane_order_no_gaps``.
 
     Passes::
 
@@ -210,16 +224,30 @@ def lane_id_sequence(ctx: Context):
                         yield lane_id_sequence.finding(
                             f"{here}: lane {lane.id} is under <{name}>; {name} lane ids are "
                             f"{'positive' if sign > 0 else 'negative'}",
+                            uid=U.LANES_NUMBERED_CORRECTLY,
                             lane=lane.id,
                             line=lane.line or None,
                             **where,
                         )
                 ids = sorted({abs(lane.id) for lane in lanes if lane.id * sign > 0})
                 gaps = _gaps(ids)
+                if not gaps:
+                    continue
+                first = next(lane for lane in lanes if lane.id * sign > 0)
+                if gaps[0][0] == 1:
+                    yield lane_id_sequence.finding(
+                        f"{here}: {name} lane ids start at {(gaps[0][1] + 1) * sign}; the lane next to the centre is "
+                        f"{sign}",
+                        uid=U.LANE_ORDER,
+                        lane=sign,
+                        line=first.line or None,
+                        **where,
+                    )
+                    gaps = gaps[1:]
                 if gaps:
-                    first = next(lane for lane in lanes if lane.id * sign > 0)
                     yield lane_id_sequence.finding(
                         f"{here}: {name} lanes skip id(s) {_gap_text(gaps, sign)}",
+                        uid=U.LANE_ORDER_NO_GAPS,
                         lane=gaps[0][0] * sign,
                         line=first.line or None,
                         **where,
@@ -312,13 +340,20 @@ def lane_not_continued(ctx: Context):
             )
 
 
-@rule("L011", "lane-link-not-reciprocal", Category.LANE, Severity.ERROR)
+@rule(
+    "L011",
+    "lane-link-not-reciprocal",
+    Category.LANE,
+    Severity.ERROR,
+    uids=(U.LINK_ACROSS_SECTIONS,),
+    every_version=True,
+)
 def lane_link_not_reciprocal(ctx: Context):
     """A lane link is not returned: lane A's successor is lane B, but B's predecessor does not name A.
 
-    Applies between the lane sections of a road and across road links where both roads link to each other (ASAM's
-    ``road.lane.link.lanes_across_lane_sections``). Readers that follow links from one side only see different
-    lane graphs.
+    Applies between the lane sections of a road and across road links where both roads link to each other (Annex F
+    ``road.lane.link.lanes_across_laneSections``: a lane that continues is connected in both directions). Readers that
+    follow links from one side only see different lane graphs.
 
     Passes::
 
@@ -390,18 +425,36 @@ def lane_link_direction(ctx: Context):
                 )
 
 
-def _zero_width_severity(ctx: Context) -> Severity:
-    return Severity.ERROR if ctx.version_at_least(7) else Severity.WARNING
+def _own_zero_width_uid(ctx: Context, end: ContactPoint) -> str:
+    """The UID a lane linked at its own zero-width end breaks: 1.7's ``zero_width_at_start``/``_at_end``, or for older
+    files 1.4's ``multiple_connections`` ("all lanes that are connected shall have a non-zero width")."""
+    if not ctx.version_at_least(7) and ctx.version is not None:
+        return U.LINK_MULTIPLE
+    return U.LINK_ZERO_WIDTH_START if end is ContactPoint.START else U.LINK_ZERO_WIDTH_END
 
 
-@rule("L013", "zero-width-lane-linked", Category.LANE, Severity.ERROR)
+@rule(
+    "L013",
+    "zero-width-lane-linked",
+    Category.LANE,
+    Severity.ERROR,
+    uids=(U.LINK_ZERO_WIDTH_START, U.LINK_ZERO_WIDTH_END, U.LINK_NEW_LANE_APPEAR, U.LINK_MULTIPLE),
+    partial={
+        U.LINK_MULTIPLE: "its second sentence (connected lanes have non-zero width at the connection); its first, "
+        "that a lane split or merged abruptly has several links, is lane-not-continued's (an unlinked lane of "
+        "non-zero width at a joint)"
+    },
+    every_version=True,
+)
 def zero_width_lane_linked(ctx: Context):
     """A lane is linked where it has zero width: a lane that opens or closes is linked to a neighbour's lane.
 
-    OpenDRIVE 1.7: "lanes that have a width of zero at the beginning of the lane section shall have no predecessor"
-    (and at the end no successor), and "if a new lane appears besides, only the continuing lane shall be connected to
-    the original lane, not the appearing lane" (ASAM's ``zero_width_at_start``, ``zero_width_at_end``,
-    ``new_lane_appear``). Junction laneLinks count as links. An error from 1.7 on, a warning for older files.
+    Annex F: "lanes that have a width of zero at the beginning of the lane section shall have no predecessor" (and at
+    the end no successor: ``road.lane.link.zero_width_at_start``, ``zero_width_at_end``, 1.7), "if a new lane appears
+    besides, only the continuing lane shall be connected to the original lane, not the appearing lane"
+    (``road.lane.link.new_lane_appear``) and "all lanes that are connected shall have a non-zero width at the
+    connection point" (``road.lane.link.multiple_connections``, 1.4: files older than 1.7 and junction laneLinks).
+    Junction laneLinks count as links.
 
     Passes (lane -1 continues into lane -1; lane -2 opens without a predecessor)::
 
@@ -413,7 +466,6 @@ def zero_width_lane_linked(ctx: Context):
         <lane id="-1"><link><successor id="-2"/></link>...</lane>
         ... next section: <lane id="-2"><width sOffset="0" a="0" b="0.1" c="0" d="0"/></lane>
     """
-    severity = _zero_width_severity(ctx)
     seen: set = set()
     for joint in joints(ctx):
         mine, other = joint.mine, joint.other
@@ -429,7 +481,7 @@ def zero_width_lane_linked(ctx: Context):
                         f"{mine.describe()}: lane {lane.id} has zero width at its {mine.end.value} but a "
                         f"{_WORD[mine.end]} (lane {', '.join(map(str, targets))}); a lane that "
                         f"{'opens' if mine.end is ContactPoint.START else 'closes'} has none",
-                        severity=severity,
+                        uid=_own_zero_width_uid(ctx, mine.end),
                         line=lane.line or None,
                         **mine.where(lane.id),
                     )
@@ -443,14 +495,14 @@ def zero_width_lane_linked(ctx: Context):
                     f"{mine.describe()}: lane {lane.id}'s {_WORD[mine.end]} is lane {target_id} of "
                     f"{other.describe()}, which has zero width there (it "
                     f"{'opens' if other.end is ContactPoint.START else 'closes'}); link the continuing lane instead",
-                    severity=severity,
+                    uid=U.LINK_NEW_LANE_APPEAR,
                     line=lane.line or None,
                     **mine.where(lane.id),
                 )
-    yield from _zero_width_junction_links(ctx, severity)
+    yield from _zero_width_junction_links(ctx)
 
 
-def _zero_width_junction_links(ctx: Context, severity: Severity):
+def _zero_width_junction_links(ctx: Context):
     for junction in ctx.document.junctions:
         for c in junction.connections:
             incoming = ctx.road(c.incoming_road)
@@ -473,7 +525,7 @@ def _zero_width_junction_links(ctx: Context, severity: Severity):
                         yield zero_width_lane_linked.finding(
                             f"junction {junction.id} connection {c.id}: laneLink {ll.from_lane} -> {ll.to_lane} "
                             f"uses lane {lane_id} of road {road.id}, which has zero width at its {end.value}",
-                            severity=severity,
+                            uid=U.LINK_MULTIPLE,
                             road=road.id,
                             lane=lane_id,
                             section_s=road.lane_sections[index].s,

@@ -3,17 +3,18 @@
 from __future__ import annotations
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane import joints, pair_key, side_lanes
 from xodrcheck.rules.registry import rule
 
 
-@rule("L014", "lane-level-one-side", Category.LANE, Severity.ERROR)
+@rule("L014", "lane-level-one-side", Category.LANE, Severity.ERROR, uids=(U.LEVEL_TRUE_ONE_SIDE,), every_version=True)
 def lane_level_one_side(ctx: Context):
     """On one side of a lane section, a lane with ``level="false"`` lies outside a lane with ``level="true"``.
 
     A level lane is kept out of superelevation; lanes outside it must be level too, or the surface would fold where
-    the level lane meets the tilted one (ASAM's ``road.lane.level.true.one_side``).
+    the level lane meets the tilted one (Annex F ``road.lane.level_true_one_side``, 1.7).
 
     Passes::
 
@@ -78,12 +79,12 @@ def lane_level_changes(ctx: Context):
                 )
 
 
-@rule("L016", "lane-access-mixed", Category.LANE, Severity.ERROR)
+@rule("L016", "lane-access-mixed", Category.LANE, Severity.ERROR, uids=(U.ACCESS_NO_MIX,), every_version=True)
 def lane_access_mixed(ctx: Context):
     """A lane's ``<access>`` records mix ``rule="allow"`` and ``rule="deny"`` at one ``sOffset``.
 
-    At a given position either only allow or only deny values shall be given (ASAM's
-    ``road.lane.access.no_mix_of_deny_or_allow``); mixed, the lane's permissions are undefined.
+    At a given position either only allow or only deny values shall be given (Annex F
+    ``road.lane.access.no_mix_of_deny_or_allow``, 1.7); mixed, the lane's permissions are undefined.
 
     Passes::
 

@@ -16,6 +16,7 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Road
+from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import usable
@@ -120,12 +121,13 @@ def _width_findings(ctx: Context, by_widths: bool):
         yield lane, section, minimum, where
 
 
-@rule("G010", "negative-width", Category.GEOMETRY, Severity.ERROR)
+@rule("G010", "negative-width", Category.GEOMETRY, Severity.ERROR, uids=(U.WIDTH_VALIDITY,), every_version=True)
 def negative_width(ctx: Context):
     """A lane's width becomes negative somewhere in its lane section.
 
     The width polynomials are minimised exactly over each record's interval (not only at sample points), so a cubic
-    that dips below zero between its ends is found. A negative width puts the outer border inside the inner one.
+    that dips below zero between its ends is found. A negative width puts the outer border inside the inner one
+    (Annex F ``road.lane.width.lane_width_validity``: width(ds) >= 0).
 
     Passes (3.5 m narrowing linearly to 0 over the 50 m section)::
 
@@ -143,12 +145,19 @@ def negative_width(ctx: Context):
         )
 
 
-@rule("G011", "border-crosses-inner", Category.GEOMETRY, Severity.ERROR)
+@rule(
+    "G011",
+    "border-crosses-inner",
+    Category.GEOMETRY,
+    Severity.ERROR,
+    uids=(U.BORDER_OVERLAP_INNER,),
+    every_version=True,
+)
 def border_crosses_inner(ctx: Context):
     """A lane given by ``<border>`` records has its outer border on the wrong side of its inner border.
 
     For a left lane the outer border's ``t`` must stay at or above the inner border's, for a right lane at or below,
-    over the whole section (checked exactly per polynomial piece). ASAM's
+    over the whole section (checked exactly per polynomial piece). Annex F
     ``road.lane.border.overlap_with_inner_lanes``.
 
     Passes (lane 1's border at t=3.5, outside lane 0 at t=0)::

@@ -10,8 +10,9 @@ from collections.abc import Iterable
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, LaneSection, Road
+from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, link_at
-from xodrcheck.rules.registry import Rule, rule
+from xodrcheck.rules.registry import NO_UID, Rule, rule
 
 
 def _duplicates(rule_: Rule, items: Iterable, what: str, **where):
@@ -320,13 +321,14 @@ def _lane_link_targets(
     return f"road {target.id} at its {link.contact_point.value}", ctx.section_at(target, link.contact_point)
 
 
-@rule("R015", "lane-link-missing-lane", Category.REFERENCE, Severity.ERROR)
+@rule("R015", "lane-link-missing-lane", Category.REFERENCE, Severity.ERROR, uids=(U.LINK_NO_LINK,), every_version=True)
 def lane_link_missing_lane(ctx: Context):
     """A lane's ``predecessor`` or ``successor`` names a lane that does not exist, or there is nothing to link to.
 
     Inside a road a lane's links point to the previous or next lane section; at the road's ends they point to the
     lane section of the linked road at the link's contact point. A lane link at an end where the road has no
-    predecessor or successor points nowhere (a warning: the lane link is dead, or the road link is missing).
+    predecessor or successor points nowhere: Annex F ``road.lane.link.no_link`` says a lane that has no link there
+    has no ``<link>`` entry for it (or the road link is missing).
 
     Passes (road 2 has a lane -1 at its start)::
 
@@ -358,8 +360,8 @@ def lane_link_missing_lane(ctx: Context):
                         targets = ", ".join(map(str, getattr(lane, attr)))
                         yield lane_link_missing_lane.finding(
                             f"road {road.id} lane {lane.id} (lane section s={section.s:g}) has {word} lane "
-                            f"{targets} but the road has no {word}",
-                            severity=Severity.WARNING,
+                            f"{targets} but the road has no {word}; remove the lane's {word} (or link the road)",
+                            uid=U.LINK_NO_LINK,
                             **where,
                         )
                         continue
@@ -370,5 +372,6 @@ def lane_link_missing_lane(ctx: Context):
                             yield lane_link_missing_lane.finding(
                                 f"road {road.id} lane {lane.id} (lane section s={section.s:g}): {word} lane "
                                 f"{target_id} does not exist in {described}",
+                                uid=NO_UID,
                                 **where,
                             )

@@ -25,6 +25,9 @@ from xodrcheck.findings import Category, Finding, Severity
 
 CheckFn = Callable[..., Iterable[Finding]]
 
+#: ``uid`` of a finding that enforces none of its rule's UIDs (a rule with one UID names it by default).
+NO_UID = ""
+
 
 @dataclass(frozen=True)
 class Rule:
@@ -50,8 +53,11 @@ class Rule:
 
     def finding(self, message: str, *, severity: Severity | None = None, uid: str | None = None, **where) -> Finding:
         """A finding of this rule; ``where`` takes the :class:`Finding` location fields (road, lane, section_s, s,
-        x, y, line). ``uid`` is the Annex F rule the finding enforces; it defaults to the rule's only UID."""
-        if uid is None and len(self.uids) == 1:
+        x, y, line). ``uid`` is the Annex F rule the finding enforces; it defaults to the rule's only UID
+        (:data:`NO_UID`: none)."""
+        if uid == NO_UID:
+            uid = None
+        elif uid is None and len(self.uids) == 1:
             uid = self.uids[0]
         elif uid is not None and uid not in self.uids:
             raise ValueError(f"rule {self.code} does not declare the UID {uid}")

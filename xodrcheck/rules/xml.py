@@ -10,6 +10,7 @@ absent, used the standard's default).
 from __future__ import annotations
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.registry import declare
 
 NOT_WELL_FORMED = declare(
@@ -163,6 +164,10 @@ MISSING_ELEMENT = declare(
     The parent is kept (a road without ``<planView>`` has no reference line, a lane section without lane 0 keeps its
     other lanes) so that the rest of the map can still be checked.
 
+    Annex F: a road without ``<lanes>`` breaks ``road.lane_section.lane_sect_req`` (every road has a lane section),
+    ``<lanes>`` without ``<laneSection>`` ``road.lane.lane_sect_min_amount``, a lane section without ``<center>``
+    ``road.lane.center_elem_definition``.
+
     Passes::
 
         <laneSection s="0"><center><lane id="0" type="none"/></center>...</laneSection>
@@ -171,6 +176,8 @@ MISSING_ELEMENT = declare(
 
         <laneSection s="0"><right><lane id="-1" type="driving">...</lane></right></laneSection>
     """,
+    uids=(U.LANE_SECT_MIN_AMOUNT, U.SECTION_REQ, U.CENTER_ELEM_DEFINITION),
+    every_version=True,
 )
 
 REPEATED_ELEMENT = declare(
@@ -180,7 +187,8 @@ REPEATED_ELEMENT = declare(
     Severity.ERROR,
     """
     An element that may appear only once appears several times (a second ``<header>``, ``<planView>``, ``<lanes>``,
-    road ``<predecessor>``, ``<center>``...). The first one is read, the others are ignored.
+    road ``<predecessor>``, ``<center>``...). The first one is read, the others are ignored. A second ``<center>``
+    in a lane section breaks Annex F ``road.lane.center_elem_definition`` (one centre for each s).
 
     Passes::
 
@@ -190,6 +198,8 @@ REPEATED_ELEMENT = declare(
 
         <road id="1" length="10" junction="-1"><planView>...</planView><planView>...</planView>...</road>
     """,
+    uids=(U.CENTER_ELEM_DEFINITION,),
+    every_version=True,
 )
 
 MISSING_ATTRIBUTE = declare(
@@ -199,7 +209,8 @@ MISSING_ATTRIBUTE = declare(
     Severity.ERROR,
     """
     A required attribute is absent. The reader never invents a value for it: the finding says what was done instead
-    (the element skipped, the value read as absent, or the standard's documented default used).
+    (the element skipped, the value read as absent, or the standard's documented default used). A ``<laneSection>``
+    without ``s`` breaks Annex F ``road.lane.s_attr_value``.
 
     Passes::
 
@@ -209,6 +220,8 @@ MISSING_ATTRIBUTE = declare(
 
         <geometry s="0" y="0" hdg="0" length="10"><line/></geometry>
     """,
+    uids=(U.S_ATTR_VALUE,),
+    every_version=True,
 )
 
 INVALID_ATTRIBUTE = declare(
@@ -279,7 +292,9 @@ OUT_OF_ORDER = declare(
     Records that the standard orders by ``s`` come in descending order. These are geometries, elevation,
     superelevation, laneOffset and lane-section starts along the road, or width, border, height, roadMark and speed
     ``sOffset`` values inside a lane. Readers disagree about which record applies where. The records are kept in file
-    order.
+    order. Annex F ``elem_asc_order`` of ``road.lane.width``, ``.border``, ``.height``, ``.road_mark``, ``.speed``,
+    ``road.lanes.lane_offset`` and ``road.lane_section`` (``<access>``, ``<material>`` and ``<rule>``:
+    ``lane-records-out-of-order``).
 
     Passes::
 
@@ -289,6 +304,16 @@ OUT_OF_ORDER = declare(
 
         <elevation s="50" a="0" b="0.01" c="0" d="0"/><elevation s="0" a="0" b="0" c="0" d="0"/>
     """,
+    uids=(
+        U.WIDTH_ORDER,
+        U.BORDER_ORDER,
+        U.ROAD_MARK_ORDER,
+        U.SPEED_ORDER,
+        U.HEIGHT_ORDER,
+        U.LANE_OFFSET_ORDER,
+        U.SECTION_ORDER,
+    ),
+    every_version=True,
 )
 
 #: Every reader rule, in code order.

@@ -13,7 +13,7 @@ from xodrcheck.cli import main
 
 CLEAN = fixture("link-not-reciprocal", "pass.xodr")
 BROKEN = fixture("road-link-target-missing", "fail.xodr")  # R010 + K001 errors
-WARNING_ONLY = fixture("lane-link-missing-lane", "fail_dangling.xodr")  # one R015 warning
+WARNING_ONLY = fixture("short-lane-section", "fail.xodr")  # one G012 warning
 
 
 def run(capsys, *args) -> tuple[int, str, str]:

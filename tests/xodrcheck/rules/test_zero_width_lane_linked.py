@@ -17,10 +17,12 @@ def test_linking_the_opening_lane_is_an_error_in_17():
     assert "lane -2" in f.message and "opens" in f.message
 
 
-def test_before_17_it_is_a_warning():
+def test_before_17_it_is_an_error_too():
+    """Annex F's new_lane_appear (linking the appearing lane) dates from 1.4.0: older files are held to it too."""
     path = fixture(RULE, "fail_14.xodr")
     (f,) = findings(path, RULE)
-    assert f.severity is Severity.WARNING
+    assert f.severity is Severity.ERROR
+    assert f.rule_uid == "asam.net:xodr:1.4.0:road.lane.link.new_lane_appear"
 
 
 def test_border_lanes_filed_on_the_wrong_side_are_no_crash(tmp_path):
