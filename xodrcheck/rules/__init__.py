@@ -43,6 +43,7 @@ FAMILIES = (
     "link",
     "lane",
     "lane_attributes",
+    "lane_records",
     "geometry",
     "lane_shape",
     "records",

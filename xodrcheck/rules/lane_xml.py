@@ -1,0 +1,124 @@
+"""The lanes of a file as XML elements, indexed once per file for the rules that read what the model leaves out.
+
+The model keeps what geometry and topology need; some of Annex F's lane rules concern elements it does not hold
+(``<access>``, ``<material>``, ``<rule>``, an empty ``<link/>``, ``@direction``, lane layers) or the file's own
+arrangement (the order of ``<left>``/``<center>``/``<right>`` and of the lanes in them). :func:`lane_elements` walks the
+file's ``<road>/<lanes>/<laneSection>/<left|center|right>/<lane>`` once and keeps, for every lane, where it sits; the
+rules read the elements from there (``element.sourceline`` for lines) and parse nothing themselves. Tags are matched
+by local name (``{*}tag``, :func:`local`): 1.1/1.2 files may put their elements in a default namespace.
+"""
+
+from __future__ import annotations
+
+import math
+import weakref
+from dataclasses import dataclass
+
+from lxml import etree
+
+from xodrcheck.rules.context import Context
+
+GROUPS = ("left", "center", "right")
+
+
+@dataclass(frozen=True, slots=True)
+class SectionXml:
+    """One ``<laneSection>`` element and where it sits."""
+
+    road: str | None
+    road_element: etree._Element
+    lanes_element: etree._Element
+    element: etree._Element
+    #: Its ``s`` (``None`` when missing or not a number: the reader reports that).
+    s: float | None
+    #: The ``layer`` of its ``<lanes>`` (``permanent`` when absent, as the standard defaults it).
+    layer: str
+
+
+@dataclass(frozen=True, slots=True)
+class LaneXml:
+    """One ``<lane>`` element of a lane section's ``<left>``, ``<center>`` or ``<right>``."""
+
+    section: SectionXml
+    group: str
+    element: etree._Element
+    #: Its ``id`` (``None`` when missing or not an integer: the reader reports that).
+    id: int | None
+
+    @property
+    def road(self) -> str | None:
+        return self.section.road
+
+    def where(self, line: int | None = None) -> dict:
+        """Finding location fields: road, lane, lane section, s and the line (the lane's unless given)."""
+        s = self.section.s
+        return {
+            "road": self.road,
+            "lane": self.id,
+            "section_s": s,
+            "s": s,
+            "line": line or self.element.sourceline,
+        }
+
+    def describe(self) -> str:
+        s = self.section.s
+        return f"road {self.road} lane {self.id} (lane section s={'?' if s is None else f'{s:g}'})"
+
+
+@dataclass(frozen=True, slots=True)
+class LanesXml:
+    sections: tuple[SectionXml, ...]
+    lanes: tuple[LaneXml, ...]
+
+
+def local(element: etree._Element) -> str:
+    """An element's tag without its namespace."""
+    return etree.QName(element).localname
+
+
+def number(text: str | None) -> float | None:
+    """A finite float from an attribute, or ``None`` (the reader reports bad values)."""
+    if text is None:
+        return None
+    try:
+        value = float(text)
+    except ValueError:
+        return None
+    return value if math.isfinite(value) else None
+
+
+def integer(text: str | None) -> int | None:
+    if text is None:
+        return None
+    try:
+        return int(text)
+    except ValueError:
+        return None
+
+
+_INDEX: weakref.WeakKeyDictionary[Context, LanesXml] = weakref.WeakKeyDictionary()
+
+
+def lane_elements(ctx: Context) -> LanesXml:
+    """Every lane section and lane of the file as elements (empty when the file is not XML, or built in memory)."""
+    found = _INDEX.get(ctx)
+    if found is not None:
+        return found
+    sections: list[SectionXml] = []
+    lanes: list[LaneXml] = []
+    tree = ctx.tree
+    if tree is not None:
+        for road_el in tree.getroot().iterchildren("{*}road"):
+            road_id = road_el.get("id")
+            for lanes_el in road_el.iterchildren("{*}lanes"):
+                layer = lanes_el.get("layer") or "permanent"
+                for section_el in lanes_el.iterchildren("{*}laneSection"):
+                    section = SectionXml(road_id, road_el, lanes_el, section_el, number(section_el.get("s")), layer)
+                    sections.append(section)
+                    for group_el in section_el.iterchildren(*(f"{{*}}{g}" for g in GROUPS)):
+                        group = local(group_el)
+                        for lane_el in group_el.iterchildren("{*}lane"):
+                            lanes.append(LaneXml(section, group, lane_el, integer(lane_el.get("id"))))
+    found = LanesXml(tuple(sections), tuple(lanes))
+    _INDEX[ctx] = found
+    return found
