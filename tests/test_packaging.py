@@ -116,3 +116,13 @@ def test_installed_tree_finds_schemas_through_importlib_resources(wheel: Path, t
     missing = _schema_files() - set(found["files"])
     assert not missing, f"importlib.resources does not find: {sorted(missing)}"
     assert found["notice"].strip(), "NOTICE.md is empty"
+
+
+def test_wheel_contains_the_map_page_assets(wheel: Path):
+    """The HTML report's scripts, styles and page template are package data (read by xodrcheck.mapview.page)."""
+    from xodrcheck.mapview.page import SCRIPTS
+
+    with zipfile.ZipFile(wheel) as zf:
+        names = set(zf.namelist())
+    wanted = {f"xodrcheck/mapview/static/{name}" for name in (*SCRIPTS, "style.css", "page.html")}
+    assert wanted <= names, f"not in the wheel: {sorted(wanted - names)}"

@@ -22,6 +22,7 @@ COMMANDS = {
     "check": "Check OpenDRIVE files against the conformance rules (exit 1 when an error is found).",
     "rules": "List the checker's rules (code, name, category, severity, summary), or show one rule in full.",
     "mesh": "Write the lane surfaces as a 3D mesh (.glb, .obj or .ply), coloured by lane type.",
+    "view": "Write the map of a file as one self-contained HTML page (pan, zoom, hover a lane for its name and s).",
     "metrics": "Expressive-range metrics of every junction: FOV, maxCurvature, cornerDeviation, complexity, area, "
     "conflicts.",
     "snapshot": "Write the invariants of a map as JSON: counts of roads, junctions and lanes, legs, lane length, lane "

@@ -2,7 +2,8 @@
 
 Each format module has ``render(reports) -> str``; :func:`render` picks one by name. Formats: ``text`` (one line per
 finding), ``json``, ``junit`` (XML for CI test views), ``sarif`` (2.1.0, for code-scanning tools) and ``github``
-(workflow commands that annotate a pull request), ``xqar`` (the ASAM Quality Checker Framework's result file).
+(workflow commands that annotate a pull request), ``xqar`` (the ASAM Quality Checker Framework's result file)
+and ``html`` (a self-contained page with a map of each file).
 """
 
 from __future__ import annotations
@@ -14,7 +15,7 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:  # pragma: no cover
     from xodrcheck.check import Report
 
-FORMATS = ("text", "json", "junit", "sarif", "github", "xqar")
+FORMATS = ("text", "json", "junit", "sarif", "github", "xqar", "html")
 
 
 def render(name: str, reports: Sequence[Report]) -> str:
