@@ -90,7 +90,7 @@ def open_times(html: Path, repeats: int) -> None:
                 before = page.eval_on_selector(".xc-map", "e => e.dataset.scale + e.dataset.centerX")
                 row.locator(".xc-msg").click()
                 page.wait_for_function(
-                    "b => { const e = document.querySelector('.xc-map'); return e.dataset.scale + e.dataset.centerX !== b; }",
+                    "b => { const d = document.querySelector('.xc-map').dataset; return d.scale + d.centerX !== b; }",
                     arg=before,
                 )
             results.append(time.perf_counter() - start)

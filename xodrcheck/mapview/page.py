@@ -25,7 +25,7 @@ from xodrcheck.findings import Finding, Severity
 #: Script files, in the order they run (one inline script).
 SCRIPTS = ("decode.js", "map.js", "render.js", "report.js")
 _SEVERITIES = (Severity.ERROR, Severity.WARNING, Severity.INFO)
-_KNOWN = ("code", "name", "category", "severity", "message", "road", "lane", "section_s", "s", "x", "y", "line")
+_KNOWN = ("code", "name", "category", "severity", "message", "road", "lane", "section_s", "s", "x", "y", "z", "line")
 
 
 @dataclass(frozen=True)
@@ -119,7 +119,8 @@ def _where(f: Finding) -> str:
     if f.s is not None and math.isfinite(f.s):
         parts.append(f"s {f.s:.2f}")
     if f.x is not None and f.y is not None and math.isfinite(f.x) and math.isfinite(f.y):
-        parts.append(f"x {f.x:.2f}, y {f.y:.2f}")
+        z = getattr(f, "z", None)
+        parts.append(f"x {f.x:.2f}, y {f.y:.2f}" + (f", z {z:.2f}" if z and math.isfinite(z) else ""))
     else:
         parts.append("no map position")
     if f.line:
@@ -146,6 +147,7 @@ def _row(i: int, f: Finding) -> str:
         "x": f.x if f.y is not None else None,
         "y": f.y if f.x is not None else None,
         "line": f.line or None,
+        "z": getattr(f, "z", None),
     }
     attrs.update({re.sub(r"[^a-z0-9]+", "-", k.lower()): v for k, v in _extra(f).items()})
     data = " ".join(f'data-{k}="{_attr(v)}"' for k, v in attrs.items())
@@ -184,7 +186,7 @@ def _map(f: FilePage) -> str:
     return (
         f'<div class="xc-map" data-center-x="" data-center-y=""><canvas tabindex="0" aria-label="{label}"></canvas>'
         '<div class="xc-tools"><button type="button" data-tool="zoom-in" title="zoom in">+</button>'
-        '<button type="button" data-tool="zoom-out" title="zoom out">−</button>'
+        '<button type="button" data-tool="zoom-out" title="zoom out">&minus;</button>'
         '<button type="button" data-tool="fit" title="whole map">fit</button>'
         '<label><input type="checkbox" data-tool="reference"> reference lines</label></div>'
         '<div class="xc-legend"></div><div class="xc-tip" hidden></div>'

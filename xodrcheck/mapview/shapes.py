@@ -19,7 +19,7 @@ import numpy as np
 
 from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, SideLanes, geometry_of
-from xodrcheck.model import Document, Lane, Road
+from xodrcheck.model import Document, Lane, Road, RoadMark
 
 #: Default chord tolerance (m) of the drawn polylines: below a pixel at any useful zoom.
 CHORD = 0.05
@@ -78,7 +78,7 @@ def _lane_list(side: SideLanes) -> tuple[tuple[int, str], ...]:
     return tuple((lane.id, lane_type_name(lane)) for lane in side.lanes)
 
 
-def _mark_starts(lane: Lane, origin: float) -> list[tuple[float, object]]:
+def _mark_starts(lane: Lane, origin: float) -> list[tuple[float, RoadMark]]:
     return [(origin + mark.s, mark) for mark in sorted(lane.road_marks, key=lambda m: m.s)]
 
 
@@ -151,7 +151,7 @@ def _add_road(shapes: MapShapes, road: Road, geometries: Mapping[str, RoadGeomet
         rg = RoadGeometry(road)
     try:
         found = [_section(road, i, rg, chord, max_step) for i in range(len(road.lane_sections))]
-    except Exception:  # noqa: BLE001 - damaged geometry: the rules say why; the map leaves the road out
+    except Exception:
         shapes.skipped.append(road.id)
         return
     sections = [sec for sec in found if sec is not None]

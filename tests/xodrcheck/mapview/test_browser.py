@@ -66,7 +66,8 @@ def drawn_fraction(opened: Opened) -> float:
     return opened.page.evaluate(
         """() => { const c = document.querySelector('.xc-map canvas.xc-base');
                    const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data; let n = 0;
-                   for (let i = 0; i < d.length; i += 4) if (d[i] !== 0xee || d[i + 1] !== 0xf0 || d[i + 2] !== 0xea) n++;
+                   for (let i = 0; i < d.length; i += 4)
+                     if (d[i] !== 0xee || d[i + 1] !== 0xf0 || d[i + 2] !== 0xea) n++;
                    return n / (d.length / 4); }"""
     )
 
@@ -156,12 +157,13 @@ def lane_point(page) -> dict:
         """() => { const v = XC.views[0].map;
           for (const sec of v.sections) { if (sec.junction !== null || sec.n < 3) continue; const j = sec.n >> 1;
             for (const lane of sec.lanes) {
-              const w = Math.hypot(sec.xs[lane.inner][j] - sec.xs[lane.outer][j], sec.ys[lane.inner][j] - sec.ys[lane.outer][j]);
-              if (w < 2.5) continue;
-              const x = (sec.xs[lane.inner][j] + sec.xs[lane.outer][j]) / 2, y = (sec.ys[lane.inner][j] + sec.ys[lane.outer][j]) / 2;
+              const X = sec.xs, Y = sec.ys, a = lane.inner, b = lane.outer;
+              if (Math.hypot(X[a][j] - X[b][j], Y[a][j] - Y[b][j]) < 2.5) continue;
+              const x = (X[a][j] + X[b][j]) / 2, y = (Y[a][j] + Y[b][j]) / 2;
               v.centerOn(x + v.origin[0], y + v.origin[1], 20);
               const p = v.toScreen(x, y), r = v.canvas.getBoundingClientRect();
-              return { x: r.left + p[0], y: r.top + p[1], road: sec.roadId, lane: lane.id, type: lane.type, s: sec.s[j] };
+              return { x: r.left + p[0], y: r.top + p[1], road: sec.roadId, lane: lane.id, type: lane.type,
+                       s: sec.s[j] };
             } } return null; }"""
     )
 

@@ -144,7 +144,7 @@ def test_view_writes_a_map_without_findings(tmp_path: Path):
     ("content", "code"),
     [
         (None, 2),
-        (b"not xml at all", 1),
+        (b"not xml at all", 2),
         (b'<?xml version="1.0"?><OpenDRIVE><header revMajor="1" revMinor="7"/></OpenDRIVE>', 1),
     ],
 )

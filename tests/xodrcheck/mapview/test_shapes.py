@@ -110,7 +110,8 @@ def _huge_width() -> bytes:
     return b"""<?xml version="1.0"?><OpenDRIVE><header revMajor="1" revMinor="7"/>
 <road id="1" length="100" junction="-1"><planView><geometry s="0" x="0" y="0" hdg="0" length="100"><line/></geometry>
 </planView><lanes><laneSection s="0"><center><lane id="0" type="none"/></center><right>
-<lane id="-1" type="driving"><width sOffset="0" a="1e308" b="1e308" c="0" d="0"/></lane></right></laneSection></lanes></road>
+<lane id="-1" type="driving"><width sOffset="0" a="1e308" b="1e308" c="0" d="0"/></lane></right></laneSection>
+</lanes></road>
 <road id="2" length="50" junction="-1"><planView><geometry s="0" x="0" y="10" hdg="0" length="50"><line/></geometry>
 </planView><lanes><laneSection s="0"><center><lane id="0" type="none"/></center><right>
 <lane id="-1" type="driving"><width sOffset="0" a="3" b="0" c="0" d="0"/></lane></right></laneSection></lanes></road>
