@@ -44,6 +44,7 @@ FAMILIES = (
     "lane",
     "lane_attributes",
     "lane_records",
+    "lane_links",
     "geometry",
     "lane_shape",
     "records",

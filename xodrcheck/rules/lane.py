@@ -297,10 +297,11 @@ def lane_not_continued(ctx: Context):
     vanishes at the joint: traffic on it has nowhere to come from or go to.
 
     A connecting road's lanes need their own links at both ends, as in the standard's junction example (12.4): the
-    junction's ``laneLink`` says which incoming lane leads into a connecting lane, but readers that follow lane links
-    (routing, lane graphs) walk from the connecting lane through its ``predecessor``; the laneLink does not stand in
-    for it (the incoming road links to the junction, not back to the connecting road). An error for drivable lanes, a warning for sidewalks, bike, tram, rail and
-    parking lanes, an info for the rest (``none``, ``border``, ``shoulder``...), which carry no traffic.
+    junction's ``laneLink`` says which incoming lane leads into a connecting lane, but readers that follow lane
+    links (routing, lane graphs) walk from the connecting lane through its ``predecessor``; the laneLink does not
+    stand in for it (the incoming road links to the junction, not back to the connecting road). An error for
+    drivable lanes, a warning for sidewalks, bike, tram, rail and parking lanes, an info for the rest (``none``,
+    ``border``, ``shoulder``...), which carry no traffic.
 
     Passes (lane -2 opens from zero width)::
 
@@ -439,11 +440,6 @@ def _own_zero_width_uid(ctx: Context, end: ContactPoint) -> str:
     Category.LANE,
     Severity.ERROR,
     uids=(U.LINK_ZERO_WIDTH_START, U.LINK_ZERO_WIDTH_END, U.LINK_NEW_LANE_APPEAR, U.LINK_MULTIPLE),
-    partial={
-        U.LINK_MULTIPLE: "its second sentence (connected lanes have non-zero width at the connection); its first, "
-        "that a lane split or merged abruptly has several links, is lane-not-continued's (an unlinked lane of "
-        "non-zero width at a joint)"
-    },
     every_version=True,
 )
 def zero_width_lane_linked(ctx: Context):
@@ -453,7 +449,8 @@ def zero_width_lane_linked(ctx: Context):
     the end no successor: ``road.lane.link.zero_width_at_start``, ``zero_width_at_end``, 1.7), "if a new lane appears
     besides, only the continuing lane shall be connected to the original lane, not the appearing lane"
     (``road.lane.link.new_lane_appear``) and "all lanes that are connected shall have a non-zero width at the
-    connection point" (``road.lane.link.multiple_connections``, 1.4: files older than 1.7 and junction laneLinks).
+    connection point" (``road.lane.link.multiple_connections``, 1.4: files older than 1.7 and junction laneLinks; its
+    first sentence, several links where a lane splits or lanes merge abruptly, is ``lane-border-discontinuous``'s).
     Junction laneLinks count as links.
 
     Passes (lane -1 continues into lane -1; lane -2 opens without a predecessor)::

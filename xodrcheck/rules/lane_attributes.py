@@ -1,11 +1,15 @@
-"""Lane attributes (``L014``-``L016``): ``level`` and ``access`` values that contradict each other."""
+"""Lane attributes (``L014``-``L016``, ``L023``): ``level``, ``access`` and ``direction`` values that contradict each
+other or the road."""
 
 from __future__ import annotations
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.model import DRIVABLE_LANE_TYPES as DRIVABLE
+from xodrcheck.model import LaneType
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane import joints, pair_key, side_lanes
+from xodrcheck.rules.lane_xml import by_section
 from xodrcheck.rules.registry import rule
 
 
@@ -128,3 +132,43 @@ def _int(text: str | None) -> int | None:
         return int(text) if text is not None else None
     except ValueError:
         return None
+
+
+#: Lane types by their spelling in lower case (the reader's matching, without regard to case).
+_TYPES = {t.value.lower(): t for t in LaneType}
+
+
+@rule("L023", "lane-direction-reverses-traffic", Category.LANE, Severity.ERROR, uids=(U.LANE_REVERSE_LEFT_RIGHT,))
+def lane_direction_reverses_traffic(ctx: Context):
+    """Every drivable lane of a lane section has ``direction="reversed"``: the road's traffic rule is turned round.
+
+    ``@direction="reversed"`` (1.8) reverses one lane's driving direction, for a contraflow lane say. Reversing all of
+    a lane section's drivable lanes drives right-hand traffic on the left (or left-hand traffic on the right): Annex F
+    ``road.lane.lane_reverse_left_right`` says the attribute shall not be used to change from right-hand to left-hand
+    traffic and back. Set the road's ``rule`` (``RHT``/``LHT``) instead, or put the lanes on the side whose default
+    direction they have.
+
+    Passes (one contraflow lane)::
+
+        <left><lane id="1" type="driving"/></left>
+        <right><lane id="-1" type="driving" direction="reversed"/><lane id="-2" type="driving"/></right>
+
+    Fails::
+
+        <left><lane id="1" type="driving" direction="reversed"/></left>
+        <right><lane id="-1" type="driving" direction="reversed"/></right>
+    """
+    for lanes in by_section(ctx):
+        drivable = [
+            lane
+            for lane in lanes
+            if lane.group != "center" and _TYPES.get((lane.element.get("type") or "").strip().lower()) in DRIVABLE
+        ]
+        if drivable and all(lane.element.get("direction") == "reversed" for lane in drivable):
+            first = drivable[0]
+            ids = ", ".join(str(lane.id) for lane in drivable)
+            yield lane_direction_reverses_traffic.finding(
+                f'{first.describe()}: every drivable lane of the lane section ({ids}) has direction="reversed", '
+                "which turns the road's traffic rule round; set the road's rule (RHT/LHT) instead",
+                **first.where(),
+            )

@@ -9,14 +9,13 @@ starts.
 from __future__ import annotations
 
 import itertools
-from collections.abc import Iterator
 
 from lxml import etree
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.lane_xml import LaneXml, lane_elements, local, number
+from xodrcheck.rules.lane_xml import LaneXml, by_section, lane_elements, local, number
 from xodrcheck.rules.registry import rule
 
 #: An ``sOffset`` this close to 0 is 0 (written-number noise, not a tolerance).
@@ -40,7 +39,7 @@ def lane_listing_order(ctx: Context):
 
         <right><lane id="-2" .../><lane id="-1" .../></right>
     """
-    for lanes in _by_section(ctx):
+    for lanes in by_section(ctx):
         listed = [lane for lane in lanes if lane.id is not None and _on_its_side(lane)]
         for before, lane in itertools.pairwise(listed):
             if lane.id > before.id:  # type: ignore[operator]
@@ -51,18 +50,6 @@ def lane_listing_order(ctx: Context):
                     **lane.where(),
                 )
                 break
-
-
-def _by_section(ctx: Context) -> Iterator[list[LaneXml]]:
-    """The lanes of each lane section, in file order."""
-    current: list[LaneXml] = []
-    for lane in lane_elements(ctx).lanes:
-        if current and current[0].section is not lane.section:
-            yield current
-            current = []
-        current.append(lane)
-    if current:
-        yield current
 
 
 def _on_its_side(lane: LaneXml) -> bool:
@@ -203,7 +190,7 @@ def width_and_border_mixed(ctx: Context):
 
         <right><lane id="-1"><width sOffset="0" a="3.5" .../></lane><lane id="-2"><border sOffset="0" a="-5.5" .../>
     """
-    for lanes in _by_section(ctx):
+    for lanes in by_section(ctx):
         for group in ("left", "right"):
             members = [lane for lane in lanes if lane.group == group]
             width, border = _first(members, "width"), _first(members, "border")

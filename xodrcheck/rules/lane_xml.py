@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 import weakref
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 from lxml import etree
@@ -122,3 +123,15 @@ def lane_elements(ctx: Context) -> LanesXml:
     found = LanesXml(tuple(sections), tuple(lanes))
     _INDEX[ctx] = found
     return found
+
+
+def by_section(ctx: Context) -> Iterator[list[LaneXml]]:
+    """The lanes of each lane section (that has any), in file order."""
+    current: list[LaneXml] = []
+    for lane in lane_elements(ctx).lanes:
+        if current and current[0].section is not lane.section:
+            yield current
+            current = []
+        current.append(lane)
+    if current:
+        yield current

@@ -23,6 +23,7 @@ Distances use the ``position`` tolerance, angles the ``heading`` tolerance. ASAM
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Iterator
 from dataclasses import dataclass, field
@@ -30,9 +31,10 @@ from dataclasses import dataclass, field
 from xodrcheck.findings import Category, Severity
 from xodrcheck.lanes import RoadGeometry
 from xodrcheck.model import ContactPoint, ElementType, Road
+from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, Neighbour, link_at
 from xodrcheck.rules.geometry import profile_steps
-from xodrcheck.rules.registry import rule
+from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.rules.sampled import (
     EndPoint,
     RoadEnd,
@@ -343,7 +345,14 @@ def _inner_pairs(side):
         inner = lane.id
 
 
-@rule("L101", "lane-border-discontinuous", Category.LANE, Severity.ERROR)
+@rule(
+    "L101",
+    "lane-border-discontinuous",
+    Category.LANE,
+    Severity.ERROR,
+    uids=(U.LINK_MULTIPLE,),
+    every_version=True,
+)
 def lane_border_discontinuous(ctx: Context):
     """Lanes linked across a lane-section boundary inside a road do not meet: a border jumps at the boundary.
 
@@ -356,6 +365,12 @@ def lane_border_discontinuous(ctx: Context):
     and the lane's ``<height>``) must not step at the boundary (ASAM OpenDRIVE Annex D.1.4), within the same tolerance.
     Where the road's own elevation or superelevation steps, ``profile-step`` reports it instead.
 
+    A lane split abruptly into lanes side by side, or lanes merged abruptly into one, is linked to each of them
+    (Annex F ``road.lane.link.multiple_connections``); the lane and the band they cover together must meet. Where a
+    lane is linked to only one of the lanes it splits into (the jump is closed by unlinked lanes beside the linked one),
+    the finding names that rule. (Its second sentence, non-zero width where lanes connect, is
+    ``zero-width-lane-linked``'s.)
+
     Passes (lane -1 keeps 3.5 m across the boundary at s=50)::
 
         <laneSection s="0"> ... <lane id="-1"><link><successor id="-1"/></link><width a="3.5" .../>
@@ -365,7 +380,6 @@ def lane_border_discontinuous(ctx: Context):
 
         <laneSection s="50"> ... <lane id="-1"><link><predecessor id="-1"/></link><width a="2.5" .../>
     """
-    tol = ctx.tolerances.position
     for road in ctx.document.roads:
         geometry = usable(ctx, road)
         if geometry is None:
@@ -390,36 +404,130 @@ def lane_border_discontinuous(ctx: Context):
             old, new = section_lines(ctx, road, i - 1), section_lines(ctx, road, i)
             inner_of = {lane.id: inner for side in geometry.side_lanes(i - 1) for inner, lane in _inner_pairs(side)}
             inner_new = {lane.id: inner for side in geometry.side_lanes(i) for inner, lane in _inner_pairs(side)}
-            for (a, b), line in sorted(pairs.items()):
-                if a == 0 or b == 0 or a not in old.t or b not in new.t:
-                    continue  # a missing lane is lane-link-missing-lane's
-                t_before = (float(old.t[inner_of[a]][-1]), float(old.t[a][-1]))
-                t_after = (float(new.t[inner_new[b]][0]), float(new.t[b][0]))
-                jump = max(abs(p - q) for p, q in zip(t_before, t_after))
-                z_before = _edge_heights(geometry, old, i - 1, a, inner_of[a], -1)
-                z_after = _edge_heights(geometry, new, i, b, inner_new[b], 0)
-                step = max(abs(p - q) for p, q in zip(z_before, z_after)) if after.s not in surface_steps else 0.0
-                if not (jump > tol or step > tol):
-                    continue
-                what = []
-                if jump > tol:
-                    what.append(f"its borders jump by {jump:.4g} m ({_change(t_before, t_after)})")
-                if step > tol:
-                    what.append(f"its surface steps by {step:.4g} m in height (z {_change(z_before, z_after)})")
-                fix = ", heights and level flags" if step > tol else ""
-                point = new.borders[b]
-                yield lane_border_discontinuous.finding(
-                    f"road {road.id}: lane {a} of the lane section at s={before.s:g} continues as lane {b} at "
-                    f"s={after.s:g}, but {' and '.join(what)}; make the widths{fix} continue or link the right lanes",
-                    road=road.id,
-                    lane=b,
-                    section_s=after.s,
-                    s=after.s,
-                    x=float(point.x[0]),
-                    y=float(point.y[0]),
-                    z=z_after[1] if math.isfinite(z_after[1]) else None,
-                    line=line or after.line or None,
+            usable_pairs = {
+                (a, b): line
+                for (a, b), line in pairs.items()
+                if a != 0 and b != 0 and a in old.t and b in new.t  # a missing lane is lane-link-missing-lane's
+            }
+            for group, line in _link_groups(usable_pairs):
+                yield from _boundary_finding(
+                    ctx, road, geometry, i, group, line, (old, new), (inner_of, inner_new), usable_pairs, surface_steps
                 )
+
+
+def _boundary_finding(ctx, road, geometry, i, group, line, lines, inners, pairs, surface_steps):
+    """The finding (if any) for one group of linked lanes at the start of lane section ``i``."""
+    tol = ctx.tolerances.position
+    before, after = road.lane_sections[i - 1], road.lane_sections[i]
+    (a_in, a, b_in, b), (old, new), (inner_of, inner_new) = group, lines, inners
+    t_before = (float(old.t[inner_of[a_in]][-1]), float(old.t[a][-1]))
+    t_after = (float(new.t[inner_new[b_in]][0]), float(new.t[b][0]))
+    jump = max(abs(p - q) for p, q in zip(t_before, t_after))
+    z_before = _group_heights(geometry, old, i - 1, a_in, a, inner_of, -1)
+    z_after = _group_heights(geometry, new, i, b_in, b, inner_new, 0)
+    step = max(abs(p - q) for p, q in zip(z_before, z_after)) if after.s not in surface_steps else 0.0
+    if not (jump > tol or step > tol):
+        return
+    what = []
+    if jump > tol:
+        what.append(f"its borders jump by {jump:.4g} m ({_change(t_before, t_after)})")
+    if step > tol:
+        what.append(f"its surface steps by {step:.4g} m in height (z {_change(z_before, z_after)})")
+    fix = ", heights and level flags" if step > tol else ""
+    advice, uid = f"make the widths{fix} continue or link the right lanes", NO_UID
+    if jump > tol and a_in == a and b_in == b:
+        split = _unlinked_band(b, t_before, new, inner_new, {y for _, y in pairs}, 0, tol)
+        merge = None if split else _unlinked_band(a, t_after, old, inner_of, {x for x, _ in pairs}, -1, tol)
+        if split:
+            advice, uid = f"lane {a} splits into {_lanes(*split)}: link it to each of them", U.LINK_MULTIPLE
+        elif merge:
+            advice, uid = f"{_lanes(*merge)} merge into lane {b}: link each of them to it", U.LINK_MULTIPLE
+    point = new.borders[b]
+    yield lane_border_discontinuous.finding(
+        f"road {road.id}: {_lanes(a_in, a)} of the lane section at s={before.s:g} continue"
+        f"{'s' if a_in == a else ''} as {_lanes(b_in, b)} at s={after.s:g}, but {' and '.join(what)}; {advice}",
+        uid=uid,
+        road=road.id,
+        lane=b,
+        section_s=after.s,
+        s=after.s,
+        x=float(point.x[0]),
+        y=float(point.y[0]),
+        z=z_after[1] if math.isfinite(z_after[1]) else None,
+        line=line or after.line or None,
+    )
+
+
+def _unlinked_band(lane_id, want, lines, inner_of, linked, k, tol) -> tuple[int, int] | None:
+    """Lanes side by side around ``lane_id`` whose others have no link across the boundary and whose band's inner
+    and outer border at sample ``k`` are ``want`` (within ``tol``): what a lane split into (or merged from) when it
+    should have linked them all. ``None`` when there is no such band."""
+    sign = 1 if lane_id > 0 else -1
+    inward, outward = [lane_id], [lane_id]
+    while (nxt := inward[-1] - sign) * sign > 0 and nxt in lines.t and nxt not in linked:
+        inward.append(nxt)
+    while (nxt := outward[-1] + sign) in lines.t and nxt not in linked:
+        outward.append(nxt)
+    for inner in inward:
+        for outer in outward:
+            if inner == outer == lane_id:
+                continue
+            band = (float(lines.t[inner_of[inner]][k]), float(lines.t[outer][k]))
+            if max(abs(p - q) for p, q in zip(band, want)) <= tol:
+                return inner, outer
+    return None
+
+
+def _link_groups(pairs: dict[tuple[int, int], int]) -> Iterator[tuple[tuple[int, int, int, int], int]]:
+    """What must meet across a lane-section boundary, from the lane links ``(before, after) -> line``.
+
+    A lane linked to one lane: the two lanes. A lane split into several lanes side by side (several successors), or
+    several lanes side by side merged into one (``road.lane.link.multiple_connections``): the lane and the band the
+    others cover together. Yields ``(innermost before, outermost before, innermost after, outermost after)`` with the
+    line of the first link; a band that is not side by side on one side (reported by ``lane-links-ambiguous`` and
+    ``lane-link-direction``) falls back to its single links.
+    """
+    after_of: dict[int, list[int]] = {}
+    before_of: dict[int, list[int]] = {}
+    for a, b in sorted(pairs):
+        after_of.setdefault(a, []).append(b)
+        before_of.setdefault(b, []).append(a)
+    done: set[tuple[int, int]] = set()
+    for a, targets in sorted(after_of.items()):
+        if len(targets) > 1 and all(len(before_of[b]) == 1 for b in targets) and _band(targets):
+            inner, outer = _band(targets)  # type: ignore[misc]
+            done.update((a, b) for b in targets)
+            yield (a, a, inner, outer), pairs[(a, targets[0])]
+    for b, sources in sorted(before_of.items()):
+        if len(sources) > 1 and all(len(after_of[a]) == 1 for a in sources) and _band(sources):
+            inner, outer = _band(sources)  # type: ignore[misc]
+            done.update((a, b) for a in sources)
+            yield (inner, outer, b, b), pairs[(sources[0], b)]
+    for (a, b), line in sorted(pairs.items()):
+        if (a, b) not in done:
+            yield (a, a, b, b), line
+
+
+def _band(ids: list[int]) -> tuple[int, int] | None:
+    """(innermost, outermost) of lane ids side by side on one side of the centre, else ``None``."""
+    ordered = sorted(ids, key=abs)
+    sign = 1 if ordered[0] > 0 else -1
+    if any(i * sign <= 0 for i in ordered) or any(abs(q) - abs(p) != 1 for p, q in itertools.pairwise(ordered)):
+        return None
+    return ordered[0], ordered[-1]
+
+
+def _lanes(inner: int, outer: int) -> str:
+    return f"lane {inner}" if inner == outer else f"lanes {inner} to {outer}"
+
+
+def _group_heights(
+    geometry: RoadGeometry, lines: SectionLines, index: int, inner: int, outer: int, inner_of: dict, k: int
+) -> tuple[float, float]:
+    """z of the inner edge of lane ``inner`` and of the outer edge of lane ``outer`` (the same lane, or a band)."""
+    z_inner = _edge_heights(geometry, lines, index, inner, inner_of[inner], k)[0]
+    z_outer = _edge_heights(geometry, lines, index, outer, inner_of[outer], k)[1]
+    return z_inner, z_outer
 
 
 def _change(before: tuple[float, float], after: tuple[float, float]) -> str:

@@ -39,3 +39,24 @@ def test_level_flag_change_on_a_superelevated_road_steps():
     by_lane = {f.lane: f for f in findings(path, RULE)}
     assert sorted(by_lane) == [-2, -1]
     assert f"steps by {3.5 * math.sin(0.05):.4g} m" in by_lane[-1].message
+
+
+def test_a_split_linked_to_every_lane_meets_as_a_band():
+    assert findings(fixture(RULE, "pass_split.xodr"), RULE) == []
+
+
+def test_a_split_linked_to_one_lane_only_names_multiple_connections():
+    (f,) = findings(fixture(RULE, "fail_split_unlinked.xodr"), RULE)
+    assert f.rule_uid == "asam.net:xodr:1.4.0:road.lane.link.multiple_connections"
+    assert "lane -1 splits into lanes -1 to -2: link it to each of them" in f.message
+
+
+def test_a_merge_linked_from_one_lane_only_names_multiple_connections():
+    (f,) = findings(fixture(RULE, "fail_merge_unlinked.xodr"), RULE)
+    assert f.rule_uid == "asam.net:xodr:1.4.0:road.lane.link.multiple_connections"
+    assert "lanes -1 to -2 merge into lane -1" in f.message
+
+
+def test_a_plain_jump_names_no_rule_of_the_standard():
+    (f,) = findings(fixture(RULE, "fail.xodr"), RULE)
+    assert f.rule_uid is None
