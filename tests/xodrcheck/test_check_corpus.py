@@ -41,7 +41,8 @@ def test_whole_corpus_time(corpus_dir):
         counts.update(f.code for f in check(path).findings)
     elapsed = time.perf_counter() - started
     print(
-        f"\nxodrcheck check over {len(FILES)} corpus files: {elapsed:.1f} s; findings by code: {dict(sorted(counts.items()))}"
+        f"\nxodrcheck check over {len(FILES)} corpus files: {elapsed:.1f} s; "
+        f"findings by code: {dict(sorted(counts.items()))}"
     )
     assert "X900" not in counts
 
@@ -61,19 +62,21 @@ EXPECTED = {
     # Connection 2: incoming 103, connecting 151 contactPoint "start", but 151 starts at road 101 (J002); lane 1 of
     # section s=0.1 of road 103 narrows to 1.5 m and has no successor (L010); lanes link across road ends that have no
     # road link (R015, Annex F road.lane.link.no_link); <geoReference> stands beside <header>, 1.4 wants it inside
-    # (S001); repeated laneOffset records (G901).
-    "ika-roadgeneration/test/gt/junction_ma.xodr": {"G901", "J002", "L010", "R015", "S001"},
+    # (S001); repeated laneOffset records (G901); roads 101 and 102 start in junction 1 yet their lanes name
+    # predecessors (L024, Annex F no_link); road 103 lists its left lanes 1, 2 (L017, a warning).
+    "ika-roadgeneration/test/gt/junction_ma.xodr": {"G901", "J002", "L010", "L017", "L024", "R015", "S001"},
     # Connection 2 links lane -1 of road 2 to lane -3 of road 4, which has only lane -1 (R012); 1.6 connections list
-    # both directions of bidirectional connecting roads (J004 infos).
-    "esmini/EnvironmentSimulator/Unittest/xodr/highway_merge.xodr": {"J004", "R012"},
+    # both directions of bidirectional connecting roads (J004 infos); empty <link/> in lanes of roads 0, 1, 2 (L024).
+    "esmini/EnvironmentSimulator/Unittest/xodr/highway_merge.xodr": {"J004", "L024", "R012"},
     # A 1.7 file: connecting roads 100 and 101 each in two connections (J007); lane 2 of road 1 closes to zero width
     # but has a successor, lane 2 of road 2 opens from zero with a predecessor (L013); road 3 lane 2 into the junction
-    # unlinked (J005); laneLinks from lanes leaving the junction (J004).
-    "esmini/resources/xodr/parking_demo.xodr": {"J004", "J005", "J007", "L013"},
-    # Road 2 lane -3's successor is lane 2 of road 1 (should be 3), and road 1 lane 3 is not returned (L011).
-    "esmini/EnvironmentSimulator/Unittest/xodr/straight_2x100m_opposite.xodr": {"L011"},
-    # Centre lanes with <width> records (L002).
-    "esmini/EnvironmentSimulator/Unittest/xodr/mixed_roads.xodr": {"L002"},
+    # unlinked (J005); laneLinks from lanes leaving the junction (J004); empty <link/> in roads 3 and 4 (L024).
+    "esmini/resources/xodr/parking_demo.xodr": {"J004", "J005", "J007", "L013", "L024"},
+    # Road 2 lane -3's successor is lane 2 of road 1 (should be 3), and road 1 lane 3 is not returned (L011); so lane
+    # 2 of road 1 leads into -3 and -2 while -3 also continues lane 3 (L025); centre lanes with an empty <link/> (L024).
+    "esmini/EnvironmentSimulator/Unittest/xodr/straight_2x100m_opposite.xodr": {"L011", "L024", "L025"},
+    # Centre lanes with <width> records (L002); every lane's <link/> is empty (L024).
+    "esmini/EnvironmentSimulator/Unittest/xodr/mixed_roads.xodr": {"L002", "L024"},
 }
 
 
