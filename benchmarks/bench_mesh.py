@@ -1,10 +1,11 @@
 """Mesh and overlap-check speed: lane meshes of each CARLA town and the overlap rules on them, and on a generated map.
 
-For each CARLA town of the corpus, prints the time of building every lane's mesh at 0.1 m chord tolerance (from a
-freshly read document, so geometry is evaluated from scratch), beside libOpenDRIVE's 0.7 s for Town07 (C++, its
-published figure for the same tolerance; target: at most 3x that), then the time of the overlap rules (``O``) at the
-default tolerances, mesh included. When ``junctionart.generate`` exists, does the same for a generated 5 km x 5 km
-map (target: overlap check under 30 s); otherwise says why that line is missing.
+For each CARLA town of the corpus, prints the CPU time of reading the file and building every lane's mesh at 0.1 m
+chord tolerance (geometry evaluated from scratch), beside libOpenDRIVE's 0.11 s CPU for parsing and meshing Town07
+on this machine kind (C++; issue 14's target: read + meshes at most 0.3 s CPU), then the time of the overlap rules
+(``O``) at the default tolerances, mesh included. When ``junctionart.generate`` exists, does the same for a generated
+5 km x 5 km map (target: overlap check at most 10 s); otherwise says why that line is missing. CPU times (this
+process) are less sensitive to a busy machine than wall times.
 
     python benchmarks/bench_mesh.py [--corpus DIR] [--size 5000] [--seed 0]
 """
@@ -22,24 +23,23 @@ from xodrcheck.mesh import build_surfaces
 from xodrcheck.reader import read
 
 REPO = Path(__file__).resolve().parents[1]
-LIBOPENDRIVE_TOWN07_S = 0.7
-MESH_TARGET_S = 3 * LIBOPENDRIVE_TOWN07_S
-OVERLAP_TARGET_S = 30.0
+LIBOPENDRIVE_TOWN07_S = 0.11
+MESH_TARGET_S = 0.3
+OVERLAP_TARGET_S = 10.0
 CHORD = 0.1
 
 
 def timed(fn):
-    start = time.perf_counter()
+    start = time.process_time()
     value = fn()
-    return time.perf_counter() - start, value
+    return time.process_time() - start, value
 
 
 def bench_file(path: Path, label: str) -> tuple[float, float]:
-    document = read(path).document
-    mesh_s, surfaces = timed(lambda: build_surfaces(document, chord=CHORD))
+    mesh_s, surfaces = timed(lambda: build_surfaces(read(path).document, chord=CHORD))
     overlap_s, report = timed(lambda: check(path, select=("overlap",)))
     print(
-        f"{label:<28} mesh {mesh_s:6.2f} s ({len(surfaces.faces):>7} faces, {len(surfaces):>5} lane strips)   "
+        f"{label:<28} read + mesh {mesh_s:6.2f} s ({len(surfaces.faces):>7} faces, {len(surfaces):>5} lane strips)   "
         f"overlap check {overlap_s:6.2f} s ({len(report.findings)} findings)"
     )
     return mesh_s, overlap_s
@@ -79,16 +79,16 @@ def main() -> None:
     if "Town07" in times:
         mesh_s = times["Town07"][0]
         print(
-            f"Town07 mesh: {mesh_s:.2f} s vs libOpenDRIVE {LIBOPENDRIVE_TOWN07_S} s = "
-            f"{mesh_s / LIBOPENDRIVE_TOWN07_S:.1f}x (target <= 3x, {MESH_TARGET_S:.1f} s): "
+            f"Town07 read + mesh: {mesh_s:.2f} s CPU vs libOpenDRIVE {LIBOPENDRIVE_TOWN07_S} s = "
+            f"{mesh_s / LIBOPENDRIVE_TOWN07_S:.1f}x (target <= {MESH_TARGET_S:.1f} s): "
             f"{'met' if mesh_s <= MESH_TARGET_S else 'NOT met'}"
         )
     path = generated_map(args.size, args.seed)
     if path is not None:
         _, overlap_s = bench_file(path, path.stem)
         print(
-            f"generated map overlap check: {overlap_s:.1f} s (target < {OVERLAP_TARGET_S:g} s): "
-            f"{'met' if overlap_s < OVERLAP_TARGET_S else 'NOT met'}"
+            f"generated map overlap check: {overlap_s:.1f} s CPU (target <= {OVERLAP_TARGET_S:g} s): "
+            f"{'met' if overlap_s <= OVERLAP_TARGET_S else 'NOT met'}"
         )
 
 

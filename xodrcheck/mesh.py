@@ -24,7 +24,7 @@ import numpy as np
 from xodrcheck.config import Tolerances
 from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, geometry_of
-from xodrcheck.model import Document, LaneKey, Road, document_cache
+from xodrcheck.model import Document, Lane, LaneKey, Road, document_cache
 
 #: Largest coordinate (m) a meshed vertex may have: 25 times the Earth's circumference. Beyond it a lane is damaged
 #: input (a width of 1e308, say), and polygon operations (GEOS) fail on such numbers instead of giving an area.
@@ -171,8 +171,12 @@ def build_surfaces(
     ``lane_types`` keeps only lanes of those types (names as the standard spells them; ``None``: all). Lane sections
     that do not end after they start, and sections whose geometry does not evaluate to finite numbers or lies beyond
     :data:`MAX_COORDINATE` (a damaged width or position: other rules report it), are skipped. With ``max_vertices``,
-    a mesh that would have more vertices raises :class:`MeshTooLarge` as soon as it passes the bound.
+    a mesh that would have more vertices raises :class:`MeshTooLarge` before its vertex arrays are built. All sections
+    are sampled and evaluated together where :mod:`xodrcheck.roadpass` covers them (the per-section code's numbers),
+    one by one otherwise.
     """
+    from xodrcheck import roadpass
+
     defaults = Tolerances()
     chord = defaults.chord if chord is None else chord
     max_step = defaults.max_step if max_step is None else max_step
@@ -180,64 +184,216 @@ def build_surfaces(
         raise ValueError(f"chord must be a finite number > 0, got {chord!r}")
     wanted = None if lane_types is None else frozenset(lane_types)
     geometries = geometry_of(document)
-    keys: list[LaneKey] = []
-    types: list[str] = []
-    vertex_blocks: list[np.ndarray] = []
-    face_blocks: list[np.ndarray] = []
-    s_blocks: list[np.ndarray] = []
-    lane_sizes: list[np.ndarray] = []
-    vertex_total = 0
+    todo: list[_Section] = []
     for road in document.roads:
         if not road.plan_view:
             continue
         rg = _road_geometry(document, road, geometries)
         for index, section in enumerate(road.lane_sections):
-            if not road.section_end(index) > section.s:
-                continue
-            left, right = rg.side_lanes(index)
-            pairs = [  # (lane, id of the lane whose outer border is its inner border)
-                (lane, inner.id if k else 0)
-                for side in (left, right)
-                for k, (lane, inner) in enumerate(zip(side.lanes, (None, *side.lanes[:-1])))
-            ]
-            pairs = [(lane, inner) for lane, inner in pairs if wanted is None or lane_type_name(lane) in wanted]
-            if not pairs:
-                continue
-            s = rg.sample_s(index, chord=chord, max_step=max_step)
-            n = len(s)
-            if n < 2:
-                continue
-            curves = rg.border_curves(index, s)
-            ids = list(curves)
-            rows = np.stack([np.column_stack([curves[i].x, curves[i].y, curves[i].z]) for i in ids])
-            if not (np.abs(rows) <= MAX_COORDINATE).all():  # also False for NaN
-                continue
-            row_of = {lane_id: k for k, lane_id in enumerate(ids)}
-            inner = np.array([row_of[i] for _, i in pairs])
-            outer = np.array([row_of[lane.id] for lane, _ in pairs])
-            block = np.stack([rows[inner], rows[outer]], axis=1).reshape(-1, 3)  # lane after lane: inner, outer rows
-            faces = _strip_faces(len(pairs), n, np.array([lane.id > 0 for lane, _ in pairs]))
-            vertex_blocks.append(block)
-            face_blocks.append(faces.reshape(-1, 3) + vertex_total)
-            s_blocks.append(np.tile(np.repeat(s[:-1], 2), len(pairs)))
-            lane_sizes.append(np.full(len(pairs), n))
-            vertex_total += len(block)
-            if max_vertices is not None and vertex_total > max_vertices:
-                raise MeshTooLarge(f"the mesh has more than {max_vertices:,} vertices (tolerance max_output_points)")
-            keys.extend(LaneKey(road.id, section.s, lane.id) for lane, _ in pairs)
-            types.extend(lane_type_name(lane) for lane, _ in pairs)
-    sizes = np.concatenate(lane_sizes) if lane_sizes else np.zeros(0, dtype=np.int64)
-    lane_vertices = np.concatenate([[0], np.cumsum(2 * sizes)]).astype(np.int64)
-    lane_faces = np.concatenate([[0], np.cumsum(2 * (sizes - 1))]).astype(np.int64)
-    return LaneSurfaces(
-        lanes=tuple(keys),
-        lane_types=tuple(types),
-        vertices=np.concatenate(vertex_blocks) if vertex_blocks else np.zeros((0, 3)),
-        faces=np.concatenate(face_blocks).astype(np.int64) if face_blocks else np.zeros((0, 3), dtype=np.int64),
-        face_lane=np.repeat(np.arange(len(keys)), 2 * (sizes - 1)),
-        face_s=np.concatenate(s_blocks) if s_blocks else np.zeros(0),
-        lane_vertices=lane_vertices,
-        lane_faces=lane_faces,
+            if road.section_end(index) > section.s:
+                pairs = _lane_pairs(rg, index, wanted)
+                if pairs:
+                    todo.append(_Section(rg, index, pairs))
+    fast = [t for t in todo if roadpass.covered(t.rg, t.index)]
+    bound = _Bound(max_vertices)
+    part = _together(fast, chord, max_step, bound)
+    if part is None:
+        fast, part = [], _Part.empty()
+    if len(fast) == len(todo):
+        return part.surfaces()
+    own = {id(t): k for k, t in enumerate(fast)}
+    parts = [part.entry(own[id(t)]) if id(t) in own else _one(t, chord, max_step, bound) for t in todo]
+    return _Part.join(parts).surfaces()
+
+
+class _Bound:
+    """Counts the vertices of the mesh being built against ``max_vertices`` (``None``: no bound)."""
+
+    def __init__(self, most: int | None) -> None:
+        self.most = most
+        self.total = 0
+
+    def add(self, vertices: int) -> None:
+        self.total += vertices
+        if self.most is not None and self.total > self.most:
+            raise MeshTooLarge(f"the mesh has more than {self.most:,} vertices (tolerance max_output_points)")
+
+
+@dataclass
+class _Section:
+    rg: RoadGeometry
+    index: int
+    #: (lane, id of the lane whose outer border is its inner border) of every meshed lane.
+    pairs: list[tuple[Lane, int]]
+
+
+def _lane_pairs(rg: RoadGeometry, index: int, wanted: frozenset | None) -> list[tuple[Lane, int]]:
+    left, right = rg.side_lanes(index)
+    pairs = [
+        (lane, inner.id if k else 0)
+        for side in (left, right)
+        for k, (lane, inner) in enumerate(zip(side.lanes, (None, *side.lanes[:-1])))
+    ]
+    return [(lane, inner) for lane, inner in pairs if wanted is None or lane_type_name(lane) in wanted]
+
+
+@dataclass
+class _Part:
+    """Mesh arrays of consecutive sections (faces numbered from this part's first vertex), with per-section ranges
+    of strips, vertices and faces."""
+
+    vertices: np.ndarray
+    faces: np.ndarray
+    face_s: np.ndarray
+    sizes: np.ndarray  # samples per strip
+    keys: list[LaneKey]
+    types: list[str]
+    strip_at: np.ndarray  # (sections + 1,) strip offsets
+    vertex_at: np.ndarray
+    face_at: np.ndarray
+
+    @staticmethod
+    def empty() -> _Part:
+        z = np.zeros(1, dtype=np.int64)
+        return _Part(np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64), np.zeros(0), z[:0], [], [], z, z, z)
+
+    def entry(self, k: int) -> _Part:
+        a, b = self.strip_at[k], self.strip_at[k + 1]
+        v0, v1, f0, f1 = self.vertex_at[k], self.vertex_at[k + 1], self.face_at[k], self.face_at[k + 1]
+        return _Part(
+            self.vertices[v0:v1],
+            self.faces[f0:f1] - v0,
+            self.face_s[f0:f1],
+            self.sizes[a:b],
+            self.keys[a:b],
+            self.types[a:b],
+            np.array([0, b - a]),
+            np.array([0, v1 - v0]),
+            np.array([0, f1 - f0]),
+        )
+
+    @staticmethod
+    def join(parts: list[_Part]) -> _Part:
+        shift = np.concatenate([[0], np.cumsum([len(p.vertices) for p in parts])]).astype(np.int64)
+        return _Part(
+            np.concatenate([p.vertices for p in parts]) if parts else np.zeros((0, 3)),
+            np.concatenate([p.faces + shift[i] for i, p in enumerate(parts)]).astype(np.int64)
+            if parts
+            else np.zeros((0, 3), dtype=np.int64),
+            np.concatenate([p.face_s for p in parts]) if parts else np.zeros(0),
+            np.concatenate([p.sizes for p in parts]).astype(np.int64) if parts else np.zeros(0, dtype=np.int64),
+            [k for p in parts for k in p.keys],
+            [t for p in parts for t in p.types],
+            np.zeros(1, dtype=np.int64),
+            np.zeros(1, dtype=np.int64),
+            np.zeros(1, dtype=np.int64),
+        )
+
+    def surfaces(self) -> LaneSurfaces:
+        sizes = self.sizes
+        return LaneSurfaces(
+            lanes=tuple(self.keys),
+            lane_types=tuple(self.types),
+            vertices=self.vertices,
+            faces=self.faces,
+            face_lane=np.repeat(np.arange(len(self.keys)), 2 * (sizes - 1)),
+            face_s=self.face_s,
+            lane_vertices=np.concatenate([[0], np.cumsum(2 * sizes)]).astype(np.int64),
+            lane_faces=np.concatenate([[0], np.cumsum(2 * (sizes - 1))]).astype(np.int64),
+        )
+
+
+def _one(t: _Section, chord: float, max_step: float, bound: _Bound | None = None) -> _Part:
+    """One section meshed by the per-section code."""
+    s = t.rg.sample_s(t.index, chord=chord, max_step=max_step)
+    if len(s) < 2:
+        return _Part.empty()
+    curves = t.rg.border_curves(t.index, s)
+    ids = list(curves)
+    rows = np.stack([np.column_stack([curves[i].x, curves[i].y, curves[i].z]) for i in ids])
+    if not (np.abs(rows) <= MAX_COORDINATE).all():  # also False for NaN
+        return _Part.empty()
+    if bound is not None:
+        bound.add(2 * len(s) * len(t.pairs))
+    return _strips([t], [ids], rows.reshape(-1, 3), np.array([0]), [s], np.array([0]))
+
+
+def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound | None = None) -> _Part | None:
+    """The sections of ``todo`` (each covered by :mod:`xodrcheck.roadpass`) in one pass; ``None`` when the pass
+    declines (damaged numbers)."""
+    from xodrcheck import roadpass
+
+    if not todo:
+        return _Part.empty()
+    entries = [(t.rg, t.index) for t in todo]
+    samples = roadpass.sample_sections(entries, chord, max_step, Tolerances().max_samples_per_section)
+    if samples is None or not all(np.isfinite(s).all() for s in samples):
+        return None
+    borders = roadpass.border_lines(entries, samples)
+    if borders is None:
+        return None
+    xyz = np.column_stack([borders.x, borders.y, borders.z])
+    ok = (np.abs(xyz) <= MAX_COORDINATE).all(axis=1)  # also False for NaN
+    fine = np.logical_and.reduceat(ok, borders.base) if len(ok) else np.zeros(0, dtype=bool)
+    if bound is not None:
+        bound.add(sum(2 * len(s) * len(t.pairs) for t, s, usable in zip(todo, samples, fine) if usable))
+    return _strips(todo, borders.ids, xyz, borders.base, samples, borders.offsets, fine)
+
+
+def _strips(
+    todo: list[_Section],
+    ids: list[list[int]],
+    xyz: np.ndarray,
+    base: np.ndarray,
+    samples: list[np.ndarray],
+    offsets: np.ndarray,
+    usable: np.ndarray | None = None,
+) -> _Part:
+    """Vertices (inner row then outer row of each lane, lane after lane), faces and face ``s`` of the sections'
+    strips, from their border rows (section ``k``: row ``r`` at ``base[k] + r * n_k`` of ``xyz``)."""
+    inner_at, outer_at, sizes, left, keys, types, strips = [], [], [], [], [], [], [0]
+    for k, t in enumerate(todo):
+        if usable is not None and not usable[k]:
+            strips.append(strips[-1])
+            continue
+        n = len(samples[k])
+        row_of = {lane_id: r for r, lane_id in enumerate(ids[k])}
+        first = int(base[k])
+        section_s = t.rg.road.lane_sections[t.index].s
+        for lane, inner in t.pairs:
+            inner_at.append(first + row_of[inner] * n)
+            outer_at.append(first + row_of[lane.id] * n)
+            sizes.append(n)
+            left.append(lane.id > 0)
+            keys.append(LaneKey(t.rg.road.id, section_s, lane.id))
+            types.append(lane_type_name(lane))
+        strips.append(len(sizes))
+    n = np.array(sizes, dtype=np.int64)
+    rows = np.empty(2 * len(n), dtype=np.int64)
+    rows[0::2], rows[1::2] = inner_at, outer_at
+    vertices = xyz[_ranges(rows, np.repeat(n, 2))]
+    first_vertex = np.concatenate([[0], np.cumsum(2 * n)[:-1]]).astype(np.int64)
+    steps = n - 1
+    j = _ranges(np.zeros(len(n)), steps)
+    owner = np.repeat(np.arange(len(n)), steps)
+    inner = first_vertex[owner] + j
+    inner_next, outer = inner + 1, inner + n[owner]
+    outer_next = outer + 1
+    flip = np.array(left, dtype=bool)[owner]
+    tris = np.empty((len(j), 2, 3), dtype=np.int64)
+    tris[:, 0, 0], tris[:, 1, 0] = inner, inner
+    tris[:, 0, 1] = np.where(flip, outer_next, outer)
+    tris[:, 0, 2] = np.where(flip, outer, outer_next)
+    tris[:, 1, 1] = np.where(flip, inner_next, outer_next)
+    tris[:, 1, 2] = np.where(flip, outer_next, inner_next)
+    entry = np.repeat(np.arange(len(todo)), np.diff(strips))  # section of each strip
+    s_flat = np.concatenate(samples) if samples else np.zeros(0)
+    sample_at = np.asarray(offsets, dtype=np.int64)[entry][owner] + j if len(j) else j
+    strip_at = np.array(strips, dtype=np.int64)
+    vertex_at = np.concatenate([[0], np.cumsum(2 * n)])[strip_at]
+    face_at = np.concatenate([[0], np.cumsum(2 * steps)])[strip_at]
+    return _Part(
+        vertices, tris.reshape(-1, 3), np.repeat(s_flat[sample_at], 2), n, keys, types, strip_at, vertex_at, face_at
     )
 
 

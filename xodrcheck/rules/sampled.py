@@ -76,7 +76,9 @@ def _grid(ctx: Context, geometry: RoadGeometry, section_index: int) -> np.ndarra
 
 def section_lines(ctx: Context, road: Road, section_index: int) -> SectionLines:
     """The lane section's lines at its samples (one evaluation per section for all the geometric rules)."""
-    cache = _LINES.setdefault(ctx, {})
+    cache = _LINES.get(ctx)
+    if cache is None:
+        cache = _LINES[ctx] = _all_sections(ctx)
     key = (road.id, section_index)
     found = cache.get(key)
     if found is None:
@@ -90,6 +92,36 @@ def section_lines(ctx: Context, road: Road, section_index: int) -> SectionLines:
         )
         cache[key] = found
     return found
+
+
+def _all_sections(ctx: Context) -> dict[tuple[str, int], SectionLines]:
+    """:class:`SectionLines` of every lane section :mod:`xodrcheck.roadpass` covers, evaluated together (the same
+    numbers as one section at a time, with a fraction of the calls); the rest are evaluated when asked for."""
+    from xodrcheck import roadpass
+
+    entries, keys, grids = [], [], []
+    for road in ctx.document.roads:
+        geometry = usable(ctx, road)
+        if geometry is None:
+            continue
+        for index in range(len(road.lane_sections)):
+            if roadpass.covered(geometry, index):
+                s = _grid(ctx, geometry, index)
+                if np.isfinite(s).all():
+                    entries.append((geometry, index))
+                    keys.append((road.id, index))
+                    grids.append(s)
+    points = roadpass.section_points(entries, grids)
+    if points is None:
+        return {}
+    out = {}
+    for key, s, p in zip(keys, grids, points):
+        borders = {
+            lane_id: LanePoints(p.x[k], p.y[k], p.z[k], p.hdg[k], p.curvature[k], p.speed[k])
+            for k, lane_id in enumerate(p.ids)
+        }
+        out[key] = SectionLines(s, dict(zip(p.ids, p.t)), p.reference_curvature, borders)
+    return out
 
 
 def left_of(s: float) -> float:
