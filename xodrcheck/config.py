@@ -44,6 +44,9 @@ class Tolerances:
     overlap_area: float = 0.5
     #: Vertical clearance (m): surfaces further apart than this in z do not overlap (bridges).
     clearance: float = 4.5
+    #: Distance (m) from (0, 0) beyond which a map whose extent does not reach the origin counts as not centred
+    #: (``header.offset.centered_coords``): 32-bit floats resolve 1 mm up to about 8 km, 2 mm up to 16 km.
+    centre_distance: float = 10_000.0
     #: Wall-clock bound (s) on checking one file; 0 (the default): none, every rule runs to its end, so the verdict
     #: never depends on the machine's speed. With a bound, rules past it stop and report X901 (an error: the check is
     #: incomplete, exit code 3).

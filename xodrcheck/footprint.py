@@ -21,7 +21,7 @@ import shapely
 
 from xodrcheck.findings import OutOfTime
 from xodrcheck.mesh import LaneSurfaces, cached_per_chord, surfaces_of
-from xodrcheck.model import DRIVABLE_LANE_TYPES, Document, ElementType, LaneKey
+from xodrcheck.model import DRIVABLE_LANE_TYPES, Document, ElementType, JunctionType, LaneKey
 
 DRIVABLE_TYPE_NAMES = frozenset(t.value for t in DRIVABLE_LANE_TYPES)
 #: Triangles united in one GEOS call when a lane strip's outline is not a simple polygon.
@@ -155,10 +155,16 @@ class Overlap:
 
 
 class Relations:
-    """Which roads are allowed to overlap: a road with itself, consecutive roads (a road link either way), and roads
-    that share a junction (members of it, roads linking to it, incoming roads of its connections, connecting and
-    linked roads of its connections). Two incoming roads of one junction therefore may overlap near it (their
-    sidewalks meet at the corner), and a connecting road may overlap every incoming road of its junction."""
+    """Which roads may overlap, and which roads share a junction.
+
+    Roads *related* here may overlap: a road with itself (its own overlaps are :attr:`OverlapIndex.self_pairs`),
+    consecutive roads (a road link either way: ASAM OpenDRIVE 10.3 allows overlaps of roads whose reference lines are
+    linked), members of one junction (Annex F ``road.overlap_inside_junction``: only roads with the same junction id
+    may overlap), and the roads of one direct junction (the incoming and linked roads that split or merge there).
+
+    Roads that only share a junction otherwise (two of its legs, or a connecting road and a leg it does not join) are
+    not related, but :meth:`shared_junction` names the junction: their sidewalks and shoulders commonly meet at the
+    junction's corners, so the overlap rules report only drivable lanes among them."""
 
     def __init__(self, document: Document):
         links: dict[str, set[str]] = {}
@@ -182,12 +188,21 @@ class Relations:
                         groups.setdefault(road_id, set()).add(junction.id)
         self._links = links
         self._groups = groups
+        self._direct = frozenset(j.id for j in document.junctions if j.type is JunctionType.DIRECT)
         self.junction_of = {road.id: road.junction for road in document.roads}
 
     def related(self, a: str, b: str) -> bool:
         if a == b or b in self._links.get(a, ()):
             return True
-        return bool(self._groups.get(a, set()) & self._groups.get(b, set()))
+        junction = self.junction_of.get(a)
+        if junction is not None and junction == self.junction_of.get(b):
+            return True
+        return bool(self._groups.get(a, set()) & self._groups.get(b, set()) & self._direct)
+
+    def shared_junction(self, a: str, b: str) -> str | None:
+        """A junction both roads belong to, link to or are named by (the smallest id), else ``None``."""
+        shared = self._groups.get(a, set()) & self._groups.get(b, set())
+        return min(shared) if shared else None
 
 
 class OverlapIndex:
@@ -218,12 +233,29 @@ class OverlapIndex:
         keep = [not self.relations.related(lanes[i].road, lanes[j].road) for i, j in pairs.T]
         return pairs[:, np.array(keep, dtype=bool)] if pairs.size else pairs
 
-    def overlaps(self, min_area: float, clearance: float, deadline_check=None) -> list[Overlap]:
-        """Overlaps of lane strips of unrelated roads whose surfaces come closer than ``clearance`` in height.
+    @cached_property
+    def self_pairs(self) -> np.ndarray:
+        """``(2, P)`` near lane-strip pairs of one road, neither of them a strip that folds over itself (whose own
+        overlap :attr:`Footprints.invalid` marks)."""
+        pairs = self.footprints.near_pairs()
+        if not pairs.size:
+            return pairs
+        lanes = self.surfaces.lanes
+        folded = np.zeros(len(lanes), dtype=bool)
+        folded[self.footprints.invalid] = True
+        keep = [lanes[i].road == lanes[j].road and not folded[i] and not folded[j] for i, j in pairs.T]
+        return pairs[:, np.array(keep, dtype=bool)]
+
+    def overlaps(
+        self, min_area: float, clearance: float, deadline_check=None, pairs: np.ndarray | None = None
+    ) -> list[Overlap]:
+        """Overlaps of lane strips of unrelated roads (or of the given ``pairs``) whose surfaces come closer than
+        ``clearance`` in height.
 
         Intersections smaller than a thousandth of ``min_area`` are ignored (borders that merely touch); callers sum
         the rest per road pair and compare the sum with ``min_area``."""
-        pairs = self.unrelated_pairs
+        if pairs is None:
+            pairs = self.unrelated_pairs
         if pairs.size == 0:
             return []
         polys = self.footprints.polygons

@@ -45,9 +45,29 @@ EXPECTED: dict[str, set[tuple[str, str, str]]] = {
         # junction 268 nor one of its legs, so ~72 m2 of driving lane run through it.
         ("O003", "285", "83"),
         ("O003", "288", "83"),
+        # Roads that share a junction but are not linked (road.no_overlap_outside_junction, overlap_inside_junction),
+        # drawn: road 48 (parking, none and driving lanes), a leg of junction 298, lies wholly across the junction's
+        # east-west connecting road 307 (142 m2); leg 69 of junction 793 runs 3.5 m past the start of connecting
+        # roads 798, 806 and 807 (46, 17 and 17 m2); legs 27 and 93 leave one point as a fork and share 3.1 m2 of
+        # shoulder and driving lane before they part; leg 64's driving-lane corner lies on leg 77's sidewalk (1.6 m2).
+        ("O001", "27", "93"),
+        ("O001", "64", "77"),
+        ("O003", "307", "48"),
+        ("O003", "798", "69"),
+        ("O003", "806", "69"),
+        ("O003", "807", "69"),
     },
+    # Leg 21 of junction 386 curves into the end of leg 3, driving lanes over driving lanes (2.5 m2), drawn.
+    "carla-towns/OpenDrive/Town04.xodr": {("O001", "3", "21")},
     # Shoulders of roads 7/21 and 25/67 cross at the outer corners of two T-shaped meetings (0.7 and 2.0 m2, z = 0).
-    "carla-towns/OpenDrive/Town06.xodr": {("O004", "7", "21"), ("O004", "25", "67")},
+    # Connecting road 219 of junction 218 starts 0.6 m inside its leg 44 (10.1 m2 of driving lanes) and connecting
+    # road 202's first metres cross the shoulder of leg 36 (0.7 m2), drawn; neither leg is linked to them.
+    "carla-towns/OpenDrive/Town06.xodr": {
+        ("O004", "7", "21"),
+        ("O004", "25", "67"),
+        ("O003", "202", "36"),
+        ("O003", "219", "44"),
+    },
     # Town07's dead-end side roads (farm entrances) stop on the main roads without a link: road 30 ends 2 m into
     # junction 780 (over connecting road 787) and its sidewalk corners overlap driving lane -1 of roads 28 and 29;
     # road 54 likewise over connecting road 779 and roads 27/28; road 48's end lies on connecting road 444 of

@@ -11,15 +11,18 @@ prefix    category    codes
 ``X``     xml         ``X0xx``-``X8xx`` reader rules (:mod:`.xml`); ``X9xx`` the engine's own (:mod:`.internal`)
 ``S``     schema      ``S0xx`` XSD validation (:mod:`.schema`)
 ``R``     reference   ``R0xx`` ids and references (:mod:`.reference`)
-``K``     link        ``K0xx`` road-link topology (:mod:`.link_topology`); ``K1xx`` positions at contacts (:mod:`.link`)
+``K``     link        ``K0xx`` road-link topology (:mod:`.link_topology`, :mod:`.link_usage`); ``K1xx`` positions at
+                      contacts (:mod:`.link`)
 ``L``     lane        ``L0xx`` lane topology (:mod:`.lane`, :mod:`.lane_attributes`); ``L1xx`` lane geometry
-``G``     geometry    ``G0xx``-``G8xx`` plan view and profiles (:mod:`.geometry`), lane shapes (:mod:`.lane_shape`);
+``G``     geometry    ``G0xx``-``G8xx`` plan view and profiles (:mod:`.geometry`, :mod:`.elements`), lane shapes
+                      (:mod:`.lane_shape`),
+                      road types, shapes and country codes (:mod:`.road_attributes`);
                       ``G9xx`` redundant records (:mod:`.records`)
 ``C``     curvature   ``C0xx`` (:mod:`.curvature`)
 ``J``     junction    ``J0xx`` junction topology (:mod:`.junction`); ``J1xx`` junction geometry
                       (:mod:`.junction_geometry`)
 ``O``     overlap     ``O0xx`` (:mod:`.overlap`)
-``H``     header      ``H0xx`` header, default regulations, whole-file recommendations
+``H``     header      ``H0xx`` header, default regulations, whole-file recommendations (:mod:`.header`)
 ``B``     object      ``B0xx`` road objects (outlines, skeletons, markings, borders, repeats, bridges, tunnels)
 ``T``     signal      ``T0xx`` signals, signal references, boards, controllers
 ``W``     railroad    ``W0xx`` railroads (tracks, switches, stations)
@@ -40,18 +43,22 @@ FAMILIES = (
     "schema",
     "reference",
     "link_topology",
+    "link_usage",
     "link",
     "lane",
     "lane_attributes",
     "lane_records",
     "lane_links",
     "geometry",
+    "elements",
+    "road_attributes",
     "lane_shape",
     "records",
     "curvature",
     "junction",
     "junction_geometry",
     "overlap",
+    "header",
 )
 
 _loaded = False

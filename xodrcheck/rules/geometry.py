@@ -18,9 +18,11 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.geometry import profile
+from xodrcheck.geometry.cubic import CubicCurve
 from xodrcheck.geometry.parampoly3 import curve_of
 from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
 from xodrcheck.model import Cubic, Geometry, ParamPoly3, PRange, Road, Spiral
+from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_uids import SECTION_VALID_LENGTH
 from xodrcheck.rules.registry import NO_UID, rule
@@ -56,12 +58,13 @@ def _at(road: Road, element) -> dict:
     return {"road": road.id, "s": element.s, "x": element.x, "y": element.y, "line": element.line or road.line or None}
 
 
-@rule("G001", "plan-view-gap", Category.GEOMETRY, Severity.ERROR)
+@rule("G001", "plan-view-gap", Category.GEOMETRY, Severity.ERROR, uids=(U.GEOMETRY_NO_GAPS,), every_version=True)
 def plan_view_gap(ctx: Context):
     """A plan-view element does not start where the previous one ends: the reference line has a gap.
 
     The end point of each ``<geometry>`` (evaluated exactly) must be the next one's ``x``, ``y`` within the
-    ``position`` tolerance (1 mm by default; ASAM's checker sees only gaps over 1 cm).
+    ``position`` tolerance (1 mm by default; ASAM's checker sees only gaps over 1 cm). Annex F
+    ``road.geometry.refline_no_gaps``.
 
     Passes (a 10 m line along x, then the next element at x=10)::
 
@@ -87,12 +90,13 @@ def plan_view_gap(ctx: Context):
                 )
 
 
-@rule("G002", "plan-view-kink", Category.GEOMETRY, Severity.ERROR)
+@rule("G002", "plan-view-kink", Category.GEOMETRY, Severity.ERROR, uids=(U.GEOMETRY_NO_KINKS,), every_version=True)
 def plan_view_kink(ctx: Context):
     """A plan-view element does not start in the direction the previous one ends: the reference line has a kink.
 
     The heading at the end of each ``<geometry>`` must be the next one's ``hdg`` (modulo 2 pi) within the ``heading``
-    tolerance. A kink without a gap is invisible to position checks but makes every lane border jump.
+    tolerance. A kink without a gap is invisible to position checks but makes every lane border jump. Annex F
+    ``road.geometry.refline_no_kinks`` (a "should": reported as an error all the same, see ``SEVERITY_DEVIATIONS``).
 
     Passes::
 
@@ -186,23 +190,29 @@ def road_length_mismatch(ctx: Context):
             )
 
 
-@rule("G005", "parampoly3-length-mismatch", Category.GEOMETRY, Severity.ERROR)
+_PP3_UIDS = (U.PARAMPOLY3_ARC_LENGTH_RANGE, U.PARAMPOLY3_NORMALIZED_RANGE, U.PARAMPOLY3_LENGTH_MATCH)
+
+
+@rule("G005", "parampoly3-length-mismatch", Category.GEOMETRY, Severity.ERROR, uids=_PP3_UIDS, every_version=True)
 def parampoly3_length_mismatch(ctx: Context):
     """A paramPoly3's declared ``length`` is not the length of its curve over its parameter range.
 
     The curve's arc length is integrated (Gauss-Legendre, to 1e-15 relative) over ``p`` in ``[0, 1]`` for
     ``pRange="normalized"`` and over ``[0, @length]`` for ``pRange="arcLength"``, and compared with ``@length`` within
-    the ``length_abs`` tolerance (1 mm, as ASAM's checker). For ``arcLength`` this is also ASAM's range rule: ``p``
-    runs over ``[0, @length]`` exactly when the curve is that long there; for ``normalized``, ``p`` in ``[0, 1]`` is
-    checked the same way. (ASAM's ``road.geometry.parampoly3.length_match``, ``.arclength_range`` and
-    ``.normalized_range``.)
+    the ``length_abs`` tolerance (1 mm, as ASAM's checker). Annex F (9.6):
+
+    * ``pRange="arcLength"``: ``p`` runs over ``[0, @length]`` (``road.geometry.paramPoly3.arcLength_range``) exactly
+      when the curve is ``@length`` long there: a mismatch is an error.
+    * ``pRange="normalized"``, when the curve over ``p`` in ``[0, @length]`` has the declared length: the coefficients
+      were written for ``arcLength``, not for ``p`` in ``[0, 1]`` (``.normalized_range``): an error.
+    * ``pRange="normalized"`` otherwise: the curve's length "should match @length" (``.length_match``): a warning.
 
     Passes (a 10 m straight, normalized)::
 
         <geometry s="0" x="0" y="0" hdg="0" length="10">
           <paramPoly3 aU="0" bU="10" cU="0" dU="0" aV="0" bV="0" cV="0" dV="0" pRange="normalized"/></geometry>
 
-    Fails (the same curve declared 12 m long)::
+    Fails (the same curve declared 12 m long: a warning)::
 
         <geometry s="0" x="0" y="0" hdg="0" length="12">
           <paramPoly3 aU="0" bU="10" cU="0" dU="0" aV="0" bV="0" cV="0" dV="0" pRange="normalized"/></geometry>
@@ -215,14 +225,33 @@ def parampoly3_length_mismatch(ctx: Context):
             if not _finite(g.aU, g.bU, g.cU, g.dU, g.aV, g.bV, g.cV, g.dV):
                 continue
             actual = curve_of(g).total
-            if abs(actual - g.length) > tol:
-                p_range = "[0, 1]" if g.p_range is PRange.NORMALIZED else f"[0, {g.length:g}]"
-                yield parampoly3_length_mismatch.finding(
-                    f"road {road.id}: the paramPoly3 at s={g.s:g} is declared {g.length:.6g} m long but its curve "
-                    f"over p in {p_range} ({g.p_range.value}) is {actual:.6g} m long (difference "
-                    f"{actual - g.length:+.4g} m); fix @length or the coefficients",
-                    **_at(road, g),
+            if abs(actual - g.length) <= tol:
+                continue
+            normalized = g.p_range is PRange.NORMALIZED
+            p_range = "[0, 1]" if normalized else f"[0, {g.length:g}]"
+            text = (
+                f"road {road.id}: the paramPoly3 at s={g.s:g} is declared {g.length:.6g} m long but its curve "
+                f"over p in {p_range} ({g.p_range.value}) is {actual:.6g} m long (difference "
+                f"{actual - g.length:+.4g} m)"
+            )
+            other = CubicCurve.build(
+                (g.aU, g.bU, g.cU, g.dU), (g.aV, g.bV, g.cV, g.dV), g.length if normalized else 1.0
+            )
+            fits_other = abs(other.total - g.length) <= tol
+            if not normalized:
+                uid, severity = U.PARAMPOLY3_ARC_LENGTH_RANGE, Severity.ERROR
+                hint = '; over p in [0, 1] it is: declare pRange="normalized"' if fits_other else ""
+                text += f": p does not run over [0, @length]{hint}; fix @length or the coefficients"
+            elif fits_other:
+                uid, severity = U.PARAMPOLY3_NORMALIZED_RANGE, Severity.ERROR
+                text += (
+                    f"; over p in [0, {g.length:g}] it has the declared length: the coefficients are for "
+                    'pRange="arcLength", not for p in [0, 1]'
                 )
+            else:
+                uid, severity = U.PARAMPOLY3_LENGTH_MATCH, Severity.WARNING
+                text += "; fix @length or the coefficients"
+            yield parampoly3_length_mismatch.finding(text, uid=uid, severity=severity, **_at(road, g))
 
 
 @rule("G006", "degenerate-geometry", Category.GEOMETRY, Severity.ERROR)

@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, Road, RoadLink
+from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context, link_at
 from xodrcheck.rules.registry import rule
 
@@ -100,12 +101,20 @@ def link_not_reciprocal(ctx: Context):
             )
 
 
-@rule("K002", "link-contact-point-missing", Category.LINK, Severity.ERROR)
+@rule(
+    "K002",
+    "link-contact-point-missing",
+    Category.LINK,
+    Severity.ERROR,
+    uids=(U.LINKAGE_ROAD_ATTRIBUTES,),
+    every_version=True,
+)
 def link_contact_point_missing(ctx: Context):
     """A link to a road does not say which end of that road it reaches (``contactPoint``).
 
-    Without it, readers guess, and lane links across the joint cannot be resolved. (An OpenDRIVE 1.8 link with
-    ``elementS``, into the middle of a road, needs none.)
+    Without it, readers guess, and lane links across the joint cannot be resolved (Annex F
+    ``road.linkage.road_link_attribute_usage``; a link without ``elementType="road"`` is ``link-attribute-usage``'s).
+    (A link with ``elementS``, into the middle of a road, needs none.)
 
     Passes::
 
@@ -132,11 +141,11 @@ def link_contact_point_missing(ctx: Context):
                 )
 
 
-@rule("K003", "junction-needed", Category.LINK, Severity.ERROR)
+@rule("K003", "junction-needed", Category.LINK, Severity.ERROR, uids=(U.LINKAGE_JUNCTION_NEEDED,), every_version=True)
 def junction_needed(ctx: Context):
     """Several roads outside junctions link directly to the same end of one road: that is a junction.
 
-    A road end joins at most one other road end directly; where more meet, the standard requires a junction (ASAM's
+    A road end joins at most one other road end directly; where more meet, the standard requires a junction (Annex F
     ``road.linkage.is_junction_needed``). Links are grouped by the end they reach (road and contact point), so two
     roads reaching the two different ends of a road are fine.
 

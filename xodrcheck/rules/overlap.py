@@ -1,17 +1,20 @@
 """Overlap rules (``O0xx``): lane surfaces that occupy the same place, from the plan-view footprints of the lane
 meshes (:mod:`xodrcheck.footprint`, sampled under ``Tolerances.chord``).
 
-Two roads may overlap when they are *related*: the same road, consecutive roads (a road link either way), or roads
-sharing a junction (members of it, roads linking to it, incoming roads of its connections); inside a junction the
-connection lanes cross each other by design (the conflict areas, :func:`xodrcheck.footprint.conflict_areas`). Other
-pairs overlap when their footprints share more than ``Tolerances.overlap_area`` square metres where their surfaces are
-closer in height than ``Tolerances.clearance`` (a bridge with clearance is no overlap). Heights are compared at a point
-inside each shared piece and at up to 24 points of its outline; a piece counts in proportion to its points within the
-clearance. Borders that merely touch share no area.
+Two roads may overlap when they are *related* (:class:`xodrcheck.footprint.Relations`): consecutive roads (a road
+link either way: ASAM OpenDRIVE 10.3 allows overlaps of properly linked roads), members of one junction (only roads
+with the same junction id may overlap, Annex F ``road.overlap_inside_junction``; their connection lanes cross by
+design, :func:`xodrcheck.footprint.conflict_areas`), and the roads of one direct junction. Other pairs overlap when
+their footprints share more than ``Tolerances.overlap_area`` square metres where their surfaces are closer in height
+than ``Tolerances.clearance`` (a bridge with clearance is no overlap). Heights are compared at a point inside each
+shared piece and at up to 24 points of its outline; a piece counts in proportion to its points within the
+clearance. Borders that merely touch share no area. A road overlapping itself is ``O002`` (a lane folds) or
+``O005`` (two of its lanes).
 
 An overlap involving a drivable lane is an error (``O001`` between roads outside junctions, ``O003`` when one of the
 roads is a junction's connecting road); overlaps between roadside lanes only (sidewalks, shoulders, borders, lanes of
-type none...) are ``O004`` warnings.
+type none...) are ``O004`` warnings, except between roads that share a junction (two of its legs, a leg and a
+connecting road), whose sidewalks commonly meet at the junction's corners.
 """
 
 from __future__ import annotations
@@ -22,6 +25,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 
@@ -65,6 +69,8 @@ def _pairs(ctx: Context, drivable: bool) -> dict[tuple[str, str], _Pair]:
         a, b = surfaces.lanes[o.lane_a], surfaces.lanes[o.lane_b]
         types = surfaces.lane_types
         kind = types[o.lane_a] in DRIVABLE_TYPE_NAMES or types[o.lane_b] in DRIVABLE_TYPE_NAMES
+        if not kind and index.relations.shared_junction(a.road, b.road) is not None:
+            continue  # sidewalks of a junction's roads meeting at its corners
         if (order.get(a.road, -1), a.lane) > (order.get(b.road, -1), b.lane):
             o = _swapped(o)
             a, b = b, a
@@ -81,10 +87,22 @@ def _message(
     ctx: Context, roads: tuple[str, str], area: float, lanes: list[tuple[int, int]], o: Overlap, what: str
 ) -> str:
     shown = ", ".join(f"{a}/{b}" for a, b in lanes[:4]) + (" ..." if len(lanes) > 4 else "")
+    junction = _overlap_index(ctx).relations.shared_junction(*roads)
+    if junction is None:
+        why = "they are neither linked nor in one junction"
+    else:
+        members = [r for r in roads if (road := ctx.road(r)) is not None and road.junction == junction]
+        why = (
+            f"road {members[0]} belongs to junction {junction} and road {(set(roads) - set(members)).pop()} is one "
+            f"of its legs, not linked to it"
+            if len(members) == 1
+            else f"both are legs of junction {junction}, not linked to each other: only roads of one junction may "
+            "overlap"
+        )
     return (
         f"{what}road {roads[0]} and road {roads[1]} overlap by {area:.1f} m2 in plan view (lanes {shown}) with "
         f"{o.dz:.2f} m between their surfaces (clearance {ctx.tolerances.clearance:g} m), around "
-        f"({o.x:.2f}, {o.y:.2f}); they are neither linked nor in one junction"
+        f"({o.x:.2f}, {o.y:.2f}); {why}"
     )
 
 
@@ -113,13 +131,28 @@ def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: 
         )
 
 
-@rule("O001", "road-overlap", Category.OVERLAP, Severity.ERROR)
+_NOT_ROADSIDE = (
+    "overlaps of roadside lanes only (sidewalks, shoulders, borders, lanes of type none: no drivable lane) are "
+    "O004's warnings, and are not reported between roads that share a junction, whose sidewalks commonly meet at its "
+    "corners; roads linked to each other are not compared (10.3 allows their overlap)"
+)
+
+
+@rule(
+    "O001",
+    "road-overlap",
+    Category.OVERLAP,
+    Severity.ERROR,
+    partial={U.NO_OVERLAP_OUTSIDE_JUNCTION: _NOT_ROADSIDE},
+    every_version=True,
+)
 def road_overlap(ctx: Context):
     """Two roads outside junctions that are not linked overlap in plan view at the same height.
 
     The lane surfaces of the two roads (a drivable lane on at least one side) share more than
     ``Tolerances.overlap_area`` m2 where they are closer in height than ``Tolerances.clearance``: a car could drive
     from one road onto the other where no link says so. Roads crossing need a junction; a bridge needs clearance.
+    Two legs of one junction are compared too. Annex F ``road.no_overlap_outside_junction``.
 
     Passes (road 2 crosses road 1 six metres above it)::
 
@@ -135,13 +168,14 @@ def road_overlap(ctx: Context):
     yield from _findings(ctx, road_overlap, True, False, "")
 
 
-@rule("O002", "lane-fold", Category.OVERLAP, Severity.ERROR)
+@rule("O002", "lane-fold", Category.OVERLAP, Severity.ERROR, uids=(U.NO_OVERLAP_SELF,), every_version=True)
 def lane_fold(ctx: Context):
     """A lane's surface folds over itself in plan view.
 
     The lane's triangles cover some area more than once by more than ``Tolerances.overlap_area`` m2: its outer border
     runs backwards where the lane is wider than the radius of its inner side's curve (width times curvature past 1),
-    or the lane crosses itself. Reported once per lane and lane section, at the first place it folds.
+    or the lane crosses itself. Reported once per lane and lane section, at the first place it folds. A road shall not
+    overlap with itself (Annex F ``road.no_overlap_self``; two lanes of one road overlapping: ``road-self-overlap``).
 
     Passes (a 3.5 m lane on a 20 m radius)::
 
@@ -178,13 +212,22 @@ def lane_fold(ctx: Context):
         )
 
 
-@rule("O003", "connection-overlap", Category.OVERLAP, Severity.ERROR)
+@rule(
+    "O003",
+    "connection-overlap",
+    Category.OVERLAP,
+    Severity.ERROR,
+    partial={U.OVERLAP_INSIDE_JUNCTION: _NOT_ROADSIDE},
+    every_version=True,
+)
 def connection_overlap(ctx: Context):
     """A junction's connecting road overlaps a road that belongs neither to its junction nor to its legs.
 
     Connection lanes of one junction overlap each other on purpose (conflict areas); they must not overlap, at the
     same height and by more than ``Tolerances.overlap_area`` m2 with a drivable lane involved, a road that is not in
-    the junction, not one of its incoming roads and not linked to it (another junction's connecting road included).
+    the junction and not linked to them: another junction's connecting road, an unrelated road, or a leg of the
+    junction they do not join (Annex F ``road.overlap_inside_junction``: only roads with the same junction id may
+    overlap on the same level).
 
     Passes: a four-leg junction whose left turns cross the straight connections (all in junction 100).
 
@@ -212,3 +255,52 @@ def roadside_overlap(ctx: Context):
         <road id="2"> ... <lane id="-1" type="sidewalk"> ... <geometry x="0" y="-20" hdg="1.5708" length="40"> ...
     """
     yield from _findings(ctx, roadside_overlap, False, None, "roadside lanes of ")
+
+
+@rule("O005", "road-self-overlap", Category.OVERLAP, Severity.ERROR, uids=(U.NO_OVERLAP_SELF,))
+def road_self_overlap(ctx: Context):
+    """Two lanes of one road overlap in plan view at the same height: the road overlaps itself.
+
+    A road shall not overlap with itself (Annex F ``road.no_overlap_self``): lanes of one road that are not
+    neighbours share more than ``Tolerances.overlap_area`` m2 where their surfaces are closer in height than
+    ``Tolerances.clearance`` (a road that loops over itself on a ramp passes). Usually a reference line that curls back
+    over the road, or a lane drawn over its neighbour. Lanes that fold over themselves are ``lane-fold``'s.
+
+    Passes (a 3/4 circle of radius 20 m: the road comes back beside its start, not onto it).
+
+    Fails (a full circle and a bit: the road's end runs over its start)::
+
+        <geometry s="0" x="0" y="0" hdg="0" length="140"><arc curvature="0.05"/></geometry>
+    """
+    index = _overlap_index(ctx)
+    surfaces = index.surfaces
+    tol = ctx.tolerances
+    per_road: dict[str, _Pair] = defaultdict(_Pair)
+    for o in index.overlaps(tol.overlap_area, tol.clearance, ctx.out_of_time, pairs=index.self_pairs):
+        a, b = surfaces.lanes[o.lane_a], surfaces.lanes[o.lane_b]
+        if (a.section_s, a.lane) > (b.section_s, b.lane):
+            o, a, b = _swapped(o), b, a
+        pair = per_road[a.road]
+        pair.area += o.area
+        pair.lanes.add((a.lane, b.lane))
+        if pair.largest is None or o.area > pair.largest.area:
+            pair.largest = o
+    for road_id, pair in per_road.items():
+        o = pair.largest
+        if pair.area <= tol.overlap_area or o is None:
+            continue
+        a, b = surfaces.lanes[o.lane_a], surfaces.lanes[o.lane_b]
+        road = ctx.road(road_id)
+        yield road_self_overlap.finding(
+            f"road {road_id} overlaps itself by {pair.area:.1f} m2 in plan view: lane {a.lane} at s={o.s_a:.2f} "
+            f"(lane section s={a.section_s:g}) and lane {b.lane} at s={o.s_b:.2f} (lane section s={b.section_s:g}) "
+            f"cover the same ground around ({o.x:.2f}, {o.y:.2f}), {o.dz:.2f} m apart in height (clearance "
+            f"{tol.clearance:g} m)",
+            road=road_id,
+            lane=a.lane,
+            section_s=a.section_s,
+            s=o.s_a,
+            x=o.x,
+            y=o.y,
+            line=road.line if road is not None else None,
+        )

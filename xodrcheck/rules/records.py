@@ -1,6 +1,6 @@
 """Redundant records (``G9xx``): records that repeat what the previous one already says.
 
-Harmless for readers, but they bloat files and hide where a profile really changes (ASAM's
+Harmless for readers, but they bloat files and hide where a profile really changes (Annex F
 ``performance.avoid_redundant_info``).
 """
 
@@ -8,15 +8,20 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Iterator
 
-from xodrcheck.findings import Category, Severity
-from xodrcheck.model import Cubic, Line, Profile
+from xodrcheck.findings import Category, Finding, Severity
+from xodrcheck.model import Cubic, Lane, LaneSection, Line, Profile, Road
+from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.road_records import road_records
 
 #: Relative floating-point noise under which two coefficients count as equal (a representation limit of the written
 #: numbers, not a checking tolerance).
 _NOISE = 1e-9
+#: Lane children the model reads; a lane section whose lanes carry anything else is never called redundant.
+_READ = frozenset({"link", "width", "border", "roadMark", "speed", "userData"})
 
 
 def _close(a: float, b: float, scale: float = 1.0) -> bool:
@@ -24,7 +29,7 @@ def _close(a: float, b: float, scale: float = 1.0) -> bool:
 
 
 def continues(prev: Cubic, nxt: Cubic) -> bool:
-    """Whether ``nxt`` is ``prev``'s polynomial re-expanded at ``nxt.s``: the same curve, so ``nxt`` says nothing new."""
+    """Whether ``nxt`` is ``prev``'s polynomial re-expanded at ``nxt.s`` (the same curve: ``nxt`` says nothing new)."""
     h = nxt.s - prev.s
     a = prev.a + h * (prev.b + h * (prev.c + h * prev.d))
     b = prev.b + h * (2.0 * prev.c + 3.0 * h * prev.d)
@@ -37,14 +42,26 @@ def _redundant(profile: Profile) -> list[tuple[Cubic, Cubic]]:
     return [(p, n) for p, n in itertools.pairwise(profile) if continues(p, n)]
 
 
-@rule("G901", "redundant-record", Category.GEOMETRY, Severity.INFO)
+@rule(
+    "G901",
+    "redundant-record",
+    Category.GEOMETRY,
+    Severity.INFO,
+    uids=(U.AVOID_REDUNDANT_INFO,),
+    every_version=True,
+)
 def redundant_record(ctx: Context):
     """A record repeats what the previous one already says.
 
     An elevation, superelevation, laneOffset, width or border record that continues the previous record's polynomial
-    unchanged, or a line that continues the previous line's heading.
+    unchanged, a line that continues the previous line's heading, a road ``<type>`` equal to the previous one, or a
+    lane section that continues the previous one unchanged (the same lanes with the same types, levels, lane links
+    from each lane to itself, widths continuing the previous section's, the same road marks and speeds, nothing else
+    recorded on its lanes). Annex F ``performance.avoid_redundant_info`` (a "should"; reported as information, see
+    ``SEVERITY_DEVIATIONS``).
 
-    Delete the second record (or, for lines, merge the two). Equal means equal up to floating-point noise.
+    Delete the second record (or, for lines and lane sections, merge the two). Equal means equal up to floating-point
+    noise.
 
     Passes::
 
@@ -55,42 +72,153 @@ def redundant_record(ctx: Context):
         <width sOffset="0" a="3.5" b="0" c="0" d="0"/><width sOffset="20" a="3.5" b="0" c="0" d="0"/>
     """
     for road in ctx.document.roads:
-        for name, profile in (
-            ("elevation", road.elevation),
-            ("superelevation", road.superelevation),
-            ("laneOffset", road.lane_offset),
-        ):
-            for prev, nxt in _redundant(profile):
-                yield redundant_record.finding(
-                    f"road {road.id}: the {name} record at s={nxt.s:g} continues the one at s={prev.s:g} unchanged",
-                    road=road.id,
-                    s=nxt.s,
-                    line=nxt.line or None,
-                )
-        for first, second in zip(road.plan_view, road.plan_view[1:]):
-            if isinstance(first, Line) and isinstance(second, Line) and _same_heading(first.hdg, second.hdg):
-                yield redundant_record.finding(
-                    f"road {road.id}: the line at s={second.s:g} continues the line at s={first.s:g} in the same "
-                    "heading; one line would do",
-                    road=road.id,
-                    s=second.s,
-                    line=second.line or None,
-                )
-        for section in road.lane_sections:
-            for lane in section.lanes:
-                for name, profile in (("width", lane.widths), ("border", lane.borders)):
-                    for prev, nxt in _redundant(profile):
-                        yield redundant_record.finding(
-                            f"road {road.id} lane {lane.id} (lane section s={section.s:g}): the {name} record at "
-                            f"sOffset={nxt.s:g} continues the one at sOffset={prev.s:g} unchanged",
-                            road=road.id,
-                            lane=lane.id,
-                            section_s=section.s,
-                            s=section.s + nxt.s,
-                            line=nxt.line or None,
-                        )
+        yield from _profiles(road)
+        yield from _lines(road)
+        yield from _lanes(road)
+    yield from _sections(ctx)
+    yield from _types(ctx)
+
+
+def _profiles(road: Road) -> Iterator[Finding]:
+    for name, profile in (
+        ("elevation", road.elevation),
+        ("superelevation", road.superelevation),
+        ("laneOffset", road.lane_offset),
+    ):
+        for prev, nxt in _redundant(profile):
+            yield redundant_record.finding(
+                f"road {road.id}: the {name} record at s={nxt.s:g} continues the one at s={prev.s:g} unchanged",
+                road=road.id,
+                s=nxt.s,
+                line=nxt.line or None,
+            )
+
+
+def _lines(road: Road) -> Iterator[Finding]:
+    for first, second in itertools.pairwise(road.plan_view):
+        if isinstance(first, Line) and isinstance(second, Line) and _same_heading(first.hdg, second.hdg):
+            yield redundant_record.finding(
+                f"road {road.id}: the line at s={second.s:g} continues the line at s={first.s:g} in the same "
+                "heading; one line would do",
+                road=road.id,
+                s=second.s,
+                line=second.line or None,
+            )
+
+
+def _lanes(road: Road) -> Iterator[Finding]:
+    for section in road.lane_sections:
+        for lane in section.lanes:
+            for name, profile in (("width", lane.widths), ("border", lane.borders)):
+                for prev, nxt in _redundant(profile):
+                    yield redundant_record.finding(
+                        f"road {road.id} lane {lane.id} (lane section s={section.s:g}): the {name} record at "
+                        f"sOffset={nxt.s:g} continues the one at sOffset={prev.s:g} unchanged",
+                        road=road.id,
+                        lane=lane.id,
+                        section_s=section.s,
+                        s=section.s + nxt.s,
+                        line=nxt.line or None,
+                    )
 
 
 def _same_heading(h1: float, h2: float) -> bool:
     d = math.remainder(h1 - h2, math.tau)
     return abs(d) <= _NOISE
+
+
+# -------------------------------------------------------------------------------------------------- lane sections
+def _sections(ctx: Context) -> Iterator[Finding]:
+    candidates = [
+        (road, prev, nxt)
+        for road in ctx.document.roads
+        for prev, nxt in itertools.pairwise(road.lane_sections)
+        if _section_continues(prev, nxt)
+    ]
+    if not candidates:
+        return
+    unread = _sections_with_unread_records(ctx)
+    for road, prev, nxt in candidates:
+        if prev.line in unread or nxt.line in unread:
+            continue
+        yield redundant_record.finding(
+            f"road {road.id}: the lane section at s={nxt.s:g} continues the one at s={prev.s:g} unchanged (the same "
+            "lanes, types, links, widths, marks and speeds); merge the two",
+            road=road.id,
+            section_s=nxt.s,
+            s=nxt.s,
+            line=nxt.line or None,
+        )
+
+
+def _section_continues(prev: LaneSection, nxt: LaneSection) -> bool:
+    if prev.single_side or nxt.single_side:
+        return False
+    before = {lane.id: lane for lane in prev.lanes}
+    after = {lane.id: lane for lane in nxt.lanes}
+    if before.keys() != after.keys():
+        return False
+    return all(_lane_continues(prev, before[i], nxt, after[i]) for i in before)
+
+
+def _lane_continues(prev: LaneSection, a: Lane, nxt: LaneSection, b: Lane) -> bool:
+    if (a.type, a.type_name, a.level) != (b.type, b.type_name, b.level):
+        return False
+    if a.successors not in ((), (a.id,)) or b.predecessors not in ((), (a.id,)):
+        return False
+    if not (
+        _profile_continues(prev.s, a.widths, nxt.s, b.widths)
+        and _profile_continues(prev.s, a.borders, nxt.s, b.borders)
+    ):
+        return False
+    return _same_first(a.road_marks, b.road_marks, ("type", "weight", "color", "width", "lane_change")) and _same_first(
+        a.speeds, b.speeds, ("max", "unit")
+    )
+
+
+def _profile_continues(origin_a: float, a: Profile, origin_b: float, b: Profile) -> bool:
+    """Whether lane profile ``b`` (relative to ``origin_b``) goes on as ``a`` (relative to ``origin_a``) ends."""
+    if not a or not b:
+        return not a and not b
+    last, first = a[-1], b[0]
+    if not _close(first.s, 0.0):
+        return False
+    shifted = Cubic(origin_a + last.s, last.a, last.b, last.c, last.d)
+    return continues(shifted, Cubic(origin_b, first.a, first.b, first.c, first.d))
+
+
+def _same_first(a: tuple, b: tuple, fields: tuple[str, ...]) -> bool:
+    """Whether ``b`` (road marks or speeds) starts at its section's start with what ``a`` ends with."""
+    if not a or not b:
+        return not a and not b
+    return _close(b[0].s, 0.0) and all(getattr(a[-1], f) == getattr(b[0], f) for f in fields)
+
+
+def _sections_with_unread_records(ctx: Context) -> set[int]:
+    """Source lines of lane sections whose lanes carry records the model does not read (access, height, material,
+    rule, a road mark's own lines...): such a section may differ from its neighbour in ways not compared here."""
+    out: set[int] = set()
+    if ctx.tree is None:
+        return out
+    for section in ctx.tree.iter("{*}laneSection"):
+        for lane in section.iter("{*}lane"):
+            children = [c for c in lane if isinstance(c.tag, str)]
+            marks = [c for c in children if c.tag.rsplit("}", 1)[-1] == "roadMark"]
+            if any(c.tag.rsplit("}", 1)[-1] not in _READ for c in children) or any(len(m) for m in marks):
+                out.add(section.sourceline or 0)
+                break
+    return out
+
+
+# ---------------------------------------------------------------------------------------------------- road types
+def _types(ctx: Context) -> Iterator[Finding]:
+    for road in road_records(ctx):
+        for prev, nxt in itertools.pairwise(t for t in road.types if t.s is not None):
+            if (prev.type, prev.country, prev.speed) == (nxt.type, nxt.country, nxt.speed):
+                yield redundant_record.finding(
+                    f"road {road.road}: the <type> at s={nxt.s:g} repeats the one at s={prev.s:g} (type "
+                    f"{nxt.type}); a road type holds until the next one, so delete it",
+                    road=road.road,
+                    s=nxt.s,
+                    line=nxt.line,
+                )

@@ -15,11 +15,34 @@ from xodrcheck.rules.registry import Rule
 from xodrcheck.standard import annex_rules
 
 #: Why a rule of the standard is not enforced, by UID.
-NOT_ENFORCED: dict[str, str] = {}
+NOT_ENFORCED: dict[str, str] = {
+    # road.type (10.4)
+    "asam.net:xodr:1.4.0:road.type.create_new_type_in_parent": (
+        "says how a change of road type is written (a new <type> in the <road>); a file has no other way to write "
+        "one, and the schema (S001) allows <type> only inside <road>, so no file can break it; a <type> that "
+        "changes nothing is redundant-record's (G901)"
+    ),
+    "asam.net:xodr:1.4.0:road.type.lane_type_may_differ_from_parent": (
+        "a permission: any lane type may sit under any road type, so no file can break it"
+    ),
+}
 
 #: Findings take the severity the standard's wording gives (shall -> error, should -> warning, may -> info), except
 #: for these UIDs: UID -> (severity, why).
-SEVERITY_DEVIATIONS: dict[str, tuple[Severity, str]] = {}
+SEVERITY_DEVIATIONS: dict[str, tuple[Severity, str]] = {
+    "asam.net:xodr:1.4.0:road.geometry.refline_no_kinks": (
+        Severity.ERROR,
+        "a kink in a reference line tears every lane border at it (a gap on the outside of the turn, an overlap on "
+        "the inside, w * angle wide), the same defect as a lane border that jumps between lane sections (L101), "
+        "which the standard forbids; G002 has been an error for every version",
+    ),
+    "asam.net:xodr:1.8.1:performance.avoid_redundant_info": (
+        Severity.INFO,
+        "a redundant record changes nothing any reader computes (the map means the same with it or without it); the "
+        "shared corpus has over 9,000 of them, and as warnings they would bury the defects that matter; select G901 "
+        "or the UID to list them",
+    ),
+}
 
 
 def expected_severity(uid: str) -> Severity:

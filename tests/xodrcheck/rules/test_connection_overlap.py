@@ -25,3 +25,12 @@ def test_foreign_road_across_connection_lanes():
     assert {f.road for f in found} <= {str(r) for r in range(10, 22)}  # the connecting road is named
     assert all("and road 50 overlap" in f.message for f in found)
     assert {f.road for f in found} >= {"13"}  # the straight path from leg 1 runs through road 50's lane
+
+
+def test_leg_reaching_into_a_connection_it_does_not_join():
+    """Road 3 enters junction 100 from the south and ends 2.5 m inside it, across connecting road 10 (from road 1 to
+    road 2): a connecting road and a leg it does not join have different junction ids and shall not overlap."""
+    path = fixture(RULE, "fail_leg.xodr")
+    (f,) = findings(path, RULE)
+    assert f.road == "10" and "connecting road 10 and road 3 overlap by 17.5 m2" in f.message  # 7 m x 2.5 m
+    assert "road 3 is one of its legs, not linked to it" in f.message

@@ -31,3 +31,12 @@ def test_the_pair_is_named_in_file_order_not_id_order(tmp_path):
     renamed.write_bytes(renumber_roads(data, {"1": "z", "2": "a"}))
     (f,) = findings(renamed, RULE)
     assert f.road == "z" and "road z and road a overlap" in f.message
+
+
+def test_two_legs_of_one_junction_overlapping():
+    """Road 3 joins junction 100 from the south but runs 5.5 m into road 1, another leg: both are outside the
+    junction, so they shall not overlap (sharing a junction does not allow it)."""
+    path = fixture(RULE, "fail_junction_legs.xodr")
+    (f,) = findings(path, RULE)
+    assert f.road == "1" and "road 1 and road 3 overlap by 38.5 m2" in f.message  # 7 m x 5.5 m
+    assert "both are legs of junction 100" in f.message

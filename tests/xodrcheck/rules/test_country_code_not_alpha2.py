@@ -1,0 +1,22 @@
+"""Rule country-code-not-alpha2: the finding each fail fixture gives."""
+
+import pytest
+
+from tests.xodrcheck.rules.helpers import findings, fixture, line_of
+
+RULE = "country-code-not-alpha2"
+
+
+@pytest.mark.parametrize(
+    ("name", "code", "why"),
+    [
+        ("fail.xodr", "DEU", "an ALPHA-3 code"),
+        ("fail_name.xodr", "Germany", "not a country code"),
+        ("fail_lower_case.xodr", "de", 'not in capitals (write "DE")'),
+    ],
+)
+def test_country_code_that_is_not_alpha_2(name, code, why):
+    path = fixture(RULE, name)
+    (f,) = findings(path, RULE)
+    assert f.road == "1" and f.line == line_of(path, "<type ")
+    assert f'country="{code}", {why}' in f.message

@@ -1,0 +1,131 @@
+"""Which attributes a road's ``<predecessor>`` and ``<successor>`` use (``K004``), read from the file's XML.
+
+Roads and junctions are linked with different attribute sets (10.3, Table 24): a road by ``elementType``,
+``elementId`` and ``contactPoint``; a junction by ``elementType`` and ``elementId`` alone; a road joined inside
+another road (a virtual junction's connection, 12.7) by ``elementType``, ``elementId``, ``elementS`` and
+``elementDir``. A road link without ``contactPoint`` is ``link-contact-point-missing`` (``K002``).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+from typing import TYPE_CHECKING
+
+from xodrcheck.findings import Category, Severity
+from xodrcheck.model import JunctionType
+from xodrcheck.rules import road_uids as U
+from xodrcheck.rules.context import Context
+from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:  # pragma: no cover
+    from lxml import etree
+
+_USAGE = (U.LINKAGE_ROAD_ATTRIBUTES, U.LINKAGE_JUNCTION_ATTRIBUTES, U.LINKAGE_VIRTUAL_ATTRIBUTES)
+_NOT_FOR_JUNCTIONS = ("contactPoint", "elementS", "elementDir")
+
+
+def _links(ctx: Context) -> Iterator[tuple[str, str | None, etree._Element]]:
+    """(road id, the road's junction attribute, link element) for every road's predecessor and successor."""
+    tree = ctx.tree
+    if tree is None:
+        return
+    for road in tree.getroot().iterchildren("{*}road"):
+        road_id = road.get("id")
+        if road_id is None:
+            continue
+        for link in road.iterchildren("{*}link"):
+            for el in link.iterchildren("{*}predecessor", "{*}successor"):
+                yield road_id, road.get("junction"), el
+
+
+def _main_roads(ctx: Context) -> dict[str, str]:
+    """Virtual junction id -> its ``mainRoad``."""
+    tree = ctx.tree
+    out: dict[str, str] = {}
+    if tree is None:
+        return out
+    for el in tree.getroot().iterchildren("{*}junction"):
+        if el.get("type") == "virtual" and el.get("id") is not None and el.get("mainRoad") is not None:
+            out.setdefault(el.get("id"), el.get("mainRoad"))
+    return out
+
+
+@rule(
+    "K004",
+    "link-attribute-usage",
+    Category.LINK,
+    Severity.ERROR,
+    uids=_USAGE,
+)
+def link_attribute_usage(ctx: Context):
+    """A road's ``<predecessor>`` or ``<successor>`` does not use the attribute set of what it links to.
+
+    Annex F (10.3): a link to a road names ``elementType="road"`` (``road.linkage.road_link_attribute_usage``; its
+    ``contactPoint`` is ``K002``'s); a link to a junction uses ``elementType="junction"`` and ``elementId`` only, no
+    ``contactPoint``, ``elementS`` or ``elementDir`` (``.junc_link_attribute_usage``); a connecting road of a virtual
+    junction joins the junction's main road inside it with ``elementType``, ``elementId``, ``elementS`` and
+    ``elementDir``, which go together (``.virtjunc_link_attribute_usage``, 12.7). ``elementS`` "shall only be used for
+    elementType road" (Table 24), so a link to the virtual junction itself takes the junction's attribute set.
+
+    Passes::
+
+        <successor elementType="junction" elementId="100"/>
+
+    Fails (a junction has no contact point)::
+
+        <successor elementType="junction" elementId="100" contactPoint="start"/>
+    """
+    document = ctx.document
+    main_roads = _main_roads(ctx)
+    for road_id, junction_id, el in _links(ctx):
+        kind = el.get("elementType")
+        target = el.get("elementId")
+        where = {"road": road_id, "line": el.sourceline}
+        tag = el.tag.rsplit("}", 1)[-1]
+        mine = f"road {road_id}: the {tag} {target!r} (line {el.sourceline})"
+        if kind is None:
+            if target in document.road_by_id and target not in document.junction_by_id:
+                yield link_attribute_usage.finding(
+                    f'{mine} has no elementType; road {target} is linked with elementType="road"',
+                    uid=U.LINKAGE_ROAD_ATTRIBUTES,
+                    **where,
+                )
+            elif target in document.junction_by_id and target not in document.road_by_id:
+                yield link_attribute_usage.finding(
+                    f'{mine} has no elementType; junction {target} is linked with elementType="junction"',
+                    uid=U.LINKAGE_JUNCTION_ATTRIBUTES,
+                    **where,
+                )
+            continue
+        if kind == "junction":
+            extra = [name for name in _NOT_FOR_JUNCTIONS if el.get(name) is not None]
+            if extra:
+                junction = document.junction_by_id.get(target or "")
+                what = f"{junction.type.value} junction" if junction is not None else "junction"
+                yield link_attribute_usage.finding(
+                    f"{mine} links to a {what} with {', '.join(extra)}: a junction is linked by elementType and "
+                    f"elementId only; remove {', '.join(extra)}",
+                    uid=U.LINKAGE_JUNCTION_ATTRIBUTES,
+                    **where,
+                )
+            continue
+        if kind != "road":
+            continue  # not a link type (schema, reader)
+        has_s, has_dir = el.get("elementS") is not None, el.get("elementDir") is not None
+        if has_s != has_dir:
+            given, missing = ("elementS", "elementDir") if has_s else ("elementDir", "elementS")
+            yield link_attribute_usage.finding(
+                f"{mine} has {given} but no {missing}: a connection inside road {target} needs both",
+                uid=U.LINKAGE_VIRTUAL_ATTRIBUTES,
+                **where,
+            )
+        elif not has_s and junction_id is not None and main_roads.get(junction_id) == target:
+            junction = document.junction_by_id.get(junction_id)
+            if junction is not None and junction.type is JunctionType.VIRTUAL:
+                yield link_attribute_usage.finding(
+                    f"{mine} joins road {target}, the main road of virtual junction {junction_id}, without elementS "
+                    "and elementDir: say where on the main road (elementS) and in which direction (elementDir) the "
+                    "connection meets it",
+                    uid=U.LINKAGE_VIRTUAL_ATTRIBUTES,
+                    **where,
+                )
