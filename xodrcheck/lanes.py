@@ -326,6 +326,11 @@ class RoadGeometry:
             return lateral, height + lift.v
         return lateral - lift * evaluation.sin, height + lift.v * evaluation.cos.v
 
+    def section_reference(self, section_index: int, s) -> Pose:
+        """The reference-line pose at ``s``, from the same evaluation as the section's lanes at those ``s`` (asking
+        for both costs one plan-view evaluation)."""
+        return self._evaluate(section_index, as_array(s)).pose
+
     def border_curves(self, section_index: int, s) -> dict[int, LanePoints]:
         """Every lane's outer border (and lane 0's line) at ``s``: all the border polylines of the section."""
         evaluation = self._evaluate(section_index, as_array(s))

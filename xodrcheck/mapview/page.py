@@ -16,7 +16,8 @@ import math
 import re
 from collections import Counter
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
+from functools import cache
 from html import escape
 from importlib import resources
 
@@ -110,7 +111,7 @@ def _index(files: Sequence[FilePage]) -> str:
     )
 
 
-def _where(f: Finding) -> str:
+def _where(f: Finding, extra: dict[str, object]) -> str:
     parts = []
     if f.road is not None:
         parts.append(f"road {f.road}")
@@ -120,18 +121,25 @@ def _where(f: Finding) -> str:
         parts.append(f"s {f.s:.2f}")
     if f.x is not None and f.y is not None and math.isfinite(f.x) and math.isfinite(f.y):
         z = getattr(f, "z", None)
-        parts.append(f"x {f.x:.2f}, y {f.y:.2f}" + (f", z {z:.2f}" if z and math.isfinite(z) else ""))
+        height = f", z {z:.2f}" if z is not None and math.isfinite(z) and abs(z) >= 0.005 else ""
+        parts.append(f"x {f.x:.2f}, y {f.y:.2f}{height}")
     else:
         parts.append("no map position")
     if f.line:
         parts.append(f"line {f.line}")
-    parts += [f"{k.replace('_', ' ')} {v}" for k, v in _extra(f).items()]
+    parts += [f"{k.replace('_', ' ')} {v}" for k, v in extra.items()]
     return escape(" · ".join(parts))
 
 
 def _extra(f: Finding) -> dict[str, object]:
     """Fields of the finding beyond the ones the page knows (added to Finding later), where set."""
-    return {k: v for k, v in f.to_dict().items() if k not in _KNOWN and v not in (None, "", ())}
+    values = ((k, getattr(f, k)) for k in _extra_fields())
+    return {k: str(v) for k, v in values if v is not None and v != ""}
+
+
+@cache
+def _extra_fields() -> tuple[str, ...]:
+    return tuple(field.name for field in fields(Finding) if field.name not in _KNOWN)
 
 
 def _row(i: int, f: Finding) -> str:
@@ -149,13 +157,14 @@ def _row(i: int, f: Finding) -> str:
         "line": f.line or None,
         "z": getattr(f, "z", None),
     }
-    attrs.update({re.sub(r"[^a-z0-9]+", "-", k.lower()): v for k, v in _extra(f).items()})
+    extra = _extra(f)
+    attrs.update({re.sub(r"[^a-z0-9]+", "-", k.lower()): v for k, v in extra.items()})
     data = " ".join(f'data-{k}="{_attr(v)}"' for k, v in attrs.items())
     return (
-        f'<li class="xc-row" tabindex="0" {data}><span class="xc-sev" title="{f.severity}"></span>'
+        f'<li class="xc-row" tabindex="0" {data}>'
         f'<span class="xc-code">{escape(f.code)}</span> <span class="xc-name">{escape(f.name)}</span>'
         f'<button class="xc-doc" type="button" data-code="{_attr(f.code)}" title="rule documentation">?</button>'
-        f'<div class="xc-msg">{escape(f.message)}</div><div class="xc-where">{_where(f)}</div></li>'
+        f'<div class="xc-msg">{escape(f.message)}</div><div class="xc-where">{_where(f, extra)}</div></li>'
     )
 
 

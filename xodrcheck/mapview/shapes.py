@@ -121,8 +121,8 @@ def _section(road: Road, index: int, rg: RoadGeometry, chord: float, max_step: f
     if len(s) < 2:
         return None
     left, right = rg.side_lanes(index)
-    pose = rg.reference(s)
     curves = rg.border_curves(index, s)
+    pose = rg.section_reference(index, s)
     order = [0, *(lane.id for lane in left.lanes), *(lane.id for lane in right.lanes)]
     lines = np.empty((1 + len(order), len(s), 2))
     lines[0, :, 0], lines[0, :, 1] = pose.x, pose.y

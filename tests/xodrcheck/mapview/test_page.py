@@ -86,12 +86,16 @@ def test_page_is_self_contained_and_rows_follow_the_contract():
     assert "<b>" not in page_text.split("<body", 1)[1].split("<script", 1)[0]  # the message is escaped
 
 
-def test_extra_finding_fields_become_data_attributes(monkeypatch):
-    """A field Finding gains later (a rule uid, say) reaches the row without changing the page code."""
-    finding = odd_finding(road="1")
-    monkeypatch.setattr(Finding, "to_dict", lambda self: {"rule_uid": "asam.net:xodr:1.7.0:x", "code": self.code})
-    (row,) = rows(parse(render_page([FilePage("a.xodr", "1.7", (finding,), None, None)], "t")))
-    assert row["data-rule-uid"] == "asam.net:xodr:1.7.0:x"
+def test_finding_fields_beyond_the_known_ones_become_data_attributes():
+    """A field the page does not know by name (rule_uid, added to Finding after the page) reaches the row as a data-*
+    attribute and in the row's text, without changing the page code."""
+    finding = odd_finding(road="1", rule_uid="asam.net:xodr:1.7.0:road.lane.link.zero_width_at_start", z=2.5, x=1, y=2)
+    page_text = render_page([FilePage("a.xodr", "1.7", (finding,), None, None)], "t")
+    (row,) = rows(parse(page_text))
+    assert row["data-rule-uid"] == "asam.net:xodr:1.7.0:road.lane.link.zero_width_at_start"
+    assert row["data-z"] == "2.5"
+    assert "rule uid asam.net:xodr:1.7.0:road.lane.link.zero_width_at_start" in page_text
+    assert "x 1.00, y 2.00, z 2.50" in page_text
 
 
 def test_rows_list_the_worst_first_and_docs_cover_every_code():

@@ -219,7 +219,8 @@ P.hover = function (e) {
   if (m >= 0) lines.push(this.markers[m].label);
   if (hit) {
     var sec = hit.lane.sec;
-    lines.push("road " + sec.roadId + (sec.roadName ? " (" + sec.roadName + ")" : "") +
+    var named = sec.roadName && sec.roadName !== "Road " + sec.roadId;  // CARLA names every road "Road <id>"
+    lines.push("road " + sec.roadId + (named ? " (" + sec.roadName + ")" : "") +
                (sec.junction !== null ? " · junction " + sec.junction : ""),
                "lane section " + sec.index + " (s " + sec.s0.toFixed(2) + ") · lane " + hit.lane.id + " · " + hit.lane.type,
                "s " + hit.s.toFixed(2) + " m");

@@ -232,20 +232,25 @@ P.renderOverlay = function () {
   if (this.options.onRender) this.options.onRender(this);
 };
 
-P.renderMarkers = function () {
-  var ctx = this.ctx, self = this, chosen = null;
-  ctx.lineWidth = 1.5;
+P.renderMarkers = function () {  // one path per severity: thousands of markers cost a few draw calls
+  var ctx = this.ctx, self = this, chosen = null, paths = {};
   this.markers.forEach(function (m) {
     if (m.hidden) return;
     var p = self.toScreen(m.x - self.origin[0], m.y - self.origin[1]);
     if (p[0] < -10 || p[1] < -10 || p[0] > self.width + 10 || p[1] > self.height + 10) return;
     if (m.index === self.selected) { chosen = { p: p, m: m }; return; }
-    ctx.beginPath();
-    ctx.arc(p[0], p[1], 5, 0, 2 * Math.PI);
-    ctx.fillStyle = XC.SEVERITY_COLORS[m.severity] || "#888";
-    ctx.fill();
-    ctx.strokeStyle = "#ffffff";
-    ctx.stroke();
+    var path = paths[m.severity] || (paths[m.severity] = new Path2D());
+    var r = m.severity === "info" ? 4 : 5;
+    path.moveTo(p[0] + r, p[1]);
+    path.arc(p[0], p[1], r, 0, 2 * Math.PI);
+  });
+  ctx.lineWidth = 1.5;
+  ctx.strokeStyle = "#ffffff";
+  ["info", "warning", "error"].forEach(function (severity) {  // the worst on top
+    if (!paths[severity]) return;
+    ctx.fillStyle = XC.SEVERITY_COLORS[severity];
+    ctx.fill(paths[severity]);
+    ctx.stroke(paths[severity]);
   });
   if (!chosen) return;
   var p = chosen.p;
