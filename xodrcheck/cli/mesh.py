@@ -81,6 +81,7 @@ def run(args: argparse.Namespace) -> int:
         if result is None:
             return 2
         failed = report_errors(args.file, result)
+        assert result.document is not None  # read_file refuses a file without one
         try:
             surfaces = build_surfaces(
                 result.document, chord=chord, lane_types=args.lane_types, max_vertices=tolerances.max_output_points

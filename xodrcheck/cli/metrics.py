@@ -112,21 +112,13 @@ def _cell(value):
     return "" if value is None else value
 
 
-def _measure(path: str) -> tuple[int, tuple[JunctionMetrics, ...] | None]:
-    """Exit code and metrics of one file (``None`` when it cannot be read whole: one line on stderr)."""
-    result = read_file(path)
-    if result is None:
-        return 2, None
-    metrics = map_metrics(result.document)
-    return (1 if report_errors(path, result) else 0), metrics
-
-
 class _Writer:
     """Writes the files' metrics in the chosen format; the CSV header goes out with the first rows (a run whose
     files all fail to read prints nothing)."""
 
     def __init__(self, stream: IO[str], fmt: str) -> None:
-        self.stream, self.fmt, self.csv = stream, fmt, None
+        self.stream, self.fmt = stream, fmt
+        self.csv: csv.DictWriter[str] | None = None
 
     def add(self, path: str, metrics: tuple[JunctionMetrics, ...]) -> None:
         if self.fmt == "json":
@@ -148,6 +140,7 @@ def _measure_all(files: list[str], sink) -> int:
             if result is None:
                 return 2
             code = 1 if report_errors(path, result) else 0
+            assert result.document is not None  # read_file refuses a file without one
             sink(path, map_metrics(result.document))
             return code
 

@@ -1,8 +1,9 @@
 """``xodrcheck rules [CODE]``: list the rules, or print one rule's documentation with its examples.
 
 ``CODE`` may be a code (``R010``) or a name (``road-link-target-missing``). JSON (``--format json``) gives a list of
-``{"code", "name", "category", "severity", "summary", "uids"}`` objects, or for one rule that object plus ``"doc"``. Text is
-plain (the docstrings' reStructuredText markup taken out); ``summary`` is the documentation's first sentence, whole.
+``{"code", "name", "category", "severity", "summary", "uids"}`` objects, or for one rule that object plus ``"doc"``.
+Text is plain (the docstrings' reStructuredText markup taken out); ``summary`` is the documentation's first sentence,
+whole.
 
 ``xodrcheck rules --standard`` lists every checker rule of ASAM OpenDRIVE 1.9.0 (Annex F) by UID with its status,
 computed from the registry: enforced (by which codes), enforced in part (and what is left out) or not enforced (and

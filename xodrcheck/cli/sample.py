@@ -31,6 +31,7 @@ from xodrcheck.cli._common import (
     target_ok,
 )
 from xodrcheck.config import ConfigError, load_config
+from xodrcheck.model import Document
 from xodrcheck.sample import LaneLine, sample_count, sample_lanes
 
 NAME = "sample"
@@ -92,7 +93,7 @@ def write_geojson(lines, stream: IO[str]) -> None:
     stream.write("\n]}\n")
 
 
-def _step_that_fits(document, step: float, kinds: tuple[str, ...], cap: int) -> float:
+def _step_that_fits(document: Document, step: float, kinds: tuple[str, ...], cap: int) -> float:
     """The smallest step of three significant digits, from ``step`` up, whose sample count is within ``cap``."""
     while True:
         exponent = math.floor(math.log10(step)) - 2
@@ -116,6 +117,7 @@ def run(args: argparse.Namespace) -> int:
         if result is None:
             return 2
         failed = report_errors(args.file, result)
+        assert result.document is not None  # read_file refuses a file without one
         kinds = ("centre", "inner", "outer") if args.borders else ("centre",)
         count = sample_count(result.document, args.step, kinds)
         if count > cap:

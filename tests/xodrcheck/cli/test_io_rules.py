@@ -192,18 +192,21 @@ def test_mesh_says_what_it_wrote(tmp_path, capsys):
 def test_atomic_file_removes_its_temporary_file_on_a_real_sigterm(tmp_path):
     target = tmp_path / "out.txt"
     target.write_text("old")
+    previous = signal.getsignal(signal.SIGTERM)
     with pytest.raises(Terminated), signals_raise(), atomic_file(target) as stream:
         stream.write("new, half written")
         os.kill(os.getpid(), signal.SIGTERM)
         time.sleep(5)  # the handler raises before this ends
     assert target.read_text() == "old" and sorted(p.name for p in tmp_path.iterdir()) == ["out.txt"]
-    assert signal.getsignal(signal.SIGTERM) is signal.SIG_DFL or callable(signal.getsignal(signal.SIGTERM))
+    assert signal.getsignal(signal.SIGTERM) is previous  # the handler is put back
 
 
 def test_output_error_names_the_path_as_given():
-    with pytest.raises(OutputError, match=r"^cannot write /proc/x\.csv: cannot create a file in folder /proc"):
-        with atomic_file("/proc/x.csv"):
-            pass
+    with (
+        pytest.raises(OutputError, match=r"^cannot write /proc/x\.csv: cannot create a file in folder /proc"),
+        atomic_file("/proc/x.csv"),
+    ):
+        pass
 
 
 def _wait_for(predicate, seconds: float = 60.0) -> bool:
@@ -237,3 +240,16 @@ def test_sigterm_while_sampling_leaves_no_temporary_file(tmp_path):
     assert proc.returncode == EXIT_TERMINATED == 143
     assert err.strip().splitlines()[-1] == "xodrcheck: terminated" and "Traceback" not in err
     assert sorted(p.name for p in tmp_path.iterdir()) == ["map.xodr"]
+
+
+def test_the_readme_table_covers_every_command_of_both_tools():
+    from xodrcheck.cli import SUBCOMMANDS
+
+    readme = (REPO / "README.md").read_text(encoding="utf-8")
+    section = readme.split("## Exit codes, output files and interruptions", 1)[1].split("\n## ", 1)[0]
+    rows = [line for line in section.splitlines() if line.startswith("| `")]
+    named = " ".join(row.split("|")[1] for row in rows)
+    missing = [c for c in SUBCOMMANDS if f"`{c}`" not in named and f"`xodrcheck {c}`" not in named]
+    missing += [c for c in ("generate", "render", "era") if c not in named]
+    assert not missing, missing
+    assert "130 after Ctrl-C, 143 after SIGTERM" in section and str(EXIT_TERMINATED) == "143"
