@@ -208,17 +208,23 @@ def test_sigterm_while_writing_leaves_no_temporary_file(tmp_path, capsys, monkey
 
 
 def test_sigterm_from_outside_ends_generate_with_143(tmp_path):
-    proc = subprocess.Popen(
-        [sys.executable, "-m", "junctionart", "generate", "--size", "5000x5000", "-o", str(tmp_path / "m.xodr")],
-        stdout=subprocess.PIPE,
-        stderr=subprocess.PIPE,
-        text=True,
-    )
-    try:
-        time.sleep(2.0)  # importing and generating; a 5 km map takes 15 s more
-        proc.send_signal(signal.SIGTERM)
-        _, err = proc.communicate(timeout=60)
-    finally:
-        proc.kill()
+    out = tmp_path / "out"
+    out.mkdir()
+    log = tmp_path / "stderr.txt"
+    with open(log, "w") as stderr:
+        proc = subprocess.Popen(
+            [sys.executable, "-m", "junctionart", "generate", "--size", "5000x5000", "-o", str(out / "m.xodr")],
+            stdout=subprocess.DEVNULL,
+            stderr=stderr,
+        )
+        try:
+            deadline = time.monotonic() + 120
+            while "network" not in log.read_text() and time.monotonic() < deadline:  # generating (the stage bar)
+                time.sleep(0.05)
+            proc.send_signal(signal.SIGTERM)
+            proc.wait(timeout=60)
+        finally:
+            proc.kill()
+    err = log.read_text()
     assert proc.returncode == 143 and "junctionart: terminated" in err and "Traceback" not in err
-    assert list(tmp_path.iterdir()) == []
+    assert list(out.iterdir()) == []

@@ -53,6 +53,7 @@ DATA_COMMANDS = {
     "sample": lambda src, out, tmp: ["sample", src, "--step", "5", "-o", out + ".csv"],
     "sample-stdout": lambda src, out, tmp: ["sample", src, "--step", "5"],
     "mesh": lambda src, out, tmp: ["mesh", src, "-o", out + ".glb"],
+    "view": lambda src, out, tmp: ["view", src, "-o", out + ".html"],
     "metrics": lambda src, out, tmp: ["metrics", src, "-o", out + ".csv"],
     "metrics-stdout": lambda src, out, tmp: ["metrics", src],
     "snapshot": lambda src, out, tmp: ["snapshot", src, "-o", out + ".json"],
@@ -93,6 +94,7 @@ WRITERS = {
     "check": lambda src, out: ["check", src, "-o", out],
     "sample": lambda src, out: ["sample", src, "--step", "5", "-o", out],
     "mesh": lambda src, out: ["mesh", src, "-o", out],
+    "view": lambda src, out: ["view", src, "-o", out],
     "metrics": lambda src, out: ["metrics", src, "-o", out],
     "snapshot": lambda src, out: ["snapshot", src, "-o", out],
 }
