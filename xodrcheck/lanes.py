@@ -34,7 +34,11 @@ Conventions and decisions (ASAM OpenDRIVE 1.8 section numbers)
 * ``singleSide="true"`` sections (11.3, Figure 62) describe one side only; the other side continues with the lanes
   (and records, relative to their own section start) of the last earlier section that had lanes there.
 * The lane section containing ``s`` is the last one starting at or before ``s``: a section boundary belongs to the
-  section that starts there (and ``s`` before the first section to the first).
+  section that starts there (and ``s`` before the first section to the first). A 1.9 section with ``length`` ends at
+  ``s + length`` (11.4); past that end, until the next section, there is none.
+* OpenDRIVE 1.9 lane layers (11.2): :func:`geometry_of` evaluates the permanent layer (the road surface: the temporary
+  layer "does not modify the surface", 11.2), :func:`temporary_geometry_of` the temporary layer with its own lane
+  offset and sections, through the same evaluator; it has no section before its first one.
 
 Lane heading and curvature are those of the offset curve ``P = R(s) + q(s) N(s)`` in plan view (``q`` the projected
 lateral offset), with ``q'`` and ``q''`` carried exactly (:mod:`xodrcheck.geometry.jet`): heading
@@ -54,7 +58,7 @@ from xodrcheck.geometry import profile
 from xodrcheck.geometry.jet import Jet
 from xodrcheck.geometry.planview import ReferenceLine
 from xodrcheck.geometry.pose import Pose, as_array
-from xodrcheck.model import Cubic, Document, Lane, Road, document_cache
+from xodrcheck.model import Cubic, Document, Lane, LaneLayer, Road, document_cache
 from xodrcheck.sampling import sample_section
 
 _WHERE = ("centre", "inner", "outer")
@@ -124,14 +128,28 @@ class _Evaluation:
 
 
 class RoadGeometry:
-    """Evaluates one road: reference line, lane offset, lane borders and lane points."""
+    """Evaluates one road: reference line, lane offset, lane borders and lane points; of the road's temporary lane
+    layer (1.9) with ``layer=LaneLayer.TEMPORARY`` (then ``road`` is the road seen through that layer,
+    :meth:`~xodrcheck.model.Road.temporary_layer`, and no section covers ``s`` before its first one)."""
 
     _CACHED_EVALUATIONS = 4
 
-    def __init__(self, road: Road):
+    def __init__(self, road: Road, layer: LaneLayer = LaneLayer.PERMANENT):
+        self.layer = layer
+        if layer is LaneLayer.TEMPORARY:
+            view = road.temporary_layer()
+            if view is None:
+                raise ValueError(f"road {road.id} has no temporary lane layer")
+            road = view
         self.road = road
         self.reference_line = ReferenceLine(road.plan_view)
         self._starts = np.array([sec.s for sec in road.lane_sections], dtype=float)
+        # ends of sections with a 1.9 length (others end where the next starts): None when no section has one
+        self._ends = (
+            np.array([road.section_end(i) for i in range(len(road.lane_sections))], dtype=float)
+            if any(sec.length is not None for sec in road.lane_sections)
+            else None
+        )
         self._sides: dict[int, tuple[SideLanes, SideLanes]] = {}
         self._offset = profile.Piecewise(road.lane_offset)
         self._elevation = profile.Piecewise(road.elevation)
@@ -156,11 +174,17 @@ class RoadGeometry:
         return self._roll.jet(s)[0]
 
     def section_index(self, s) -> np.ndarray:
-        """Index of the lane section containing each ``s`` (see the module docstring for boundaries)."""
+        """Index of the lane section containing each ``s`` (see the module docstring for boundaries); -1 where there
+        is none (no sections, or past the end of a section with a 1.9 ``length``)."""
         s = as_array(s)
         if len(self._starts) == 0:
             return np.full(len(s), -1)
-        return np.maximum(np.searchsorted(self._starts, s, side="right") - 1, 0)
+        index = np.searchsorted(self._starts, s, side="right") - 1
+        if self.layer is LaneLayer.PERMANENT:
+            index = np.maximum(index, 0)
+        if self._ends is not None:
+            index = np.where((index >= 0) & (s > self._ends[index]), -1, index)
+        return index
 
     def section_range(self, section_index: int) -> tuple[float, float]:
         return self.road.lane_sections[section_index].s, self.road.section_end(section_index)
@@ -478,14 +502,15 @@ class RoadGeometry:
 
 
 class _LazyGeometries(Mapping[str, RoadGeometry]):
-    def __init__(self, document: Document):
-        self._roads = document.road_by_id
+    def __init__(self, roads: Mapping[str, Road], layer: LaneLayer = LaneLayer.PERMANENT):
+        self._roads = roads
+        self._layer = layer
         self._built: dict[str, RoadGeometry] = {}
 
     def __getitem__(self, road_id: str) -> RoadGeometry:
         geometry = self._built.get(road_id)
         if geometry is None:
-            geometry = RoadGeometry(self._roads[road_id])
+            geometry = RoadGeometry(self._roads[road_id], self._layer)
             self._built[road_id] = geometry
         return geometry
 
@@ -501,5 +526,16 @@ def geometry_of(document: Document) -> Mapping[str, RoadGeometry]:
     cache = document_cache(document)
     found = cache.get("geometry")
     if found is None:
-        found = cache["geometry"] = _LazyGeometries(document)
+        found = cache["geometry"] = _LazyGeometries(document.road_by_id)
+    return found
+
+
+def temporary_geometry_of(document: Document) -> Mapping[str, RoadGeometry]:
+    """Road id -> :class:`RoadGeometry` of the road's temporary lane layer (1.9), for the roads that have one; built
+    on first access and cached like :func:`geometry_of`."""
+    cache = document_cache(document)
+    found = cache.get("temporary geometry")
+    if found is None:
+        roads = {road_id: road for road_id, road in document.road_by_id.items() if road.temporary_lanes is not None}
+        found = cache["temporary geometry"] = _LazyGeometries(roads, LaneLayer.TEMPORARY)
     return found

@@ -15,7 +15,7 @@ Conventions
 from __future__ import annotations
 
 import enum
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 
@@ -69,6 +69,14 @@ class JunctionType(enum.Enum):
     DIRECT = "direct"
     VIRTUAL = "virtual"
     CROSSING = "crossing"
+
+
+class LaneLayer(enum.Enum):
+    """OpenDRIVE 1.9 lane layer (11.2): every road has the permanent layer; a temporary one (roadworks) may lie on top
+    of it, with its own lane offset and lane sections and priority for driving."""
+
+    PERMANENT = "permanent"
+    TEMPORARY = "temporary"
 
 
 class LaneType(enum.Enum):
@@ -292,6 +300,10 @@ class Lane:
     type_name: str = ""  # the type as spelled in the file (meaningful when ``type`` is UNKNOWN)
     line: int = 0
     heights: tuple[LaneHeight, ...] = ()
+    #: Links to lanes of the temporary layer (1.9 ``layer="temporary"``); ``predecessors`` and ``successors`` name
+    #: lanes of the permanent layer, the default of a link whatever layer the lane itself is on (11.6).
+    temporary_predecessors: tuple[int, ...] = ()
+    temporary_successors: tuple[int, ...] = ()
 
     @property
     def side(self) -> Side:
@@ -310,6 +322,9 @@ class LaneSection:
     center: tuple[Lane, ...] = ()
     right: tuple[Lane, ...] = ()
     line: int = 0
+    #: 1.9 ``@length`` (11.4): the section ends at ``s + length`` (before the next section starts or the road ends);
+    #: ``None``: it lasts until the next section or the road's end.
+    length: float | None = None
 
     @property
     def lanes(self) -> tuple[Lane, ...]:
@@ -321,6 +336,16 @@ class LaneSection:
             if lane.id == lane_id:
                 return lane
         return None
+
+
+@dataclass(frozen=True, slots=True)
+class TemporaryLanes:
+    """A road's temporary lane layer (1.9, 11.2: ``<lanes layer="temporary">``): its own lane offset and lane sections,
+    which may leave gaps (a section with ``length`` ends there; before the first section there is none)."""
+
+    lane_offset: Profile = ()
+    lane_sections: tuple[LaneSection, ...] = ()
+    line: int = 0
 
 
 # --------------------------------------------------------------------------------------------------------------------
@@ -343,11 +368,24 @@ class Road:
     objects: int = 0  # counted records
     signals: int = 0
     line: int = 0
+    #: The temporary lane layer (1.9); ``lane_offset`` and ``lane_sections`` above are the permanent layer's.
+    temporary_lanes: TemporaryLanes | None = None
 
     def section_end(self, index: int) -> float:
-        """End s of lane section ``index`` (the next section's start or the road length)."""
+        """End s of lane section ``index`` (the next section's start or the road length; earlier when the section
+        has a 1.9 ``length``)."""
         sections = self.lane_sections
-        return sections[index + 1].s if index + 1 < len(sections) else self.length
+        end = sections[index + 1].s if index + 1 < len(sections) else self.length
+        length = sections[index].length
+        return end if length is None else min(end, sections[index].s + length)
+
+    def temporary_layer(self) -> Road | None:
+        """The road seen through its temporary lane layer: the same road with the temporary layer's lane offset and
+        lane sections (what :class:`xodrcheck.lanes.RoadGeometry` evaluates); ``None`` without one."""
+        layer = self.temporary_lanes
+        if layer is None:
+            return None
+        return replace(self, lane_offset=layer.lane_offset, lane_sections=layer.lane_sections, temporary_lanes=None)
 
     def lane_key(self, section: LaneSection, lane_id: int) -> LaneKey:
         return LaneKey(self.id, section.s, lane_id)
@@ -361,6 +399,9 @@ class JunctionLaneLink:
     from_lane: int
     to_lane: int
     line: int = 0
+    #: 1.9 ``fromLayer``/``toLayer`` (12.4): the layers of the incoming and of the connecting (or linked) lane.
+    from_layer: LaneLayer = LaneLayer.PERMANENT
+    to_layer: LaneLayer = LaneLayer.PERMANENT
 
 
 @dataclass(frozen=True, slots=True)

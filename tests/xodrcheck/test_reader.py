@@ -105,11 +105,11 @@ def test_known_versions_read_without_findings(version):
     assert clean(xodr(road(), version=version)).version == version
 
 
-def test_versions_one_to_eight_are_known():
-    assert {(1, minor) for minor in range(1, 9)} == KNOWN_VERSIONS
+def test_versions_one_to_nine_are_known():
+    assert {(1, minor) for minor in range(1, 10)} == KNOWN_VERSIONS
 
 
-@pytest.mark.parametrize("version", [(1, 9), (2, 0), (0, 4), (1, -1)])
+@pytest.mark.parametrize("version", [(1, 10), (2, 0), (0, 4), (1, -1)])
 def test_unknown_version_is_a_warning(version):
     result = read(xodr(road(), version=version))
     finding = only(result, "X202")

@@ -10,15 +10,17 @@ from xodrcheck.model import (
     Junction,
     JunctionLaneLink,
     JunctionType,
+    LaneLayer,
     Offset,
 )
 from xodrcheck.reader.construct import make_connection, make_lane_link
 from xodrcheck.reader.context import Context, describe
+from xodrcheck.reader.lanes import LAYERS, layered
 from xodrcheck.reader.roads import CONTACT_POINTS, build_road
 from xodrcheck.rules import xml as R
 
-#: Versions this reader knows: 1.1 to 1.8.
-KNOWN_VERSIONS = frozenset((1, minor) for minor in range(1, 9))
+#: Versions this reader knows: 1.1 to 1.9.
+KNOWN_VERSIONS = frozenset((1, minor) for minor in range(1, 10))
 
 _JUNCTION_TYPES = {t.value: t for t in JunctionType}
 _OFFSET = ("x", "y", "z", "hdg")
@@ -35,8 +37,8 @@ def build_header(ctx: Context, el: etree._Element) -> Header:
         else:
             ctx.report(
                 R.UNKNOWN_VERSION,
-                f"{describe(el)} declares OpenDRIVE {rev_major}.{rev_minor}, which is not one of 1.1 to 1.8; "
-                "it is read as an OpenDRIVE 1.8 file, so what that version changed may be misread",
+                f"{describe(el)} declares OpenDRIVE {rev_major}.{rev_minor}, which is not one of 1.1 to 1.9; "
+                "it is read as an OpenDRIVE 1.9 file, so what that version changed may be misread",
                 el,
             )
     bounds = [ctx.number(el, name, "read as absent", required=False) for name in _BOUNDS]
@@ -66,13 +68,24 @@ def build_header(ctx: Context, el: etree._Element) -> Header:
 
 def _lane_links(ctx: Context, el: etree._Element) -> tuple[JunctionLaneLink, ...]:
     out = []
+    with_layers = layered(ctx)
     for ll in el.iterchildren("laneLink"):
         try:
-            out.append(make_lane_link(int(ll.get("from")), int(ll.get("to")), ll.sourceline))  # type: ignore[arg-type]
+            link = make_lane_link(int(ll.get("from")), int(ll.get("to")), ll.sourceline)  # type: ignore[arg-type]
         except (TypeError, ValueError):
             for name in ("from", "to"):  # report whichever is missing or not an integer
                 ctx.integer(ll, name, "the lane link is ignored")
+            continue
+        if with_layers and (ll.get("fromLayer") is not None or ll.get("toLayer") is not None):
+            link = make_lane_link(
+                link.from_lane, link.to_lane, link.line, _layer(ctx, ll, "fromLayer"), _layer(ctx, ll, "toLayer")
+            )
+        out.append(link)
     return tuple(out)
+
+
+def _layer(ctx: Context, el: etree._Element, name: str) -> LaneLayer:
+    return ctx.choice(el, name, LAYERS, "read as permanent, the standard's default") or LaneLayer.PERMANENT
 
 
 def build_junction(ctx: Context, el: etree._Element) -> Junction | None:

@@ -2,13 +2,28 @@
 
 Records inside a lane (width, border, height, roadMark, speed) keep ``s`` = their ``sOffset``. A lane without a usable integer
 ``id`` is skipped (links name lanes by id); a lane whose type is unknown is kept as ``LaneType.UNKNOWN``.
+
+OpenDRIVE 1.9 lane layers (11.2) are read from 1.9 files (and files of unknown version, read as 1.9): a lane link's
+``layer``, a lane section's ``length`` and the ``<lanes layer>`` of a road's up to two ``<lanes>``. Older versions do
+not have them (the schema reports them there); the reader ignores them.
 """
 
 from __future__ import annotations
 
 from lxml import etree
 
-from xodrcheck.model import Cubic, Lane, LaneHeight, LaneSection, LaneType, Profile, RoadMark, Speed
+from xodrcheck.model import (
+    Cubic,
+    Lane,
+    LaneHeight,
+    LaneLayer,
+    LaneSection,
+    LaneType,
+    Profile,
+    RoadMark,
+    Speed,
+    TemporaryLanes,
+)
 from xodrcheck.reader.construct import (
     make_lane,
     make_lane_height,
@@ -26,25 +41,42 @@ LANE_TYPES = {t.value.lower(): t for t in LaneType if t is not LaneType.UNKNOWN}
 #: The usual spellings of ``level``; anything else goes through :meth:`Context.boolean`.
 _LEVELS = {"true": True, "false": False}
 _SKIP_LANE = "the lane is skipped"
+#: ``layer`` values (1.9), matched without regard to case.
+LAYERS = {layer.value: layer for layer in LaneLayer}
+_PERMANENT = "read as permanent, the standard's default"
+
+_Links = tuple[tuple[int, ...], tuple[int, ...], tuple[int, ...], tuple[int, ...]]
 
 
-def _lane_links(ctx: Context, el: etree._Element) -> tuple[tuple[int, ...], tuple[int, ...]]:
-    preds: list[int] = []
-    succs: list[int] = []
+def layered(ctx: Context) -> bool:
+    """Whether the file has lane layers: OpenDRIVE 1.9 or later, or a version the reader does not know."""
+    return ctx.version is None or ctx.version >= (1, 9)
+
+
+def _lane_links(ctx: Context, el: etree._Element) -> _Links:
+    """Predecessor and successor lane ids on the permanent layer, then on the temporary layer."""
+    links: tuple[list[int], list[int], list[int], list[int]] = ([], [], [], [])
+    with_layers = layered(ctx)
     for child in el:
         tag = child.tag
         if tag == "predecessor":
-            target = preds
+            k = 0
         elif tag == "successor":
-            target = succs
+            k = 1
         else:
             continue
+        if (
+            with_layers
+            and child.get("layer") is not None
+            and ctx.choice(child, "layer", LAYERS, _PERMANENT) is LaneLayer.TEMPORARY
+        ):
+            k += 2
         raw = child.get("id")
         try:
-            target.append(int(raw))  # type: ignore[arg-type]
+            links[k].append(int(raw))  # type: ignore[arg-type]
         except (TypeError, ValueError):
             ctx.integer(child, "id", "the lane link is ignored")
-    return tuple(preds), tuple(succs)
+    return tuple(links[0]), tuple(links[1]), tuple(links[2]), tuple(links[3])
 
 
 def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
@@ -114,8 +146,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
     else:
         level = False
 
-    preds: tuple[int, ...] = ()
-    succs: tuple[int, ...] = ()
+    links: _Links = ((), (), (), ())
     link = None
     widths: list[Cubic] = []
     borders: list[Cubic] = []
@@ -137,7 +168,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
                 ctx.repeated(child, link)
             else:
                 link = child
-                preds, succs = _lane_links(ctx, child)
+                links = _lane_links(ctx, child)
         elif tag == "speed":
             speed = _speed(ctx, child)
             if speed is not None:
@@ -160,8 +191,8 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         lane_id,
         lane_type,
         level,
-        preds,
-        succs,
+        links[0],
+        links[1],
         tuple(widths),
         tuple(borders),
         tuple(marks),
@@ -169,6 +200,8 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         "" if type_name is None else type_name,
         el.sourceline,
         tuple(heights),
+        links[2],
+        links[3],
     )
 
 
@@ -183,9 +216,11 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
         )
         if s is None:
             return None
-    single_side = None
+    single_side = length = None
     if el.get("singleSide") is not None:
         single_side = ctx.boolean(el, "singleSide", "read as absent")
+    if el.get("length") is not None and layered(ctx):
+        length = ctx.number(el, "length", "read as absent (the section lasts until the next one)", nonneg=True)
     ctx.section_s = s
     left = center = right = ()
     seen: dict[str, etree._Element] = {}
@@ -223,7 +258,7 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
             uid=None if "center" in seen else U.CENTER_ELEM_DEFINITION,
         )
     ctx.section_s = None
-    return make_lane_section(s, single_side, left, center, right, el.sourceline)
+    return make_lane_section(s, single_side, left, center, right, el.sourceline, length)
 
 
 def build_lanes(ctx: Context, el: etree._Element) -> tuple[Profile, tuple[LaneSection, ...]]:
@@ -254,3 +289,37 @@ def build_lanes(ctx: Context, el: etree._Element) -> tuple[Profile, tuple[LaneSe
     elif len(sections) > 1:
         ctx.check_order(sections, "<laneSection>", el, U.SECTION_ORDER)
     return tuple(offsets), tuple(sections)
+
+
+def build_layers(
+    ctx: Context, elements: list[etree._Element]
+) -> tuple[Profile, tuple[LaneSection, ...], TemporaryLanes | None]:
+    """The permanent layer's laneOffset and lane sections and the temporary layer of a road's ``<lanes>`` elements
+    (1.9: one per layer, ``layer`` defaulting to permanent; before 1.9 only the first is read). A second ``<lanes>``
+    of the same layer is reported and skipped; a road with only a temporary layer has no permanent lanes."""
+    found: dict[LaneLayer, etree._Element] = {}
+    for el in elements:
+        layer = LaneLayer.PERMANENT
+        if layered(ctx) and el.get("layer") is not None:
+            layer = ctx.choice(el, "layer", LAYERS, _PERMANENT) or LaneLayer.PERMANENT
+        if layer in found:
+            ctx.repeated(el, found[layer])
+        else:
+            found[layer] = el
+    offset: Profile = ()
+    sections: tuple[LaneSection, ...] = ()
+    permanent = found.get(LaneLayer.PERMANENT)
+    if permanent is not None:
+        offset, sections = build_lanes(ctx, permanent)
+    else:
+        ctx.report(
+            R.MISSING_ELEMENT,
+            f"{describe(elements[0].getparent())} has no <lanes> of the permanent layer; the road has no lanes",
+            elements[0],
+            uid=U.SECTION_REQ,
+        )
+    temporary = found.get(LaneLayer.TEMPORARY)
+    if temporary is None:
+        return offset, sections, None
+    temporary_offset, temporary_sections = build_lanes(ctx, temporary)
+    return offset, sections, TemporaryLanes(temporary_offset, temporary_sections, temporary.sourceline)

@@ -31,7 +31,7 @@ from xodrcheck.reader.construct import (
     make_spiral,
 )
 from xodrcheck.reader.context import Context, cubics, describe
-from xodrcheck.reader.lanes import build_lanes
+from xodrcheck.reader.lanes import build_layers
 from xodrcheck.rules import xml as R
 from xodrcheck.rules.lane_uids import SECTION_REQ as LANE_SECTION_REQUIRED
 
@@ -195,7 +195,7 @@ def _count(el: etree._Element, tag: str) -> int:
 
 
 #: Children of ``<road>`` that may appear at most once.
-_ONCE = frozenset({"link", "planView", "elevationProfile", "lateralProfile", "lanes", "objects", "signals"})
+_ONCE = frozenset({"link", "planView", "elevationProfile", "lateralProfile", "objects", "signals"})
 
 
 def build_road(ctx: Context, el: etree._Element) -> Road | None:
@@ -215,9 +215,12 @@ def build_road(ctx: Context, el: etree._Element) -> Road | None:
 def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
     get = el.get
     first: dict[str, etree._Element] = {}
+    lanes: list[etree._Element] = []  # one per lane layer (1.9), see build_layers
     for child in el:
         tag = child.tag
-        if tag in _ONCE:
+        if tag == "lanes":
+            lanes.append(child)
+        elif tag in _ONCE:
             if tag in first:
                 ctx.repeated(child, first[tag])
             else:
@@ -266,15 +269,15 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
     if "lateralProfile" in first:
         superelevation = cubics(ctx, first["lateralProfile"], "superelevation")
 
-    lanes = first.get("lanes")
-    if lanes is None:
+    temporary = None
+    if not lanes:
         ctx.report(
             R.MISSING_ELEMENT, f"{describe(el)} has no <lanes>; the road has no lanes", el, uid=LANE_SECTION_REQUIRED
         )
         lane_offset: Profile = ()
-        sections = ()
+        sections: tuple = ()
     else:
-        lane_offset, sections = build_lanes(ctx, lanes)
+        lane_offset, sections, temporary = build_layers(ctx, lanes)
 
     objects = first.get("objects")
     signals = first.get("signals")
@@ -294,4 +297,5 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
         0 if objects is None else _count(objects, "object"),
         0 if signals is None else _count(signals, "signal"),
         el.sourceline,
+        temporary,
     )

@@ -137,9 +137,9 @@ UNKNOWN_VERSION = declare(
     Category.SCHEMA,
     Severity.WARNING,
     """
-    The header's ``revMajor.revMinor`` is not an OpenDRIVE version xodrcheck knows (1.1 to 1.8).
+    The header's ``revMajor.revMinor`` is not an OpenDRIVE version xodrcheck knows (1.1 to 1.9).
 
-    The file is read as an OpenDRIVE 1.8 file, so whatever the declared version changed may be misunderstood. (A
+    The file is read as an OpenDRIVE 1.9 file, so whatever the declared version changed may be misunderstood. (A
     version that is missing or not an integer is reported by ``missing-attribute`` or ``invalid-attribute``.)
 
     Passes::
