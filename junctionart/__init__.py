@@ -84,5 +84,5 @@ def generate(params: Params | None = None, seed: int = 0, control_lines: Control
 
 
 def write(document: Document, path: str | Path, version: str = "1.8") -> Path:
-    """Write ``document`` as OpenDRIVE ``version`` ("1.8" or "1.7") to ``path``, atomically."""
+    """Write ``document`` as OpenDRIVE ``version`` ("1.8", "1.9" or "1.7") to ``path``, atomically."""
     return _write(document, path, version)

@@ -158,7 +158,9 @@ def _add_generate(sub: argparse._SubParsersAction) -> None:
         f"{MAX_AREA:.0e} m^2: a 10 km x 10 km map takes 1-2 minutes)",
     )
     p.add_argument("--control-lines", type=Path, help="JSON or GeoJSON control-line file (default: automatic lines)")
-    p.add_argument("--version", choices=("1.8", "1.7"), default=None, help="OpenDRIVE version written (default: 1.8)")
+    p.add_argument(
+        "--version", choices=("1.8", "1.9", "1.7"), default=None, help="OpenDRIVE version written (default: 1.8)"
+    )
     p.add_argument(
         "--transitions", help="JSON object (or @file) of MDP transition probabilities (default: the paper's)"
     )

@@ -38,7 +38,7 @@ DEFAULT_TRANSITIONS: dict[str, dict[str, float]] = {
     "commonEnd": {"orthogonal": 0.5, "parallel": 0.1, "random": 0.4},
 }
 
-VERSIONS = ("1.8", "1.7")
+VERSIONS = ("1.8", "1.9", "1.7")
 
 # Bounds of a map, set from measurements (2-core machine shared with other jobs, ``junctionart generate``, seed 1):
 # 5 km x 5 km 16 s; 10 km x 10 km 49-106 s and 0.4 GB; 100 km x 1 km 231 s; 1 km x 100 km 159 s; 14.1 km x 14.1 km
@@ -90,7 +90,7 @@ class Params:
     #: connected without it (0: keep every leg)
     min_leg_angle: float = 20.0
     taper_length: float = 25.0  #: length of a lane split / merge
-    version: str = "1.8"  #: OpenDRIVE version written: "1.8" or "1.7"
+    version: str = "1.8"  #: OpenDRIVE version written: "1.8", "1.9" or "1.7"
 
     def __post_init__(self) -> None:
         validate(self)

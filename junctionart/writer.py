@@ -1,4 +1,8 @@
-"""Serialise a :class:`junctionart.opendrive.Document` to OpenDRIVE 1.8 (default) or 1.7 XML.
+"""Serialise a :class:`junctionart.opendrive.Document` to OpenDRIVE 1.8 (default), 1.9 or 1.7 XML.
+
+The generator's maps use nothing that changed between these versions, so the three differ only in the header's
+``revMinor`` (1.9 adds lane layers, curved object outlines and more, none of which the generator makes; 1.8 stays the
+default while CARLA, SUMO and ASAM's checker read at most 1.8).
 
 The text is built directly, line by line, in lxml's pretty-print layout (an element tree cost most of the writing
 time); element order follows the schema of the declared version. Floats are written with ``repr`` (the shortest
@@ -32,7 +36,7 @@ from .opendrive import (
     RoadMark,
 )
 
-REV_MINOR = {"1.8": 8, "1.7": 7}
+REV_MINOR = {"1.8": 8, "1.9": 9, "1.7": 7}
 
 
 def fmt(x: float) -> str:
@@ -209,8 +213,8 @@ def _junction(out: _Out, j: Junction) -> None:
 
 
 def to_bytes(doc: Document, version: str = "1.8") -> bytes:
-    """The file content for OpenDRIVE ``version`` ("1.8" or "1.7"): the XML declaration first, UTF-8, indented two
-    spaces per level, deterministic."""
+    """The file content for OpenDRIVE ``version`` ("1.8", "1.9" or "1.7"): the XML declaration first, UTF-8, indented
+    two spaces per level, deterministic."""
     if version not in REV_MINOR:
         raise JunctionArtError(f"version {version!r}: must be one of {', '.join(REV_MINOR)}")
     out = _Out()

@@ -13,6 +13,7 @@ from junctionart.params import Params
 REPO = Path(__file__).resolve().parents[2]
 SCHEMA_18 = REPO / "schemas" / "1.8.1" / "OpenDRIVE_Core.xsd"
 SCHEMA_17 = REPO / "schemas" / "1.7.0" / "opendrive_17_core.xsd"
+SCHEMA_19 = REPO / "schemas" / "1.9.0" / "OpenDRIVE_Core.xsd"  # the official file, not xodrcheck's corrected copy
 
 
 @pytest.fixture(scope="session")
@@ -20,6 +21,13 @@ def schema18():
     import xmlschema
 
     return xmlschema.XMLSchema11(str(SCHEMA_18))
+
+
+@pytest.fixture(scope="session")
+def schema19():
+    import xmlschema
+
+    return xmlschema.XMLSchema11(str(SCHEMA_19))
 
 
 @pytest.fixture(scope="session")

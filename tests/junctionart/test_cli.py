@@ -30,6 +30,13 @@ def test_generate_from_control_lines_version_17(tmp_path):
     assert b'revMinor="7"' in out.read_bytes()[:300]
 
 
+def test_generate_version_19_and_18_stays_the_default(tmp_path):
+    a, b = tmp_path / "a.xodr", tmp_path / "b.xodr"
+    assert main(["generate", "--seed", "2", "--size", "500x500", "--version", "1.9", "-o", str(a), "-q"]) == 0
+    assert main(["generate", "--seed", "2", "--size", "500x500", "-o", str(b), "-q"]) == 0
+    assert b'revMinor="9"' in a.read_bytes()[:300] and b'revMinor="8"' in b.read_bytes()[:300]
+
+
 def test_count_with_seed_pattern(tmp_path):
     assert main(["generate", "--count", "3", "--seed", "10", "-o", str(tmp_path / "m{seed}.xodr"), "-q"]) == 0
     assert sorted(p.name for p in tmp_path.iterdir()) == ["m10.xodr", "m11.xodr", "m12.xodr"]

@@ -26,7 +26,7 @@ def test_defaults_are_the_originals():
         ({"min_turn_radius": 0.1}, ["min_turn_radius=0.1", "[1, 50]"]),
         ({"min_leg_angle": 60.0}, ["min_leg_angle=60.0", "[0, 50]"]),
         ({"min_leg_angle": float("nan")}, ["min_leg_angle=nan"]),
-        ({"version": "1.4"}, ["version='1.4'", "1.8, 1.7"]),
+        ({"version": "1.4"}, ["version='1.4'", "1.8, 1.9, 1.7"]),
         ({"n_lines": 1}, ["n_lines=1", "[2, 1000]"]),
         ({"line_spacing": (10.0, 20.0)}, ["line_spacing", "40 m"]),
         ({"gap_scale": (2.0, 1.0)}, ["gap_scale", "must not exceed"]),

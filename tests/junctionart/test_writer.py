@@ -73,6 +73,24 @@ def test_generated_maps_valid_against_both_schemas(seed, rule, schema18, schema1
     assert etree.parse(str(p18)).getroot().find("header").get("revMinor") == "8"
 
 
+@pytest.mark.parametrize("seed", [0, 1])
+@pytest.mark.parametrize("rule", [TrafficRule.RHT, TrafficRule.LHT])
+def test_generated_19_maps_valid_against_the_official_19_schema_and_clean(seed, rule, schema19, tmp_path):
+    """--version 1.9: xmlschema (the slow, reference validator) on the official 1.9.0 XSD finds no error, xodrcheck
+    no error or warning; the bytes are the 1.8 file's but for revMinor."""
+    import xodrcheck
+
+    doc = ja.generate(Params(randomize_lanes=True, curved_roads=True, traffic_rule=rule), seed)
+    p19 = write(doc, tmp_path / "a.xodr", "1.9")
+    errors = list(schema19.iter_errors(str(p19)))
+    assert errors == [], errors[:3]
+    assert etree.parse(str(p19)).getroot().find("header").get("revMinor") == "9"
+    report = xodrcheck.check(p19)
+    assert [f for f in report.findings if f.severity.name in ("ERROR", "WARNING")] == []
+    b18 = to_bytes(doc, "1.8")
+    assert p19.read_bytes() == b18.replace(b'revMinor="8"', b'revMinor="9"', 1) != b18
+
+
 def test_same_seed_same_bytes_other_seed_other_bytes(tmp_path):
     p = Params(randomize_lanes=True, curved_roads=True)
     a = write(ja.generate(p, 7), tmp_path / "a.xodr").read_bytes()
