@@ -34,6 +34,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree
 
     from xodrcheck.lanes import RoadGeometry
+    from xodrcheck.objects import RoadObject
 
 
 def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
@@ -128,6 +129,16 @@ class Context:
 
         root, _ = parse(self.data, recover=False, strip_namespaces=False)
         return None if root is None else etree.ElementTree(root)
+
+    @cached_property
+    def objects(self) -> Mapping[str, tuple[RoadObject, ...]]:
+        """Road id -> the road's objects as typed data (:mod:`xodrcheck.objects`: positions, outlines with 1.9's
+        ``<curveLocal>``, repeats with 1.9's cubic ``t``), built from :attr:`tree` once per file; empty when the file
+        is not well-formed."""
+        from xodrcheck.objects import read_objects
+
+        tree = self.tree
+        return {} if tree is None else read_objects(tree.getroot(), self.version)
 
     # ---------------------------------------------------------------------------------------------------- geometry
     def geometry(self, road_id: str) -> RoadGeometry | None:
