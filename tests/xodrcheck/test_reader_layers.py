@@ -187,3 +187,27 @@ def test_a_road_without_temporary_layer_has_no_temporary_geometry():
 
 def test_the_line_geometry_helper_is_what_the_expectations_assume():
     assert 'hdg="0.5"' in LINE_GEOMETRY and 'x="1" y="2"' in LINE_GEOMETRY
+
+
+# ---------------------------------------------------------------------------------------------------- rules
+def _two_sections(temporary_link: str) -> bytes:
+    first = section(CENTER, _right(3.5, f'<link><successor id="-1"/>{temporary_link}</link>'))
+    second = section(CENTER, _right(3.5, '<link><predecessor id="-1"/></link>'), attrs='s="5"')
+    temporary = (
+        '<lanes layer="temporary">'
+        + section(CENTER, _right(3.0, '<link><predecessor id="-1"/></link>'), attrs='s="5" length="4"')
+        + "</lanes>"
+    )
+    return xodr(road(lanes=f"<lanes>{first}{second}</lanes>{temporary}"), version=V19)
+
+
+def test_a_section_where_lanes_link_to_the_temporary_layer_is_not_redundant(tmp_path):
+    """G901 (redundant-record) merges unchanged lane sections, but a permanent section must start where its lanes
+    link to the temporary layer (11.4, road.lane_section.new_lanesec_link_temp_to_perm)."""
+    from xodrcheck import check
+
+    path = tmp_path / "map.xodr"
+    path.write_bytes(_two_sections(""))
+    assert [f.section_s for f in check(path, select=("G901",)).findings] == [5.0]
+    path.write_bytes(_two_sections('<successor id="-1" layer="temporary"/>'))
+    assert check(path, select=("G901",)).findings == ()

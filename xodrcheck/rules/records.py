@@ -166,6 +166,8 @@ def _lane_continues(prev: LaneSection, a: Lane, nxt: LaneSection, b: Lane) -> bo
         return False
     if a.successors not in ((), (a.id,)) or b.predecessors not in ((), (a.id,)):
         return False
+    if a.temporary_successors or b.temporary_predecessors:
+        return False  # linked to the temporary lane layer here: 1.9 requires the new section (11.4)
     if not (
         _profile_continues(prev.s, a.widths, nxt.s, b.widths)
         and _profile_continues(prev.s, a.borders, nxt.s, b.borders)
