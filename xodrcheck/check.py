@@ -71,6 +71,12 @@ class Report:
 
 # ------------------------------------------------------------------------------------------------------ selection
 _CODE_PREFIX = re.compile(r"^[A-Za-z][0-9]{0,3}$")
+_SEVERITIES = {str(s): s for s in Severity}
+
+
+def _severity_token(token: str) -> Severity | None:
+    """A selector naming a severity (``info``, ``warning``, ``error``): it filters findings by severity."""
+    return _SEVERITIES.get(token.strip().lower())
 
 
 def _matches(token: str, code: str, name: str, category: str) -> bool:
@@ -103,6 +109,8 @@ def validate_selectors(tokens: Iterable[str], rules: dict[str, Rule] | None = No
             raise ConfigError(f"rule selectors are strings (codes, prefixes, names, categories), got {token!r}")
         if not token.strip():
             raise ConfigError("empty rule selector")
+        if _severity_token(token) is not None:
+            continue
         if is_uid(token.strip()):
             if not any(uid_matches(token.strip(), uid) for uid in annex_rules()):
                 raise ConfigError(f"no rule of the standard matches {token!r} (see `xodrcheck rules --standard`)")
@@ -114,14 +122,18 @@ class Selection:
     """Which rules apply: those matching ``select`` (all when empty), minus those matching ``ignore``.
 
     A UID pattern selects the rules that enforce a matching UID and, of their findings, those that name one; ignored,
-    it drops those findings, and the rules whose every UID matches.
+    it drops those findings, and the rules whose every UID matches. A severity (``info``, ``warning``, ``error``)
+    selects or drops findings of that severity, whatever their rule: with rule selectors, both must match
+    (``K1,error``: the errors of the K1xx rules).
     """
 
     def __init__(self, select: Sequence[str] = (), ignore: Sequence[str] = ()) -> None:
         self.rules = load_rules()
         validate_selectors((*select, *ignore), self.rules)
-        self.select = tuple(select)
-        self.ignore = tuple(ignore)
+        self.select = tuple(t for t in select if _severity_token(t) is None)
+        self.ignore = tuple(t for t in ignore if _severity_token(t) is None)
+        self.severities = frozenset(s for t in select if (s := _severity_token(t)) is not None)
+        self.ignored_severities = frozenset(s for t in ignore if (s := _severity_token(t)) is not None)
 
     def wants_rule(self, rule: Rule) -> bool:
         if self.select and not any(_rule_matches(t, rule) for t in self.select):
@@ -135,6 +147,8 @@ class Selection:
         return True
 
     def wants_finding(self, finding: Finding) -> bool:
+        if (self.severities and finding.severity not in self.severities) or finding.severity in self.ignored_severities:
+            return False
         if self.select and not any(_finding_matches(t, finding) for t in self.select):
             return False
         return not any(_finding_matches(t, finding) for t in self.ignore)

@@ -18,47 +18,147 @@ else:  # pragma: no cover - Python 3.10
     import tomli as tomllib  # type: ignore[no-redef]
 
 
+def _tolerance(default: float, unit: str, doc: str, rules: str = ""):
+    """A tolerance field with its unit, documentation and the codes of the rules it bounds (space-separated);
+    ``xodrcheck rules --tolerances`` lists them, ``xodrcheck rules CODE`` names a rule's tolerances."""
+    return field(default=default, metadata={"unit": unit, "doc": doc, "rules": tuple(rules.split())})
+
+
 @dataclass(frozen=True)
 class Tolerances:
-    #: Largest gap (m) between positions that should coincide (planView joints, road links, lane borders at links).
-    position: float = 1e-3
-    #: Largest heading difference (rad) at joints that should be smooth.
-    heading: float = 1e-3
-    #: Relative error allowed between a declared length and the computed one (paramPoly3 arc length, road length).
-    length_rel: float = 1e-3
-    #: Absolute length slack (m) added to ``length_rel``.
-    length_abs: float = 1e-3
-    #: Smallest curvature radius (m) of reference lines and driving-lane centres.
-    min_radius: float = 5.0
-    #: Lane sections shorter than this (m) are reported as degenerate.
-    min_section_length: float = 0.01
-    #: Connection lanes of one incoming road may run together this far (m) from where they start before they part.
-    junction_start: float = 0.05
-    #: Chord error (m) for polylines and meshes.
-    chord: float = 0.01
-    #: Longest step (m) between sampled points along a lane, whatever the chord tolerance allows.
-    max_step: float = 5.0
-    #: Smallest lane width (m) treated as non-zero (a lane narrower than this "starts or ends at zero width").
-    zero_width: float = 1e-3
-    #: Plan-view overlap area (m^2) between roads above which an overlap is reported.
-    overlap_area: float = 0.5
-    #: Vertical clearance (m): surfaces further apart than this in z do not overlap (bridges).
-    clearance: float = 4.5
-    #: Distance (m) from (0, 0) beyond which a map whose extent does not reach the origin counts as not centred
-    #: (``header.offset.centered_coords``): 32-bit floats resolve 1 mm up to about 8 km, 2 mm up to 16 km.
-    centre_distance: float = 10_000.0
-    #: Wall-clock bound (s) on checking one file; 0 (the default): none, every rule runs to its end, so the verdict
-    #: never depends on the machine's speed. With a bound, rules past it stop and report X901 (an error: the check is
-    #: incomplete, exit code 3).
-    time_budget: float = 0.0
-    #: Most ``s`` samples one lane section gets per sampling stage (checker grid, mesh, info). A longer section (a road
-    #: of 1e9 m) is sampled with proportionally longer steps, so time and memory stay bounded; rule G013 reports it.
-    max_samples_per_section: int = 200_000
-    #: Files larger than this many bytes are refused with a clear error.
-    max_file_bytes: int = 512 * 1024 * 1024
-    #: Most points ``xodrcheck sample`` writes and most vertices ``xodrcheck mesh`` builds (10 million: about 0.7 GB
-    #: of CSV); a step or chord needing more is refused (exit 2) before anything is written.
-    max_output_points: int = 10_000_000
+    """Every tolerance and bound of the checker, with its unit and meaning (``metadata["unit"]``/``["doc"]``).
+
+    Positions and headings are graded in two steps (:meth:`grade`): a deviation up to the strict value (``position``,
+    ``heading``) is no finding, one above the error threshold (``gap``, ``kink``) an error, one between a warning.
+    """
+
+    position: float = _tolerance(
+        1e-3,
+        "m",
+        "Positions that should coincide (plan-view joints, linked road ends and lane borders, in plan view and in "
+        "height) may be this far apart without a finding; further apart up to `gap` is a warning.",
+        rules="G001 G014 K101 K103 K104 L101",
+    )
+    gap: float = _tolerance(
+        0.01,
+        "m",
+        "A gap or step over this between positions that should coincide is an error: ASAM's checker uses 1 cm "
+        "(lane.smoothness.contact_point_no_horizontal_gaps).",
+        rules="G001 G014 K101 K103 K104 L101",
+    )
+    heading: float = _tolerance(
+        1e-3,
+        "rad",
+        "Headings at joints that should be smooth (plan-view joints, road links) may differ this much without a "
+        "finding; more, up to `kink`, is a warning (1 mrad: 1 mm off course per metre, as `position`).",
+        rules="G002 G014 K102",
+    )
+    kink: float = _tolerance(
+        0.01,
+        "rad",
+        "A heading change over this at a joint is an error: 0.01 rad (0.57 deg) takes the path off the other road's "
+        "course by the 1 cm `gap` within one metre.",
+        rules="G002 G014 K102",
+    )
+    length_rel: float = _tolerance(
+        1e-3,
+        "1",
+        "Relative error allowed between a declared length and the computed one (paramPoly3 arc length, road length).",
+        rules="G004",
+    )
+    length_abs: float = _tolerance(
+        1e-3, "m", "Absolute length slack added to `length_rel`; also the s-jump bound.", rules="G003 G004 G005 G006"
+    )
+    min_radius: float = _tolerance(
+        5.0, "m", "Smallest curvature radius of lane-0 lines and drivable lane centres.", rules="C001 C002"
+    )
+    min_section_length: float = _tolerance(
+        0.01, "m", "Lane sections shorter than this are reported (G012).", rules="G012"
+    )
+    junction_start: float = _tolerance(
+        0.05,
+        "m",
+        "Connection lanes of one incoming road may run together this far from their start before they part.",
+        rules="J101",
+    )
+    chord: float = _tolerance(
+        0.01,
+        "m",
+        "Chord error of polylines and meshes (sampling, overlaps, exports).",
+        rules="C001 C002 C003 G013 J101 O001 O002 O003 O004",
+    )
+    max_step: float = _tolerance(
+        5.0,
+        "m",
+        "Longest step between sampled points along a lane, whatever the chord tolerance allows.",
+        rules="C001 C002 C003 G013 J101",
+    )
+    zero_width: float = _tolerance(
+        1e-3,
+        "m",
+        "Lanes narrower than this count as zero-wide (a lane that opens or closes).",
+        rules="G010 G011 J005 L010 L013",
+    )
+    overlap_area: float = _tolerance(
+        0.5, "m2", "Plan-view overlap area between roads above which it is reported.", rules="O001 O002 O003 O004"
+    )
+    clearance: float = _tolerance(
+        4.5,
+        "m",
+        "Surfaces further apart than this in height do not overlap (bridges, tunnels).",
+        rules="O001 O003 O004",
+    )
+    centre_distance: float = _tolerance(
+        10_000.0,
+        "m",
+        "Distance from (0, 0) beyond which a map whose extent does not reach the origin counts as not centred "
+        "(header.offset.centered_coords): 32-bit floats resolve 1 mm up to about 8 km, 2 mm up to 16 km.",
+        rules="H001",
+    )
+    time_budget: float = _tolerance(
+        0.0,
+        "s",
+        "Wall-clock bound on checking one file; 0 (the default): none, every rule runs to its end, so the verdict "
+        "never depends on the machine's speed. With a bound, rules past it stop and report X901 (an error: the check "
+        "is incomplete, exit code 3).",
+        rules="X901",
+    )
+    max_samples_per_section: int = _tolerance(  # type: ignore[assignment]
+        200_000,
+        "1",
+        "Most s samples one lane section gets per sampling stage; a longer section is sampled with longer steps "
+        "(G013 says so), so time and memory stay bounded.",
+        rules="G013",
+    )
+    max_file_bytes: int = _tolerance(  # type: ignore[assignment]
+        512 * 1024 * 1024, "B", "Files larger than this are refused with a clear error."
+    )
+
+    max_output_points: int = _tolerance(  # type: ignore[assignment]
+        10_000_000,
+        "1",
+        "Most points `xodrcheck sample` writes and most vertices `xodrcheck mesh` builds (10 million: about 0.7 GB of "
+        "CSV); a step or chord needing more is refused (exit 2) before anything is written.",
+    )
+
+    def grade(self, deviation: float, kind: str = "position"):
+        """The severity of a deviation from a joint that should be exact: ``None`` up to the strict value
+        (``position`` or ``heading``, by ``kind``), an error above the error threshold (``gap`` or ``kink``), a
+        warning between. ``None`` for NaN."""
+        from xodrcheck.findings import Severity
+
+        strict, error = (self.position, self.gap) if kind == "position" else (self.heading, self.kink)
+        if not deviation > strict:
+            return None
+        return Severity.ERROR if deviation > error else Severity.WARNING
+
+
+#: Named sets of tolerance values (``--profile``, key ``profile``), applied before the configured tolerances and the
+#: ``--tolerance`` flags. ``strict``: every deviation over the strict values is an error, as before issue 18.
+PROFILES: dict[str, dict[str, float]] = {
+    "default": {},
+    "strict": {"gap": Tolerances.position, "kink": Tolerances.heading},  # type: ignore[dict-item]
+}
 
 
 @dataclass(frozen=True)
@@ -67,6 +167,9 @@ class Config:
     select: tuple[str, ...] = ()  # rule codes or categories; empty: all
     ignore: tuple[str, ...] = ()
     strict: bool = False  # warnings fail too
+    #: Least severity a report shows (``info``, ``warning``, ``error``); ``None``: the format's default (text and
+    #: github: warning; json, sarif, junit, xqar: info). Findings not shown still count for the exit code.
+    min_severity: str | None = None
 
 
 class ConfigError(ValueError):
@@ -90,9 +193,11 @@ def _tolerances_from(mapping: dict, base: Tolerances) -> Tolerances:
     return dataclasses.replace(base, **values)
 
 
-def load_config(start: Path | None = None, overrides: dict | None = None) -> Config:
+def load_config(start: Path | None = None, overrides: dict | None = None, profile: str | None = None) -> Config:
     """Read ``xodrcheck.toml`` or ``[tool.xodrcheck]`` of the nearest ``pyproject.toml`` from ``start`` upwards,
-    then apply ``overrides`` (tolerance name -> value, e.g. from flags)."""
+    then apply ``overrides`` (tolerance name -> value, e.g. from flags). Tolerances come from the defaults, then the
+    ``profile`` (the argument, else the file's ``profile`` key; see :data:`PROFILES`), then the file's ``tolerances``
+    table, then ``overrides``."""
     table: dict = {}
     here = (start or Path.cwd()).resolve()
     for folder in (here, *here.parents):
@@ -106,7 +211,10 @@ def load_config(start: Path | None = None, overrides: dict | None = None) -> Con
             if "xodrcheck" in data.get("tool", {}):
                 table = data["tool"]["xodrcheck"]
                 break
-    tolerances = _tolerances_from(table.get("tolerances", {}), Tolerances())
+    name = profile if profile is not None else table.get("profile", "default")
+    if name not in PROFILES:
+        raise ConfigError(f"unknown profile {name!r}; known: {', '.join(PROFILES)}")
+    tolerances = _tolerances_from(table.get("tolerances", {}), _tolerances_from(PROFILES[name], Tolerances()))
     if overrides:
         tolerances = _tolerances_from(overrides, tolerances)
     return Config(
@@ -114,4 +222,16 @@ def load_config(start: Path | None = None, overrides: dict | None = None) -> Con
         select=tuple(table.get("select", ())),
         ignore=tuple(table.get("ignore", ())),
         strict=bool(table.get("strict", False)),
+        min_severity=_severity_name(table.get("min_severity")),
     )
+
+
+SEVERITY_NAMES = ("info", "warning", "error")
+
+
+def _severity_name(value) -> str | None:
+    if value is None:
+        return None
+    if not isinstance(value, str) or value.strip().lower() not in SEVERITY_NAMES:
+        raise ConfigError(f"min_severity must be one of {', '.join(SEVERITY_NAMES)}, got {value!r}")
+    return value.strip().lower()

@@ -45,7 +45,7 @@ def _geometries(road):
 def planview_gap(tree):
     road = next(r for r in _roads(tree) if len(_geometries(r)) >= 2)
     g = _geometries(road)[1]
-    g.set("x", repr(float(g.get("x")) + 0.004))  # 4 mm: under ASAM's 1 cm
+    g.set("x", repr(float(g.get("x")) + 0.02))  # 2 cm: over the 1 cm gap (from 1 mm a warning)
     return road.get("id")
 
 
@@ -53,6 +53,19 @@ def heading_kink(tree):
     road = next(r for r in _roads(tree) if len(_geometries(r)) >= 2)
     g = _geometries(road)[1]
     g.set("hdg", repr(float(g.get("hdg")) + 0.02))
+    return road.get("id")
+
+
+def elevation_step(tree):
+    """A road linked at its end to another road lifted by 5 cm (every elevation record's ``a``): a step at its links."""
+    road, _ = next(_road_links(tree, "successor"))
+    records = road.findall("elevationProfile/elevation")
+    if not records:
+        profile = etree.SubElement(road, "elevationProfile")
+        road.insert(list(road).index(road.find("planView")) + 1, profile)
+        records = [etree.SubElement(profile, "elevation", s="0", a="0", b="0", c="0", d="0")]
+    for record in records:
+        record.set("a", repr(float(record.get("a")) + 0.05))
     return road.get("id")
 
 
@@ -246,6 +259,8 @@ DEFECTS = [
     Defect("junction-merge", "junction", junction_merge, CARLA),
     Defect("crossing-connection-lanes", "junction", crossing_connection_lanes, CARLA),
     Defect("heading-kink", "geometry", heading_kink, ESMINI),
+    Defect("elevation-step", "link", elevation_step, CARLA),
+    Defect("elevation-step", "link", elevation_step, ESMINI),
 ]
 
 

@@ -7,8 +7,13 @@ stopped rules (X901), and nothing else failed. A file whose content cannot be re
 exit 2 here: that is what the check reports (X101, exit 1).
 
 Configuration comes from ``xodrcheck.toml`` or ``[tool.xodrcheck]`` in the nearest ``pyproject.toml`` (keys
-``select``, ``ignore``, ``strict`` and a ``tolerances`` table); ``--select``/``--ignore`` replace the configured lists,
-``--tolerance`` overrides single tolerances. A directory argument stands for the ``*.xodr`` files under it.
+``select``, ``ignore``, ``strict``, ``profile``, ``min_severity`` and a ``tolerances`` table); ``--select``/``--ignore``
+replace the configured lists, ``--profile`` the profile, ``--tolerance`` overrides single tolerances. A directory
+argument stands for the ``*.xodr`` files under it.
+
+``--min-severity`` limits what the report shows (text and github: warnings and errors by default, with one line per
+code of the infos left out; json, sarif, junit, xqar: everything). Findings that fail the check are always shown; the
+exit code does not depend on what is shown.
 """
 
 from __future__ import annotations
@@ -20,9 +25,10 @@ from pathlib import Path
 
 from xodrcheck.atomic import OutputError
 from xodrcheck.cli._common import error, output, target_ok
-from xodrcheck.config import ConfigError, load_config
+from xodrcheck.config import PROFILES, SEVERITY_NAMES, ConfigError, load_config
 from xodrcheck.findings import ReadError, Severity
-from xodrcheck.report import FORMATS, render, summary
+from xodrcheck.report import FORMATS, least_severity, render, shown, summary
+from xodrcheck.report.text import not_shown
 from xodrcheck.rules.internal import ENGINE_CODES
 
 NAME = "check"
@@ -44,9 +50,22 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--select",
         action="append",
         metavar="RULES",
-        help="only these rules: codes, code prefixes, names or categories, comma-separated (repeatable)",
+        help="only these rules: codes, code prefixes, names, categories, UIDs, or severities (info, warning, error: "
+        "findings of that severity), comma-separated (repeatable)",
     )
     parser.add_argument("--ignore", action="append", metavar="RULES", help="leave these rules out (same forms)")
+    parser.add_argument(
+        "--min-severity",
+        choices=SEVERITY_NAMES,
+        help="least severity the report shows (default: warning for text and github, info for the other formats); "
+        "the exit code counts every finding",
+    )
+    parser.add_argument(
+        "--profile",
+        choices=tuple(PROFILES),
+        help="tolerance profile: default (gaps over 1 cm and kinks over 0.01 rad are errors, from 1 mm and 1 mrad "
+        "warnings) or strict (errors from 1 mm and 1 mrad); `xodrcheck rules --tolerances` lists the values",
+    )
     parser.add_argument("--strict", action="store_true", default=None, help="warnings fail the check too")
     parser.add_argument("--format", choices=FORMATS, default="text", help="report format (default: text)")
     parser.add_argument(
@@ -57,7 +76,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         action="append",
         default=[],
         metavar="NAME=VALUE",
-        help="override a tolerance, e.g. --tolerance position=0.01 (repeatable; `xodrcheck rules` lists the rules)",
+        help="override a tolerance, e.g. --tolerance gap=0.005 (repeatable; `xodrcheck rules --tolerances` lists them)",
     )
     parser.add_argument(
         "-j",
@@ -112,13 +131,14 @@ def run(args: argparse.Namespace) -> int:
     from xodrcheck.check import Selection
 
     try:
-        config = load_config(overrides=_tolerance_overrides(args.tolerance))
+        config = load_config(overrides=_tolerance_overrides(args.tolerance), profile=args.profile)
         select, ignore = _split(args.select, "--select"), _split(args.ignore, "--ignore")
         config = dataclasses.replace(
             config,
             select=config.select if select is None else select,
             ignore=config.ignore if ignore is None else ignore,
             strict=config.strict if args.strict is None else True,
+            min_severity=args.min_severity or config.min_severity,
         )
         Selection(config.select, config.ignore)  # validates the selectors before any file is read
     except ConfigError as exc:
@@ -154,9 +174,12 @@ def run(args: argparse.Namespace) -> int:
         if reports:  # the others could be: say why their findings are not in the file either
             error(f"nothing written to {args.output}: a file could not be checked")
         return 2
+    visible, hidden = shown(reports, least_severity(config.min_severity, args.format))
     try:
         with output(args.output) as stream:
-            stream.write(render(args.format, reports))
+            stream.write(render(args.format, visible))
+            if args.format == "text":
+                stream.write(not_shown(hidden))
     except OutputError as exc:
         error(str(exc))
         return 2

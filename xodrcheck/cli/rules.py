@@ -5,6 +5,9 @@
 Text is plain (the docstrings' reStructuredText markup taken out); ``summary`` is the documentation's first sentence,
 whole.
 
+``xodrcheck rules --tolerances`` lists every tolerance: name, default, the ``strict`` profile's value, unit, the rules
+it bounds, and what it bounds (JSON: a list of objects with those keys).
+
 ``xodrcheck rules --standard`` lists every checker rule of ASAM OpenDRIVE 1.9.0 (Annex F) by UID with its status,
 computed from the registry: enforced (by which codes), enforced in part (and what is left out) or not enforced (and
 why). ``--format md`` gives the same as a Markdown table.
@@ -32,6 +35,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="list the checker rules of ASAM OpenDRIVE 1.9.0 (Annex F) by UID, each with its status here",
     )
     parser.add_argument(
+        "--tolerances",
+        action="store_true",
+        help="list every tolerance with its default, unit, the rules using it and what it bounds",
+    )
+    parser.add_argument(
         "--format", choices=("text", "json", "md"), default="text", help="output format (default: text; md: --standard)"
     )
 
@@ -47,6 +55,7 @@ def _as_dict(rule: Rule, full: bool = False) -> dict:
     }
     if full:
         d["doc"] = rule.doc
+        d["tolerances"] = rule_tolerances(rule.code)
     return d
 
 
@@ -75,7 +84,66 @@ def _standard(fmt: str) -> int:
     return 0
 
 
+def tolerance_rows() -> list[dict]:
+    """One row per tolerance: name, default, strict (the strict profile's value, or the default), unit, the codes of
+    the rules it bounds, and its documentation."""
+    import dataclasses
+
+    from xodrcheck.config import PROFILES, Tolerances
+
+    rows = []
+    for f in dataclasses.fields(Tolerances):
+        default = getattr(Tolerances, f.name)
+        rows.append(
+            {
+                "name": f.name,
+                "default": default,
+                "strict": PROFILES["strict"].get(f.name, default),
+                "unit": f.metadata.get("unit", ""),
+                "rules": list(f.metadata.get("rules", ())),
+                "doc": f.metadata.get("doc", ""),
+            }
+        )
+    return rows
+
+
+def _number(value: float) -> str:
+    return f"{value:,}" if isinstance(value, int) else f"{value:g}"
+
+
+def rule_tolerances(code: str) -> list[str]:
+    """``name = default unit`` of each tolerance that bounds the rule ``code``."""
+    return [
+        f"{row['name']} = {_number(row['default'])} {row['unit']}" for row in tolerance_rows() if code in row["rules"]
+    ]
+
+
+def _tolerances(fmt: str) -> int:
+    rows = tolerance_rows()
+    if fmt == "json":
+        print(json.dumps(rows, indent=2))
+        return 0
+    width = max(len(row["name"]) for row in rows)
+    print(f"{'tolerance':<{width}}  {'default':>11}  {'strict':>11}  unit  rules: meaning")
+    for row in rows:
+        used = f"{','.join(row['rules'])}: " if row["rules"] else ""
+        print(
+            f"{row['name']:<{width}}  {_number(row['default']):>11}  {_number(row['strict']):>11}  {row['unit']:<4}  "
+            f"{used}{row['doc']}"
+        )
+    print(
+        "Override in [tool.xodrcheck.tolerances] of pyproject.toml, in xodrcheck.toml or with --tolerance NAME=VALUE; "
+        "--profile strict applies the strict column."
+    )
+    return 0
+
+
 def run(args: argparse.Namespace) -> int:
+    if args.tolerances:
+        if args.code or args.standard or args.format == "md":
+            error("rules: --tolerances lists every tolerance; it takes no CODE, --standard or --format md")
+            return 2
+        return _tolerances(args.format)
     if args.standard:
         if args.code:
             error("rules: --standard lists every rule of the standard; it takes no CODE")
@@ -99,7 +167,10 @@ def run(args: argparse.Namespace) -> int:
             for uid in rule.uids:
                 part = f" (in part: {rule.partial[uid]})" if uid in rule.partial else ""
                 print(f"enforces {uid}{part}")
-            print(("\n" if rule.uids else "") + plain(rule.doc))
+            tolerances = rule_tolerances(rule.code)
+            if tolerances:
+                print(f"tolerances (xodrcheck rules --tolerances): {'; '.join(tolerances)}")
+            print(("\n" if rule.uids or tolerances else "") + plain(rule.doc))
         return 0
     if args.format == "json":
         print(json.dumps([_as_dict(r) for r in rules], indent=2))

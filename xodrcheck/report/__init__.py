@@ -4,18 +4,55 @@ Each format module has ``render(reports) -> str``; :func:`render` picks one by n
 finding), ``json``, ``junit`` (XML for CI test views), ``sarif`` (2.1.0, for code-scanning tools) and ``github``
 (workflow commands that annotate a pull request), ``xqar`` (the ASAM Quality Checker Framework's result file)
 and ``html`` (a self-contained page with a map of each file).
+
+What a report shows can be limited to a least severity (:func:`shown`): people read ``text`` and ``github`` output,
+which show warnings and errors by default; the others (machine formats, and ``html``, which filters on the page) show
+everything. Findings that fail the check (errors; warnings too in strict mode) are always shown, and the text report
+ends with one line per code of what it did not show.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import importlib
+from collections import Counter
 from collections.abc import Sequence
 from typing import TYPE_CHECKING
+
+from xodrcheck.findings import Severity
 
 if TYPE_CHECKING:  # pragma: no cover
     from xodrcheck.check import Report
 
 FORMATS = ("text", "json", "junit", "sarif", "github", "xqar", "html")
+
+#: The least severity each format shows unless told otherwise (``--min-severity``, key ``min_severity``).
+DEFAULT_MIN_SEVERITY = {name: Severity.WARNING if name in ("text", "github") else Severity.INFO for name in FORMATS}
+
+
+def least_severity(name: str | None, fmt: str) -> Severity:
+    """The least severity to show: ``name`` (``info``, ``warning``, ``error``) or the format's default."""
+    return DEFAULT_MIN_SEVERITY.get(fmt, Severity.INFO) if name is None else Severity[name.upper()]
+
+
+#: What a report did not show: (code, name, severity) -> (findings, files).
+Hidden = dict[tuple[str, str, Severity], tuple[int, int]]
+
+
+def shown(reports: Sequence[Report], least: Severity) -> tuple[list[Report], Hidden]:
+    """The reports keeping their findings of at least ``least`` severity (and every finding that fails the check),
+    and what was left out, counted per code."""
+    findings: Counter[tuple[str, str, Severity]] = Counter()
+    files: Counter[tuple[str, str, Severity]] = Counter()
+    out = []
+    for report in reports:
+        floor = min(least, Severity.WARNING if report.strict else Severity.ERROR)
+        kept = tuple(f for f in report.findings if f.severity >= floor)
+        left = Counter((f.code, f.name, f.severity) for f in report.findings if f.severity < floor)
+        findings.update(left)
+        files.update(left.keys())
+        out.append(report if len(kept) == len(report.findings) else dataclasses.replace(report, findings=kept))
+    return out, {key: (findings[key], files[key]) for key in sorted(findings)}
 
 
 def render(name: str, reports: Sequence[Report]) -> str:

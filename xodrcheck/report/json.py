@@ -14,7 +14,21 @@ from collections.abc import Sequence
 from xodrcheck.findings import Finding
 from xodrcheck.report import summary
 
-FINDING_KEYS = tuple("code name category severity message road lane s x y z line rule_uid".split())
+FINDING_KEYS = (
+    "code",
+    "name",
+    "category",
+    "severity",
+    "message",
+    "road",
+    "lane",
+    "s",
+    "x",
+    "y",
+    "z",
+    "line",
+    "rule_uid",
+)
 
 
 def _number(v):

@@ -5,12 +5,16 @@ part that does not apply (left out when the finding names no road), then the ine
 only where the place is not at height 0 (a flat map prints ``x`` and ``y`` alone); the bracket is left out when the
 finding names no place. The UID in parentheses is the checker rule of the standard (ASAM OpenDRIVE Annex F) that the
 finding enforces, where there is one.
+
+Findings under the least severity shown (``--min-severity``; by default infos) are summarised after the finding lines,
+one line per code: ``(not shown) G901 redundant-record: 9283 info finding(s) in 120 file(s); --min-severity info
+lists them``.
 """
 
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 from xodrcheck.findings import Finding
 
@@ -40,3 +44,12 @@ def line(path: str | None, f: Finding) -> str:
 
 def render(reports: Sequence) -> str:
     return "".join(line(r.path, f) + "\n" for r in reports for f in r.findings)
+
+
+def not_shown(hidden: Mapping) -> str:
+    """One line per code of the findings a report left out (:func:`xodrcheck.report.shown`)."""
+    return "".join(
+        f"(not shown) {code} {name}: {count} {severity} finding(s) in {files} file(s); --min-severity {severity} "
+        "lists them\n"
+        for (code, name, severity), (count, files) in hidden.items()
+    )

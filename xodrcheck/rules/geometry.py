@@ -16,6 +16,7 @@ import math
 
 import numpy as np
 
+from xodrcheck.config import Tolerances
 from xodrcheck.findings import Category, Severity
 from xodrcheck.geometry import profile
 from xodrcheck.geometry.cubic import CubicCurve
@@ -26,7 +27,7 @@ from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_uids import SECTION_VALID_LENGTH
 from xodrcheck.rules.registry import NO_UID, rule
-from xodrcheck.rules.sampled import angle_between, grid_step, usable
+from xodrcheck.rules.sampled import angle_between, grid_step, usable, warning_note
 from xodrcheck.sampling import capped, knots
 
 _KIND = {"Line": "line", "Arc": "arc", "Spiral": "spiral", "Poly3": "poly3", "ParamPoly3": "paramPoly3"}
@@ -62,30 +63,32 @@ def _at(road: Road, element) -> dict:
 def plan_view_gap(ctx: Context):
     """A plan-view element does not start where the previous one ends: the reference line has a gap.
 
-    The end point of each ``<geometry>`` (evaluated exactly) must be the next one's ``x``, ``y`` within the
-    ``position`` tolerance (1 mm by default; ASAM's checker sees only gaps over 1 cm). Annex F
-    ``road.geometry.refline_no_gaps``.
+    The end point of each ``<geometry>`` (evaluated exactly) must be the next one's ``x``, ``y`` (Annex F
+    ``road.geometry.refline_no_gaps``, "shall"). Graded: a gap over ``gap`` (1 cm, ASAM's checker's threshold) is an
+    error, one over ``position`` (1 mm) a warning; ``--profile strict`` makes errors of gaps over ``position``.
 
     Passes (a 10 m line along x, then the next element at x=10)::
 
         <geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry>
         <geometry s="10" x="10" y="0" hdg="0" length="10"><line/></geometry>
 
-    Fails (the second element starts 5 mm further on)::
+    Fails (the second element starts 5 cm further on; 5 mm would be a warning)::
 
         <geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry>
-        <geometry s="10" x="10.005" y="0" hdg="0" length="10"><line/></geometry>
+        <geometry s="10" x="10.05" y="0" hdg="0" length="10"><line/></geometry>
     """
-    tol = ctx.tolerances.position
+    tol = ctx.tolerances
     for road in ctx.document.roads:
         for a, b in _pairs(road):
             x, y, _ = _end_of(a)
             gap = math.hypot(b.x - x, b.y - y)
-            if gap > tol:
+            severity = tol.grade(gap)
+            if severity is not None:
                 yield plan_view_gap.finding(
                     f"road {road.id}: the {_kind(a)} at s={a.s:g} ends at ({x:.4f}, {y:.4f}) but the next element "
                     f"starts at ({b.x:.4f}, {b.y:.4f}), a gap of {gap:.4g} m; correct the x/y of the element at "
-                    f"s={b.s:g} or the previous element's parameters",
+                    f"s={b.s:g} or the previous element's parameters{warning_note(severity, tol)}",
+                    severity=severity,
                     **_at(road, b),
                 )
 
@@ -94,9 +97,10 @@ def plan_view_gap(ctx: Context):
 def plan_view_kink(ctx: Context):
     """A plan-view element does not start in the direction the previous one ends: the reference line has a kink.
 
-    The heading at the end of each ``<geometry>`` must be the next one's ``hdg`` (modulo 2 pi) within the ``heading``
-    tolerance. A kink without a gap is invisible to position checks but makes every lane border jump. Annex F
-    ``road.geometry.refline_no_kinks`` (a "should": reported as an error all the same, see ``SEVERITY_DEVIATIONS``).
+    The heading at the end of each ``<geometry>`` must be the next one's ``hdg`` (modulo 2 pi) (Annex F
+    ``road.geometry.refline_no_kinks``, a "should": its errors deviate, see ``SEVERITY_DEVIATIONS``). Graded: a kink
+    over ``kink`` (0.01 rad, 0.57 deg) is an error, one over ``heading`` (1 mrad) a warning. A kink without a gap is
+    invisible to position checks but makes every lane border jump.
 
     Passes::
 
@@ -108,16 +112,18 @@ def plan_view_kink(ctx: Context):
         <geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry>
         <geometry s="10" x="10" y="0" hdg="0.1" length="10"><line/></geometry>
     """
-    tol = ctx.tolerances.heading
+    tol = ctx.tolerances
     for road in ctx.document.roads:
         for a, b in _pairs(road):
             _, _, hdg = _end_of(a)
             kink = angle_between(hdg, b.hdg)
-            if kink > tol:
+            severity = tol.grade(kink, "heading")
+            if severity is not None:
                 yield plan_view_kink.finding(
                     f"road {road.id}: the {_kind(a)} at s={a.s:g} ends with heading {hdg:.5f} rad but the next "
                     f"element starts with hdg={b.hdg:.5f}, a kink of {math.degrees(kink):.3g} deg; make the headings "
-                    f"agree",
+                    f"agree{warning_note(severity, tol, 'heading')}",
+                    severity=severity,
                     **_at(road, b),
                 )
 
@@ -398,7 +404,7 @@ def sampling_capped(ctx: Context):
             )
 
 
-#: The road-level profiles G014 checks: attribute of :class:`Road`, element name, unit and tolerance name.
+#: The road-level profiles G014 checks: attribute of :class:`Road`, element name, unit and kind of deviation.
 _PROFILES = (
     ("elevation", "elevation", "m", "position"),
     ("superelevation", "superelevation", "rad", "heading"),
@@ -406,18 +412,19 @@ _PROFILES = (
 )
 
 
-def profile_steps(road: Road, tolerances) -> list[tuple[str, str, Cubic, float, float]]:
-    """(element name, unit, record, value reached before it, value it starts with) for every jump of a road's
-    elevation, superelevation or laneOffset above its tolerance (``position`` for metres, ``heading`` for radians)."""
+def profile_steps(road: Road, tolerances: Tolerances) -> list[tuple[str, str, Cubic, float, float, Severity]]:
+    """(element name, unit, record, value reached before it, value it starts with, severity) for every jump of a road's
+    elevation, superelevation or laneOffset graded as a finding (:meth:`Tolerances.grade`: positions for metres,
+    headings for radians)."""
     out = []
     section_starts = {section.s for section in road.lane_sections}
-    for attribute, element, unit, tolerance in _PROFILES:
-        tol = getattr(tolerances, tolerance)
+    for attribute, element, unit, kind in _PROFILES:
         for record, reached, starts in profile.jumps(getattr(road, attribute)):
             if attribute == "lane_offset" and record.s in section_starts:
                 continue  # lanes change there too: whether their borders continue is lane-border-discontinuous's
-            if abs(starts - reached) > tol:
-                out.append((element, unit, record, reached, starts))
+            severity = tolerances.grade(abs(starts - reached), kind)
+            if severity is not None:
+                out.append((element, unit, record, reached, starts, severity))
     return out
 
 
@@ -428,7 +435,8 @@ def profile_step(ctx: Context):
     Each ``<elevation>``, ``<superelevation>`` and ``<laneOffset>`` record holds until the next one starts; the next
     one must start with the value the previous one reaches there (ASAM OpenDRIVE Annex D.1.4.1: "no vertical gaps in
     the elevation definition and lateral profile definition of the road"; a laneOffset jump moves every lane sideways).
-    Heights and offsets use the ``position`` tolerance, superelevation (an angle) the ``heading`` tolerance. Where a
+    Graded: heights and offsets step by more than ``gap`` (1 cm) is an error, by more than ``position`` (1 mm) a
+    warning; superelevation (an angle) likewise with ``kink`` (0.01 rad) and ``heading`` (1 mrad). Where a
     lane section starts, the laneOffset may jump with the lanes (their borders are checked by
     ``lane-border-discontinuous``).
 
@@ -441,13 +449,15 @@ def profile_step(ctx: Context):
         <elevation s="0" a="0" b="0.02" c="0" d="0"/><elevation s="50" a="1.05" b="0.02" c="0" d="0"/>
     """
     for road in ctx.document.roads:
-        for element, unit, record, reached, starts in profile_steps(road, ctx.tolerances):
+        for element, unit, record, reached, starts, severity in profile_steps(road, ctx.tolerances):
             size = abs(starts - reached)
             shown = f"{math.degrees(size):.3g} deg ({size:.4g} rad)" if unit == "rad" else f"{size:.4g} m"
+            kind = "heading" if unit == "rad" else "position"
             yield profile_step.finding(
                 f"road {road.id}: the {element} jumps by {shown} at s={record.s:g}: the record before reaches "
                 f"{reached:.6g} {unit} there, the <{element}> at s={record.s:g} starts at {starts:.6g} {unit}; make it "
-                f"start where the previous one ends",
+                f"start where the previous one ends{warning_note(severity, ctx.tolerances, kind)}",
+                severity=severity,
                 road=road.id,
                 s=record.s,
                 line=record.line or road.line or None,

@@ -17,8 +17,10 @@ joint is checked once.
   pair of linked lanes have the same z (elevation, superelevation, lane height; ASAM OpenDRIVE Annex D.1.4).
 * Inside a road, lanes linked across a lane-section boundary keep their borders, in plan view and in height (``L101``).
 
-Distances use the ``position`` tolerance, angles the ``heading`` tolerance. ASAM's
-``lane.smoothness.contact_point_no_horizontal_gaps`` uses a fixed 1 cm and compares positions only.
+Deviations are graded (:meth:`~xodrcheck.config.Tolerances.grade`): distances over ``gap`` (1 cm, the threshold of
+ASAM's ``lane.smoothness.contact_point_no_horizontal_gaps``) and angles over ``kink`` (0.01 rad) are errors; over the
+strict ``position`` (1 mm) and ``heading`` (1 mrad) tolerances, warnings. ``--profile strict`` makes every deviation
+over the strict values an error.
 """
 
 from __future__ import annotations
@@ -44,6 +46,7 @@ from xodrcheck.rules.sampled import (
     road_end,
     section_lines,
     usable,
+    warning_note,
 )
 
 
@@ -101,19 +104,19 @@ def link_gap(ctx: Context):
     """Two roads linked outside a junction do not meet: their lane-0 lines are apart at the contact points.
 
     The lane-0 line is the reference line shifted by the laneOffset; where road A links to road B, A's lane-0 line at
-    its end must be B's at the linked end, within the ``position`` tolerance (1 mm by default: gaps under 1 cm, which
-    ASAM's checker lets through, are reported). Junction connections are checked lane by lane (``lane-border-gap``).
+    its end must be B's at the linked end. A gap over ``gap`` (1 cm, ASAM's checker's threshold) is an error, one over
+    ``position`` (1 mm) a warning. Junction connections are checked lane by lane (``lane-border-gap``).
 
     Passes (road 1 ends at x=100, road 2 starts there)::
 
         <road id="1" length="100"> ... <geometry s="0" x="0" y="0" hdg="0" length="100"><line/></geometry>
         <road id="2" length="100"> ... <geometry s="0" x="100" y="0" hdg="0" length="100"><line/></geometry>
 
-    Fails (road 2 starts 5 mm further on)::
+    Fails (road 2 starts 5 cm further on; 5 mm would be a warning)::
 
-        <road id="2" length="100"> ... <geometry s="0" x="100.005" y="0" hdg="0" length="100"><line/></geometry>
+        <road id="2" length="100"> ... <geometry s="0" x="100.05" y="0" hdg="0" length="100"><line/></geometry>
     """
-    tol = ctx.tolerances.position
+    tol = ctx.tolerances
     for road, end, neighbour in _joints(ctx):
         if neighbour.connection is not None or _in_junction(ctx, road) or _in_junction(ctx, neighbour.road):
             continue
@@ -122,11 +125,13 @@ def link_gap(ctx: Context):
         if mine is None or theirs is None:
             continue
         gap = math.hypot(mine.x - theirs.x, mine.y - theirs.y)
-        if gap > tol:
+        severity = tol.grade(gap)
+        if severity is not None:
             yield link_gap.finding(
                 f"gap of {gap:.4g} m between {_describe(road, end, neighbour)}: their lane-0 lines (reference line "
                 f"plus laneOffset) are at ({mine.x:.3f}, {mine.y:.3f}) and ({theirs.x:.3f}, {theirs.y:.3f}); move "
-                f"one road's geometry (or fix the laneOffset) so they meet",
+                f"one road's geometry (or fix the laneOffset) so they meet{warning_note(severity, tol)}",
+                severity=severity,
                 **_where(road, end, mine, _joint_line(road, end, neighbour)),
             )
 
@@ -135,9 +140,10 @@ def link_gap(ctx: Context):
 def link_kink(ctx: Context):
     """Two linked roads meet at an angle: the heading changes abruptly at the contact (a kink, with or without a gap).
 
-    Compared on the lane-0 lines (reference line plus laneOffset) at every road link and every junction connection,
-    with the ``heading`` tolerance. A start-to-start or end-to-end link joins roads running in opposite directions:
-    the heading leaving one road must be the opposite of the heading leaving the other.
+    Compared on the lane-0 lines (reference line plus laneOffset) at every road link and every junction connection.
+    A kink over ``kink`` (0.01 rad, 0.57 deg: the first road's course leaves the second by the 1 cm ``gap`` within a
+    metre) is an error, one over ``heading`` (1 mrad) a warning. A start-to-start or end-to-end link joins roads
+    running in opposite directions: the heading leaving one road must be the opposite of the heading leaving the other.
 
     Passes (road 2 continues road 1 straight on)::
 
@@ -148,17 +154,20 @@ def link_kink(ctx: Context):
 
         <road id="2"> ... <geometry s="0" x="100" y="0" hdg="0.1" length="100"><line/></geometry>
     """
-    tol = ctx.tolerances.heading
+    tol = ctx.tolerances
     for road, end, neighbour in _joints(ctx):
         mine = road_end(ctx, road, end).border(0, "outer")
         theirs = road_end(ctx, neighbour.road, neighbour.contact).border(0, "outer")
         if mine is None or theirs is None:
             continue
         kink = angle_between(mine.outward, theirs.outward + math.pi)
-        if kink > tol:
+        severity = tol.grade(kink, "heading")
+        if severity is not None:
             yield link_kink.finding(
                 f"heading changes by {math.degrees(kink):.3g} deg ({kink:.3g} rad) between "
-                f"{_describe(road, end, neighbour)}: make the headings at the contact points agree",
+                f"{_describe(road, end, neighbour)}: make the headings at the contact points agree"
+                f"{warning_note(severity, tol, 'heading')}",
+                severity=severity,
                 **_where(road, end, mine, _joint_line(road, end, neighbour)),
             )
 
@@ -215,9 +224,9 @@ def lane_border_gap(ctx: Context):
 
     For every lane link across a joint (lane ``<predecessor>``/``<successor>`` at a road link, ``<laneLink>`` of a
     junction connection), the inner and outer border of one lane at its road's end must coincide with the borders of
-    the other lane at its contact point (in either order), within the ``position`` tolerance. This catches gaps and
-    overlaps between linked lanes (ASAM's ``lane.smoothness.contact_point_no_horizontal_gaps``, which only sees gaps
-    over 1 cm), crossed lane links and lanes linked to a lane of another width.
+    the other lane at its contact point (in either order). This catches gaps and overlaps between linked lanes (ASAM's
+    ``lane.smoothness.contact_point_no_horizontal_gaps``), crossed lane links and lanes linked to a lane of another
+    width. Borders over ``gap`` (1 cm, ASAM's threshold) apart are an error, over ``position`` (1 mm) a warning.
 
     Passes (lane -1 of both roads is 3.5 m wide and the roads meet)::
 
@@ -228,7 +237,7 @@ def lane_border_gap(ctx: Context):
 
         <road id="2"> ... <lane id="-1"><link><predecessor id="-1"/></link><width a="3.0" .../></lane>
     """
-    tol = ctx.tolerances.position
+    tol = ctx.tolerances
     done: set[frozenset] = set()
     for road, end, neighbour in _joints(ctx, once=False):
         mine, theirs = road_end(ctx, road, end), road_end(ctx, neighbour.road, neighbour.contact)
@@ -238,13 +247,15 @@ def lane_border_gap(ctx: Context):
                 continue
             done.add(key)
             found = _border_gap(mine, lane, theirs, other)
-            if found is None or found[0] <= tol:
+            severity = None if found is None else tol.grade(found[0])
+            if severity is None:
                 continue
-            gap, point = found
+            gap, point = found  # type: ignore[misc]
             yield lane_border_gap.finding(
                 f"lane {lane} of road {road.id} and lane {other} of road {neighbour.road.id} are linked at "
                 f"{_describe(road, end, neighbour)} but their borders are {gap:.4g} m apart: fix the link, the "
-                f"widths or the geometry so the linked lanes meet",
+                f"widths or the geometry so the linked lanes meet{warning_note(severity, tol)}",
+                severity=severity,
                 **_where(road, end, point, line or _joint_line(road, end, neighbour), lane),
             )
 
@@ -308,8 +319,9 @@ def link_step(ctx: Context):
     lane-0 lines (road links outside junctions) and every pair of linked lanes must meet in 3D, not only in plan view
     (ASAM OpenDRIVE Annex D.1.4, "vertical gaps": the z of the touching points must match). ``z`` is evaluated exactly:
     the elevation profile, the superelevation that tilts the lateral axis (a roll mismatch shows as a step at the lane
-    edges) and each lane's ``<height>``. Compared with the ``position`` tolerance; one finding per contact, at its
-    largest step, counting the lane pairs that step. Horizontal gaps are ``link-gap`` and ``lane-border-gap``.
+    edges) and each lane's ``<height>``. A step over ``gap`` (1 cm) is an error, over ``position`` (1 mm) a warning;
+    one finding per contact, at its largest step, counting the lane pairs that step. Horizontal gaps are ``link-gap``
+    and ``lane-border-gap``.
 
     Passes (both roads at 0 m where they meet)::
 
@@ -320,7 +332,9 @@ def link_step(ctx: Context):
 
         <road id="1" length="100"> ... <elevation s="0" a="5.0" b="0" c="0" d="0"/>
     """
-    for step in _steps(ctx, ctx.tolerances.position):
+    tol = ctx.tolerances
+    for step in _steps(ctx, tol.position):
+        severity = tol.grade(step.size)
         mine, theirs = step.points  # type: ignore[misc]
         what = (
             "their lane-0 lines"
@@ -332,7 +346,8 @@ def link_step(ctx: Context):
         yield link_step.finding(
             f"the road surface steps by {step.size:.4g} m in height between {joint}: {what} meet at "
             f"({mine.x:.3f}, {mine.y:.3f}) at z={mine.z:.3f} and z={theirs.z:.3f}{lanes}; make the elevation, "
-            f"superelevation and lane heights continue across the contact",
+            f"superelevation and lane heights continue across the contact{warning_note(severity, tol)}",
+            severity=severity,
             **_where(step.road, step.end, mine, step.line, step.lane),
         )
 
@@ -358,12 +373,13 @@ def lane_border_discontinuous(ctx: Context):
 
     At the start ``s`` of each lane section, every lane linked to a lane of the previous section (by the previous
     lane's ``<successor>`` or its own ``<predecessor>``) must have the same inner and outer border ``t`` as that lane
-    has at the end of its section, within the ``position`` tolerance. A lane that appears at full width beside a
+    has at the end of its section. A lane that appears at full width beside a
     lane it is linked to, or a width record that does not continue the previous section's width, is reported.
 
     The lanes must also meet in height: the z of each edge (elevation, superelevation unless the lane is ``level``,
-    and the lane's ``<height>``) must not step at the boundary (ASAM OpenDRIVE Annex D.1.4), within the same tolerance.
-    Where the road's own elevation or superelevation steps, ``profile-step`` reports it instead.
+    and the lane's ``<height>``) must not step at the boundary (ASAM OpenDRIVE Annex D.1.4). Where the road's own
+    elevation or superelevation steps, ``profile-step`` reports it instead. A jump or step over ``gap`` (1 cm) is an
+    error, over ``position`` (1 mm) a warning.
 
     A lane split abruptly into lanes side by side, or lanes merged abruptly into one, is linked to each of them
     (Annex F ``road.lane.link.multiple_connections``); the lane and the band they cover together must meet. Where a
@@ -398,9 +414,7 @@ def lane_border_discontinuous(ctx: Context):
             if not pairs:
                 continue
             if surface_steps is None:  # the road's own elevation or superelevation steps: profile-step says so
-                surface_steps = {
-                    r.s for name, _, r, _, _ in profile_steps(road, ctx.tolerances) if name != "laneOffset"
-                }
+                surface_steps = {step[2].s for step in profile_steps(road, ctx.tolerances) if step[0] != "laneOffset"}
             old, new = section_lines(ctx, road, i - 1), section_lines(ctx, road, i)
             inner_of = {lane.id: inner for side in geometry.side_lanes(i - 1) for inner, lane in _inner_pairs(side)}
             inner_new = {lane.id: inner for side in geometry.side_lanes(i) for inner, lane in _inner_pairs(side)}
@@ -417,7 +431,8 @@ def lane_border_discontinuous(ctx: Context):
 
 def _boundary_finding(ctx, road, geometry, i, group, line, lines, inners, pairs, surface_steps):
     """The finding (if any) for one group of linked lanes at the start of lane section ``i``."""
-    tol = ctx.tolerances.position
+    tolerances = ctx.tolerances
+    tol = tolerances.position
     before, after = road.lane_sections[i - 1], road.lane_sections[i]
     (a_in, a, b_in, b), (old, new), (inner_of, inner_new) = group, lines, inners
     t_before = (float(old.t[inner_of[a_in]][-1]), float(old.t[a][-1]))
@@ -426,7 +441,8 @@ def _boundary_finding(ctx, road, geometry, i, group, line, lines, inners, pairs,
     z_before = _group_heights(geometry, old, i - 1, a_in, a, inner_of, -1)
     z_after = _group_heights(geometry, new, i, b_in, b, inner_new, 0)
     step = max(abs(p - q) for p, q in zip(z_before, z_after)) if after.s not in surface_steps else 0.0
-    if not (jump > tol or step > tol):
+    severity = tolerances.grade(max(jump, step))
+    if severity is None:
         return
     what = []
     if jump > tol:
@@ -445,7 +461,9 @@ def _boundary_finding(ctx, road, geometry, i, group, line, lines, inners, pairs,
     point = new.borders[b]
     yield lane_border_discontinuous.finding(
         f"road {road.id}: {_lanes(a_in, a)} of the lane section at s={before.s:g} continue"
-        f"{'s' if a_in == a else ''} as {_lanes(b_in, b)} at s={after.s:g}, but {' and '.join(what)}; {advice}",
+        f"{'s' if a_in == a else ''} as {_lanes(b_in, b)} at s={after.s:g}, but {' and '.join(what)}; {advice}"
+        f"{warning_note(severity, tolerances)}",
+        severity=severity,
         uid=uid,
         road=road.id,
         lane=b,

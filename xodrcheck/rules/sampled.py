@@ -14,6 +14,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from xodrcheck.config import Tolerances
+from xodrcheck.findings import Severity
 from xodrcheck.lanes import LanePoints, RoadGeometry
 from xodrcheck.model import ContactPoint, Road
 from xodrcheck.rules.context import Context
@@ -210,6 +211,20 @@ def _end_point(points: LanePoints, k: int, end: ContactPoint) -> EndPoint | None
     if not (math.isfinite(x) and math.isfinite(y) and math.isfinite(hdg)):
         return None
     return EndPoint(x, y, z, hdg if end is ContactPoint.END else hdg + math.pi)
+
+
+def warning_note(severity: Severity, tolerances: Tolerances, kind: str = "position") -> str:
+    """What a message adds when :meth:`Tolerances.grade` made it a warning: the error threshold it stays under."""
+    if severity is not Severity.WARNING:
+        return ""
+    if kind == "position":
+        return (
+            f" (a warning: over the {tolerances.position:g} m position tolerance, within the {tolerances.gap:g} m gap)"
+        )
+    return (
+        f" (a warning: over the {tolerances.heading:g} rad heading tolerance, within the {tolerances.kink:g} rad "
+        f"({math.degrees(tolerances.kink):.2g} deg) kink)"
+    )
 
 
 def angle_between(a: float, b: float) -> float:

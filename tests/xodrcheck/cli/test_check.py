@@ -187,3 +187,69 @@ def test_damaged_numbers_give_findings_not_numpy_warnings(tmp_path):
     assert done.returncode == 1
     assert "G010" in done.stdout
     assert "Warning" not in done.stderr and "Traceback" not in done.stderr
+
+
+INFOS = fixture("redundant-record", "fail.xodr")  # infos only (G901)
+
+
+def test_text_and_github_hide_infos_by_default_with_one_line_per_code(capsys):
+    """Issue 18: the infos drowned the errors (463 ::notice lines for Town01). Text shows warnings and up and says in
+    one line per code what it left out; github emits no notice; machine formats keep everything."""
+    code, out, _ = run(capsys, INFOS)
+    hidden = [line for line in out.splitlines() if line.startswith("(not shown)")]
+    assert code == 0 and hidden and len(hidden) == len(out.splitlines())
+    assert hidden[0].startswith("(not shown) G901 redundant-record: ") and "--min-severity info lists them" in hidden[0]
+    assert "::notice" not in run(capsys, INFOS, "--format", "github")[1]
+    shown_all = run(capsys, INFOS, "--min-severity", "info")[1]
+    assert "(not shown)" not in shown_all and " G901 info " in shown_all
+    assert json.loads(run(capsys, INFOS, "--format", "json")[1])["files"][0]["findings"]
+    assert "::notice" in run(capsys, INFOS, "--format", "github", "--min-severity", "info")[1]
+
+
+def test_min_severity_error_keeps_what_fails_and_the_exit_code(capsys):
+    code, out, _ = run(capsys, WARNING_ONLY, "--min-severity", "error")
+    assert code == 0 and out.startswith("(not shown) R015 lane-link-missing-lane: 1 warning finding(s)")
+    code, out, _ = run(capsys, WARNING_ONLY, "--min-severity", "error", "--strict")
+    assert code == 1 and " R015 warning " in out  # a finding that fails the check is always shown
+    doc = json.loads(run(capsys, BROKEN, "--format", "json", "--min-severity", "error")[1])
+    assert {f["code"] for f in doc["files"][0]["findings"]} == {"R010", "K001"}
+
+
+def test_min_severity_from_the_configuration_and_bad_values(capsys):
+    Path("xodrcheck.toml").write_text('min_severity = "info"\n', encoding="utf-8")
+    assert " G901 info " in run(capsys, INFOS)[1]
+    Path("xodrcheck.toml").write_text('min_severity = "loud"\n', encoding="utf-8")
+    code, _, err = run(capsys, INFOS)
+    assert code == 2 and "min_severity must be one of info, warning, error" in err
+    with pytest.raises(SystemExit):
+        main(["check", str(INFOS), "--min-severity", "loud"])
+
+
+@pytest.mark.parametrize(
+    ("flags", "expected"),
+    [
+        (["--select", "info"], {("G901", "info")}),
+        (["--select", "error"], set()),
+        (["--ignore", "info"], set()),
+        (["--select", "G9,info"], {("G901", "info")}),
+        (["--select", "K,info"], set()),
+    ],
+)
+def test_severities_are_selectors(capsys, flags, expected):
+    """Issue 18: `--select info` was an unknown selector. A severity filters findings; with codes, both must match."""
+    code, out, _ = run(capsys, INFOS, "--format", "json", *flags)
+    found = {(f["code"], f["severity"]) for f in json.loads(out)["files"][0]["findings"]}
+    assert code == 0 and found == expected
+
+
+def test_profile_strict_is_one_option_away(capsys, tmp_path):
+    """A 5 mm gap at a road link is a warning by default (under the 1 cm `gap`) and an error with --profile strict."""
+    path = tmp_path / "gap.xodr"
+    path.write_text(fixture("link-gap", "fail.xodr").read_text(encoding="utf-8").replace("100.05", "100.005"))
+    code, out, _ = run(capsys, path, "--select", "K101")
+    assert code == 0 and " K101 warning gap of 0.005 m" in out
+    code, out, _ = run(capsys, path, "--select", "K101", "--profile", "strict")
+    assert code == 1 and " K101 error gap of 0.005 m" in out
+    assert run(capsys, path, "--select", "K101", "--tolerance", "gap=0.001")[0] == 1
+    with pytest.raises(SystemExit):
+        main(["check", str(path), "--profile", "lax"])

@@ -78,3 +78,32 @@ def test_every_rule_documents_a_passing_and_a_failing_example(rule):
     doc = rule.doc
     assert rule.summary and len(rule.summary) <= 140 and rule.summary.endswith((".", "!", "?", ")")), rule.summary
     assert "Pass" in doc and "Fail" in doc, rule.code
+
+
+def test_tolerances_lists_every_tolerance_with_default_unit_rules_and_meaning(capsys):
+    import dataclasses
+
+    from xodrcheck.config import Tolerances
+
+    assert main(["rules", "--tolerances"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    names = [f.name for f in dataclasses.fields(Tolerances)]
+    assert [line.split()[0] for line in lines[1 : len(names) + 1]] == names
+    gap = next(line for line in lines if line.startswith("gap "))
+    assert gap.split()[1:4] == ["0.01", "0.001", "m"] and "K103" in gap and "1 cm" in gap
+    assert main(["rules", "--tolerances", "--format", "json"]) == 0
+    rows = json.loads(capsys.readouterr().out)
+    assert {r["name"]: r["default"] for r in rows} == {n: getattr(Tolerances, n) for n in names}
+
+
+@pytest.mark.parametrize("field", __import__("dataclasses").fields(__import__("xodrcheck.config").config.Tolerances))
+def test_every_tolerance_is_documented_with_a_unit_and_known_rules(field):
+    assert field.metadata["doc"] and field.metadata["unit"]
+    assert set(field.metadata["rules"]) <= set(load_rules())
+
+
+def test_a_rule_names_its_tolerances(capsys):
+    assert main(["rules", "K103"]) == 0
+    assert "tolerances (xodrcheck rules --tolerances): position = 0.001 m; gap = 0.01 m" in capsys.readouterr().out
+    assert main(["rules", "K103", "--format", "json"]) == 0
+    assert json.loads(capsys.readouterr().out)["tolerances"] == ["position = 0.001 m", "gap = 0.01 m"]
