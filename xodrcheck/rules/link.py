@@ -4,16 +4,17 @@ A *joint* is a pair of road ends that touch: a road link between two roads, or, 
 and a connection's connecting (or linked) road at the connection's contact point (:meth:`Context.neighbours`). Each
 joint is checked once.
 
-* The lane-0 line (the reference line shifted by the laneOffset, the line that separates left from right lanes) must
-  leave one road where it enters the other (``K101``) for a road link outside junctions. In a junction a connecting
-  road may carry its reference line anywhere (RoadRunner puts it on a lane border of the incoming road), so there
-  only the lanes are compared.
+* The reference line must leave one road where it enters the other (``K101``; ASAM ``road.geometry.contact_point``)
+  for a road link outside junctions. The laneOffset may change there, with the lanes renumbered (a lane next to lane 0
+  ends, as at a lane-section boundary): whether the lanes meet is ``K103``'s. In a junction a connecting road may
+  carry its reference line anywhere (RoadRunner puts it on a lane border of the incoming road), so there only the
+  lanes are compared.
 * At every joint, the lane-0 lines' headings must agree (``K102``): a start-to-start or end-to-end link means the
   roads run in opposite directions, so the headings pointing out of the two ends must be opposite.
 * Every pair of lanes linked across the joint (lane ``<link>`` records at a road link, ``<laneLink>`` records of a
   junction connection) must have coinciding borders: the two border points of one lane equal those of the other, in
   either order (``K103``).
-* The surfaces meet in height too (``K104``): the lane-0 lines (outside junctions) and the touching points of every
+* The surfaces meet in height too (``K104``): the reference lines (outside junctions) and the touching points of every
   pair of linked lanes have the same z (elevation, superelevation, lane height; ASAM OpenDRIVE Annex D.1.4).
 * Inside a road, lanes linked across a lane-section boundary keep their borders, in plan view and in height (``L101``).
 
@@ -43,6 +44,7 @@ from xodrcheck.rules.sampled import (
     SectionLines,
     angle_between,
     end_s,
+    reference_end,
     road_end,
     section_lines,
     usable,
@@ -101,11 +103,14 @@ def _in_junction(ctx: Context, road: Road) -> bool:
 
 @rule("K101", "link-gap", Category.LINK, Severity.ERROR)
 def link_gap(ctx: Context):
-    """Two roads linked outside a junction do not meet: their lane-0 lines are apart at the contact points.
+    """Two roads linked outside a junction do not meet: their reference lines are apart at the contact points.
 
-    The lane-0 line is the reference line shifted by the laneOffset; where road A links to road B, A's lane-0 line at
-    its end must be B's at the linked end. A gap over ``gap`` (1 cm, ASAM's checker's threshold) is an error, one over
-    ``position`` (1 mm) a warning. Junction connections are checked lane by lane (``lane-border-gap``).
+    Where road A links to road B, A's reference line at its end must be B's at the linked end (ASAM
+    ``road.geometry.contact_point``: "the road reference line of a new road shall always begin at the contactPoint
+    element of its successor or predecessor road"). A gap over ``gap`` (1 cm, ASAM's checker's threshold) is an error,
+    one over ``position`` (1 mm) a warning. The laneOffset may change at the link, the lanes renumbered (a lane next to
+    lane 0 ends there); the lanes themselves are compared by ``lane-border-gap``, which also checks junction
+    connections lane by lane.
 
     Passes (road 1 ends at x=100, road 2 starts there)::
 
@@ -120,17 +125,17 @@ def link_gap(ctx: Context):
     for road, end, neighbour in _joints(ctx):
         if neighbour.connection is not None or _in_junction(ctx, road) or _in_junction(ctx, neighbour.road):
             continue
-        mine = road_end(ctx, road, end).border(0, "outer")
-        theirs = road_end(ctx, neighbour.road, neighbour.contact).border(0, "outer")
+        mine = reference_end(ctx, road, end)
+        theirs = reference_end(ctx, neighbour.road, neighbour.contact)
         if mine is None or theirs is None:
             continue
         gap = math.hypot(mine.x - theirs.x, mine.y - theirs.y)
         severity = tol.grade(gap)
         if severity is not None:
             yield link_gap.finding(
-                f"gap of {gap:.4g} m between {_describe(road, end, neighbour)}: their lane-0 lines (reference line "
-                f"plus laneOffset) are at ({mine.x:.3f}, {mine.y:.3f}) and ({theirs.x:.3f}, {theirs.y:.3f}); move "
-                f"one road's geometry (or fix the laneOffset) so they meet{warning_note(severity, tol)}",
+                f"gap of {gap:.4g} m between {_describe(road, end, neighbour)}: their reference lines are at "
+                f"({mine.x:.3f}, {mine.y:.3f}) and ({theirs.x:.3f}, {theirs.y:.3f}); move one road's geometry so they "
+                f"meet{warning_note(severity, tol)}",
                 severity=severity,
                 **_where(road, end, mine, _joint_line(road, end, neighbour)),
             )
@@ -285,7 +290,7 @@ class _Step:
 
 
 def _steps(ctx: Context, tol: float) -> Iterator[_Step]:
-    """Per joint (pair of touching road ends), the height differences above ``tol`` between the lane-0 lines (road
+    """Per joint (pair of touching road ends), the height differences above ``tol`` between the reference lines (road
     links outside junctions) and between the touching points of every pair of linked lanes."""
     steps: dict[frozenset, _Step] = {}
     for road, end, neighbour in _joints(ctx, once=False):
@@ -294,8 +299,8 @@ def _steps(ctx: Context, tol: float) -> Iterator[_Step]:
         if step is None:
             step = steps[key] = _Step(road, end, neighbour)
             if neighbour.connection is None and not _in_junction(ctx, road) and not _in_junction(ctx, neighbour.road):
-                centre = road_end(ctx, road, end).border(0, "outer")
-                theirs = road_end(ctx, neighbour.road, neighbour.contact).border(0, "outer")
+                centre = reference_end(ctx, road, end)
+                theirs = reference_end(ctx, neighbour.road, neighbour.contact)
                 if centre is not None and theirs is not None:
                     line = _joint_line(road, end, neighbour)
                     step.add(abs(centre.z - theirs.z), (centre, theirs), None, line, tol)
@@ -316,7 +321,7 @@ def link_step(ctx: Context):
     """Two linked roads or lanes do not meet in height: the road surface steps up or down at the contact.
 
     Where two roads touch (a road link, or an incoming road and a connecting road of a junction connection), their
-    lane-0 lines (road links outside junctions) and every pair of linked lanes must meet in 3D, not only in plan view
+    reference lines (road links outside junctions) and every pair of linked lanes must meet in 3D, not only in plan view
     (ASAM OpenDRIVE Annex D.1.4, "vertical gaps": the z of the touching points must match). ``z`` is evaluated exactly:
     the elevation profile, the superelevation that tilts the lateral axis (a roll mismatch shows as a step at the lane
     edges) and each lane's ``<height>``. A step over ``gap`` (1 cm) is an error, over ``position`` (1 mm) a warning;
@@ -337,7 +342,7 @@ def link_step(ctx: Context):
         severity = tol.grade(step.size)
         mine, theirs = step.points  # type: ignore[misc]
         what = (
-            "their lane-0 lines"
+            "their reference lines"
             if step.lane is None
             else f"lane {step.lane} of road {step.road.id} and lane {step.other} of road {step.neighbour.road.id}"
         )

@@ -204,6 +204,25 @@ def road_end(ctx: Context, road: Road, end: ContactPoint) -> RoadEnd:
     return found
 
 
+_REFERENCE: weakref.WeakKeyDictionary[Context, dict[tuple[str, ContactPoint], EndPoint | None]] = (
+    weakref.WeakKeyDictionary()
+)
+
+
+def reference_end(ctx: Context, road: Road, end: ContactPoint) -> EndPoint | None:
+    """The reference line of a usable road at its start or end (z: the elevation there), cached for the file;
+    ``None`` where it does not evaluate to finite numbers."""
+    cache = _REFERENCE.setdefault(ctx, {})
+    key = (road.id, end)
+    if key not in cache:
+        geometry = ctx.geometry(road.id)
+        s = np.array([end_s(road, end)])
+        pose = geometry.reference(s)
+        points = LanePoints(pose.x, pose.y, geometry.elevation(s), pose.hdg, pose.curvature, np.ones(1))
+        cache[key] = _end_point(points, 0, end)
+    return cache[key]
+
+
 def _end_point(points: LanePoints, k: int, end: ContactPoint) -> EndPoint | None:
     """Point ``k`` of a lane line as an :class:`EndPoint` at ``end`` (``None`` unless finite; z may be NaN only
     where x, y are not)."""

@@ -15,3 +15,11 @@ def test_gap_of_five_centimetres():
     assert f.line == line_of(path, '<successor elementType="road" elementId="2"')
     assert "gap of 0.05 m" in f.message
     assert f.x == pytest.approx(100.0) and f.y == pytest.approx(0.0)
+
+
+def test_lanes_renumbered_at_the_link_are_no_gap():
+    """The reference lines meet; road 1's lane 1 ends there and the laneOffset moves by its width (CARLA's Town03 roads
+    28/29): the lane-0 lines are 2 m apart but no lane is (K101 compared lane-0 lines and reported a 2 m gap)."""
+    path = fixture(RULE, "pass_lane_offset.xodr")
+    assert findings(path, RULE) == []
+    assert findings(path, "lane-border-gap") == []
