@@ -208,9 +208,9 @@ def test_text_and_github_hide_infos_by_default_with_one_line_per_code(capsys):
 
 def test_min_severity_error_keeps_what_fails_and_the_exit_code(capsys):
     code, out, _ = run(capsys, WARNING_ONLY, "--min-severity", "error")
-    assert code == 0 and out.startswith("(not shown) R015 lane-link-missing-lane: 1 warning finding(s)")
+    assert code == 0 and out.startswith("(not shown) G012 short-lane-section: 1 warning finding(s)")
     code, out, _ = run(capsys, WARNING_ONLY, "--min-severity", "error", "--strict")
-    assert code == 1 and " R015 warning " in out  # a finding that fails the check is always shown
+    assert code == 1 and " G012 warning " in out  # a finding that fails the check is always shown
     doc = json.loads(run(capsys, BROKEN, "--format", "json", "--min-severity", "error")[1])
     assert {f["code"] for f in doc["files"][0]["findings"]} == {"R010", "K001"}
 
