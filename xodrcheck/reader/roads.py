@@ -32,6 +32,7 @@ from xodrcheck.reader.construct import (
 )
 from xodrcheck.reader.context import Context, cubics, describe
 from xodrcheck.reader.lanes import build_layers
+from xodrcheck.rules import road_uids as RU
 from xodrcheck.rules import xml as R
 from xodrcheck.rules.lane_uids import SECTION_REQ as LANE_SECTION_REQUIRED
 
@@ -110,6 +111,7 @@ def _geometry(ctx: Context, el: etree._Element) -> Geometry | None:
                     f"{describe(el)} has both <{kind.tag}> and <{tag}> (line {child.sourceline}); a geometry has "
                     f"exactly one shape, so it is skipped",
                     el,
+                    uid=RU.GEOMETRY_ONE_ELEMENT,
                 )
                 return None
             kind = child
@@ -125,6 +127,7 @@ def _geometry(ctx: Context, el: etree._Element) -> Geometry | None:
             f"{describe(el)} {why} (expected one of line, arc, spiral, poly3, paramPoly3); {SKIP_GEOMETRY}, "
             "leaving a gap in the reference line",
             el,
+            uid=RU.GEOMETRY_ONE_ELEMENT,
         )
         return None
     if head is None:
@@ -142,9 +145,14 @@ def _plan_view(ctx: Context, el: etree._Element) -> tuple[Geometry, ...]:
             if geometry is not None:
                 out.append(geometry)
     if not seen:
-        ctx.report(R.MISSING_ELEMENT, f"{describe(el)} has no <geometry>; the road has no reference line", el)
+        ctx.report(
+            R.MISSING_ELEMENT,
+            f"{describe(el)} has no <geometry>; the road has no reference line",
+            el,
+            uid=RU.GEOMETRY_REFLINE_EXISTS,
+        )
     elif len(out) > 1:
-        ctx.check_order(out, "<geometry>", el)
+        ctx.check_order(out, "<geometry>", el, RU.GEOMETRY_ORDER)
     return tuple(out)
 
 
@@ -222,13 +230,18 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
             lanes.append(child)
         elif tag in _ONCE:
             if tag in first:
-                ctx.repeated(child, first[tag])
+                ctx.repeated(child, first[tag], RU.GEOMETRY_ONLY_ONE_REFLINE if tag == "planView" else None)
             else:
                 first[tag] = child
 
     pv = first.get("planView")
     if pv is None:
-        ctx.report(R.MISSING_ELEMENT, f"{describe(el)} has no <planView>; the road has no reference line", el)
+        ctx.report(
+            R.MISSING_ELEMENT,
+            f"{describe(el)} has no <planView>; the road has no reference line",
+            el,
+            uid=RU.GEOMETRY_REFLINE_EXISTS,
+        )
         plan_view: tuple[Geometry, ...] = ()
     else:
         plan_view = _plan_view(ctx, pv)
@@ -265,9 +278,9 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
 
     elevation = superelevation = ()
     if "elevationProfile" in first:
-        elevation = cubics(ctx, first["elevationProfile"], "elevation")
+        elevation = cubics(ctx, first["elevationProfile"], "elevation", RU.ELEVATION_ORDER)
     if "lateralProfile" in first:
-        superelevation = cubics(ctx, first["lateralProfile"], "superelevation")
+        superelevation = cubics(ctx, first["lateralProfile"], "superelevation", RU.SUPERELEVATION_ORDER)
 
     temporary = None
     if not lanes:

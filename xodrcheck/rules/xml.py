@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import lane_uids as U
+from xodrcheck.rules import road_uids as RU
 from xodrcheck.rules.registry import declare
 
 NOT_WELL_FORMED = declare(
@@ -166,7 +167,8 @@ MISSING_ELEMENT = declare(
 
     Annex F: a road without ``<lanes>`` breaks ``road.lane_section.lane_sect_req`` (every road has a lane section),
     ``<lanes>`` without ``<laneSection>`` ``road.lane.lane_sect_min_amount``, a lane section without ``<center>``
-    ``road.lane.center_elem_definition``.
+    ``road.lane.center_elem_definition``, a road without ``<planView>`` or a ``<planView>`` without ``<geometry>``
+    ``road.geometry.refline_exists`` (each road has a reference line).
 
     Passes::
 
@@ -176,7 +178,7 @@ MISSING_ELEMENT = declare(
 
         <laneSection s="0"><right><lane id="-1" type="driving">...</lane></right></laneSection>
     """,
-    uids=(U.LANE_SECT_MIN_AMOUNT, U.SECTION_REQ, U.CENTER_ELEM_DEFINITION),
+    uids=(U.LANE_SECT_MIN_AMOUNT, U.SECTION_REQ, U.CENTER_ELEM_DEFINITION, RU.GEOMETRY_REFLINE_EXISTS),
     every_version=True,
 )
 
@@ -188,7 +190,8 @@ REPEATED_ELEMENT = declare(
     """
     An element that may appear only once appears several times (a second ``<header>``, ``<planView>``, ``<lanes>``,
     road ``<predecessor>``, ``<center>``...). The first one is read, the others are ignored. A second ``<center>``
-    in a lane section breaks Annex F ``road.lane.center_elem_definition`` (one centre for each s).
+    in a lane section breaks Annex F ``road.lane.center_elem_definition`` (one centre for each s), a second
+    ``<planView>`` in a road ``road.geometry.only_one_refline`` (one reference line per road).
 
     Passes::
 
@@ -198,7 +201,7 @@ REPEATED_ELEMENT = declare(
 
         <road id="1" length="10" junction="-1"><planView>...</planView><planView>...</planView>...</road>
     """,
-    uids=(U.CENTER_ELEM_DEFINITION,),
+    uids=(U.CENTER_ELEM_DEFINITION, RU.GEOMETRY_ONLY_ONE_REFLINE),
     every_version=True,
 )
 
@@ -252,7 +255,8 @@ UNKNOWN_GEOMETRY = declare(
     """
     A ``<geometry>`` has no known shape: none of ``<line>``, ``<arc>``, ``<spiral>``, ``<poly3>``, ``<paramPoly3>``,
     an unknown one (``<clothoid>``, ``<bezier>``), or several. The geometry is skipped, leaving a gap in the
-    reference line.
+    reference line. Annex F ``road.geometry.one_geom_elem_per_spec``: a geometry holds exactly one element that
+    specifies its shape.
 
     Passes::
 
@@ -262,6 +266,8 @@ UNKNOWN_GEOMETRY = declare(
 
         <geometry s="0" x="0" y="0" hdg="0" length="10"><clothoid k0="0" k1="0.01"/></geometry>
     """,
+    uids=(RU.GEOMETRY_ONE_ELEMENT,),
+    every_version=True,
 )
 
 UNKNOWN_LANE_TYPE = declare(
@@ -292,9 +298,10 @@ OUT_OF_ORDER = declare(
     Records that the standard orders by ``s`` come in descending order. These are geometries, elevation,
     superelevation, laneOffset and lane-section starts along the road, or width, border, height, roadMark and speed
     ``sOffset`` values inside a lane. Readers disagree about which record applies where. The records are kept in file
-    order. Annex F ``elem_asc_order`` of ``road.lane.width``, ``.border``, ``.height``, ``.road_mark``, ``.speed``,
-    ``road.lanes.lane_offset`` and ``road.lane_section`` (``<access>``, ``<material>`` and ``<rule>``:
-    ``lane-records-out-of-order``).
+    order. Annex F ``elem_asc_order`` of ``road.geometry``, ``road.elevation``, ``road.superelevation``,
+    ``road.lane.width``, ``.border``, ``.height``, ``.road_mark``, ``.speed``, ``road.lanes.lane_offset`` and
+    ``road.lane_section`` (``<access>``, ``<material>`` and ``<rule>``: ``lane-records-out-of-order``; road
+    ``<type>``: ``road-type-out-of-order``; ``<shape>``: ``shape-out-of-order``).
 
     Passes::
 
@@ -312,6 +319,9 @@ OUT_OF_ORDER = declare(
         U.HEIGHT_ORDER,
         U.LANE_OFFSET_ORDER,
         U.SECTION_ORDER,
+        RU.GEOMETRY_ORDER,
+        RU.ELEVATION_ORDER,
+        RU.SUPERELEVATION_ORDER,
     ),
     every_version=True,
 )
