@@ -411,8 +411,10 @@ class Connection:
     connecting_road: str | None = None  # default junctions
     linked_road: str | None = None  # direct junctions (1.7+)
     contact_point: ContactPoint | None = None
-    lane_links: tuple[JunctionLaneLink, ...] = ()
+    lane_links: tuple[JunctionLaneLink, ...] = ()  # between lanes of the permanent layer (every link before 1.9)
     line: int = 0
+    #: 1.9 links with an end on a temporary lane layer (``fromLayer`` or ``toLayer="temporary"``)
+    temporary_lane_links: tuple[JunctionLaneLink, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)

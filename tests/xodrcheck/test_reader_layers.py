@@ -116,10 +116,12 @@ def test_junction_lane_link_layers():
         '<laneLink from="-1" to="-1" fromLayer="temporary"/><laneLink from="-2" to="-2" toLayer="temporary"/>'
         '<laneLink from="-3" to="-3"/></connection></junction>'
     )
-    (a, b, c) = clean(xodr(road(), junction, version=V19)).junctions[0].connections[0].lane_links
-    assert (a.from_layer, a.to_layer) == (m.LaneLayer.TEMPORARY, m.LaneLayer.PERMANENT)
-    assert (b.from_layer, b.to_layer) == (m.LaneLayer.PERMANENT, m.LaneLayer.TEMPORARY)
-    assert (c.from_layer, c.to_layer) == (m.LaneLayer.PERMANENT, m.LaneLayer.PERMANENT)
+    (connection,) = clean(xodr(road(), junction, version=V19)).junctions[0].connections
+    (a, b) = connection.temporary_lane_links  # the permanent-layer rules see only lane_links
+    assert (a.from_lane, a.from_layer, a.to_layer) == (-1, m.LaneLayer.TEMPORARY, m.LaneLayer.PERMANENT)
+    assert (b.from_lane, b.from_layer, b.to_layer) == (-2, m.LaneLayer.PERMANENT, m.LaneLayer.TEMPORARY)
+    (c,) = connection.lane_links
+    assert (c.from_lane, c.from_layer, c.to_layer) == (-3, m.LaneLayer.PERMANENT, m.LaneLayer.PERMANENT)
 
 
 def test_an_invalid_section_length_is_read_as_absent():

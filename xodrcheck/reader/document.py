@@ -66,8 +66,10 @@ def build_header(ctx: Context, el: etree._Element) -> Header:
     )
 
 
-def _lane_links(ctx: Context, el: etree._Element) -> tuple[JunctionLaneLink, ...]:
+def _lane_links(ctx: Context, el: etree._Element) -> tuple[tuple[JunctionLaneLink, ...], tuple[JunctionLaneLink, ...]]:
+    """The connection's lane links between permanent-layer lanes, then those with an end on a temporary layer."""
     out = []
+    temporary = []
     with_layers = layered(ctx)
     for ll in el.iterchildren("laneLink"):
         try:
@@ -80,8 +82,11 @@ def _lane_links(ctx: Context, el: etree._Element) -> tuple[JunctionLaneLink, ...
             link = make_lane_link(
                 link.from_lane, link.to_lane, link.line, _layer(ctx, ll, "fromLayer"), _layer(ctx, ll, "toLayer")
             )
+            if LaneLayer.TEMPORARY in (link.from_layer, link.to_layer):
+                temporary.append(link)
+                continue
         out.append(link)
-    return tuple(out)
+    return tuple(out), tuple(temporary)
 
 
 def _layer(ctx: Context, el: etree._Element, name: str) -> LaneLayer:
@@ -109,6 +114,7 @@ def build_junction(ctx: Context, el: etree._Element) -> Junction | None:
             contact = None
             if get("contactPoint") is not None:
                 contact = ctx.choice(c, "contactPoint", CONTACT_POINTS, "read as absent")
+            links, temporary_links = _lane_links(ctx, c)
             connections.append(
                 make_connection(
                     connection_id,
@@ -116,8 +122,9 @@ def build_junction(ctx: Context, el: etree._Element) -> Junction | None:
                     get("connectingRoad"),
                     get("linkedRoad"),
                     contact,
-                    _lane_links(ctx, c),
+                    links,
                     c.sourceline,
+                    temporary_links,
                 )
             )
         return Junction(junction_id, el.get("name"), junction_type, tuple(connections), el.sourceline)
