@@ -117,13 +117,15 @@ P.request = function (mode) {
   });
 };
 
-/** Lanes matching a finding's place: the lane of its section (by section start or s), or the whole road. */
+/** Lanes matching a finding's place: the lane of its section (by section start or s), or the whole road; lane 0 is
+ * its line (drawn as the outline of a lane without width). */
 P.lanesOf = function (road, sectionS, laneId, s) {
   var out = [];
   this.sections.forEach(function (sec) {
     if (sec.roadId !== road) return;
     if (sectionS !== null && Math.abs(sec.s0 - sectionS) > 1e-6) return;
     if (sectionS === null && s !== null && !(s >= sec.s[0] - 1e-6 && s <= sec.s[sec.n - 1] + 1e-6)) return;
+    if (laneId === 0) { out.push({ sec: sec, id: 0, type: "centre line", inner: 1, outer: 1 }); return; }  // a line
     sec.lanes.forEach(function (lane) { if (laneId === null || lane.id === laneId) out.push(lane); });
   });
   return out;
