@@ -45,18 +45,20 @@ def _cubic_minimum(coef: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return values[k, columns], u[k, columns]
 
 
-def _lane_minima(ctx: Context, road: Road, index: int):
-    """(lane, minimum signed width, s where reached) for every lane with records in a section, from the exact
-    per-piece cubics (all lanes and pieces of the section in one vectorised pass)."""
+def _lane_pieces(ctx: Context, road: Road, index: int):
+    """Every lane with records in a section and its signed width as exact cubics: ``(lanes, a, b, coefficients)``
+    with the pieces ``[a, b]`` between consecutive knots and ``coefficients[:, :, k]`` the cubic in ``u`` in [0, 1] of
+    each lane's width on piece ``k`` (all lanes and pieces of the section in one vectorised pass); ``None`` when the
+    section has no piece or no such lane."""
     geometry = ctx.geometry(road.id)
     cuts = knots(geometry, index)
     if len(cuts) < 2:
-        return
+        return None
     a, b = cuts[:-1], cuts[1:]
     keep = b - a > 1e-9
     a, b = a[keep], b[keep]
     if not len(a):
-        return
+        return None
     s = (a[:, None] + (b - a)[:, None] * _NODES[None, :]).ravel()
     borders = geometry.borders(index, s)
     lanes, widths = [], []
@@ -69,11 +71,21 @@ def _lane_minima(ctx: Context, road: Road, index: int):
                 widths.append((sign * (outer - inner)).reshape(-1, 4))
             inner = outer
     if not lanes:
-        return
+        return None
     raw = np.concatenate(widths)
-    stacked = np.where(np.isfinite(raw), raw, 0.0)
     with np.errstate(over="ignore", invalid="ignore"):  # damaged widths near the float limit
-        coefficients = _FIT @ stacked.T
+        coefficients = _FIT @ np.where(np.isfinite(raw), raw, 0.0).T
+    return lanes, a, b, raw, coefficients
+
+
+def _lane_minima(ctx: Context, road: Road, index: int):
+    """(lane, minimum signed width, s where reached) for every lane with records in a section, from the exact
+    per-piece cubics."""
+    pieces = _lane_pieces(ctx, road, index)
+    if pieces is None:
+        return
+    lanes, a, b, raw, coefficients = pieces
+    with np.errstate(over="ignore", invalid="ignore"):
         value, u = _cubic_minimum(coefficients)
     # Where the cubic fit overflows (widths near the float limit), fall back to the smallest width at the nodes.
     nodes = np.where(np.isnan(raw), np.inf, raw)
@@ -84,6 +96,25 @@ def _lane_minima(ctx: Context, road: Road, index: int):
     for row, lane in enumerate(lanes):
         k = int(np.argmin(value[row]))
         yield lane, float(value[row, k]), float(a[k] + u[row, k] * (b[k] - a[k]))
+
+
+def lane_width_bounds(ctx: Context, road: Road, index: int):
+    """``(lanes, a, b, low, high)``: the smallest and largest signed width of every lane with records on every piece
+    ``[a, b]`` of a section (exact per piece; ``None`` when there is nothing to bound)."""
+    pieces = _lane_pieces(ctx, road, index)
+    if pieces is None:
+        return None
+    lanes, a, b, raw, coefficients = pieces
+    with np.errstate(over="ignore", invalid="ignore"):
+        low = _cubic_minimum(coefficients)[0]
+        high = -_cubic_minimum(-coefficients)[0]
+    nodes = np.where(np.isfinite(raw), raw, np.nan)
+    lost = ~(np.isfinite(low) & np.isfinite(high))
+    with np.errstate(invalid="ignore"):
+        low = np.where(lost, np.nanmin(np.where(np.isnan(nodes), np.inf, nodes), axis=1), low)
+        high = np.where(lost, np.nanmax(np.where(np.isnan(nodes), -np.inf, nodes), axis=1), high)
+    shape = (len(lanes), -1)
+    return lanes, a, b, low.reshape(shape), high.reshape(shape)
 
 
 _MINIMA: weakref.WeakKeyDictionary[Context, list] = weakref.WeakKeyDictionary()
