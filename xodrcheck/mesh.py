@@ -329,15 +329,23 @@ def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound
     samples = roadpass.sample_sections(entries, chord, max_step, Tolerances().max_samples_per_section)
     if samples is None or not all(np.isfinite(s).all() for s in samples):
         return None
-    borders = roadpass.border_lines(entries, samples)
+    keep = [k for k, s in enumerate(samples) if len(s) > 1]  # fewer than two knots: nothing to mesh
+    borders = roadpass.border_lines([entries[k] for k in keep], [samples[k] for k in keep])
     if borders is None:
         return None
     xyz = np.column_stack([borders.x, borders.y, borders.z])
     ok = (np.abs(xyz) <= MAX_COORDINATE).all(axis=1)  # also False for NaN
-    fine = np.logical_and.reduceat(ok, borders.base) if len(ok) else np.zeros(0, dtype=bool)
+    usable = np.zeros(len(todo), dtype=bool)
+    if len(ok):
+        usable[keep] = np.logical_and.reduceat(ok, borders.base)
+    ids: list[list[int]] = [[] for _ in todo]
+    base = np.zeros(len(todo), dtype=np.int64)
+    for kept, k in enumerate(keep):
+        ids[k], base[k] = borders.ids[kept], borders.base[kept]
     if bound is not None:
-        bound.add(sum(2 * len(s) * len(t.pairs) for t, s, usable in zip(todo, samples, fine) if usable))
-    return _strips(todo, borders.ids, xyz, borders.base, samples, borders.offsets, fine)
+        bound.add(sum(2 * len(s) * len(t.pairs) for t, s, fine in zip(todo, samples, usable) if fine))
+    offsets = np.concatenate(([0], np.cumsum([len(s) for s in samples]))).astype(np.int64)
+    return _strips(todo, ids, xyz, base, samples, offsets, usable)
 
 
 def _strips(

@@ -29,7 +29,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.geometry import profile
+from xodrcheck.geometry import parampoly3, profile
 from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
 from xodrcheck.geometry.pose import Pose
 from xodrcheck.lanes import RoadGeometry
@@ -55,9 +55,9 @@ def _ranges(starts, counts) -> np.ndarray:
 
 
 def covered(rg: RoadGeometry, index: int) -> bool:
-    """Whether this pass evaluates the section exactly: no superelevation on its road (no roll anywhere), at least
-    two knots, and no lane id twice."""
-    if len(rg._roll.starts) or len(knots(rg, index)) < 2:
+    """Whether this pass evaluates the section exactly: no superelevation on its road (no roll anywhere) and no lane
+    id twice."""
+    if len(rg._roll.starts):
         return False
     left, right = rg.side_lanes(index)
     ids = [0, *(lane.id for lane in left.lanes), *(lane.id for lane in right.lanes)]
@@ -117,9 +117,17 @@ def _pose(entries: Sequence[Entry], s: np.ndarray, offsets: np.ndarray) -> Pose 
     if other.any():  # per section and element run, with exactly the per-section code's points
         cut = (step != 0) | ~inside
         edges = np.concatenate(([0], np.flatnonzero(cut) + 1, [n]))
+        curves: list[tuple[int, int]] = []  # paramPoly3 runs: evaluated together, each as its own call
         for lo, hi in zip(edges[:-1].tolist(), edges[1:].tolist()):
             if other[lo]:
-                pose.assign(slice(lo, hi), evaluate_element(elements[index[lo]], ds[lo:hi]))
+                if type(elements[index[lo]]) is ParamPoly3:
+                    curves.append((lo, hi))
+                else:
+                    pose.assign(slice(lo, hi), evaluate_element(elements[index[lo]], ds[lo:hi]))
+        if curves:
+            at = _ranges([lo for lo, _ in curves], [hi - lo for lo, hi in curves])
+            counts = np.array([hi - lo for lo, hi in curves], dtype=np.int64)
+            pose.assign(at, parampoly3.evaluate_runs([elements[index[lo]] for lo, _ in curves], ds[at], counts))
     return pose
 
 
@@ -363,16 +371,44 @@ def sample_sections(
     entries: Sequence[Entry], chord: float, max_step: float, budget: int | None
 ) -> list[np.ndarray] | None:
     """``sample_section(rg, k, chord, max_step, budget)`` of every entry (each :func:`covered`), computed together;
-    ``None`` when some samples are not finite or not sorted (see the module docstring)."""
+    ``None`` when some samples are not finite or not sorted (see the module docstring). A section with fewer than
+    two knots gets its knots, as ``sample_section`` gives them."""
     if not chord > 0 or not max_step > 0:
         raise ValueError(f"chord and max_step must be > 0, got {chord} and {max_step}")
+    if not entries:
+        return []
+    flat, cut_owner = _knots(entries)
+    cut_counts = np.bincount(cut_owner, minlength=len(entries))
+    short = cut_counts < 2
+    if not short.any():
+        return _sample(entries, flat, cut_owner, cut_counts, chord, max_step, budget)
+    out: list[np.ndarray] = np.split(flat, np.cumsum(cut_counts)[:-1])
+    keep = np.flatnonzero(~short)
+    renumber = np.cumsum(~short) - 1
+    inside = ~short[cut_owner]
+    found = _sample(
+        [entries[k] for k in keep], flat[inside], renumber[cut_owner[inside]], cut_counts[keep], chord, max_step, budget
+    )
+    if found is None:
+        return None
+    for k, s in zip(keep.tolist(), found):
+        out[k] = s
+    return out
+
+
+def _sample(
+    entries: Sequence[Entry],
+    flat: np.ndarray,
+    cut_owner: np.ndarray,
+    cut_counts: np.ndarray,
+    chord: float,
+    max_step: float,
+    budget: int | None,
+) -> list[np.ndarray] | None:
+    """:func:`sample_sections` of entries with at least two knots each (``flat``: their knots, entry by entry)."""
     m = len(entries)
     if m == 0:
         return []
-    flat, cut_owner = _knots(entries)
-    cut_counts = np.bincount(cut_owner, minlength=m)
-    if (cut_counts < 2).any():
-        raise ValueError("every section needs two knots (see covered())")
     last = np.cumsum(cut_counts) - 1
     is_left = np.ones(len(flat), dtype=bool)
     is_left[last] = False
@@ -449,6 +485,9 @@ class Borders:
 
 def border_lines(entries: Sequence[Entry], samples: Sequence[np.ndarray]) -> Borders | None:
     """The border lines of each entry at its samples (sorted and finite); ``None`` when not covered exactly."""
+    if not entries:
+        empty = np.zeros(0)
+        return Borders([], np.zeros(0, dtype=np.int64), np.zeros(1, dtype=np.int64), empty, empty, empty, empty)
     counts = np.array([len(s) for s in samples], dtype=np.int64)
     offsets = np.concatenate(([0], np.cumsum(counts)))
     s = np.concatenate(samples) if len(samples) else np.zeros(0)

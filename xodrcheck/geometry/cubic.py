@@ -174,3 +174,77 @@ def frame(curve: CubicCurve, p: np.ndarray):
         curvature = cross / (speed2 * speed)
         dcurvature = (dcross / (speed2 * speed) - 3.0 * cross * dspeed / (speed2 * speed2)) / speed
     return u0, v0, np.arctan2(v1, u1), curvature, dcurvature
+
+
+def parameters_at(curves: list[CubicCurve], sigma: np.ndarray, counts: np.ndarray) -> np.ndarray:
+    """``CubicCurve.parameter_at`` of many calls in one pass: call ``i`` asks ``curves[i]`` about the next ``counts[i]``
+    values of ``sigma``. The result is each call's own to the last bit: every point gets the same arithmetic, and each
+    call's Newton iterations stop when its own tests say so (a call alone stops when all its points are done, so the
+    number of steps a point gets depends on its call, and here too)."""
+    counts = np.asarray(counts, dtype=np.int64)
+    calls = len(curves)
+    owner = np.repeat(np.arange(calls), counts)
+    sizes = np.array([len(c.breaks) for c in curves], dtype=np.int64)
+    table_at = np.concatenate(([0], np.cumsum(sizes)))
+    breaks = np.concatenate([c.breaks for c in curves])
+    cumulative = np.concatenate([c.cumulative for c in curves])
+    inverse_span = np.concatenate([np.append(c.inverse_span, 0.0) for c in curves])  # padded to the table size
+    guess = np.concatenate([np.vstack([c.guess, np.zeros((1, 4))]) for c in curves])
+    # searchsorted(cumulative_i, sigma, side="right") of every point in its own call's table: merge the tables and
+    # the points, sorted by call, then value, tables first on ties; a point counts the table entries before it
+    n_tab = len(cumulative)
+    keys_call = np.concatenate([np.repeat(np.arange(calls), sizes), owner])
+    keys_value = np.concatenate([cumulative, sigma])
+    keys_kind = np.concatenate([np.zeros(n_tab, dtype=np.int8), np.ones(len(sigma), dtype=np.int8)])
+    order = np.lexsort((keys_kind, keys_value, keys_call))
+    before = np.cumsum(keys_kind[order] == 0)
+    found = np.empty(len(sigma), dtype=np.int64)
+    is_point = order >= n_tab
+    found[order[is_point] - n_tab] = before[is_point]
+    right = found - table_at[owner]
+    k = np.minimum(np.maximum(right - 1, 0), (sizes - 2)[owner])
+    at = table_at[owner] + k
+    a, b, c, d = guess[at].T
+    t = (sigma - cumulative[at]) * inverse_span[at]
+    p = a + t * (b + t * (c + t * d))
+    start = breaks[at]
+    width = breaks[at + 1] - start
+    base = cumulative[at]
+    u = np.array([c.u for c in curves])[owner]
+    v = np.array([c.v for c in curves])[owner]
+    u1, u2x, u3x = u[:, 1], 2.0 * u[:, 2], 3.0 * u[:, 3]
+    v1, v2x, v3x = v[:, 1], 2.0 * v[:, 2], 3.0 * v[:, 3]
+    u2, u3x6 = 2.0 * u[:, 2], 6.0 * u[:, 3]
+    v2, v3x6 = 2.0 * v[:, 2], 6.0 * v[:, 3]
+    live = np.arange(calls)  # calls still iterating
+    rows = np.arange(len(sigma))  # their points, grouped by call
+    for _ in range(_NEWTON_STEPS):
+        if not len(live):
+            break
+        first = np.concatenate(([0], np.cumsum(counts[live])[:-1]))
+        pr, st = p[rows], start[rows]
+        q = np.empty((len(rows), len(_NODES) + 1))
+        q[:, :-1] = st[:, None] + (pr - st)[:, None] * _UNIT_NODES
+        q[:, -1] = pr
+        du = u1[rows, None] + q * (u2x[rows, None] + q * u3x[rows, None])
+        dv = v1[rows, None] + q * (v2x[rows, None] + q * v3x[rows, None])
+        speeds = np.hypot(du, dv)
+        # The quadrature sums call by call: a matrix product's rounding depends on how many rows it is given.
+        integral = np.empty(len(rows))
+        for lo, hi in zip(first.tolist(), np.cumsum(counts[live]).tolist()):
+            integral[lo:hi] = speeds[lo:hi, :-1] @ _WEIGHTS
+        residual = base[rows] + 0.5 * (pr - st) * integral - sigma[rows]
+        speed = np.maximum(speeds[:, -1], _TINY)
+        step = residual / speed
+        p[rows] = pr - step
+        going = np.logical_or.reduceat(np.abs(residual) > _NEWTON_TOL, first)
+        with np.errstate(all="ignore"):
+            ddu = u2[rows] + q[:, -1] * u3x6[rows]
+            ddv = v2[rows] + q[:, -1] * v3x6[rows]
+            slope = (du[:, -1] * ddu + dv[:, -1] * ddv) / speed
+            predicted = _PREDICTION_MARGIN * 0.5 * np.abs(slope) * step * step
+            settled = (predicted <= _NEWTON_TOL) & (np.abs(step) <= _SMALL_STEP * width[rows])
+        going &= ~np.logical_and.reduceat(settled, first)
+        live = live[going]
+        rows = rows[np.repeat(going, np.diff(np.append(first, len(rows))))]
+    return p

@@ -86,3 +86,45 @@ def test_arc_length_parameter_is_not_taken_as_arc_length():
     with mp.workdps(DIGITS):
         x, y = place(g.x, g.y, g.hdg, *curve.point(mp.mpf(20)))
     assert math.hypot(naive.x[0] - x, naive.y[0] - y) > 0.1
+
+
+def _random_elements(seed: int, count: int) -> tuple[list[ParamPoly3], list[np.ndarray]]:
+    rng = np.random.default_rng(seed)
+    elements, runs = [], []
+    for i in range(count):
+        length = float(rng.uniform(0.5, 80.0))
+        normalized = bool(rng.integers(2))
+        p_max = 1.0 if normalized else length
+        g = ParamPoly3(
+            0.0,
+            float(rng.uniform(-100, 100)),
+            float(rng.uniform(-100, 100)),
+            float(rng.uniform(-4, 4)),
+            length,
+            float(rng.normal(0, 1)),
+            length / p_max,
+            float(rng.normal(0, 3 / p_max)),
+            float(rng.normal(0, 1 / p_max**2)),
+            float(rng.normal(0, 1)),
+            float(rng.normal(0, 0.1)),
+            float(rng.normal(0, 5 / p_max**2)),
+            float(rng.normal(0, 2 / p_max**3)),
+            NORM if normalized else ARC,
+        )
+        n = int(rng.integers(1, 200))
+        ds = np.linspace(0.0, length, n) if i % 4 == 0 else np.sort(rng.uniform(-1.0, length + 1.0, n))
+        for repeat in range(int(rng.integers(1, 3))):  # the same element twice, with different points
+            elements.append(g)
+            runs.append(ds if repeat == 0 else ds[::2])
+    return elements, runs
+
+
+@pytest.mark.parametrize("seed", [1, 2, 3])
+def test_many_calls_at_once_are_each_call_to_the_last_bit(seed):
+    elements, runs = _random_elements(seed, 150)
+    counts = np.array([len(r) for r in runs])
+    together = parampoly3.evaluate_runs(elements, np.concatenate(runs), counts)
+    alone = [parampoly3.evaluate(g, ds) for g, ds in zip(elements, runs)]
+    for name in ("x", "y", "hdg", "curvature", "dcurvature"):
+        expected = np.concatenate([getattr(pose, name) for pose in alone])
+        assert getattr(together, name).tobytes() == expected.tobytes(), name
