@@ -12,6 +12,7 @@ checked on its workers, which need ``xodrcheck`` installed and must see the path
 from __future__ import annotations
 
 import os
+import re
 import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -45,7 +46,7 @@ def check_one(path: str, config: Config | None = None) -> Outcome:
             return Outcome(path, report=check(path, config))
     except ReadError as exc:
         return Outcome(path, error=str(exc))
-    except Exception as exc:  # noqa: BLE001 - one file's crash must not lose the others' results
+    except Exception as exc:
         return Outcome(path, error=f"internal error on {path}: {type(exc).__name__}: {exc}")
 
 
@@ -101,6 +102,7 @@ def _bar(total: int):
 def _in_processes(paths: list[str], config: Config | None, jobs: int, tick: Callable[[int], Any]) -> list[Outcome]:
     from concurrent.futures import ProcessPoolExecutor, as_completed
 
+    _warm(paths)
     results: list[Outcome | None] = [None] * len(paths)
     pool = ProcessPoolExecutor(max_workers=jobs, initializer=_worker_init)
     finished = False
@@ -116,6 +118,36 @@ def _in_processes(paths: list[str], config: Config | None, jobs: int, tick: Call
                 process.terminate()
         pool.shutdown(wait=finished, cancel_futures=True)
     return [r for r in results if r is not None]
+
+
+_VERSION = re.compile(rb'revMajor\s*=\s*"(\d+)"\s+revMinor\s*=\s*"(\d+)"')
+
+
+def _warm(paths: Sequence[str]) -> None:
+    """Load in this process what every worker would load for itself (the geometry and overlap modules, the schema of
+    each declared version): forked workers share it instead of each building it again. Nothing here changes a
+    result; a file whose header cannot be read here is simply not warmed for."""
+    import xodrcheck.footprint
+    import xodrcheck.roadpass  # noqa: F401
+    from xodrcheck import schema, schema_fast
+
+    versions = set()
+    for path in paths:
+        try:
+            with open(path, "rb") as stream:
+                head = stream.read(4096)
+        except OSError:
+            continue
+        match = _VERSION.search(head)
+        if match:
+            versions.add((int(match.group(1)), int(match.group(2))))
+    for version in sorted(versions & set(schema.SCHEMA_FOLDERS)):
+        try:
+            schema.compiled(version)
+            if version in schema.XSD11:
+                schema_fast.derived(*schema.SCHEMA_FOLDERS[version])
+        except Exception:
+            continue
 
 
 def _worker_init() -> None:
