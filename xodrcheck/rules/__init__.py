@@ -16,7 +16,8 @@ prefix    category    codes
 ``L``     lane        ``L0xx`` lane topology (:mod:`.lane`, :mod:`.lane_attributes`); ``L1xx`` lane geometry
 ``G``     geometry    ``G0xx``-``G8xx`` plan view and profiles (:mod:`.geometry`, :mod:`.elements`), lane shapes
                       (:mod:`.lane_shape`),
-                      road types, shapes and country codes (:mod:`.road_attributes`);
+                      road types, shapes and country codes (:mod:`.road_attributes`), object outlines of curves
+                      (:mod:`.outline_curves`);
                       ``G9xx`` redundant records (:mod:`.records`)
 ``C``     curvature   ``C0xx`` (:mod:`.curvature`)
 ``J``     junction    ``J0xx`` junction topology (:mod:`.junction`); ``J1xx`` junction geometry
@@ -53,6 +54,7 @@ FAMILIES = (
     "geometry",
     "elements",
     "road_attributes",
+    "outline_curves",
     "lane_shape",
     "lane_zero_width",
     "records",

@@ -2,8 +2,8 @@
 :mod:`.lane_shape`).
 
 Plan view: consecutive elements must join in position (``G001``) and heading (``G002``), their ``s`` must run on
-without jumps (``G003``) up to the road's length (``G004``); a paramPoly3's declared length must be the curve's length
-over its parameter range (``G005``); elements must not be degenerate (``G006``, ``G007``). Lane sections must have a
+without jumps (``G003``) up to the road's length (``G004``); elements must not be degenerate (``G006``, ``G007``); what
+one element says about itself (a paramPoly3's length, ``G005``) is :mod:`.elements`'. Lane sections must have a
 length (``G012``). A section so long that the geometric rules' samples would exceed ``max_samples_per_section`` is
 sampled more coarsely, and says so (``G013``). The elevation, superelevation and laneOffset profiles must not jump
 where a record starts (``G014``).
@@ -19,10 +19,8 @@ import numpy as np
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Category, Severity
 from xodrcheck.geometry import profile
-from xodrcheck.geometry.cubic import CubicCurve
-from xodrcheck.geometry.parampoly3 import curve_of
 from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
-from xodrcheck.model import Cubic, Geometry, ParamPoly3, PRange, Road, Spiral
+from xodrcheck.model import Cubic, Geometry, Road, Spiral
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_uids import SECTION_VALID_LENGTH
@@ -65,7 +63,8 @@ def plan_view_gap(ctx: Context):
 
     The end point of each ``<geometry>`` (evaluated exactly) must be the next one's ``x``, ``y`` (Annex F
     ``road.geometry.refline_no_gaps``, "shall"). Graded: a gap over ``gap`` (1 cm, ASAM's checker's threshold) is an
-    error, one over ``position`` (1 mm) a warning; ``--profile strict`` makes errors of gaps over ``position``.
+    error, one over ``position`` (1 mm) a warning (naming no rule of the standard); ``--profile strict`` makes errors
+    of gaps over ``position``.
 
     Passes (a 10 m line along x, then the next element at x=10)::
 
@@ -89,6 +88,7 @@ def plan_view_gap(ctx: Context):
                     f"starts at ({b.x:.4f}, {b.y:.4f}), a gap of {gap:.4g} m; correct the x/y of the element at "
                     f"s={b.s:g} or the previous element's parameters{warning_note(severity, tol)}",
                     severity=severity,
+                    uid=None if severity is Severity.ERROR else NO_UID,
                     **_at(road, b),
                 )
 
@@ -99,7 +99,8 @@ def plan_view_kink(ctx: Context):
 
     The heading at the end of each ``<geometry>`` must be the next one's ``hdg`` (modulo 2 pi) (Annex F
     ``road.geometry.refline_no_kinks``, a "should": its errors deviate, see ``SEVERITY_DEVIATIONS``). Graded: a kink
-    over ``kink`` (0.01 rad, 0.57 deg) is an error, one over ``heading`` (1 mrad) a warning. A kink without a gap is
+    over ``kink`` (0.01 rad, 0.57 deg) is an error, one over ``heading`` (1 mrad) a warning (naming no rule of the
+    standard). A kink without a gap is
     invisible to position checks but makes every lane border jump.
 
     Passes::
@@ -124,16 +125,18 @@ def plan_view_kink(ctx: Context):
                     f"element starts with hdg={b.hdg:.5f}, a kink of {math.degrees(kink):.3g} deg; make the headings "
                     f"agree{warning_note(severity, tol, 'heading')}",
                     severity=severity,
+                    uid=None if severity is Severity.ERROR else NO_UID,
                     **_at(road, b),
                 )
 
 
-@rule("G003", "plan-view-s-jump", Category.GEOMETRY, Severity.ERROR)
+@rule("G003", "plan-view-s-jump", Category.GEOMETRY, Severity.ERROR, uids=(U.GEOMETRY_S_VALUE_SUM,), every_version=True)
 def plan_view_s_jump(ctx: Context):
     """The ``s`` of a plan-view element is not the previous element's ``s`` plus its length (or the first is not 0).
 
     ``s`` is the arc length along the reference line, so it starts at 0 and each element starts where the previous
-    one ends (within the ``length_abs`` tolerance).
+    one ends (within the ``length_abs`` tolerance): the sum of the lengths of the elements before it (Annex F
+    ``road.geometry.s-value_sum``, 1.9).
 
     Passes::
 
@@ -165,12 +168,20 @@ def plan_view_s_jump(ctx: Context):
                 )
 
 
-@rule("G004", "road-length-mismatch", Category.GEOMETRY, Severity.ERROR)
+@rule(
+    "G004",
+    "road-length-mismatch",
+    Category.GEOMETRY,
+    Severity.ERROR,
+    uids=(U.LENGTH_SUM_GEOMETRIES,),
+    every_version=True,
+)
 def road_length_mismatch(ctx: Context):
     """A road's ``length`` is not where its plan view ends.
 
-    The last element's ``s + length`` must equal the road's ``length`` within ``length_abs + length_rel * length``:
-    lanes, objects and links are placed by ``s`` up to the road's length.
+    The last element's ``s + length``, and the sum of the elements' lengths, must equal the road's ``length`` within
+    ``length_abs + length_rel * length``: lanes, objects and links are placed by ``s`` up to the road's length (Annex F
+    ``road.length_sum_geometries``, 1.9: a "should", reported as an error all the same, see ``SEVERITY_DEVIATIONS``).
 
     Passes::
 
@@ -186,7 +197,9 @@ def road_length_mismatch(ctx: Context):
         if not elements or not _finite(road.length, elements[-1].s, elements[-1].length):
             continue
         end = elements[-1].s + elements[-1].length
-        if abs(end - road.length) > tol.length_abs + tol.length_rel * abs(road.length):
+        total = math.fsum(g.length for g in elements)
+        slack = tol.length_abs + tol.length_rel * abs(road.length)
+        if abs(end - road.length) > slack:
             yield road_length_mismatch.finding(
                 f"road {road.id}: length is {road.length:g} but its plan view ends at s={end:.6g} "
                 f"(difference {end - road.length:+.4g} m); set the road's length to the sum of its elements' lengths",
@@ -194,70 +207,15 @@ def road_length_mismatch(ctx: Context):
                 s=min(end, road.length),
                 line=road.line or None,
             )
-
-
-_PP3_UIDS = (U.PARAMPOLY3_ARC_LENGTH_RANGE, U.PARAMPOLY3_NORMALIZED_RANGE, U.PARAMPOLY3_LENGTH_MATCH)
-
-
-@rule("G005", "parampoly3-length-mismatch", Category.GEOMETRY, Severity.ERROR, uids=_PP3_UIDS, every_version=True)
-def parampoly3_length_mismatch(ctx: Context):
-    """A paramPoly3's declared ``length`` is not the length of its curve over its parameter range.
-
-    The curve's arc length is integrated (Gauss-Legendre, to 1e-15 relative) over ``p`` in ``[0, 1]`` for
-    ``pRange="normalized"`` and over ``[0, @length]`` for ``pRange="arcLength"``, and compared with ``@length`` within
-    the ``length_abs`` tolerance (1 mm, as ASAM's checker). Annex F (9.6):
-
-    * ``pRange="arcLength"``: ``p`` runs over ``[0, @length]`` (``road.geometry.paramPoly3.arcLength_range``) exactly
-      when the curve is ``@length`` long there: a mismatch is an error.
-    * ``pRange="normalized"``, when the curve over ``p`` in ``[0, @length]`` has the declared length: the coefficients
-      were written for ``arcLength``, not for ``p`` in ``[0, 1]`` (``.normalized_range``): an error.
-    * ``pRange="normalized"`` otherwise: the curve's length "should match @length" (``.length_match``): a warning.
-
-    Passes (a 10 m straight, normalized)::
-
-        <geometry s="0" x="0" y="0" hdg="0" length="10">
-          <paramPoly3 aU="0" bU="10" cU="0" dU="0" aV="0" bV="0" cV="0" dV="0" pRange="normalized"/></geometry>
-
-    Fails (the same curve declared 12 m long: a warning)::
-
-        <geometry s="0" x="0" y="0" hdg="0" length="12">
-          <paramPoly3 aU="0" bU="10" cU="0" dU="0" aV="0" bV="0" cV="0" dV="0" pRange="normalized"/></geometry>
-    """
-    tol = ctx.tolerances.length_abs
-    for road in ctx.document.roads:
-        for g in road.plan_view:
-            if not isinstance(g, ParamPoly3) or not g.length > 0 or not math.isfinite(g.length):
-                continue
-            if not _finite(g.aU, g.bU, g.cU, g.dU, g.aV, g.bV, g.cV, g.dV):
-                continue
-            actual = curve_of(g).total
-            if abs(actual - g.length) <= tol:
-                continue
-            normalized = g.p_range is PRange.NORMALIZED
-            p_range = "[0, 1]" if normalized else f"[0, {g.length:g}]"
-            text = (
-                f"road {road.id}: the paramPoly3 at s={g.s:g} is declared {g.length:.6g} m long but its curve "
-                f"over p in {p_range} ({g.p_range.value}) is {actual:.6g} m long (difference "
-                f"{actual - g.length:+.4g} m)"
+        elif math.isfinite(total) and abs(total - road.length) > slack:
+            yield road_length_mismatch.finding(
+                f"road {road.id}: length is {road.length:g} and its plan view ends there, but the lengths of its "
+                f"{len(elements)} elements add up to {total:.6g} (difference {total - road.length:+.4g} m): their s "
+                "values skip or overlap (see plan-view-s-jump); the road's length is the sum of its elements' lengths",
+                road=road.id,
+                s=road.length,
+                line=road.line or None,
             )
-            other = CubicCurve.build(
-                (g.aU, g.bU, g.cU, g.dU), (g.aV, g.bV, g.cV, g.dV), g.length if normalized else 1.0
-            )
-            fits_other = abs(other.total - g.length) <= tol
-            if not normalized:
-                uid, severity = U.PARAMPOLY3_ARC_LENGTH_RANGE, Severity.ERROR
-                hint = '; over p in [0, 1] it is: declare pRange="normalized"' if fits_other else ""
-                text += f": p does not run over [0, @length]{hint}; fix @length or the coefficients"
-            elif fits_other:
-                uid, severity = U.PARAMPOLY3_NORMALIZED_RANGE, Severity.ERROR
-                text += (
-                    f"; over p in [0, {g.length:g}] it has the declared length: the coefficients are for "
-                    'pRange="arcLength", not for p in [0, 1]'
-                )
-            else:
-                uid, severity = U.PARAMPOLY3_LENGTH_MATCH, Severity.WARNING
-                text += "; fix @length or the coefficients"
-            yield parampoly3_length_mismatch.finding(text, uid=uid, severity=severity, **_at(road, g))
 
 
 @rule("G006", "degenerate-geometry", Category.GEOMETRY, Severity.ERROR)
@@ -295,12 +253,19 @@ def degenerate_geometry(ctx: Context):
                 )
 
 
-@rule("G007", "spiral-constant-curvature", Category.GEOMETRY, Severity.WARNING)
+@rule(
+    "G007",
+    "spiral-constant-curvature",
+    Category.GEOMETRY,
+    Severity.WARNING,
+    uids=(U.SPIRAL_CURVATURE_CHANGE,),
+    every_version=True,
+)
 def spiral_constant_curvature(ctx: Context):
     """A spiral's start and end curvature are equal: it is a line or an arc written as a degenerate clothoid.
 
     A clothoid's curvature changes linearly; with no change its parameter is infinite, and readers that compute it
-    divide by zero.
+    divide by zero (Annex F ``road.geometry.spiral.curvature_change``, 1.9).
 
     Passes::
 

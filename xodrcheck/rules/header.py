@@ -6,6 +6,7 @@ Each rule enforces a rule of ASAM OpenDRIVE 1.9.0 Annex F, named in its docstrin
 from __future__ import annotations
 
 import math
+import re
 
 import numpy as np
 
@@ -73,3 +74,95 @@ def coordinates_off_centre(ctx: Context):
         y=cy,
         line=(header.line if header is not None else 0) or None,
     )
+
+
+def _local(el) -> str:
+    return el.tag.rsplit("}", 1)[-1] if isinstance(el.tag, str) else ""
+
+
+#: What ``<semantics>`` inside ``<defaultRegulations>`` may hold (6.4.3), besides additional data (6.2).
+_REGULATION_CONTENT = frozenset({"speed", "priority", "userData", "include", "dataQuality"})
+
+
+@rule(
+    "H002",
+    "default-regulations-content",
+    Category.HEADER,
+    Severity.ERROR,
+    uids=(U.DEFAULT_REGULATIONS_ONLY_SPEED_PRIORITY,),
+)
+def default_regulations_content(ctx: Context):
+    """The header's ``<defaultRegulations>`` use a signal semantic other than ``<speed>`` and ``<priority>``.
+
+    Default regulations give a country's default speed limits per road type and default priorities per sign type
+    (6.4.3); only ``<speed>`` and ``<priority>`` elements shall be used in them (Annex F
+    ``defaultRegulations.only_speed_priority``). Anything else (``<prohibited>``, ``<lane>``, ``<warning>``...) belongs
+    to a signal's or a road's own semantics.
+
+    Passes::
+
+        <roadRegulations type="town"><semantics><speed type="maximum" value="50" unit="km/h"/></semantics>
+
+    Fails::
+
+        <roadRegulations type="town"><semantics><prohibited/></semantics>
+    """
+    if ctx.data is None or b"defaultRegulations" not in ctx.data or ctx.tree is None:
+        return
+    for regulations in ctx.tree.getroot().iterfind("{*}header/{*}defaultRegulations"):
+        for semantics in regulations.iterfind(".//{*}semantics"):
+            for el in semantics:
+                name = _local(el)
+                if name and name not in _REGULATION_CONTENT:
+                    owner = semantics.getparent()
+                    yield default_regulations_content.finding(
+                        f"the default regulations' <{_local(owner)}> (line {owner.sourceline}) use <{name}>: only "
+                        "<speed> and <priority> may be used in <defaultRegulations>; give it on the roads or "
+                        "signals it concerns",
+                        line=el.sourceline,
+                    )
+
+
+_PROJ_DEFINITION = re.compile(r"\+(?:proj|init)=\S+|(?<![=:\w])EPSG:\d+", re.IGNORECASE)
+
+
+@rule("H003", "projection-repeated", Category.HEADER, Severity.ERROR, uids=(U.HEADER_MAX_ONE_PROJ,))
+def projection_repeated(ctx: Context):
+    """The map defines its projection more than once: several ``<geoReference>`` elements, or one whose PROJ string
+    holds several definitions.
+
+    There shall be no more than one definition of the projection (Annex F ``header.proj.max_one_proj``, 8.5); with
+    two, readers pick either. A ``<geoReference>`` is one PROJ string of one coordinate reference system: one
+    ``+proj=`` (or ``+init=``, or an ``EPSG:`` code). Without any, the map is in a local Cartesian system.
+
+    Passes::
+
+        <geoReference><![CDATA[+proj=utm +zone=32 +ellps=GRS80 +units=m +no_defs]]></geoReference>
+
+    Fails::
+
+        <geoReference><![CDATA[+proj=utm +zone=32 +ellps=GRS80 +units=m +no_defs]]></geoReference>
+        <geoReference><![CDATA[+proj=tmerc +lat_0=49 +lon_0=8 +ellps=GRS80 +units=m]]></geoReference>
+    """
+    if ctx.tree is None:
+        return
+    header = next(ctx.tree.getroot().iterchildren("{*}header"), None)
+    if header is None:
+        return
+    found = list(header.iterchildren("{*}geoReference"))
+    if len(found) > 1:
+        lines = ", ".join(str(el.sourceline) for el in found)
+        yield projection_repeated.finding(
+            f"the header has {len(found)} <geoReference> elements (lines {lines}): one projection only; keep the one "
+            "the coordinates are in",
+            line=found[1].sourceline,
+        )
+    for el in found:
+        definitions = _PROJ_DEFINITION.findall("".join(el.itertext()))
+        if len(definitions) > 1:
+            yield projection_repeated.finding(
+                f"the <geoReference> at line {el.sourceline} holds {len(definitions)} projection definitions "
+                f"({', '.join(definitions)}): one PROJ string defines one projection; keep the one the coordinates "
+                "are in",
+                line=el.sourceline,
+            )

@@ -35,6 +35,7 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.lanes import RoadGeometry
 from xodrcheck.model import ContactPoint, ElementType, Road
 from xodrcheck.rules import lane_uids as U
+from xodrcheck.rules import road_uids as RU
 from xodrcheck.rules.context import Context, Neighbour, link_at
 from xodrcheck.rules.geometry import profile_steps
 from xodrcheck.rules.registry import NO_UID, rule
@@ -101,16 +102,16 @@ def _in_junction(ctx: Context, road: Road) -> bool:
     return road.junction is not None and ctx.junction(road.junction) is not None
 
 
-@rule("K101", "link-gap", Category.LINK, Severity.ERROR)
+@rule("K101", "link-gap", Category.LINK, Severity.ERROR, uids=(RU.GEOMETRY_CONTACT_POINT,), every_version=True)
 def link_gap(ctx: Context):
     """Two roads linked outside a junction do not meet: their reference lines are apart at the contact points.
 
     Where road A links to road B, A's reference line at its end must be B's at the linked end (ASAM
     ``road.geometry.contact_point``: "the road reference line of a new road shall always begin at the contactPoint
     element of its successor or predecessor road"). A gap over ``gap`` (1 cm, ASAM's checker's threshold) is an error,
-    one over ``position`` (1 mm) a warning. The laneOffset may change at the link, the lanes renumbered (a lane next to
-    lane 0 ends there); the lanes themselves are compared by ``lane-border-gap``, which also checks junction
-    connections lane by lane.
+    one over ``position`` (1 mm) a warning (which names no rule of the standard: below ASAM's threshold). The
+    laneOffset may change at the link, the lanes renumbered (a lane next to lane 0 ends there); the lanes themselves
+    are compared by ``lane-border-gap``, which also checks junction connections lane by lane.
 
     Passes (road 1 ends at x=100, road 2 starts there)::
 
@@ -137,6 +138,7 @@ def link_gap(ctx: Context):
                 f"({mine.x:.3f}, {mine.y:.3f}) and ({theirs.x:.3f}, {theirs.y:.3f}); move one road's geometry so they "
                 f"meet{warning_note(severity, tol)}",
                 severity=severity,
+                uid=None if severity is Severity.ERROR else NO_UID,
                 **_where(road, end, mine, _joint_line(road, end, neighbour)),
             )
 

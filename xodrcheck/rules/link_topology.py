@@ -37,11 +37,12 @@ def _junction_refers_to(ctx: Context, junction_id: str, road: Road) -> bool:
     return False
 
 
-@rule("K001", "link-not-reciprocal", Category.LINK, Severity.ERROR)
+@rule("K001", "link-not-reciprocal", Category.LINK, Severity.ERROR, uids=(U.LINKAGE_BOTH_SIDES,), every_version=True)
 def link_not_reciprocal(ctx: Context):
     """A road link is not returned: the linked road does not link back at the named contact point.
 
-    When road A's successor is road B at B's start, B's predecessor must be road A at A's end. Through a junction:
+    When road A's successor is road B at B's start, B's predecessor must be road A at A's end (Annex F
+    ``road.linkage.both_sides_consistency``, 1.9: linked at both sides, consistently). Through a junction:
     a road whose predecessor or successor is a junction must be known to that junction (an incoming road of one of its
     connections, or the road one of its connecting roads starts or ends at), and a connecting road's links name the
     roads it joins, whose own links name the junction. A connecting road never links to its own junction.

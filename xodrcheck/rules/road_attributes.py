@@ -59,8 +59,9 @@ def country_code_not_alpha2(ctx: Context):
 
     Only ALPHA-2 codes may be used, not ALPHA-3 codes, because only ALPHA-2 codes take the ISO 3166-2 state
     identifiers (Annex F ``road.type.only_alpha_2_country_codes``, 10.4). The schema still admits the deprecated
-    ALPHA-3 codes and country names (``USA``, ``Germany``, ``OpenDRIVE``); this rule does not. Every element with a
-    ``country`` attribute is checked: road types, signals and signal boards alike.
+    ALPHA-3 codes and country names (``USA``, ``Germany``); this rule does not. Every element with a ``country``
+    attribute is checked: road types, signals and signal boards alike, except that a signal's (or a sign's)
+    ``country="OpenDRIVE"`` names the types of the OpenDRIVE signal reference (traffic lights and the like, 14.1).
 
     Passes::
 
@@ -74,11 +75,11 @@ def country_code_not_alpha2(ctx: Context):
         return
     for el in ctx.tree.iterfind(".//*[@country]"):
         code = el.get("country")
-        if _ALPHA_2.fullmatch(code):
+        tag = el.tag.rsplit("}", 1)[-1] if isinstance(el.tag, str) else "?"
+        if _ALPHA_2.fullmatch(code) or (code == "OpenDRIVE" and tag != "type"):
             continue
         road = next(el.iterancestors("{*}road"), None)
         road_id = road.get("id") if road is not None else None
-        tag = el.tag.rsplit("}", 1)[-1] if isinstance(el.tag, str) else "?"
         yield country_code_not_alpha2.finding(
             f"{f'road {road_id}: ' if road_id else ''}the <{tag}> at line {el.sourceline} has "
             f'country="{code}", {_what_code(code)}; use the ISO 3166-1 ALPHA-2 code (two capital letters, e.g. "DE")',
@@ -191,6 +192,36 @@ def shape_t_coverage(ctx: Context):
                     s=s,
                     x=float(pose.x[0]),
                     y=float(pose.y[0]),
+                    line=first.line,
+                )
+
+
+@rule("G056", "shapes-start-left", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPES_START_RIGHT,))
+def shapes_start_left(ctx: Context):
+    """The ``<shape>`` records at some ``s`` do not start at the right side of the road: the first ``t`` is not
+    negative.
+
+    To model road shapes, shape elements shall start at the right side of the road and run in positive t-direction,
+    that is, start with negative t-values (Annex F ``road.use_cases.shape_elements_start_right``, 1.9). Whether they
+    reach the right edge is ``shape-t-coverage``'s.
+
+    Passes::
+
+        <shape s="0" t="-5" a="0" b="-0.02" c="0" d="0"/><shape s="0" t="0" a="-0.1" b="0.02" c="0" d="0"/>
+
+    Fails (the profile at s=0 starts on the reference line)::
+
+        <shape s="0" t="0" a="-0.1" b="0.02" c="0" d="0"/><shape s="0" t="3.5" a="-0.03" b="-0.02" c="0" d="0"/>
+    """
+    for records in road_records(ctx):
+        for s, group in shape_groups(records.shapes):
+            first = group[0]
+            if first.t >= 0:  # type: ignore[operator]
+                yield shapes_start_left.finding(
+                    f"road {records.road}: the shapes at s={s:g} start at t={first.t:g}: shapes start at the right "
+                    "side of the road (a negative t) and run leftwards; add a shape at the right edge",
+                    road=records.road,
+                    s=s,
                     line=first.line,
                 )
 

@@ -45,7 +45,14 @@ SEVERITY_DEVIATIONS: dict[str, tuple[Severity, str]] = {
         Severity.ERROR,
         "a kink in a reference line tears every lane border at it (a gap on the outside of the turn, an overlap on "
         "the inside, w * angle wide), the same defect as a lane border that jumps between lane sections (L101), "
-        "which the standard forbids; G002 has been an error for every version",
+        "which the standard forbids; G002 has been an error for every version (kinks under the kink tolerance, 0.01 "
+        "rad, are warnings that name no UID)",
+    ),
+    "asam.net:xodr:1.9.0:road.length_sum_geometries": (
+        Severity.ERROR,
+        "lanes, objects, signals and links are placed by s up to the road's length: where it differs from the "
+        "reference line's, the road's end (where links join) is not where its geometry ends, and readers place what "
+        "lies beyond differently; G004 has been an error for every version",
     ),
     "asam.net:xodr:1.8.1:performance.avoid_redundant_info": (
         Severity.INFO,

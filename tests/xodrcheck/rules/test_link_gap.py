@@ -3,6 +3,7 @@
 import pytest
 
 from tests.xodrcheck.rules.helpers import findings, fixture, line_of
+from xodrcheck.check import check
 from xodrcheck.findings import Severity
 
 RULE = "link-gap"
@@ -23,3 +24,11 @@ def test_lanes_renumbered_at_the_link_are_no_gap():
     path = fixture(RULE, "pass_lane_offset.xodr")
     assert findings(path, RULE) == []
     assert findings(path, "lane-border-gap") == []
+
+
+def test_a_gap_under_the_error_threshold_names_no_rule_of_the_standard():
+    """5 mm: a warning (over position, 1 mm, under gap, 1 cm); ASAM's threshold is not reached, so no UID."""
+    text = fixture(RULE, "fail.xodr").read_text(encoding="utf-8").replace('x="100.05"', 'x="100.005"')
+    assert 'x="100.005"' in text
+    (f,) = [f for f in check(text.encode(), select=("K101",)).findings if f.code == "K101"]
+    assert f.severity is Severity.WARNING and f.rule_uid is None
