@@ -106,8 +106,8 @@ def _index(files: Sequence[FilePage]) -> str:
         )
     head = "".join(f"<th>{sev}</th>" for sev in ("errors", "warnings", "info"))
     return (
-        f'<nav class="xc-index" aria-label="files"><table><thead><tr><th>file</th><th>OpenDRIVE</th>{head}</tr></thead>'
-        f"<tbody>{''.join(rows)}</tbody></table></nav>"
+        '<nav class="xc-index" id="xc-index" aria-label="files"><table>'
+        f"<thead><tr><th>file</th><th>OpenDRIVE</th>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table></nav>"
     )
 
 
@@ -203,12 +203,13 @@ def _map(f: FilePage) -> str:
     )
 
 
-def _file_section(k: int, f: FilePage) -> str:
+def _file_section(k: int, f: FilePage, indexed: bool = False) -> str:
     meta = [f"OpenDRIVE {escape(f.version or '?')}"]
     if f.findings is not None:
         meta += [part for part in (_counts(f.findings), _categories(f.findings)) if part]
     if f.note and f.map_data is not None:
         meta.append(f"<span>{escape(f.note)}</span>")
+    back = ' <a class="xc-back" href="#xc-index" title="back to the list of files">↑ files</a>' if indexed else ""
     panel = ""
     if f.findings is not None:
         ordered = sorted(f.findings, key=lambda x: -x.severity)  # worst first, file order within a severity
@@ -218,7 +219,7 @@ def _file_section(k: int, f: FilePage) -> str:
         )
         panel = f'<div class="xc-findings">{body}</div>'
     return (
-        f'<section class="xc-file" id="file-{k}"><h2>{escape(f.path or "(bytes)")}</h2>'
+        f'<section class="xc-file" id="file-{k}"><h2>{escape(f.path or "(bytes)")}{back}</h2>'
         f'<div class="xc-file-meta">{" · ".join(meta)}</div><div class="xc-body">{_map(f)}{panel}</div></section>'
     )
 
@@ -245,7 +246,7 @@ def render_page(files: Sequence[FilePage], title: str) -> str:
         "css": asset("style.css"),
         "summary": _summary(files, title),
         "index": _index(files),
-        "files": "\n".join(_file_section(k, f) for k, f in enumerate(files)),
+        "files": "\n".join(_file_section(k, f, len(files) > 1) for k, f in enumerate(files)),
         "docs": json_script(_docs(files)),
         "script": f'(function () {{\n"use strict";\n{script}\n}}());',
     }

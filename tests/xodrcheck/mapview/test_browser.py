@@ -229,4 +229,6 @@ def test_several_files_give_one_page_with_an_index(page, corpus_dir, tmp_path, a
     assert page.locator("#file-1 .xc-row").count() == len(check(files[1]).findings)
     assert page.locator("#file-0 .xc-row").count() == len(check(files[0]).findings)
     page.screenshot(path=str(artefacts / "report_two_files.png"), full_page=True)
+    page.locator("#file-1 .xc-back").click()
+    assert page.evaluate("document.getElementById('xc-index').getBoundingClientRect().top") < 5
     assert_clean(opened)

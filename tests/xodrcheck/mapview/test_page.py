@@ -114,7 +114,7 @@ def test_rows_list_the_worst_first_and_docs_cover_every_code():
     sections = [a for t, a in page.tags if t == "section"]
     assert [a["id"] for a in sections] == ["file-0", "file-1"]
     links = [a["href"] for t, a in page.tags if t == "a"]
-    assert links == ["#file-0", "#file-1"]
+    assert links == ["#file-0", "#file-1", "#xc-index", "#xc-index"]  # the index, then each file's way back
 
 
 def _scripts(page: Elements):

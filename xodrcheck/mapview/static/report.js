@@ -49,6 +49,7 @@ F.legend = function () {
     item.appendChild(document.createTextNode(type));
     box.appendChild(item);
   });
+  if (!this.map.sections.some(function (sec) { return sec.junction !== null; })) return;
   var j = document.createElement("span"), sw = document.createElement("i");
   sw.className = "xc-junction-swatch";
   j.appendChild(sw); j.appendChild(document.createTextNode("junction"));
