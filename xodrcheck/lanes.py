@@ -346,7 +346,7 @@ class RoadGeometry:
         lane, inner_law, outer_law = laws
         inner, outer = Jet(*inner_law.jet(evaluation.s)), Jet(*outer_law.jet(evaluation.s))
         lift = inner if where == "inner" else outer if where == "outer" else (inner + outer).scale(0.5)
-        if lane.level or evaluation.cos is None:
+        if lane.level or evaluation.cos is None or evaluation.sin is None:
             return lateral, height + lift.v
         return lateral - lift * evaluation.sin, height + lift.v * evaluation.cos.v
 

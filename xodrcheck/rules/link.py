@@ -209,10 +209,10 @@ def _touching(mine: RoadEnd, lane: int, theirs: RoadEnd, other: int) -> tuple[tu
     """The touching points of two linked lanes (ASAM OpenDRIVE Annex D.1.1) as two pairs: each edge of ``lane`` (inner,
     outer; raised by lane height) with the edge of ``other`` it meets, in the order that fits best in plan view (a
     start-to-start link meets inner with outer). ``None`` when a lane is not there."""
-    points = [e.edge(lane_id, w) for e, lane_id in ((mine, lane), (theirs, other)) for w in ("inner", "outer")]
-    if any(p is None for p in points):
+    inner_a, outer_a = mine.edge(lane, "inner"), mine.edge(lane, "outer")
+    inner_b, outer_b = theirs.edge(other, "inner"), theirs.edge(other, "outer")
+    if inner_a is None or outer_a is None or inner_b is None or outer_b is None:
         return None
-    inner_a, outer_a, inner_b, outer_b = points  # type: ignore[misc]
     straight = ((inner_a, inner_b), (outer_a, outer_b))
     crossed = ((inner_a, outer_b), (outer_a, inner_b))
     return min(straight, crossed, key=lambda pairs: max(_plan_distance(p, q) for p, q in pairs))
@@ -301,11 +301,11 @@ def _steps(ctx: Context, tol: float) -> Iterator[_Step]:
         if step is None:
             step = steps[key] = _Step(road, end, neighbour)
             if neighbour.connection is None and not _in_junction(ctx, road) and not _in_junction(ctx, neighbour.road):
-                centre = reference_end(ctx, road, end)
-                theirs = reference_end(ctx, neighbour.road, neighbour.contact)
-                if centre is not None and theirs is not None:
+                here = reference_end(ctx, road, end)
+                there = reference_end(ctx, neighbour.road, neighbour.contact)
+                if here is not None and there is not None:
                     line = _joint_line(road, end, neighbour)
-                    step.add(abs(centre.z - theirs.z), (centre, theirs), None, line, tol)
+                    step.add(abs(here.z - there.z), (here, there), None, line, tol)
         mine, theirs = road_end(ctx, road, end), road_end(ctx, neighbour.road, neighbour.contact)
         flipped = step.road is not road  # the joint seen from its other road: keep the first road's view
         for lane, other, line in _lane_pairs(road, end, neighbour):

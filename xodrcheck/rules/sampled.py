@@ -179,6 +179,7 @@ def road_end(ctx: Context, road: Road, end: ContactPoint) -> RoadEnd:
     found = cache.get((road.id, end))
     if found is None:
         geometry = ctx.geometry(road.id)
+        assert geometry is not None, "road_end is asked for usable roads only"
         last = len(road.lane_sections) - 1
         ends = (ContactPoint.START, ContactPoint.END) if last == 0 else (end,)
         index = 0 if end is ContactPoint.START else last
@@ -216,10 +217,13 @@ def reference_end(ctx: Context, road: Road, end: ContactPoint) -> EndPoint | Non
     key = (road.id, end)
     if key not in cache:
         geometry = ctx.geometry(road.id)
-        s = np.array([end_s(road, end)])
-        pose = geometry.reference(s)
-        points = LanePoints(pose.x, pose.y, geometry.elevation(s), pose.hdg, pose.curvature, np.ones(1))
-        cache[key] = _end_point(points, 0, end)
+        if geometry is None:
+            cache[key] = None
+        else:
+            s = np.array([end_s(road, end)])
+            pose = geometry.reference(s)
+            points = LanePoints(pose.x, pose.y, geometry.elevation(s), pose.hdg, pose.curvature, np.ones(1))
+            cache[key] = _end_point(points, 0, end)
     return cache[key]
 
 
