@@ -37,7 +37,7 @@ class Tolerances:
         "m",
         "Positions that should coincide (plan-view joints, linked road ends and lane borders, in plan view and in "
         "height) may be this far apart without a finding; further apart up to `gap` is a warning.",
-        rules="G001 G014 K101 K103 K104 L101",
+        rules="G001 G014 G016 K101 K103 K104 L101 L031 L032",
     )
     gap: float = _tolerance(
         0.01,
@@ -67,13 +67,27 @@ class Tolerances:
         rules="G004",
     )
     length_abs: float = _tolerance(
-        1e-3, "m", "Absolute length slack added to `length_rel`; also the s-jump bound.", rules="G003 G004 G005 G006"
+        1e-3,
+        "m",
+        "Absolute length slack added to `length_rel`; also the s-jump bound.",
+        rules="G003 G004 G005 G006 L028",
     )
     min_radius: float = _tolerance(
         5.0, "m", "Smallest curvature radius of lane-0 lines and drivable lane centres.", rules="C001 C002"
     )
     min_section_length: float = _tolerance(
-        0.01, "m", "Lane sections shorter than this are reported (G012).", rules="G012"
+        0.01,
+        "m",
+        "Lane sections shorter than this are reported (G012); a lane's zero-width stretch shorter than this is "
+        "ignored (G015).",
+        rules="G012 G015",
+    )
+    long_zero_width: float = _tolerance(
+        1.0,
+        "m",
+        "A lane of zero width over its whole lane section longer than this is a lane of zero width over a long "
+        "distance (G015, road.lane_section.lane_long_zero_width, 1.9).",
+        rules="G015",
     )
     junction_start: float = _tolerance(
         0.05,
@@ -97,7 +111,7 @@ class Tolerances:
         1e-3,
         "m",
         "Lanes narrower than this count as zero-wide (a lane that opens or closes).",
-        rules="G010 G011 J005 L010 L013",
+        rules="G010 G011 G015 J005 L010 L013 L031",
     )
     overlap_area: float = _tolerance(
         0.5, "m2", "Plan-view overlap area between roads above which it is reported.", rules="O001 O002 O003 O004"

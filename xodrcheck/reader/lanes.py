@@ -48,6 +48,16 @@ _PERMANENT = "read as permanent, the standard's default"
 _Links = tuple[tuple[int, ...], tuple[int, ...], tuple[int, ...], tuple[int, ...]]
 
 
+def _missing_centre_uid(ctx: Context, section: etree._Element, has_center: bool) -> str:
+    """The Annex F rule a lane section without centre lane 0 breaks: in a 1.9 permanent layer
+    ``layer.center_lane_permanent``; else, with a ``<center>`` that holds no lane 0, ``center_lane_singular`` (1.9:
+    exactly one centre lane; dropped for older files), without ``<center>`` ``center_elem_definition``."""
+    parent = section.getparent()
+    if layered(ctx) and (parent is None or (parent.get("layer") or "permanent") == "permanent"):
+        return U.LAYER_CENTER_PERMANENT
+    return U.CENTER_LANE_SINGULAR if has_center else U.CENTER_ELEM_DEFINITION
+
+
 def layered(ctx: Context) -> bool:
     """Whether the file has lane layers: OpenDRIVE 1.9 or later, or a version the reader does not know."""
     return ctx.version is None or ctx.version >= (1, 9)
@@ -255,7 +265,7 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
             f"{describe(el)} has no centre lane 0 ({where}); the other lanes are kept, measured from the "
             "reference line (shifted by laneOffset)",
             el,
-            uid=None if "center" in seen else U.CENTER_ELEM_DEFINITION,
+            uid=_missing_centre_uid(ctx, el, "center" in seen),
         )
     ctx.section_s = None
     return make_lane_section(s, single_side, left, center, right, el.sourceline, length)
@@ -303,7 +313,7 @@ def build_layers(
         if layered(ctx) and el.get("layer") is not None:
             layer = ctx.choice(el, "layer", LAYERS, _PERMANENT) or LaneLayer.PERMANENT
         if layer in found:
-            ctx.repeated(el, found[layer])
+            ctx.repeated(el, found[layer], U.LAYER_LIMITS if layered(ctx) else None)
         else:
             found[layer] = el
     offset: Profile = ()
@@ -316,7 +326,7 @@ def build_layers(
             R.MISSING_ELEMENT,
             f"{describe(elements[0].getparent())} has no <lanes> of the permanent layer; the road has no lanes",
             elements[0],
-            uid=U.SECTION_REQ,
+            uid=U.LAYER_LIMITS,
         )
     temporary = found.get(LaneLayer.TEMPORARY)
     if temporary is None:

@@ -105,14 +105,14 @@ _NUMBERING = U.LANES_NUMBERED_CORRECTLY
     "centre-lane-invalid",
     Category.LANE,
     Severity.ERROR,
-    uids=(_CENTRE_ID, _NUMBERING),
+    uids=(_CENTRE_ID, _NUMBERING, U.CENTER_LANE_SINGULAR),
     every_version=True,
 )
 def centre_lane_invalid(ctx: Context):
     """The ``<center>`` of a lane section does not hold exactly the one lane 0, or lane 0 is on a side.
 
     Lane 0 is the reference line of the lanes: the centre lane has the id 0 (Annex F ``road.lane.center_lane_id``),
-    there is only one, and only side lanes, numbered away from it, sit under
+    there is only one (``road.lane.center_lane_singular``, 1.9), and only side lanes, numbered away from it, sit under
     ``<left>`` and ``<right>`` (``road.lane.lanes_numbered_correctly``, with ``lane-id-sequence`` for the signs of side
     lanes). (A lane section without any centre lane is reported while reading, as ``missing-element``.)
 
@@ -141,7 +141,7 @@ def centre_lane_invalid(ctx: Context):
             for lane in zeros[1:]:
                 yield centre_lane_invalid.finding(
                     f"{here}: more than one centre lane 0; a lane section has exactly one centre lane",
-                    uid=_CENTRE_ID,
+                    uid=U.CENTER_LANE_SINGULAR,
                     lane=0,
                     line=lane.line or None,
                     **where,

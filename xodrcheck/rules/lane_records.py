@@ -172,7 +172,7 @@ def _first(lanes: list[LaneXml], tag: str) -> tuple[LaneXml, etree._Element] | N
     "width-and-border-mixed",
     Category.LANE,
     Severity.ERROR,
-    uids=(U.BORDER_EXCLUSIVE_WIDTH,),
+    uids=(U.BORDER_EXCLUSIVE_WIDTH, U.WIDTH_NO_BORDER),
 )
 def width_and_border_mixed(ctx: Context):
     """One lane group (``<left>`` or ``<right>`` of a lane section) uses both ``<width>`` and ``<border>`` records.
@@ -180,7 +180,8 @@ def width_and_border_mixed(ctx: Context):
     Lane width and lane border are mutually exclusive within a lane group (Annex F
     ``road.lane.border.exclusive_width_border``, and from 1.9 ``road.lane.width.no_width_with_border``): where both are
     given, readers take the widths and ignore the borders, so the lanes are not where the borders say. Describe the
-    group's lanes all by widths or all by borders. Reported at the group's first ``<border>``.
+    group's lanes all by widths or all by borders. Reported at the group's first ``<border>`` (and, for 1.9 files,
+    at its first ``<width>``).
 
     Passes::
 
@@ -208,6 +209,7 @@ def width_and_border_mixed(ctx: Context):
             yield width_and_border_mixed.finding(
                 both + advice, uid=U.BORDER_EXCLUSIVE_WIDTH, **b_lane.where(b_el.sourceline)
             )
+            yield width_and_border_mixed.finding(both + advice, uid=U.WIDTH_NO_BORDER, **w_lane.where(w_el.sourceline))
 
 
 @rule(

@@ -1,11 +1,12 @@
-"""Lane sections along the road (``L026``): every ``s`` of the road has its lane section, and so its centre lane."""
+"""Lane sections along the road (``L026``-``L028``): every ``s`` of the road has its lane section, and so its centre
+lane; every lane section has a lane to drive on and ends on its road."""
 
 from __future__ import annotations
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.lane_xml import SectionXml, lane_elements
+from xodrcheck.rules.lane_xml import SectionXml, lane_elements, number
 from xodrcheck.rules.registry import rule
 
 #: A lane section starting this close to s=0 starts at 0 (written-number noise, not a tolerance).
@@ -21,13 +22,21 @@ def permanent_sections(ctx: Context) -> dict[str, list[SectionXml]]:
     return out
 
 
-@rule("L026", "lane-sections-from-start", Category.LANE, Severity.ERROR, uids=(U.CENTER_ELEM_DEFINITION,))
+@rule(
+    "L026",
+    "lane-sections-from-start",
+    Category.LANE,
+    Severity.ERROR,
+    uids=(U.CENTER_ELEM_DEFINITION, U.LANE_SECT_FIRST),
+)
 def lane_sections_from_start(ctx: Context):
     """A road's first lane section starts after s=0: from the road's start to there, no lane section, no centre lane.
 
     Annex F ``road.lane.center_elem_definition``: "one ``<center>`` element shall be defined for each s-coordinate".
     Lane sections run from their ``s`` to the next one's and the last to the road's end, so the first must start at
-    s=0, or the road's first metres have no lanes and no centre lane. Start the first lane section at ``s="0"``.
+    s=0, or the road's first metres have no lanes and no centre lane. OpenDRIVE 1.9 says it outright
+    (``road.lane.lane_sect_first``: the first lane section is defined with s=0.0), the name findings on 1.9 files
+    carry. Start the first lane section at ``s="0"``.
     (A lane section without ``<center>``, or with two: ``missing-element``, ``repeated-element``.)
 
     Passes::
@@ -47,8 +56,101 @@ def lane_sections_from_start(ctx: Context):
             yield lane_sections_from_start.finding(
                 f"road {road}: the first lane section starts at s={first.s:g}; from s=0 to there the road has no lane "
                 "section and no centre lane: start the first lane section at s=0",
+                uid=U.LANE_SECT_FIRST if ctx.version is None or ctx.version >= (1, 9) else U.CENTER_ELEM_DEFINITION,
                 road=road,
                 section_s=first.s,
                 s=0.0,
                 line=first.element.sourceline,
+            )
+
+
+@rule(
+    "L027",
+    "lane-section-without-lanes",
+    Category.LANE,
+    Severity.ERROR,
+    uids=(U.LAYER_MANDATORY_PERMANENT, U.LANE_SECTION_DRIVABLE),
+)
+def lane_section_without_lanes(ctx: Context):
+    """A lane section has no side lane whose width is given from the section's start: nothing to drive on.
+
+    OpenDRIVE 1.9, Annex F: there is at least one lane in the permanent lane layer at each s of the road
+    (``road.lane.layer.layer_mandatory_permanent``: an error for a permanent lane section with no ``<left>`` or
+    ``<right>`` lane), and, to be drivable, each lane section should have a ``<left>`` or ``<right>`` valid for its
+    whole length (``road.lane.lane_section_drivable``: a warning for a lane section of either layer whose side lanes
+    all start their width after the section's start, and for a temporary one without side lanes).
+
+    Passes::
+
+        <laneSection s="0"><center>...</center><right><lane id="-1" type="driving"><width sOffset="0" .../>
+
+    Fails::
+
+        <laneSection s="0"><center><lane id="0" type="none"/></center></laneSection>
+    """
+    lanes_of: dict[int, list] = {}
+    for lane in lane_elements(ctx).lanes:
+        lanes_of.setdefault(id(lane.section), []).append(lane)
+    for section in lane_elements(ctx).sections:
+        side = [lane for lane in lanes_of.get(id(section), ()) if lane.group != "center"]
+        here = f"road {section.road}: the {section.layer} layer's lane section at s={_s(section)}"
+        where = {"road": section.road, "section_s": section.s, "s": section.s, "line": section.element.sourceline}
+        if not side and section.layer == "permanent":
+            yield lane_section_without_lanes.finding(
+                f"{here} has no <left> or <right> lane; the permanent layer has a lane at every s of the road",
+                uid=U.LAYER_MANDATORY_PERMANENT,
+                **where,
+            )
+        elif not any(_from_start(lane) for lane in side):
+            what = "has no <left> or <right> lane" if not side else "has no side lane whose width starts at sOffset 0"
+            yield lane_section_without_lanes.finding(
+                f"{here} {what}: no part of it is valid for the section's whole length, so it is not drivable",
+                severity=Severity.WARNING,
+                uid=U.LANE_SECTION_DRIVABLE,
+                **where,
+            )
+
+
+def _from_start(lane) -> bool:
+    for tag in ("width", "border"):
+        starts = [number(r.get("sOffset")) for r in lane.element.iterchildren(f"{{*}}{tag}")]
+        starts = [s for s in starts if s is not None]
+        if starts:
+            return min(starts) <= _ZERO
+    return False
+
+
+def _s(section: SectionXml) -> str:
+    return "?" if section.s is None else f"{section.s:g}"
+
+
+@rule("L028", "lane-section-beyond-road", Category.LANE, Severity.ERROR, uids=(U.SECTION_LENGTH_LIMIT_ROAD,))
+def lane_section_beyond_road(ctx: Context):
+    """A lane section with a ``length`` runs past the end of its road.
+
+    Annex F ``road.lane_section.lanesec_length_limit_road`` (1.9): a lane section with @length shall not extend beyond
+    the end of the road: ``s + length`` is at most the road's ``length`` (within the ``length_abs`` tolerance).
+
+    Passes (road length 100)::
+
+        <lanes layer="temporary"><laneSection s="20" length="30"> ...
+
+    Fails::
+
+        <lanes layer="temporary"><laneSection s="80" length="30"> ...
+    """
+    for section in lane_elements(ctx).sections:
+        length = number(section.element.get("length"))
+        road = ctx.road(section.road)
+        if length is None or section.s is None or road is None:
+            continue
+        end = section.s + length
+        if end > road.length + ctx.tolerances.length_abs:
+            yield lane_section_beyond_road.finding(
+                f"road {road.id}: the lane section at s={section.s:g} with length={length:g} ends at s={end:g}, "
+                f"{end - road.length:.4g} m past the road's end ({road.length:g}); shorten it",
+                road=road.id,
+                section_s=section.s,
+                s=section.s,
+                line=section.element.sourceline,
             )

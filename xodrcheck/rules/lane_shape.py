@@ -45,7 +45,19 @@ def _cubic_minimum(coef: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     return values[k, columns], u[k, columns]
 
 
+_PIECES: weakref.WeakKeyDictionary[Context, dict] = weakref.WeakKeyDictionary()
+
+
 def _lane_pieces(ctx: Context, road: Road, index: int):
+    """:func:`_section_pieces`, computed once per file and section for the rules that share it (G010, G011, G015)."""
+    cache = _PIECES.setdefault(ctx, {})
+    key = (id(road), index)
+    if key not in cache:
+        cache[key] = _section_pieces(ctx, road, index)
+    return cache[key]
+
+
+def _section_pieces(ctx: Context, road: Road, index: int):
     """Every lane with records in a section and its signed width as exact cubics: ``(lanes, a, b, coefficients)``
     with the pieces ``[a, b]`` between consecutive knots and ``coefficients[:, :, k]`` the cubic in ``u`` in [0, 1] of
     each lane's width on piece ``k`` (all lanes and pieces of the section in one vectorised pass); ``None`` when the

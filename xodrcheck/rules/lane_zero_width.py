@@ -38,7 +38,13 @@ def _zero_records(
     return out
 
 
-@rule("G015", "lane-zero-width-stretch", Category.GEOMETRY, Severity.ERROR, uids=(U.SECTION_USAGE_LANE_NUM,))
+@rule(
+    "G015",
+    "lane-zero-width-stretch",
+    Category.GEOMETRY,
+    Severity.ERROR,
+    uids=(U.SECTION_USAGE_LANE_NUM, U.SECTION_LONG_ZERO_WIDTH),
+)
 def lane_zero_width_stretch(ctx: Context):
     """A lane has zero width over a stretch of its lane section and a width elsewhere: the number of lanes changes
     inside the section.
@@ -49,6 +55,10 @@ def lane_zero_width_stretch(ctx: Context):
     ends (or start one where it starts) and leave the lane out of the other. A lane narrowing to zero exactly at its
     section's end, or widening from zero at its start, is a lane that closes or opens, not this. Stretches shorter than
     ``min_section_length`` are ignored; zero means narrower than ``zero_width`` over a whole width record.
+
+    A lane of zero width over its whole lane section, longer than ``long_zero_width`` (1 m), is a warning from
+    OpenDRIVE 1.9 on: "using lanes with a width of 0 for long distances should be avoided"
+    (``road.lane_section.lane_long_zero_width``).
 
     Passes (lane -2 narrows to zero over the whole section, and a new section starts there)::
 
@@ -75,9 +85,26 @@ def lane_zero_width_stretch(ctx: Context):
             for row, lane in enumerate(lanes):
                 records = _zero_records(lane, s0, s1, a, b, zero[row], tol.min_section_length)
                 stretches = [r for r in records if r[3]]
-                if not stretches or len(stretches) == len(records):
+                if not stretches:
                     continue
-                yield _finding(road, geometry, index, section.s, lane, stretches)
+                if len(stretches) < len(records):
+                    yield _finding(road, geometry, index, section.s, lane, stretches)
+                elif s1 - s0 > tol.long_zero_width:
+                    yield _long_finding(road, index, section, lane, s1 - s0)
+
+
+def _long_finding(road: Road, index: int, section, lane: Lane, length: float):
+    return lane_zero_width_stretch.finding(
+        f"road {road.id}: lane {lane.id} of the lane section at s={section.s:g} has zero width over the whole section "
+        f"({length:.4g} m); leave the lane out instead of running it at zero width",
+        severity=Severity.WARNING,
+        uid=U.SECTION_LONG_ZERO_WIDTH,
+        road=road.id,
+        lane=lane.id,
+        section_s=section.s,
+        s=section.s,
+        line=lane.line or section.line or None,
+    )
 
 
 def _finding(road: Road, geometry, index: int, section_s: float, lane: Lane, stretches):
@@ -94,5 +121,6 @@ def _finding(road: Road, geometry, index: int, section_s: float, lane: Lane, str
         s=start,
         x=float(point.x[0]),
         y=float(point.y[0]),
+        uid=U.SECTION_USAGE_LANE_NUM,
         line=line or lane.line or None,
     )

@@ -59,9 +59,10 @@ def duplicate_junction_id(ctx: Context):
     yield from _duplicates(duplicate_junction_id, ctx.document.junctions, "junction")
 
 
-@rule("R003", "duplicate-lane-id", Category.REFERENCE, Severity.ERROR)
+@rule("R003", "duplicate-lane-id", Category.REFERENCE, Severity.ERROR, uids=(U.LANE_ID_UNIQUE,), every_version=True)
 def duplicate_lane_id(ctx: Context):
-    """Two lanes of one lane section share an id.
+    """Two lanes of one lane section share an id (Annex F ``road.lane.lane_id_unique``, 1.9: unique per lane section
+    and lane layer; the sections of the temporary layer are checked too).
 
     Passes::
 
@@ -72,15 +73,16 @@ def duplicate_lane_id(ctx: Context):
         <right><lane id="-1" type="driving">...</lane><lane id="-1" type="sidewalk">...</lane></right>
     """
     for road in ctx.document.roads:
-        for section in road.lane_sections:
+        temporary = road.temporary_lanes.lane_sections if road.temporary_lanes is not None else ()
+        for section in (*road.lane_sections, *temporary):
             lanes = (*section.left, *section.center, *section.right)
             first: dict[int, int] = {}
             for lane in lanes:
                 if lane.id in first:
                     seen = f" (first at line {first[lane.id]})" if first[lane.id] else ""
                     yield duplicate_lane_id.finding(
-                        f"lane id {lane.id} appears twice in the lane section at s={section.s:g} of road "
-                        f"{road.id}{seen}",
+                        f"lane id {lane.id} appears twice in the {_layer(section, temporary)}lane section at "
+                        f"s={section.s:g} of road {road.id}{seen}",
                         road=road.id,
                         lane=lane.id,
                         section_s=section.s,
@@ -89,6 +91,10 @@ def duplicate_lane_id(ctx: Context):
                     )
                 else:
                     first[lane.id] = lane.line
+
+
+def _layer(section, temporary) -> str:
+    return "temporary layer's " if any(section is other for other in temporary) else ""
 
 
 @rule("R004", "duplicate-connection-id", Category.REFERENCE, Severity.ERROR)

@@ -168,7 +168,10 @@ MISSING_ELEMENT = declare(
     Annex F: a road without ``<lanes>`` breaks ``road.lane_section.lane_sect_req`` (every road has a lane section),
     ``<lanes>`` without ``<laneSection>`` ``road.lane.lane_sect_min_amount``, a lane section without ``<center>``
     ``road.lane.center_elem_definition``, a road without ``<planView>`` or a ``<planView>`` without ``<geometry>``
-    ``road.geometry.refline_exists`` (each road has a reference line).
+    ``road.geometry.refline_exists`` (each road has a reference line); a ``<center>`` without lane 0
+    ``road.lane.center_lane_singular`` (1.9), a lane section of a 1.9 permanent lane layer without centre lane
+    ``road.lane.layer.center_lane_permanent``, a 1.9 road without a permanent lane layer
+    ``road.lane.layer.layer_limits``.
 
     Passes::
 
@@ -178,7 +181,15 @@ MISSING_ELEMENT = declare(
 
         <laneSection s="0"><right><lane id="-1" type="driving">...</lane></right></laneSection>
     """,
-    uids=(U.LANE_SECT_MIN_AMOUNT, U.SECTION_REQ, U.CENTER_ELEM_DEFINITION, RU.GEOMETRY_REFLINE_EXISTS),
+    uids=(
+        U.LANE_SECT_MIN_AMOUNT,
+        U.SECTION_REQ,
+        U.CENTER_ELEM_DEFINITION,
+        U.CENTER_LANE_SINGULAR,
+        U.LAYER_CENTER_PERMANENT,
+        U.LAYER_LIMITS,
+        RU.GEOMETRY_REFLINE_EXISTS,
+    ),
     every_version=True,
 )
 
@@ -191,7 +202,8 @@ REPEATED_ELEMENT = declare(
     An element that may appear only once appears several times (a second ``<header>``, ``<planView>``, ``<lanes>``,
     road ``<predecessor>``, ``<center>``...). The first one is read, the others are ignored. A second ``<center>``
     in a lane section breaks Annex F ``road.lane.center_elem_definition`` (one centre for each s), a second
-    ``<planView>`` in a road ``road.geometry.only_one_refline`` (one reference line per road).
+    ``<planView>`` in a road ``road.geometry.only_one_refline`` (one reference line per road), a second ``<lanes>`` of
+    one lane layer (1.9) ``road.lane.layer.layer_limits``.
 
     Passes::
 
@@ -201,7 +213,7 @@ REPEATED_ELEMENT = declare(
 
         <road id="1" length="10" junction="-1"><planView>...</planView><planView>...</planView>...</road>
     """,
-    uids=(U.CENTER_ELEM_DEFINITION, RU.GEOMETRY_ONLY_ONE_REFLINE),
+    uids=(U.CENTER_ELEM_DEFINITION, U.LAYER_LIMITS, RU.GEOMETRY_ONLY_ONE_REFLINE),
     every_version=True,
 )
 
