@@ -46,6 +46,7 @@ from ..params import Params, TrafficRule
 from . import links as linkplan
 from . import uturn
 from .crossing import LinkFit, crossing
+from .legs import Leg, neighbour_gaps
 from .model import ConnectionPlan, JunctionPlan, Layout, RoadPlan
 from .overlap import overlaps
 from .placement import incident_distances, road_geometry
@@ -72,7 +73,7 @@ class Builder:
         self.st = NetworkState(list(net.nodes), {k: (e.u, e.v, laned.lanes[k]) for k, e in enumerate(net.edges)})
         self._fits: dict[tuple[float, float, float], HermiteFit | None] = {}
         self._crossings: dict[tuple, set[int]] = {}
-        self._plans: dict[tuple[linkplan.Leg, ...], linkplan.LinkPlan] = {}
+        self._plans: dict[tuple[Leg, ...], linkplan.LinkPlan] = {}
 
     # ---------------------------------------------------------------------------------------------------------------
     # graph helpers
@@ -125,7 +126,7 @@ class Builder:
                 legs.setdefault(ch.end, []).append((c, False))
         return legs
 
-    def _leg(self, chs: list[Chain], key: tuple[int, bool]) -> linkplan.Leg:
+    def _leg(self, chs: list[Chain], key: tuple[int, bool]) -> Leg:
         c, at_start = key
         ch = chs[c]
         cfg = self._chain_cfg(ch)
@@ -136,7 +137,7 @@ class Builder:
             a, b = self.st.nodes[ch.nodes[-1]], self.st.nodes[ch.nodes[-2]]
             n_in, n_out = cfg.forward, cfg.backward
         node, edge = (ch.nodes[0], ch.edges[0]) if at_start else (ch.nodes[-1], ch.edges[-1])
-        return linkplan.Leg((node, edge), math.atan2(b[1] - a[1], b[0] - a[0]), n_in, n_out, cfg.median)
+        return Leg((node, edge), math.atan2(b[1] - a[1], b[0] - a[0]), n_in, n_out, cfg.median)
 
     def _acute_legs(self, chs: list[Chain], legs_at: dict[int, list[tuple[int, bool]]]) -> None:
         """Two legs closer than ``min_leg_angle`` need a junction several times larger than a square one (their
@@ -148,11 +149,7 @@ class Builder:
             if self.st.touched([node]) or limit <= 0:
                 continue
             L = [self._leg(chs, k) for k in keys]
-            order = sorted(range(len(L)), key=lambda i: L[i].angle)
-            pairs = sorted(
-                ((L[b].angle - L[a].angle) % (2 * math.pi), a, b) for a, b in zip(order, order[1:] + order[:1])
-            )
-            for gap, a, b in pairs:
+            for gap, a, b in sorted(neighbour_gaps(L)):
                 if gap >= limit:
                     break
                 # the leg with fewer lanes goes first; a leg whose road is needed for connectivity stays
@@ -207,7 +204,7 @@ class Builder:
             if not changed:
                 return
 
-    def _plan(self, L: list[linkplan.Leg]) -> linkplan.LinkPlan:
+    def _plan(self, L: list[Leg]) -> linkplan.LinkPlan:
         """The lane links of a junction with legs ``L``. A plan that drew nothing new depends on the legs alone (what
         was drawn for a leg never changes), so it is kept for the next pass."""
         key = tuple(L)
@@ -219,7 +216,7 @@ class Builder:
             self._plans[key] = plan
         return plan
 
-    def _incident(self, node: int, L: list[linkplan.Leg], plan: linkplan.LinkPlan) -> list[float]:
+    def _incident(self, node: int, L: list[Leg], plan: linkplan.LinkPlan) -> list[float]:
         if node not in self.st.factor:
             self.st.factor[node] = float(self.rng.uniform(1.0, 1.2))
         return incident_distances(L, plan, self.p, self.st.factor[node] * self.st.scale.get(node, 1.0))
@@ -377,9 +374,7 @@ class Builder:
             if len(legs_at[node]) > MAX_LEGS and not self.st.touched([node]):
                 keys = legs_at[node]
                 L = [self._leg(chs, k) for k in keys]
-                order = sorted(range(len(L)), key=lambda i: L[i].angle)
-                gaps = [((L[b].angle - L[a].angle) % (2 * math.pi), a) for a, b in zip(order, order[1:] + order[:1])]
-                prefer = [a for _, a in sorted(gaps)]
+                prefer = [g.first for g in sorted(neighbour_gaps(L))]
                 self._drop_leg(node, keys, chs, prefer, f"node {node}: dropped a leg ({len(keys)} legs, at most 7)")
         if self.st.dirty:
             raise _Repair
@@ -387,7 +382,7 @@ class Builder:
         if self.st.dirty:
             raise _Repair
         self._fix_exits(chs, legs_at)
-        plans: dict[int, tuple[list[tuple[int, bool]], list[linkplan.Leg], linkplan.LinkPlan, list[float]]] = {}
+        plans: dict[int, tuple[list[tuple[int, bool]], list[Leg], linkplan.LinkPlan, list[float]]] = {}
         r_at: dict[tuple[int, bool], float] = {}
         for node in sorted(legs_at):
             keys = sorted(legs_at[node])

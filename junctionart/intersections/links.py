@@ -16,18 +16,10 @@ import numpy as np
 
 from ..curves import wrap
 from ..params import Params, SplitStrategy, TrafficRule
+from .legs import Leg
 
 #: Turns sharper than this (a near U-turn between two legs at a small angle) are only used when nothing else exists.
 SHARPEST_TURN = math.radians(150.0)
-
-
-@dataclass(frozen=True)
-class Leg:
-    key: tuple[int, int]  #: (node, edge of the leg at the node): stable while repairs change the network
-    angle: float  #: heading of the leg leaving the node
-    n_in: int  #: lanes travelling into the node
-    n_out: int  #: lanes travelling away from the node
-    median: bool
 
 
 @dataclass(frozen=True)

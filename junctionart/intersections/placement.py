@@ -17,6 +17,7 @@ from ..lanegeom import min_curve_radius, side_width
 from ..lanes import LaneConfig
 from ..params import Params
 from . import links as linkplan
+from .legs import Leg, neighbour_gaps
 
 MARGIN = 1.0  #: clearance between the stubs of neighbouring legs
 #: Total turning (rad) of a road's bends beyond which its borders are tested for crossing themselves.
@@ -29,11 +30,10 @@ def _unit(a: tuple[float, float], b: tuple[float, float]) -> tuple[float, float,
     return dx / L, dy / L, L
 
 
-def incident_distances(L: list[linkplan.Leg], plan: linkplan.LinkPlan, params: Params, scale: float) -> list[float]:
+def incident_distances(L: list[Leg], plan: linkplan.LinkPlan, params: Params, scale: float) -> list[float]:
     """Distance of each leg's incident point from the control point: the paper's W / sin(d) rule with the legs'
     actual widths, room for a turn between neighbouring legs that ``plan`` links, times ``scale`` (the node's
     random factor and growth). Neighbours at a sharp angle that no lane links need only keep their stubs apart."""
-    order = sorted(range(len(L)), key=lambda i: L[i].angle)
     # lanes at the junction: a turn lane added before it widens the incoming side
     half = [
         max(
@@ -45,8 +45,7 @@ def incident_distances(L: list[linkplan.Leg], plan: linkplan.LinkPlan, params: P
     r = [h + params.min_turn_radius + 2.0 for h in half]
     turn_r = params.min_turn_radius + 1.0 + params.lane_width / 2
     linked = {frozenset((i, j)) for i, _, j, _ in plan.links}
-    for a, b in zip(order, order[1:] + order[:1]):
-        d = (L[b].angle - L[a].angle) % (2 * math.pi)
+    for d, a, b in neighbour_gaps(L):
         W = half[a] + half[b] + MARGIN
         need = W / max(math.sin(d), 1e-3) if d < math.pi / 2 else W
         if d < math.pi and frozenset((a, b)) in linked:
