@@ -237,13 +237,6 @@ def fit_connections(
     ]
 
 
-def fit_connection(
-    u1: float, v1: float, phi: float, offsets: tuple[float, ...], min_radius: float, scales: np.ndarray
-) -> HermiteFit | None:
-    """:func:`fit_connections` for one target."""
-    return fit_connections(np.array([[u1, v1, phi]]), offsets, min_radius, scales)[0]
-
-
 def connection_geometry(x0: float, y0: float, h0: float, fit: HermiteFit) -> ParamPoly3:
     c = fit.coef
     return ParamPoly3(0.0, x0, y0, h0, fit.length, c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7])
@@ -295,7 +288,3 @@ def fillet_chain(
     if along > 1e-9 or not out:
         out.append(Line(s, pose.x, pose.y, pose.hdg, max(along, 1e-3)))
     return tuple(out)
-
-
-def chain_length(geoms: tuple[Geometry, ...]) -> float:
-    return sum(g.length for g in geoms)

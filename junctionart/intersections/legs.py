@@ -13,6 +13,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import NamedTuple
 
+MAX_LEGS = 7  #: most legs a junction may have (the paper builds three- to seven-way intersections)
+
 
 class LegKey(NamedTuple):
     """Names a leg for one pass: the road (chain index) and which of its ends meets the junction."""

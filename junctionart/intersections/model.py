@@ -36,6 +36,11 @@ class ConnectionPlan:
     min_radius: float  #: smallest radius of the reference line, lane centre and outer border
 
 
+def contact_point(at_start: bool) -> str:
+    """How OpenDRIVE names the end of a road: ``contactPoint`` "start" or "end"."""
+    return "start" if at_start else "end"
+
+
 @dataclass(frozen=True)
 class JunctionPlan:
     node: int

@@ -1,26 +1,27 @@
-"""Road bodies and junction areas that overlap where the map does not connect them (found before writing)."""
+"""Road bodies and junction areas that overlap where the map does not connect them, found and repaired before writing.
+
+xodrcheck counts any shared area between parts the map does not connect as an overlap; a map that has one is not
+drivable as drawn, so stage 3 removes a road instead (one the map can lose, where there is one).
+"""
 
 from __future__ import annotations
 
 import math
+from enum import Enum
 
 import numpy as np
 import shapely
 
-from ..curves import end_pose, sample, unit_tangents
+from ..curves import sample, unit_tangents
 from ..graph import Chain
 from ..lanegeom import border_point, side_width
-from ..lanes import LaneConfig
 from ..opendrive import Geometry, ParamPoly3
 from ..params import Params, TrafficRule
-
-
-def _pose(g: tuple[Geometry, ...], at_start: bool) -> tuple[float, float, float]:
-    if at_start:
-        return g[0].x, g[0].y, g[0].hdg
-    e = end_pose(g[-1])
-    return e.x, e.y, e.hdg
-
+from .model import JunctionPlan
+from .planning import Junction
+from .roads import Road
+from .roadshape import contact
+from .survey import Survey
 
 INSET = 0.05  #: how far a connection lane's body stays inside its ends and borders (m)
 
@@ -79,10 +80,35 @@ def _lane_bodies(gs, side: float, w: float) -> list:
     return out
 
 
+class Part(Enum):
+    """What a shape in the overlap test belongs to."""
+
+    ROAD = "road"
+    JUNCTION = "junction"
+
+
+def remove_overlaps(
+    view: Survey, roads: list[Road], junctions: dict[int, Junction], plans: list[JunctionPlan], p: Params
+) -> None:
+    """Roads and junction areas (with every connection lane) may only touch where the map connects them; otherwise
+    a road is removed (one whose removal keeps the map connected when there is one)."""
+    st = view.state
+    lanes = {jp.node: [c.geometry for c in jp.connections] for jp in plans}
+    for cands in overlaps(view.chains, roads, junctions, lanes, p):
+        if any(st.touched(view.chains[c].nodes) for c in cands):
+            continue
+        chosen = next((c for c in cands if st.connected_without(set(view.chains[c].edges))), cands[0])
+        for e in view.chains[chosen].edges:
+            del st.edges[e]
+        st.dirty.update(view.chains[chosen].nodes)
+        ch = view.chains[chosen]
+        st.repairs.append(f"removed road between nodes {ch.start} and {ch.end}: it overlapped another road or junction")
+
+
 def overlaps(
     chs: list[Chain],
-    roads: list[tuple[tuple[Geometry, ...], LaneConfig]],
-    junctions: dict[int, list[tuple[tuple[Geometry, ...], LaneConfig, bool]]],
+    roads: list[Road],
+    junctions: dict[int, Junction],
     connections: dict[int, list[Geometry]],
     p: Params,
 ) -> list[list[int]]:
@@ -93,62 +119,72 @@ def overlaps(
     the lane lying on the traffic side), since a wide turn can leave the hull. Roads sharing an end node, and a
     junction with its own legs, may touch.
     """
+    shapes = _road_shapes(roads, p)
+    owners = [(Part.ROAD, c) for c in range(len(roads))]
+    for node, j in junctions.items():
+        for shape in _junction_shapes(roads, j, connections.get(node, []), p):
+            shapes.append(shape)
+            owners.append((Part.JUNCTION, node))
+    return _overlapping(chs, np.array(shapes, dtype=object), owners)
+
+
+def _road_shapes(roads: list[Road], p: Params) -> list:
+    """Each road's reference line buffered by its wider side."""
+    if not roads:
+        return []
     w, mw = p.lane_width, p.median_width
     halves, lines = [], []
-    for g, cfg in roads:
+    for road in roads:
+        cfg = road.spec.lanes
         halves.append(max(side_width(cfg.forward, cfg.median, w, mw), side_width(cfg.backward, cfg.median, w, mw)))
-        lines.append(np.concatenate([sample(e, max(2, int(e.length / 5.0) + 2)) for e in g]))
-    shapes = (
-        list(
-            shapely.buffer(
-                shapely.linestrings(
-                    np.concatenate(lines), indices=np.repeat(np.arange(len(lines)), [len(x) for x in lines])
-                ),
-                np.array(halves),
-                cap_style="flat",
-            )
-        )
-        if roads
-        else []
+        lines.append(np.concatenate([sample(e, max(2, int(e.length / 5.0) + 2)) for e in road.geometry]))
+    indices = np.repeat(np.arange(len(lines)), [len(x) for x in lines])
+    return list(
+        shapely.buffer(shapely.linestrings(np.concatenate(lines), indices=indices), np.array(halves), cap_style="flat")
     )
-    owners = [("road", c) for c in range(len(roads))]
+
+
+def _junction_shapes(roads: list[Road], j: Junction, connections: list[Geometry], p: Params) -> list:
+    """The junction's area (hull of its legs' end cross-sections, kept 0.5 m inside) and its connection lanes."""
+    w, mw = p.lane_width, p.median_width
     rht = p.traffic_rule is TrafficRule.RHT
-    for node, legs in junctions.items():
-        corners = []
-        for g, cfg, at_start in legs:
-            pose = _pose(g, at_start)
-            left = side_width(cfg.backward if rht else cfg.forward, cfg.median, w, mw)
-            right = side_width(cfg.forward if rht else cfg.backward, False, w, mw)
-            corners.append(border_point(*pose, left))
-            corners.append(border_point(*pose, -right))
-        shapes.append(shapely.MultiPoint(np.array(corners)).convex_hull.buffer(-0.5))
-        owners.append(("junction", node))
-        side = -1.0 if rht else 1.0  # connection lanes are -1 (RHT) or 1 (LHT): right or left of their reference line
-        for body in _lane_bodies(connections.get(node, ()), side, w):
-            if body is not None:
-                shapes.append(body)
-                owners.append(("junction", node))
-    shapes = np.array(shapes, dtype=object)
+    corners = []
+    for key in j.keys:
+        road = roads[key.chain]
+        cfg, at = road.spec.lanes, contact(road.geometry, key.at_start)
+        left = side_width(cfg.backward if rht else cfg.forward, cfg.median, w, mw)
+        right = side_width(cfg.forward if rht else cfg.backward, False, w, mw)
+        corners.append(border_point(at.x, at.y, at.hdg, left))
+        corners.append(border_point(at.x, at.y, at.hdg, -right))
+    shapes = [shapely.MultiPoint(np.array(corners)).convex_hull.buffer(-0.5)]
+    side = -1.0 if rht else 1.0  # connection lanes are -1 (RHT) or 1 (LHT): right or left of their reference line
+    shapes.extend(body for body in _lane_bodies(connections, side, w) if body is not None)
+    return shapes
+
+
+def _overlapping(chs: list[Chain], shapes: np.ndarray, owners: list[tuple[Part, int]]) -> list[list[int]]:
+    """The removal candidates of every pair of shapes sharing area (at least 0.01 m2) where the map does not connect
+    their owners."""
     left_i, right_i = shapely.STRtree(shapes).query(shapes)  # bounding boxes first
     # the hull and lanes of one junction overlap each other by design: drop those pairs before the exact test
-    junction_of = np.array([a if kind == "junction" else -1 for kind, a in owners])
+    junction_of = np.array([a if kind is Part.JUNCTION else -1 for kind, a in owners])
     keep = (left_i < right_i) & ((junction_of[left_i] < 0) | (junction_of[left_i] != junction_of[right_i]))
     left_i, right_i = left_i[keep], right_i[keep]
     hit = shapely.intersects(shapes[left_i], shapes[right_i])
     found = []
     for i, j in sorted(zip(left_i[hit].tolist(), right_i[hit].tolist())):
-        (ka, a), (kb, b) = owners[i], owners[j]
-        if ka == "road" and kb == "road":
-            if {chs[a].start, chs[a].end} & {chs[b].start, chs[b].end}:
-                continue
-            cands = [a, b]
-        elif ka == "junction" and kb == "junction":
-            cands = [c for c, ch in enumerate(chs) if {ch.start, ch.end} & {a, b}]
-        else:
-            road, node = (a, b) if ka == "road" else (b, a)
-            if node in (chs[road].start, chs[road].end):
-                continue
-            cands = [road]
-        if shapes[i].intersection(shapes[j]).area >= 0.01:
+        cands = _candidates(chs, owners[i], owners[j])
+        if cands is not None and shapes[i].intersection(shapes[j]).area >= 0.01:
             found.append(cands)
     return found
+
+
+def _candidates(chs: list[Chain], a: tuple[Part, int], b: tuple[Part, int]) -> list[int] | None:
+    """The roads whose removal separates two owners, or None where the map connects them (they may touch)."""
+    (ka, x), (kb, y) = a, b
+    if ka is Part.ROAD and kb is Part.ROAD:
+        return None if {chs[x].start, chs[x].end} & {chs[y].start, chs[y].end} else [x, y]
+    if ka is Part.JUNCTION and kb is Part.JUNCTION:
+        return [c for c, ch in enumerate(chs) if {ch.start, ch.end} & {x, y}]
+    road, node = (x, y) if ka is Part.ROAD else (y, x)
+    return None if node in (chs[road].start, chs[road].end) else [road]

@@ -16,10 +16,14 @@ from dataclasses import dataclass
 import numpy as np
 import shapely
 
-from ..lanegeom import border_point, inner_offset, lane_id
+from ..lanegeom import border_point
 from ..opendrive import Arc
 from ..params import Params, TrafficRule
 from .crossing import CLEARANCE, PARTED, TOUCH, LinkFit
+from .legs import LegKey
+from .links import LinkPlan
+from .model import ConnectionPlan, contact_point
+from .roadshape import Contact
 
 _SAMPLES = 129
 
@@ -33,25 +37,46 @@ class UTurn:
     radius: float  #: of the reference line; the lane centre's is half a lane width larger
 
 
-def candidate(
-    leg: int, contact: tuple[float, float, float, bool], median: bool, n_out_end: int, p: Params
-) -> UTurn | None:
+def candidate(leg: int, contact: Contact, median: bool, n_out_end: int, p: Params) -> UTurn | None:
     """The U-turn of one leg, from its innermost incoming lane to the nearest outgoing lane fed at the junction whose
     half circle meets the radius bound; None when there is none."""
-    x, y, h, at_start = contact
-    rule = p.traffic_rule
-    lid_in = lane_id(not at_start, 1, median, rule)
-    h0 = h + (math.pi if at_start else 0.0)  # driving into the junction
-    x0, y0 = border_point(x, y, h, inner_offset(lid_in, median, p.lane_width, p.median_width))
+    lid_in, (x0, y0) = contact.entering(1, median, p)
     for m in range(1, n_out_end + 1):
-        lid_out = lane_id(at_start, m, median, rule)
-        x1, y1 = border_point(x, y, h, inner_offset(lid_out, median, p.lane_width, p.median_width))
+        lid_out, (x1, y1) = contact.leaving(m, median, p)
         radius = math.hypot(x1 - x0, y1 - y0) / 2
         if radius >= p.min_turn_radius:
-            left = 1.0 if rule is TrafficRule.RHT else -1.0  # RHT turns back to the left
-            arc = Arc(0.0, x0, y0, h0, math.pi * radius, left / radius)
+            left = 1.0 if p.traffic_rule is TrafficRule.RHT else -1.0  # RHT turns back to the left
+            arc = Arc(0.0, x0, y0, contact.inward, math.pi * radius, left / radius)
             return UTurn(leg, lid_in, lid_out, arc, radius)
     return None
+
+
+def u_turns(
+    keys: list[LegKey],
+    plan: LinkPlan,
+    contacts: list[Contact],
+    medians: list[bool],
+    fits: list[LinkFit],
+    p: Params,
+    rng: np.random.Generator,
+) -> list[ConnectionPlan]:
+    """U-turn lanes of a finished junction: on legs where one meets the radius bound and crosses none of its
+    road's other connection lanes, each with probability ``u_turn_probability``. Drawn last in stage 3, so the
+    rest of the map does not depend on them."""
+    if p.u_turn_probability <= 0.0:
+        return []
+    out = []
+    for i, key in enumerate(keys):
+        if plan.n_in_end[i] == 0:
+            continue
+        turn = candidate(i, contacts[i], medians[i], plan.n_out_end[i], p)
+        if turn is None or crosses(turn, 1, fits, p):
+            continue
+        if rng.random() >= p.u_turn_probability:
+            continue
+        end = contact_point(key.at_start)
+        out.append(ConnectionPlan(key.chain, end, turn.id_in, key.chain, end, turn.id_out, turn.geometry, turn.radius))
+    return out
 
 
 def _centre_points(ref: Arc, w: float) -> np.ndarray:
