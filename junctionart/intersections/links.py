@@ -90,8 +90,6 @@ def plan(
                 links.append((i, k, j, m))
                 fed[j].add(m)
             pos += take
-    n_out_end = []
-    for j, leg in enumerate(legs):
-        # outgoing lanes nobody feeds taper out before the junction; fed ones are a contiguous set 1..max
-        n_out_end.append(max(fed[j]) if fed[j] else 0)
+    # outgoing lanes nobody feeds taper out before the junction; fed ones are a contiguous set 1..max
+    n_out_end = [max(f) if f else 0 for f in fed]
     return LinkPlan(tuple(n_in_end), tuple(n_out_end), tuple(links))

@@ -24,10 +24,10 @@ def incident_distances(L: list[Leg], plan: linkplan.LinkPlan, params: Params, sc
     # lanes at the junction: a turn lane added before it widens the incoming side
     half = [
         max(
-            side_width(max(l.n_in, plan.n_in_end[i]), l.median, params.lane_width, params.median_width),
-            side_width(l.n_out, l.median, params.lane_width, params.median_width),
+            side_width(max(leg.n_in, plan.n_in_end[i]), leg.median, params.lane_width, params.median_width),
+            side_width(leg.n_out, leg.median, params.lane_width, params.median_width),
         )
-        for i, l in enumerate(L)
+        for i, leg in enumerate(L)
     ]
     r = [h + params.min_turn_radius + 2.0 for h in half]
     turn_r = params.min_turn_radius + 1.0 + params.lane_width / 2
