@@ -56,8 +56,8 @@ def main() -> int:
         asam_time = time.perf_counter() - started
         started = time.perf_counter()
         if args.whole_process:
-            command = [str(Path(sys.executable).parent / "xodrcheck"), "check", str(path)]
-            subprocess.run(command, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
+            ours = [str(Path(sys.executable).parent / "xodrcheck"), "check", str(path)]
+            subprocess.run(ours, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL, check=False)
         else:
             report = check(path)
         ours_time = time.perf_counter() - started
