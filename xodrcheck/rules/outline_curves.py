@@ -11,6 +11,7 @@ import dataclasses
 import itertools
 import math
 from collections.abc import Iterator
+from typing import Any
 
 import numpy as np
 
@@ -179,7 +180,7 @@ def curve_local_length_mismatch(ctx: Context):
             g = curve.shape
             if not isinstance(g, ParamPoly3):
                 continue
-            where = {"road": obj.road, "s": obj.s, "line": g.line or curve.line}
+            where: dict[str, Any] = {"road": obj.road, "s": obj.s, "line": g.line or curve.line}
             mine = f"road {obj.road} object {obj.id}: the paramPoly3 of the <curveLocal> at line {curve.line}"
             normalized = g.p_range is PRange.NORMALIZED
             if curve.length is None:

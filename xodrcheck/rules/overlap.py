@@ -286,9 +286,10 @@ def road_self_overlap(ctx: Context):
         if pair.largest is None or o.area > pair.largest.area:
             pair.largest = o
     for road_id, pair in per_road.items():
-        o = pair.largest
-        if pair.area <= tol.overlap_area or o is None:
+        largest = pair.largest
+        if pair.area <= tol.overlap_area or largest is None:
             continue
+        o = largest
         a, b = surfaces.lanes[o.lane_a], surfaces.lanes[o.lane_b]
         road = ctx.road(road_id)
         yield road_self_overlap.finding(

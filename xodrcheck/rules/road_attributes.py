@@ -180,13 +180,15 @@ def shape_t_coverage(ctx: Context):
         if edge is None:
             continue
         t_edge, s_edge = edge
+        geometry = ctx.geometry(records.road)
         for s, group in shape_groups(records.shapes):
-            first = group[0]
-            if first.t > t_edge + tol:  # type: ignore[operator]
-                pose = ctx.geometry(records.road).reference(np.array([s]))
+            t_first = group[0].t
+            if geometry is not None and t_first is not None and t_first > t_edge + tol:
+                first = group[0]
+                pose = geometry.reference(np.array([s]))
                 yield shape_t_coverage.finding(
-                    f"road {records.road}: the shapes at s={s:g} start at t={first.t:g}, but the road reaches "
-                    f"t={t_edge:.4g} (at s={s_edge:.4g}): the lateral profile leaves {first.t - t_edge:.4g} m of the "
+                    f"road {records.road}: the shapes at s={s:g} start at t={t_first:g}, but the road reaches "
+                    f"t={t_edge:.4g} (at s={s_edge:.4g}): the lateral profile leaves {t_first - t_edge:.4g} m of the "
                     f"road's width uncovered; start the first shape at t <= {t_edge:.4g}",
                     road=records.road,
                     s=s,

@@ -97,6 +97,6 @@ def _build(ctx: Context):
         shapes = []
         for profile in road.iterchildren("{*}lateralProfile"):
             for el in profile.iterchildren("{*}shape"):
-                values = [number(el.get(name)) for name in ("s", "t", "a", "b", "c", "d")]
-                shapes.append(Shape(road_id, *values, el.sourceline or 0))
+                s, t, a, b, c, d = (number(el.get(name)) for name in ("s", "t", "a", "b", "c", "d"))
+                shapes.append(Shape(road_id, s, t, a, b, c, d, el.sourceline or 0))
         yield RoadRecords(road_id, road.sourceline or 0, tuple(types), tuple(shapes))
