@@ -61,8 +61,10 @@ def duplicate_junction_id(ctx: Context):
 
 @rule("R003", "duplicate-lane-id", Category.REFERENCE, Severity.ERROR, uids=(U.LANE_ID_UNIQUE,), every_version=True)
 def duplicate_lane_id(ctx: Context):
-    """Two lanes of one lane section share an id (Annex F ``road.lane.lane_id_unique``, 1.9: unique per lane section
-    and lane layer; the sections of the temporary layer are checked too).
+    """Two lanes of one lane section share an id.
+
+    Annex F ``road.lane.lane_id_unique`` (1.9): lane ids are unique per lane section and lane layer; the lane sections
+    of the temporary layer are checked too.
 
     Passes::
 
