@@ -1,4 +1,6 @@
-"""JSON: ``{"files": [{"path", "version", "ok", "findings": [...]}], "summary": {...}}``.
+"""JSON: ``{"files": [{"path", "version", "ok", "complete", "findings": [...]}], "summary": {...}}``.
+
+``complete`` is false when a rule did not run to its end (X900, X901): such a file is never ``ok``.
 
 Every finding has the keys ``code name category severity message road lane s x y z line rule_uid`` (``null`` where a
 key does not apply), so consumers can rely on the shape. ``rule_uid`` names the checker rule of the standard (ASAM
@@ -60,6 +62,7 @@ def document(reports: Sequence) -> dict:
                 "path": r.path,
                 "version": r.version,
                 "ok": r.ok,
+                "complete": r.complete,
                 "findings": [finding_dict(f) for f in r.findings],
             }
             for r in reports

@@ -255,3 +255,18 @@ def test_the_readme_table_covers_every_command_of_both_tools():
     missing += [c for c in ("generate", "render", "era") if c not in named]
     assert not missing, missing
     assert "130 after Ctrl-C, 143 after SIGTERM" in section and str(EXIT_TERMINATED) == "143"
+
+
+def test_check_exits_3_when_incomplete_and_says_so(tmp_path, capsys):
+    """A time bound the user sets and the check does not meet: exit 3 and an INCOMPLETE summary, not "0 error(s)"
+    and exit 0 (what a 120 s default budget gave a 10 km map)."""
+    import json
+
+    src = _good(tmp_path)
+    assert main(["check", src, "-j", "1", "--tolerance", "time_budget=1e-9"]) == 3
+    captured = capsys.readouterr()
+    assert "X901 error" in captured.out and "INCOMPLETE" in captured.err and "the verdict is not known" in captured.err
+    assert main(["check", src, "-j", "1", "--tolerance", "time_budget=1e-9", "--format", "json"]) == 3
+    (entry,) = json.loads(capsys.readouterr().out)["files"]
+    assert entry["complete"] is False and entry["ok"] is False
+    assert main(["check", src, "-j", "1"]) == 0  # no bound by default: complete
