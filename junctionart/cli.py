@@ -303,6 +303,18 @@ def _add_era(sub: argparse._SubParsersAction) -> None:
     add_arguments(p)
 
 
+def _add_intersection(sub: argparse._SubParsersAction) -> None:
+    from .intersection_cli import add_arguments
+
+    p = sub.add_parser(
+        "intersection",
+        help="one intersection from explicit legs (headings, lanes in and out, medians, bends)",
+        description="Write a small map with one intersection described leg by leg (--leg) or as JSON (--spec), "
+        "built by the generator's intersection stage: the junction and an approach road per leg.",
+    )
+    add_arguments(p)
+
+
 class _Parser(argparse.ArgumentParser):
     """Usage errors as one line and exit code 2 (``junctionart generate -h`` still shows the full help)."""
 
@@ -316,6 +328,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     _add_generate(sub)
     _add_render(sub)
     _add_era(sub)
+    _add_intersection(sub)
     args = parser.parse_args(argv)
     from xodrcheck.atomic import EXIT_INTERRUPTED, EXIT_TERMINATED, Terminated, signals_raise
 
@@ -344,6 +357,10 @@ def _command(args: argparse.Namespace) -> int:
         from .era import run as _era
 
         return _era(args)
+    if args.command == "intersection":
+        from .intersection_cli import run as _intersection
+
+        return _intersection(args)
     return _render(args)
 
 

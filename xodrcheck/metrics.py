@@ -194,6 +194,23 @@ def make_leg(geometry: RoadGeometry, end: ContactPoint, lookback: float = LOOKBA
     return Leg(road.id, end, p0, p1)
 
 
+def junction_legs(document: Document, junction: Junction, lookback: float = LOOKBACK) -> list[Leg]:
+    """The legs of ``junction`` with their incident and look-back points (roads without geometry left out)."""
+    geometries = geometry_of(document)
+    return [make_leg(geometries[r], e, lookback) for r, e in leg_ends(document, junction) if r in geometries]
+
+
+def smallest_leg_angle(legs: list[Leg] | tuple[Leg, ...]) -> float | None:
+    """Smallest angle (degrees) between two neighbouring legs' directions out of the junction (``p1 -> p0``), the
+    gaps taken around the circle; ``None`` for fewer than two legs."""
+    if len(legs) < 2:
+        return None
+    out = np.array([leg.p0 for leg in legs], dtype=float) - np.array([leg.p1 for leg in legs], dtype=float)
+    headings = np.sort(np.degrees(np.arctan2(out[:, 1], out[:, 0])) % 360.0)
+    gaps = np.diff(np.append(headings, headings[0] + 360.0))
+    return float(gaps.min())
+
+
 # --------------------------------------------------------------------------------------------------------------------
 # Per-leg metrics: functions of the four points only
 # --------------------------------------------------------------------------------------------------------------------
