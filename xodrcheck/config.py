@@ -89,6 +89,13 @@ class Tolerances:
         "distance (G015, road.lane_section.lane_long_zero_width, 1.9).",
         rules="G015",
     )
+    object_volume: float = _tolerance(
+        0.01,
+        "m",
+        "Points of an object's outline or skeleton may lie this far outside the object's bounding volume (and a "
+        "skeleton point's cross-section this far from it) without a finding: corners written with a few decimals.",
+        rules="B018 B034",
+    )
     junction_start: float = _tolerance(
         0.05,
         "m",

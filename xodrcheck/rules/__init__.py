@@ -24,7 +24,10 @@ prefix    category    codes
                       (:mod:`.junction_geometry`)
 ``O``     overlap     ``O0xx`` (:mod:`.overlap`)
 ``H``     header      ``H0xx`` header, default regulations, whole-file recommendations (:mod:`.header`)
-``B``     object      ``B0xx`` road objects (outlines, skeletons, markings, borders, repeats, bridges, tunnels)
+``B``     object      ``B0xx`` road objects: attributes and lane validity (:mod:`.object_attributes`), outlines and
+                      borders (:mod:`.object_outlines`), markings (:mod:`.object_markings`), skeletons
+                      (:mod:`.object_skeletons`), repeats (:mod:`.object_repeats`), where outlines and skeletons
+                      lie (:mod:`.object_geometry`), surfaces (:mod:`.object_surfaces`)
 ``T``     signal      ``T0xx`` signals, signal references, boards, controllers
 ``W``     railroad    ``W0xx`` railroads (tracks, switches, stations)
 ``U``     surface     ``U0xx`` road surfaces (CRG, cross-section surfaces)
@@ -56,6 +59,13 @@ FAMILIES = (
     "elements",
     "road_attributes",
     "outline_curves",
+    "object_attributes",
+    "object_outlines",
+    "object_markings",
+    "object_skeletons",
+    "object_repeats",
+    "object_geometry",
+    "object_surfaces",
     "lane_shape",
     "lane_zero_width",
     "lane_layer_width",

@@ -34,7 +34,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree
 
     from xodrcheck.lanes import RoadGeometry
-    from xodrcheck.objects import RoadObject
+    from xodrcheck.objects import RoadObject, RoadObjects
 
 
 def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
@@ -131,14 +131,20 @@ class Context:
         return None if root is None else etree.ElementTree(root)
 
     @cached_property
-    def objects(self) -> Mapping[str, tuple[RoadObject, ...]]:
-        """Road id -> the road's objects as typed data (:mod:`xodrcheck.objects`: positions, outlines with 1.9's
-        ``<curveLocal>``, repeats with 1.9's cubic ``t``), built from :attr:`tree` once per file; empty when the file
-        is not well-formed."""
-        from xodrcheck.objects import read_objects
+    def road_objects(self) -> Mapping[str, RoadObjects]:
+        """Road id -> everything in the road's ``<objects>`` as typed data (:mod:`xodrcheck.objects`: objects with
+        outlines, skeletons, markings, borders, repeats, surfaces; object references, tunnels, bridges), built from
+        :attr:`tree` once per file; empty when the file is not well-formed."""
+        from xodrcheck.objects import read_road_objects
 
         tree = self.tree
-        return {} if tree is None else read_objects(tree.getroot(), self.version)
+        return {} if tree is None else read_road_objects(tree.getroot(), self.version)
+
+    @cached_property
+    def objects(self) -> Mapping[str, tuple[RoadObject, ...]]:
+        """Road id -> the road's ``<object>`` elements as typed data (of :attr:`road_objects`; roads without objects
+        are left out)."""
+        return {road: found.objects for road, found in self.road_objects.items() if found.objects}
 
     # ---------------------------------------------------------------------------------------------------- geometry
     def geometry(self, road_id: str) -> RoadGeometry | None:

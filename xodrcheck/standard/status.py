@@ -27,6 +27,35 @@ NOT_ENFORCED: dict[str, str] = {
         "<roadMark> has no position of its own (the tOffset of its <line> elements and its <sway> are deliberate "
         "displacements from that border), so nothing in the file can place it otherwise"
     ),
+    # road.object (13): permissions and statements of what a reader does
+    "asam.net:xodr:1.7.0:road.object.bridges.define_type": (
+        "a permission: a bridge may be restricted to certain lanes with <validity> (or not), so no file can break it; "
+        "the lanes' order is validity-lanes-reversed's (B005)"
+    ),
+    "asam.net:xodr:1.7.0:road.object.material.materials_may_differ": (
+        "a permission: an object's <material> may differ from the road's around it, so no file can break it"
+    ),
+    "asam.net:xodr:1.8.2:road.object.object_marking.include_points_between_cornerReferences": (
+        "says how a marking is drawn when its corner references skip outline points: through every point between "
+        "them; any ordered list of references has that meaning, so no file can break it (the order itself is "
+        "keep_id_ordered's, B023)"
+    ),
+    "asam.net:xodr:1.8.0:road.object.skeleton.vertex_local.linear_interpolation": (
+        "says how a reader sizes a skeleton between two <vertexLocal> points (radius or width and length "
+        "interpolated linearly); no file can say otherwise"
+    ),
+    "asam.net:xodr:1.9.0:road.object.skeleton.vertex_road.linear_interpolation": (
+        "says how a reader sizes a skeleton between two <vertexRoad> points (radius or width and length "
+        "interpolated linearly); no file can say otherwise"
+    ),
+    "asam.net:xodr:1.7.0:road.object.surface.calculate_road_height": (
+        "says how a reader computes the road height where the object's CRG (crgEvaluv2z) returns NaN: needs the "
+        "content of the CRG file, which is outside the .xodr, and describes evaluation, not the file"
+    ),
+    "asam.net:xodr:1.7.0:road.object.surface.identical_local_coordinates": (
+        "says that a reader places the object's CRG in the object's local frame and ignores the CRG file's own "
+        "reference line, position, curvature and heading: those are in the CRG file, outside the .xodr"
+    ),
     # road.type (10.4)
     "asam.net:xodr:1.4.0:road.type.create_new_type_in_parent": (
         "says how a change of road type is written (a new <type> in the <road>); a file has no other way to write "

@@ -23,7 +23,7 @@ def test_a_curve_without_length_reaches_the_next_curve_only_along_itself():
 
 def test_the_closing_joint_of_a_closed_outline_is_checked():
     text = fixture(RULE, "pass.xodr").read_text(encoding="utf-8")
-    opened = text.replace('<curveLocal id="0" u="0" v="0"', '<curveLocal id="0" u="0" v="0.5"')
+    opened = text.replace('<curveLocal id="0" u="-5" v="-2"', '<curveLocal id="0" u="-5" v="-1.5"')
     found = [f for f in check(opened.encode(), select=("G060",)).findings if f.code == "G060"]
-    closing = [f for f in found if "starts at u=0, v=0.5" in f.message]  # the paramPoly3 ends at (0, 0)
-    assert 'u="0" v="0.5"' in opened and len(closing) == 1 and "0.5 m away" in closing[0].message
+    closing = [f for f in found if "starts at u=-5, v=-1.5" in f.message]  # the paramPoly3 ends at (-5, -2)
+    assert 'u="-5" v="-1.5"' in opened and len(closing) == 1 and "0.5 m away" in closing[0].message

@@ -1,0 +1,355 @@
+"""Road objects as plain, frozen, typed data (13.1-13.13): what the reader of :mod:`xodrcheck.objects.read` builds.
+
+Numbers that do not parse are ``None`` (the schema rule reports them); nothing here reports findings. Every element
+keeps its source ``line``. Elements that the object rules count or whose order matters keep enough of themselves to be
+counted even when their numbers do not parse: an outline's :attr:`Outline.points` lists every ``<cornerRoad>``,
+``<cornerLocal>`` and ``<curveLocal>`` child in file order, a polyline's vertices keep ``None`` coordinates.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from xodrcheck.model import Arc, Cubic, LaneLayer, Line, ParamPoly3
+
+#: The shapes a ``<curveLocal>`` may have, as plan-view elements starting at ``s = 0``.
+CurveShape = Line | Arc | ParamPoly3
+
+#: Element names of outline points, in the order :attr:`Outline.kind` reports them.
+CORNER_ROAD, CORNER_LOCAL, CURVE_LOCAL = "cornerRoad", "cornerLocal", "curveLocal"
+VERTEX_ROAD, VERTEX_LOCAL = "vertexRoad", "vertexLocal"
+
+
+@dataclass(frozen=True, slots=True)
+class CornerRoad:
+    s: float
+    t: float
+    dz: float
+    height: float
+    id: int | None = None
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class CornerLocal:
+    u: float
+    v: float
+    z: float
+    height: float
+    id: int | None = None
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class CurveLocal:
+    """A ``<curveLocal>`` (1.9): ``shape`` starts at (``u``, ``v``) with heading ``hdg``; ``None`` when its shape
+    element is missing or does not parse. ``length`` ``None``: the file gave none (the curve "shall extend up to the
+    next <curveLocal>")."""
+
+    u: float
+    v: float
+    z: float
+    height: float
+    hdg: float
+    length: float | None
+    shape: CurveShape | None
+    id: int | None = None
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class OutlinePoint:
+    """One ``<cornerRoad>``, ``<cornerLocal>`` or ``<curveLocal>`` of an outline, whether its numbers parse or not:
+    ``kind`` is the element name, ``id`` its ``@id`` as an integer (``None``: absent or not an integer), ``id_text``
+    the attribute as written (``None``: absent)."""
+
+    kind: str
+    id: int | None
+    id_text: str | None
+    line: int
+
+
+@dataclass(frozen=True, slots=True)
+class CornerReference:
+    """A ``<cornerReference>`` of a marking or border: the ``@id`` of an outline point (``None``: absent or not an
+    integer)."""
+
+    id: int | None
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Marking:
+    """A ``<marking>`` (13.8): along a side of the bounding volume (``side``) or through outline points
+    (``references``)."""
+
+    color: str | None
+    side: str | None = None
+    width: float | None = None
+    z_offset: float | None = None
+    space_length: float | None = None
+    line_length: float | None = None
+    start_offset: float | None = None
+    stop_offset: float | None = None
+    weight: str | None = None
+    references: tuple[CornerReference, ...] = ()
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Markings:
+    """A ``<markings>`` element: in an ``<object>`` or in one of its ``<outline>`` elements."""
+
+    markings: tuple[Marking, ...] = ()
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Outline:
+    id: int | None = None
+    outer: bool | None = None
+    closed: bool | None = None
+    fill_type: str | None = None
+    lane_type: str | None = None
+    corners: tuple[CornerRoad | CornerLocal, ...] = ()
+    curves: tuple[CurveLocal, ...] = ()
+    line: int = 0
+    #: Every corner and curve element in file order (see :class:`OutlinePoint`).
+    points: tuple[OutlinePoint, ...] = ()
+    #: The outline's own ``<markings>`` (13.2.4), ``None`` without.
+    markings: Markings | None = None
+    #: Whether the outline sits in an ``<outlines>`` element (1.5 on) rather than directly in the ``<object>`` (1.4).
+    wrapped: bool = False
+    #: The ``@id`` as written (``None``: absent).
+    id_text: str | None = None
+
+    @property
+    def kinds(self) -> frozenset[str]:
+        """The element names of the outline's points (``cornerRoad``, ``cornerLocal``, ``curveLocal``)."""
+        return frozenset(p.kind for p in self.points)
+
+    @property
+    def kind(self) -> str | None:
+        """The one kind of point the outline uses; ``None`` when it has none or mixes kinds."""
+        kinds = self.kinds
+        return next(iter(kinds)) if len(kinds) == 1 else None
+
+
+@dataclass(frozen=True, slots=True)
+class Repeat:
+    s: float
+    length: float
+    distance: float
+    t_start: float
+    t_end: float
+    bt: float | None = None
+    ct: float | None = None
+    dt: float | None = None
+    line: int = 0
+    z_offset_start: float | None = None
+    z_offset_end: float | None = None
+    length_start: float | None = None
+    length_end: float | None = None
+    width_start: float | None = None
+    width_end: float | None = None
+    height_start: float | None = None
+    height_end: float | None = None
+    radius_start: float | None = None
+    radius_end: float | None = None
+    detach: bool | None = None
+
+    @property
+    def t_profile(self) -> Cubic:
+        """``t`` along the repeat as one cubic record starting at ``s``: ``tStart + bT ds + cT ds^2 + dT ds^3`` when
+        any of ``bT``, ``cT``, ``dT`` is given (1.9), else linear from ``tStart`` to ``tEnd`` (13.4)."""
+        if self.bt is None and self.ct is None and self.dt is None:
+            slope = (self.t_end - self.t_start) / self.length if self.length > 0 else 0.0
+            return Cubic(self.s, self.t_start, slope, 0.0, 0.0, self.line)
+        return Cubic(self.s, self.t_start, self.bt or 0.0, self.ct or 0.0, self.dt or 0.0, self.line)
+
+    def given(self, *names: str) -> tuple[str, ...]:
+        """Which of the XML attribute names ``names`` (``widthStart``, ...) the repeat gives."""
+        return tuple(name for name in names if getattr(self, _REPEAT_FIELDS[name]) is not None)
+
+
+_REPEAT_FIELDS = {
+    "lengthStart": "length_start",
+    "lengthEnd": "length_end",
+    "widthStart": "width_start",
+    "widthEnd": "width_end",
+    "heightStart": "height_start",
+    "heightEnd": "height_end",
+    "radiusStart": "radius_start",
+    "radiusEnd": "radius_end",
+    "zOffsetStart": "z_offset_start",
+    "zOffsetEnd": "z_offset_end",
+}
+
+
+@dataclass(frozen=True, slots=True)
+class LaneValidity:
+    from_lane: int
+    to_lane: int
+    layer: LaneLayer = LaneLayer.PERMANENT  # 1.9
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Vertex:
+    """A ``<vertexRoad>`` (``kind`` ``vertexRoad``: ``a``, ``b``, ``c`` are ``s``, ``t``, ``dz``) or a ``<vertexLocal>``
+    (``u``, ``v``, ``z``) of a skeleton polyline (13.3); ``width`` and ``length`` as the standard's examples write
+    them (the XSD knows only ``radius``)."""
+
+    kind: str
+    a: float | None
+    b: float | None
+    c: float | None
+    radius: float | None = None
+    width: float | None = None
+    length: float | None = None
+    id: int | None = None
+    intersection_point: bool | None = None
+    line: int = 0
+
+    @property
+    def local(self) -> bool:
+        return self.kind == VERTEX_LOCAL
+
+
+@dataclass(frozen=True, slots=True)
+class Polyline:
+    id: int | None = None
+    vertices: tuple[Vertex, ...] = ()
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Skeleton:
+    polylines: tuple[Polyline, ...] = ()
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Border:
+    """A ``<border>`` (13.9): a frame of ``width`` along the outline ``outline_id``, along all of it or along the
+    outline points named by ``references``. ``use_complete_outline`` is ``None`` when the attribute is absent (the
+    standard's default is true)."""
+
+    outline_id: int | None
+    type: str | None = None
+    width: float | None = None
+    use_complete_outline: bool | None = None
+    references: tuple[CornerReference, ...] = ()
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Material:
+    surface: str | None = None
+    friction: float | None = None
+    roughness: float | None = None
+    road_mark_color: str | None = None
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class ObjectCrg:
+    """A ``<CRG>`` of an object's ``<surface>`` (13.13)."""
+
+    file: str | None
+    hide_road_surface_crg: bool | None = None
+    z_scale: float | None = None
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Surface:
+    crgs: tuple[ObjectCrg, ...] = ()
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class RoadObject:
+    road: str
+    id: str
+    type: str | None
+    s: float | None
+    t: float | None
+    z_offset: float | None
+    hdg: float | None = None
+    length: float | None = None
+    width: float | None = None
+    radius: float | None = None
+    height: float | None = None
+    invalidated: bool | None = None  # 1.9
+    temporary: bool | None = None  # 1.9
+    outlines: tuple[Outline, ...] = ()
+    repeats: tuple[Repeat, ...] = ()
+    validities: tuple[LaneValidity, ...] = ()
+    line: int = 0
+    orientation: str | None = None
+    subtype: str | None = None
+    name: str | None = None
+    pitch: float | None = None
+    roll: float | None = None
+    perp_to_road: bool | None = None
+    valid_length: float | None = None
+    #: Line of the ``<outlines>`` element (``None``: the object has none).
+    outlines_line: int | None = None
+    skeleton: Skeleton | None = None
+    #: The object's own ``<markings>`` elements (the schema allows one), not those of its outlines.
+    markings: tuple[Markings, ...] = ()
+    borders: tuple[Border, ...] = ()
+    materials: tuple[Material, ...] = ()
+    surfaces: tuple[Surface, ...] = ()
+    #: Attributes the object gives, by XML name (for rules about which attributes are used).
+    attributes: frozenset[str] = frozenset()
+
+    def outline_markings(self) -> tuple[tuple[Outline, Markings], ...]:
+        """The ``<markings>`` of the object's outlines, each with its outline."""
+        return tuple((o, o.markings) for o in self.outlines if o.markings is not None)
+
+    def all_markings(self) -> tuple[tuple[Outline | None, Marking], ...]:
+        """Every ``<marking>`` of the object with the outline it sits in (``None``: in the object's ``<markings>``)."""
+        own = tuple((None, m) for group in self.markings for m in group.markings)
+        return own + tuple((o, m) for o, group in self.outline_markings() for m in group.markings)
+
+
+@dataclass(frozen=True, slots=True)
+class ObjectReference:
+    """An ``<objectReference>`` (13.10): the object ``id`` of another road, placed on this one."""
+
+    road: str
+    id: str | None
+    s: float | None
+    t: float | None
+    z_offset: float | None = None
+    valid_length: float | None = None
+    orientation: str | None = None
+    validities: tuple[LaneValidity, ...] = ()
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class Structure:
+    """A ``<tunnel>`` or ``<bridge>`` (13.11, 13.12): ``kind`` is the element name."""
+
+    kind: str
+    road: str
+    id: str | None
+    s: float | None
+    length: float | None
+    type: str | None = None
+    name: str | None = None
+    validities: tuple[LaneValidity, ...] = ()
+    line: int = 0
+
+
+@dataclass(frozen=True, slots=True)
+class RoadObjects:
+    """Everything in one road's ``<objects>`` elements, in file order."""
+
+    road: str
+    objects: tuple[RoadObject, ...] = ()
+    references: tuple[ObjectReference, ...] = ()
+    structures: tuple[Structure, ...] = ()

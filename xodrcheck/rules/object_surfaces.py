@@ -1,0 +1,416 @@
+"""Objects with a CRG surface (``B050``-``B056``): high-resolution road-surface features such as manhole covers and
+patches, described by an OpenCRG file in the object's local frame (13.13), and objects set perpendicular to the road.
+
+Bounding volumes are placed by the road's exact reference line (:mod:`xodrcheck.objects.place`); roads' lane areas
+come from the overlap rules' footprints (:mod:`xodrcheck.footprint`, built once per file and shared).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from xodrcheck.findings import Category, Severity
+from xodrcheck.objects import RoadObject
+from xodrcheck.objects.place import Instance, frame_at, instances, volume_of
+from xodrcheck.rules import object_uids as U
+from xodrcheck.rules.context import Context
+from xodrcheck.rules.object_attributes import all_objects, at, label
+from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:  # pragma: no cover
+    import shapely
+
+
+def surface_objects(ctx: Context) -> Iterator[RoadObject]:
+    for obj in all_objects(ctx):
+        if obj.surfaces:
+            yield obj
+
+
+@rule("B050", "surface-object-shape", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_ANGULAR_ONLY,))
+def surface_object_shape(ctx: Context):
+    """An object with a ``<surface>`` is not an angular box: it is circular, has outlines, or has no box at all.
+
+    Only objects with angular bounding volumes (``length`` and ``width``) may contain ``<surface>`` elements; circular
+    objects and objects with outlines shall not (Annex F ``road.object.surface.only_for_angular_boxes``, 13.13): the
+    CRG grid covers the box in the object's ``u``/``v`` frame.
+
+    Passes::
+
+        <object id="1" type="roadSurface" subtype="manhole" ... length="0.8" width="0.8" height="0"><surface>
+          <CRG file="manhole.crg" hideRoadSurfaceCRG="false" zScale="1"/></surface></object>
+
+    Fails::
+
+        <object id="1" type="roadSurface" subtype="manhole" ... radius="0.4" height="0"><surface>
+          <CRG file="manhole.crg" hideRoadSurfaceCRG="false" zScale="1"/></surface></object>
+    """
+    for obj in surface_objects(ctx):
+        if obj.radius is not None:
+            why = "is circular (radius)"
+        elif obj.outlines:
+            why = "has outlines"
+        elif obj.length is None or obj.width is None:
+            why = "has no angular bounding volume (length and width)"
+        else:
+            continue
+        yield surface_object_shape.finding(
+            f"{label(obj)} has a <surface> but {why}: only objects with a box of length and width may carry a CRG "
+            "surface",
+            **at(ctx, obj, obj.surfaces[0].line),
+        )
+
+
+@rule("B051", "surface-crg-count", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_ONE_CRG,))
+def surface_crg_count(ctx: Context):
+    """An object references more than one CRG file.
+
+    An object shall not reference more than one CRG file (Annex F ``road.object.surface.only_one_crg_file``, 13.13):
+    one ``<surface>`` with one ``<CRG>``.
+
+    Passes::
+
+        <surface><CRG file="patch.crg" hideRoadSurfaceCRG="false" zScale="1"/></surface>
+
+    Fails::
+
+        <surface><CRG file="patch.crg" hideRoadSurfaceCRG="false" zScale="1"/>
+          <CRG file="crack.crg" hideRoadSurfaceCRG="false" zScale="1"/></surface>
+    """
+    for obj in surface_objects(ctx):
+        crgs = [c for s in obj.surfaces for c in s.crgs]
+        if len(crgs) > 1:
+            files = ", ".join(repr(c.file) for c in crgs)
+            yield surface_crg_count.finding(
+                f"{label(obj)} references {len(crgs)} CRG files ({files}): an object has one CRG surface; split it "
+                "into one object per CRG file",
+                **at(ctx, obj, crgs[1].line),
+            )
+
+
+@rule("B052", "surface-repeated-continuously", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_DISCRETE_REPEAT,))
+def surface_repeated_continuously(ctx: Context):
+    """An object with a ``<surface>`` is repeated continuously (``distance="0"``).
+
+    Objects with ``<surface>`` elements may repeat discretely, but not continuously (Annex F
+    ``road.object.surface.repeat_discretely_not_continously``, 13.4, 13.13): a CRG grid is not extruded along a road.
+
+    Passes::
+
+        <repeat s="10" length="40" distance="10" tStart="1" tEnd="1" zOffsetStart="0" zOffsetEnd="0"/>
+
+    Fails::
+
+        <repeat s="10" length="40" distance="0" tStart="1" tEnd="1" zOffsetStart="0" zOffsetEnd="0"/>
+    """
+    for obj in surface_objects(ctx):
+        for r in obj.repeats:
+            if r.distance == 0:
+                yield surface_repeated_continuously.finding(
+                    f"{label(obj)} has a <surface>, but the <repeat> at line {r.line} has distance 0 (a continuous "
+                    "object): repeat it with a distance greater than 0",
+                    **at(ctx, obj, r.line),
+                )
+
+
+# ----------------------------------------------------------------------------------------------- where they lie
+@dataclass(frozen=True, slots=True)
+class Box:
+    """One placed bounding volume of a surface object: plan-view polygon and height range (inertial)."""
+
+    obj: RoadObject
+    instance: Instance
+    polygon: shapely.Polygon
+    low: float
+    high: float
+
+
+def _boxes(ctx: Context) -> list[Box]:
+    """Every placed bounding volume of the file's surface objects (each instance of a repeated one). Cached."""
+    cache = ctx.__dict__.get("_surface_boxes")
+    if cache is not None:
+        return cache
+    import shapely
+
+    out: list[Box] = []
+    for obj in surface_objects(ctx):
+        geometry = ctx.geometry(obj.road)
+        if geometry is None or not geometry.road.plan_view:
+            continue
+        tilt = 0.0 if obj.perp_to_road else (obj.pitch or 0.0)
+        for inst in instances(obj):
+            if inst.volume is None:
+                continue
+            frame = frame_at(geometry, inst.s, inst.t, obj.hdg or 0.0, tilt, 0.0, inst.z_offset)
+            if frame is None:
+                continue
+            corners = inst.volume.corners()
+            x, y = frame.to_plan(corners[:, 0], corners[:, 1])
+            base = float(geometry.elevation([inst.s])[0]) + inst.z_offset
+            height = inst.volume.height or 0.0
+            out.append(Box(obj, inst, shapely.Polygon(np.column_stack((x, y))), base, base + height))
+    ctx.__dict__["_surface_boxes"] = out
+    return out
+
+
+@rule("B053", "surface-volumes-overlap", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_NO_BOX_OVERLAP,))
+def surface_volumes_overlap(ctx: Context):
+    """The bounding volumes of two objects with a ``<surface>`` overlap.
+
+    The bounding volumes of objects with ``<surface>`` elements shall not overlap (Annex F
+    ``road.object.surface.no_bounding_box_overlap``, 13.13): where two CRG surfaces cover the same ground, the road's
+    height there is not defined. Boxes are compared in plan view (their shared area over ``object_volume`` squared)
+    and in height (from the road's elevation plus ``zOffset`` up to ``height``, within ``object_volume``); each
+    instance of a discretely repeated object counts.
+
+    Passes (two 1 m patches 2 m apart)::
+
+        <object id="1" type="roadSurface" s="10" t="1" ... length="1" width="1" height="0"><surface>...</surface>
+        <object id="2" type="roadSurface" s="12" t="1" ... length="1" width="1" height="0"><surface>...</surface>
+
+    Fails (0.5 m apart: they overlap by half)::
+
+        <object id="1" type="roadSurface" s="10" t="1" ... length="1" width="1" height="0"><surface>...</surface>
+        <object id="2" type="roadSurface" s="10.5" t="1" ... length="1" width="1" height="0"><surface>...</surface>
+    """
+    import shapely
+
+    boxes = _boxes(ctx)
+    if len(boxes) < 2:
+        return
+    tol = ctx.tolerances.object_volume
+    tree = shapely.STRtree([b.polygon for b in boxes])
+    pairs = tree.query([b.polygon for b in boxes], predicate="intersects")
+    reported: set[tuple[str, str, str, str]] = set()
+    for i, j in zip(*pairs, strict=True):
+        if i >= j:
+            continue
+        a, b = boxes[int(i)], boxes[int(j)]
+        if a.low > b.high + tol or b.low > a.high + tol:
+            continue
+        shared = a.polygon.intersection(b.polygon)
+        if shared.area <= tol * tol:
+            continue
+        key = (a.obj.road, a.obj.id, b.obj.road, b.obj.id)
+        if key in reported:
+            continue
+        reported.add(key)
+        point = shared.representative_point()
+        same = a.obj is b.obj
+        other = "another instance of it" if same else f"road {b.obj.road} object {b.obj.id} (line {b.obj.line})"
+        yield surface_volumes_overlap.finding(
+            f"{label(a.obj)} (at s={a.instance.s:g}) has a <surface> whose bounding volume overlaps that of {other} "
+            f"(at s={b.instance.s:g}) by {shared.area:.3g} m2: CRG surfaces of objects shall not cover the same ground",
+            road=a.obj.road,
+            s=a.instance.s,
+            x=float(point.x),
+            y=float(point.y),
+            line=a.instance.line,
+        )
+
+
+def _crossed_roads(ctx: Context, box: Box) -> dict[str, float]:
+    """Road id -> plan-view area of the road's lanes under a surface box (the box's height range within
+    ``clearance`` of the lane surface there)."""
+    from xodrcheck.footprint import overlap_index, sample_points
+
+    index = overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time)
+    footprints, lanes = index.footprints, index.surfaces.lanes
+    out: dict[str, float] = {}
+    for k in footprints.tree.query(box.polygon, predicate="intersects"):
+        shared = footprints.polygons[int(k)].intersection(box.polygon)
+        if shared.area <= ctx.tolerances.object_volume**2:
+            continue
+        z, _ = footprints.heights(int(k), sample_points(shared))
+        if np.nanmin(np.abs(z - box.low)) >= ctx.tolerances.clearance:
+            continue
+        road = lanes[int(k)].road
+        out[road] = out.get(road, 0.0) + float(shared.area)
+    return out
+
+
+@rule(
+    "B054",
+    "surface-object-not-referenced",
+    Category.OBJECT,
+    Severity.ERROR,
+    uids=(U.SURFACE_REFERENCE_ON_OVERLAP,),
+)
+def surface_object_not_referenced(ctx: Context):
+    """An object with a ``<surface>`` lies over the lanes of a road that does not reference it.
+
+    An object with a ``<surface>`` element shall be referenced on all roads it overlaps, with the ``<object>`` on one
+    road and an ``<objectReference>`` to its id on each other road (Annex F
+    ``road.object.surface.object_reference_on_overlap``, 13.10, 13.13): a reader evaluating that road's surface would
+    otherwise miss the CRG. Overlap: the object's bounding volume shares more than ``object_volume`` squared with the
+    road's lane footprints, within ``clearance`` in height.
+
+    Passes (road 2 crosses the patch of road 1)::
+
+        <road id="2" ...><objects><objectReference id="patch" s="5" t="0" orientation="none"/></objects></road>
+
+    Fails::
+
+        <road id="2" ...><objects/></road>
+    """
+    boxes = _boxes(ctx)
+    if not boxes:
+        return
+    referenced = {(road, r.id) for road, found in ctx.road_objects.items() for r in found.references}
+    reported: set[tuple[str, str]] = set()
+    for box in boxes:
+        for road, area in sorted(_crossed_roads(ctx, box).items()):
+            key = (road, box.obj.id)
+            if road == box.obj.road or (road, box.obj.id) in referenced or key in reported:
+                continue
+            reported.add(key)
+            point = box.polygon.centroid
+            yield surface_object_not_referenced.finding(
+                f"{label(box.obj)} has a <surface> that covers {area:.3g} m2 of road {road}'s lanes, but road {road} "
+                f'has no <objectReference id="{box.obj.id}">: reference the object on every road it overlaps',
+                road=box.obj.road,
+                s=box.instance.s,
+                x=float(point.x),
+                y=float(point.y),
+                line=box.obj.line,
+            )
+
+
+@dataclass(frozen=True, slots=True)
+class RoadCrg:
+    road: str
+    s_start: float
+    s_end: float
+    mode: str | None
+    line: int
+
+
+def _road_crgs(ctx: Context) -> dict[str, list[RoadCrg]]:
+    """Road id -> the road's surface CRGs (10.6), read from the XML."""
+    tree = ctx.tree
+    out: dict[str, list[RoadCrg]] = {}
+    if tree is None:
+        return out
+    for crg in tree.getroot().iterfind("{*}road/{*}surface/{*}CRG"):
+        road = crg.getparent().getparent()
+        try:
+            start, end = float(crg.get("sStart")), float(crg.get("sEnd"))  # type: ignore[arg-type]
+        except (TypeError, ValueError):
+            continue
+        lo, hi = min(start, end), max(start, end)
+        out.setdefault(road.get("id"), []).append(RoadCrg(road.get("id"), lo, hi, crg.get("mode"), crg.sourceline or 0))
+    return out
+
+
+@rule(
+    "B055",
+    "surface-hides-road-crg",
+    Category.OBJECT,
+    Severity.ERROR,
+    uids=(),
+    partial={
+        U.SURFACE_HIDE_ROAD_CRG: "the road CRG's extent across the road is in the CRG file, which is not read: its "
+        "area is taken as the road's lanes from sStart to sEnd"
+    },
+)
+def surface_hides_road_crg(ctx: Context):
+    """An object's CRG hides a road surface CRG that is not ``attached``.
+
+    Where a road surface CRG with any mode other than ``attached`` covers an object's bounding volume, the object's
+    ``hideRoadSurfaceCRG`` shall be false (Annex F ``road.object.surface.crg_hidden_on_object_overlap``, 13.13, Table
+    109: hiding an ``attached0``, ``genuine`` or ``global`` road CRG is not allowed - they carry the whole road height).
+    The road CRG covers its road's lanes from ``sStart`` to ``sEnd``; the object lies on its own road and on the roads
+    that reference it (``<objectReference>``, at their ``s``), where its box overlaps the road's lane footprints.
+
+    Passes::
+
+        <road ...><surface><CRG file="road.crg" sStart="0" sEnd="100" orientation="same" mode="genuine" .../>
+        ...<object ...><surface><CRG file="patch.crg" hideRoadSurfaceCRG="false" zScale="1"/></surface></object>
+
+    Fails::
+
+        <road ...><surface><CRG file="road.crg" sStart="0" sEnd="100" orientation="same" mode="genuine" .../>
+        ...<object ...><surface><CRG file="patch.crg" hideRoadSurfaceCRG="true" zScale="1"/></surface></object>
+    """
+    road_crgs = _road_crgs(ctx)
+    if not road_crgs:
+        return
+    placed_on: dict[str, dict[str, float]] = {}  # object id -> road -> s of the object's origin on that road
+    for road, found in ctx.road_objects.items():
+        for ref in found.references:
+            if ref.id is not None and ref.s is not None:
+                placed_on.setdefault(ref.id, {})[road] = ref.s
+    for box in _boxes(ctx):
+        hiding = [c for s in box.obj.surfaces for c in s.crgs if c.hide_road_surface_crg is not False]
+        if not hiding or box.obj.s is None:
+            continue
+        lo_x, lo_y, hi_x, hi_y = box.polygon.bounds
+        reach = math.hypot(hi_x - lo_x, hi_y - lo_y) / 2
+        origins = {**placed_on.get(box.obj.id, {}), box.obj.road: box.obj.s}
+        crossed = set(_crossed_roads(ctx, box)) if any(road in road_crgs for road in origins) else set()
+        for road in sorted(crossed & set(origins)):
+            s_at = origins[road] + box.instance.s - box.obj.s
+            crg = next(
+                (
+                    c
+                    for c in road_crgs.get(road, ())
+                    if c.mode != "attached" and c.s_start - reach <= s_at <= c.s_end + reach
+                ),
+                None,
+            )
+            if crg is None:
+                continue
+            yield surface_hides_road_crg.finding(
+                f"{label(box.obj)}: its CRG (line {hiding[0].line}) hides the road surface (hideRoadSurfaceCRG "
+                f"{'true' if hiding[0].hide_road_surface_crg else 'not given: true'}) over road {road}'s CRG in "
+                f"mode {crg.mode or '(none)'} (line {crg.line}), which carries the whole road height: set "
+                'hideRoadSurfaceCRG="false"',
+                uid=U.SURFACE_HIDE_ROAD_CRG,
+                road=box.obj.road,
+                s=box.instance.s,
+                line=hiding[0].line,
+            )
+
+
+@rule("B056", "perp-to-road-skewed", Category.OBJECT, Severity.WARNING, uids=(U.SURFACE_SKEWED_CRG,))
+def perp_to_road_skewed(ctx: Context):
+    """An object set perpendicular to the road (``perpToRoad="true"``) is not small against the curvature of the
+    road's elevation there.
+
+    To avoid skewed CRG surfaces, ``perpToRoad`` should only be used for objects smaller than the local radius of
+    curvature of the road elevation (Annex F ``road.object.surface.avoid_skewed_crg_surfacees``, 13.1, 13.13): the
+    object's extent (its box's diagonal, its cylinder's diameter) is compared with the smallest radius of curvature of
+    the elevation profile (``|z''| / (1 + z'^2)^1.5``) over the stretch of road it covers.
+
+    Passes (flat road)::
+
+        <object id="1" type="roadSurface" ... length="2" width="2" height="0" perpToRoad="true">
+
+    Fails (a crest of radius 1 m: elevation c = 0.5)::
+
+        <elevation s="0" a="0" b="0" c="-0.5" d="0"/>...<object ... length="2" width="2" perpToRoad="true">
+    """
+    from xodrcheck.geometry.profile import Piecewise
+
+    for obj in all_objects(ctx):
+        volume = volume_of(obj)
+        road = ctx.road(obj.road)
+        if not obj.perp_to_road or volume is None or obj.s is None or road is None or not road.elevation:
+            continue
+        size = 2 * volume.radius if volume.radius is not None else math.hypot(volume.length, volume.width)
+        s = np.linspace(max(obj.s - size / 2, 0.0), min(obj.s + size / 2, road.length), 41)
+        _, d1, d2 = Piecewise(road.elevation).jet(s)
+        curvature = np.abs(d2) / (1.0 + d1 * d1) ** 1.5
+        k = int(np.argmax(curvature))
+        if curvature[k] > 0 and size >= 1.0 / curvature[k]:
+            yield perp_to_road_skewed.finding(
+                f"{label(obj)} is {size:.3g} m across and set perpendicular to the road (perpToRoad), but the road's "
+                f"elevation bends with a radius of {1.0 / curvature[k]:.3g} m at s={s[k]:.3g}: the object (and its "
+                "CRG) would be skewed; use pitch and roll, or a smaller object",
+                **at(ctx, obj),
+            )
