@@ -94,13 +94,13 @@ def outline_points(placed: Placed, outline: Outline) -> Points | None:
         z, h = np.array([c.z for c in local]), np.array([c.height for c in local])
         return Points(u, v, z, z + h, tuple(c.line for c in local))
     if road and not local:
-        s, t = np.array([c.s for c in road]), np.array([c.t for c in road])
-        dz, h = np.array([c.dz for c in road]), np.array([c.height for c in road])
-        bottom = placed.road_points(s, t, dz)
-        top = placed.road_points(s, t, dz + h)
-        if bottom is None or top is None:
+        rs, rt = np.array([c.s for c in road]), np.array([c.t for c in road])
+        dz, rh = np.array([c.dz for c in road]), np.array([c.height for c in road])
+        low = placed.road_points(rs, rt, dz)
+        high = placed.road_points(rs, rt, dz + rh)
+        if low is None or high is None:
             return None
-        return Points(bottom[0], bottom[1], bottom[2], top[2], tuple(c.line for c in road))
+        return Points(low[0], low[1], low[2], high[2], tuple(c.line for c in road))
     return None
 
 
@@ -283,7 +283,9 @@ def skeleton_outside_volume(ctx: Context):
                 f"{text}: make the volume enclose the skeleton", uid=U.SKELETON_INSIDE_BOX, **where
             )
             far = [
-                j for j in np.flatnonzero(excess > tol) if _boundary_outside(volume, points, polyline.vertices, j, tol)
+                int(j)
+                for j in np.flatnonzero(excess > tol)
+                if _boundary_outside(volume, points, polyline.vertices, int(j), tol)
             ]
             if far:
                 j = int(far[0])

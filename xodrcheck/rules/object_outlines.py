@@ -321,7 +321,7 @@ def border_corner_references(ctx: Context):
                     uid=NO_UID,
                     **at(ctx, obj, border.line),
                 )
-            outline = by_id.get(border.outline_id)
+            outline = None if border.outline_id is None else by_id.get(border.outline_id)
             if outline is None or border.use_complete_outline is not False:
                 continue
             known = {p.id for p in outline.points if p.id is not None}

@@ -52,8 +52,11 @@ def repeat_beyond_road(ctx: Context):
             )
 
 
-_DIMENSIONS = (("length", "lengthStart", "lengthEnd"), ("width", "widthStart", "widthEnd"))
-_DIMENSIONS += (("height", "heightStart", "heightEnd"),)
+_DIMENSIONS: tuple[tuple[str, str, str], ...] = (
+    ("length", "lengthStart", "lengthEnd"),
+    ("width", "widthStart", "widthEnd"),
+    ("height", "heightStart", "heightEnd"),
+)
 
 
 def _changed(obj: RoadObject, repeat: Repeat, tol: float) -> list[str]:
