@@ -15,6 +15,8 @@ import numpy as np
 
 from xodrcheck.atomic import atomic_file
 
+from .extras import pyplot
+
 #: (column, paper name, unit, paper figure, what the paper reports)
 LEG_METRICS = (
     ("complexity", "complexity", "", 13, "almost half of the intersections have complexity over 0.5"),
@@ -85,10 +87,7 @@ def _bins(values: list[np.ndarray], n: int = 40) -> np.ndarray:
 
 
 def distribution_figure(column: str, samples: Sequence[Sample], compare: Sample | None, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot("the expressive range figures")
 
     everything = [s.table(column)[column] for s in samples] + ([compare.table(column)[column]] if compare else [])
     bins = _bins(everything)
@@ -146,10 +145,7 @@ def distribution_figure(column: str, samples: Sequence[Sample], compare: Sample 
 
 
 def heatmap_figure(x: str, y: str, samples: Sequence[Sample], compare: Sample | None, path: Path) -> None:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot("the expressive range figures")
 
     xs = [s.legs[x] for s in samples] + ([compare.legs[x]] if compare else [])
     ys = [s.legs[y] for s in samples] + ([compare.legs[y]] if compare else [])

@@ -22,3 +22,8 @@ class GenerationError(JunctionArtError):
 class OutputError(JunctionArtError, OSError):
     """An output file cannot be written; the message names the path as given and the cause (never a temporary
     file)."""
+
+
+class MissingDependency(JunctionArtError, ImportError):
+    """An optional dependency a command needs is not installed; the message names the extra that brings it
+    (``pip install 'junctionart[figures]'``)."""

@@ -16,6 +16,7 @@ from xodrcheck.atomic import OutputError as TargetError
 from xodrcheck.atomic import atomic_file
 
 from .errors import InputError, OutputError, ParamsError
+from .extras import pyplot
 
 COLOURS = {
     "driving": "#5f6368",
@@ -79,10 +80,7 @@ def render(
     every xodrcheck command refuses it: no image of part of a map) and :class:`OutputError` when ``output`` cannot be
     written."""
     fmt = image_format(output)
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    plt = pyplot("junctionart render")
     from matplotlib.collections import LineCollection, PolyCollection
     from matplotlib.lines import Line2D
     from matplotlib.patches import Patch

@@ -134,5 +134,5 @@ def test_generate_loads_no_checker_scipy_or_figures(tmp_path: Path) -> None:
 def test_command_table_matches_the_modules() -> None:
     for name, help_text in COMMANDS.items():
         module = command_module(name)
-        assert (module.NAME, module.HELP) == (name, help_text)
-    assert xodrcheck.cli.SUBCOMMANDS == tuple(COMMANDS)
+        assert (name, help_text) == (module.NAME, module.HELP)
+    assert tuple(COMMANDS) == xodrcheck.cli.SUBCOMMANDS

@@ -72,12 +72,22 @@ def test_wheel_contains_every_package_of_the_source_tree(wheel: Path, source: Pa
         names = set(zf.namelist())
     modules = {
         p.relative_to(source).as_posix()
-        for top in ("xodrcheck", "junctionart", "fuzz")
+        for top in ("xodrcheck", "junctionart")
         for p in (source / top).rglob("*.py")
         if "__pycache__" not in p.parts
     }
     missing = modules - names
     assert not missing, f"not in the wheel (add their packages to [tool.setuptools] packages): {sorted(missing)}"
+
+
+def test_wheel_installs_no_top_level_name_but_the_two_tools(wheel: Path):
+    """A wheel that installed a top-level ``fuzz`` (or ``tests``, ``benchmarks``) would squat on names in every
+    user's site-packages; the dist-info directory is the only other entry."""
+    with zipfile.ZipFile(wheel) as zf:
+        tops = {n.split("/", 1)[0] for n in zf.namelist()}
+    assert {t for t in tops if not t.endswith(".dist-info")} == {"xodrcheck", "junctionart"}
+    assert "junctionart/py.typed" in zf.namelist() and "xodrcheck/py.typed" in zf.namelist()
+    assert "junctionart/fuzz/regressions.json" in zf.namelist()
 
 
 def test_installed_tree_finds_schemas_through_importlib_resources(wheel: Path, tmp_path: Path):

@@ -20,7 +20,7 @@ from typing import Any
 
 from xodrcheck.check import Report, check
 from xodrcheck.config import Config
-from xodrcheck.findings import ReadError
+from xodrcheck.findings import ReadError, XodrError
 
 
 @dataclass(frozen=True)
@@ -33,7 +33,7 @@ class Outcome:
     error: str | None = None
 
 
-class BatchError(Exception):
+class BatchError(XodrError):
     """The batch cannot run at all (no Dask installed, no scheduler at the address)."""
 
 

@@ -12,6 +12,8 @@ import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from xodrcheck.findings import XodrError
+
 if sys.version_info >= (3, 11):
     import tomllib
 else:  # pragma: no cover - Python 3.10
@@ -193,7 +195,7 @@ class Config:
     min_severity: str | None = None
 
 
-class ConfigError(ValueError):
+class ConfigError(XodrError, ValueError):
     """A configuration value is unknown or out of range."""
 
 

@@ -22,6 +22,7 @@ from functools import cached_property
 import numpy as np
 
 from xodrcheck.config import Tolerances
+from xodrcheck.findings import XodrError
 from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, geometry_of
 from xodrcheck.model import Document, Lane, LaneKey, Road, document_cache
@@ -150,7 +151,7 @@ def _strip_faces(lane_count: int, n: int, left: np.ndarray) -> np.ndarray:
     return tris.reshape(lane_count, -1, 3)
 
 
-class MeshTooLarge(ValueError):
+class MeshTooLarge(XodrError, ValueError):
     """The mesh would have more vertices than the bound it was built with."""
 
 

@@ -17,6 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from xodrcheck.atomic import write_bytes
+from xodrcheck.findings import XodrError
 from xodrcheck.mesh import LaneSurfaces
 
 #: Output formats by file extension.
@@ -59,7 +60,7 @@ OTHER_COLOUR = (230, 0, 230, 255)
 _Y_UP = np.array([[1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
 
 
-class ExportError(ValueError):
+class ExportError(XodrError, ValueError):
     """The output cannot be written in the requested form (unknown extension, nothing to write)."""
 
 

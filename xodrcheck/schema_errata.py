@@ -18,6 +18,8 @@ import re
 from dataclasses import dataclass
 from importlib import resources
 
+from xodrcheck.findings import XodrError
+
 
 @dataclass(frozen=True, slots=True)
 class Erratum:
@@ -112,7 +114,7 @@ MARK = (
 )
 
 
-class ErratumMismatch(ValueError):
+class ErratumMismatch(XodrError, ValueError):
     """A correction did not find its text as often as expected: the official file is not the one it was made for."""
 
 

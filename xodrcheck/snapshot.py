@@ -29,6 +29,7 @@ import numpy as np
 
 from xodrcheck.check import check
 from xodrcheck.config import Config, Tolerances
+from xodrcheck.findings import XodrError
 from xodrcheck.info import bounding_box, junction_legs, lane_type_name
 from xodrcheck.lanes import geometry_of
 from xodrcheck.model import ContactPoint, Document, ElementType, Road
@@ -39,7 +40,7 @@ FORMAT = 1
 _DECIMALS = 3
 
 
-class SnapshotError(ValueError):
+class SnapshotError(XodrError, ValueError):
     """A snapshot file that cannot be used (not JSON, wrong format or version, missing keys)."""
 
 
@@ -181,7 +182,7 @@ def _rounded(value: float) -> float:
     return round(value, _DECIMALS) if math.isfinite(value) else value
 
 
-class NotReadWhole(ValueError):
+class NotReadWhole(XodrError, ValueError):
     """The map cannot be read whole (``why``: the reader's finding), so it has no snapshot."""
 
     def __init__(self, why: str) -> None:

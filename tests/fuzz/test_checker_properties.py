@@ -1,17 +1,17 @@
 """Properties of xodrcheck on documents built independently of the generator, valid and damaged (runs of
-:mod:`fuzz.campaign` under the ``ci`` profile)."""
+:mod:`junctionart.fuzz.campaign` under the ``ci`` profile)."""
 
 from __future__ import annotations
 
 import pytest
 from hypothesis import given, settings
 
-from fuzz import campaign
-from fuzz import properties as P
-from fuzz.documents import opendrive_documents
-from fuzz.mutations import DEFECTS, defective_documents
-from fuzz.profiles import budget, regressions
-from fuzz.transform import move_and_rotate, renumber_roads, road_ids
+from junctionart.fuzz import campaign
+from junctionart.fuzz import properties as P
+from junctionart.fuzz.documents import opendrive_documents
+from junctionart.fuzz.mutations import DEFECTS, defective_documents
+from junctionart.fuzz.profiles import budget, regressions
+from junctionart.fuzz.transform import move_and_rotate, renumber_roads, road_ids
 from xodrcheck.rules import load_rules
 
 

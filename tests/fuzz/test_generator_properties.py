@@ -1,6 +1,6 @@
-"""Properties of junctionart checked by xodrcheck (runs of :mod:`fuzz.campaign` under the ``ci`` profile): valid
-input -> a map without error; invalid input -> one clear error and no file; the written file reads back to the same
-geometry; a broken generator is caught."""
+"""Properties of junctionart checked by xodrcheck (runs of :mod:`junctionart.fuzz.campaign` under the ``ci`` profile):
+valid input -> a map without error; invalid input -> one clear error and no file; the written file reads back to the
+same geometry; a broken generator is caught."""
 
 from __future__ import annotations
 
@@ -11,10 +11,10 @@ import re
 import pytest
 from hypothesis import Phase, settings
 
-from fuzz import campaign
-from fuzz.profiles import budget, regressions
 from junctionart import cleanup, controllines
 from junctionart.cli import main as junctionart_main
+from junctionart.fuzz import campaign
+from junctionart.fuzz.profiles import budget, regressions
 
 
 def _run(name: str, config: settings | None = None) -> int:
@@ -65,7 +65,7 @@ def test_round_trip_geometry_is_exact():
 
 # ------------------------------------------------------------------------------------------------ fault injection
 def _replace_road(doc, i, road):
-    return dataclasses.replace(doc, roads=doc.roads[:i] + (road,) + doc.roads[i + 1 :])
+    return dataclasses.replace(doc, roads=(*doc.roads[:i], road, *doc.roads[i + 1 :]))
 
 
 def _drop_lane_link(doc):
@@ -78,9 +78,9 @@ def _drop_lane_link(doc):
                 lanes = getattr(sec, side)
                 for j, lane in enumerate(lanes):
                     if lane.predecessor is not None:
-                        lanes = lanes[:j] + (dataclasses.replace(lane, predecessor=None),) + lanes[j + 1 :]
+                        lanes = (*lanes[:j], dataclasses.replace(lane, predecessor=None), *lanes[j + 1 :])
                         sec = dataclasses.replace(sec, **{side: lanes})
-                        road = dataclasses.replace(road, sections=road.sections[:k] + (sec,) + road.sections[k + 1 :])
+                        road = dataclasses.replace(road, sections=(*road.sections[:k], sec, *road.sections[k + 1 :]))
                         return _replace_road(doc, i, road)
     return doc
 
@@ -138,7 +138,7 @@ def test_min_turn_radius_regressions(entry):
 def test_generated_map_regressions(entry):
     """Maps the fuzzer found errors in: no error any more (known faults: xfail while the error is there)."""
     import junctionart as ja
-    from fuzz import properties as P
+    from junctionart.fuzz import properties as P
 
     params = ja.Params.create(**{k: tuple(v) if isinstance(v, list) else v for k, v in entry["params"].items()})
     lines = controllines.parse(entry["control_lines"]) if "control_lines" in entry else None

@@ -1,12 +1,12 @@
-"""``python -m fuzz``: runs the campaign for the time asked, prints its figures, exits 1 on a failure."""
+"""``python -m junctionart.fuzz``: runs the campaign for the time asked, prints its figures, exits 1 on a failure."""
 
 from __future__ import annotations
 
 import pytest
 from hypothesis import settings
 
-from fuzz import __main__ as fuzz_main
-from fuzz import campaign, profiles
+from junctionart.fuzz import __main__ as fuzz_main
+from junctionart.fuzz import campaign, profiles
 
 
 @pytest.fixture

@@ -11,15 +11,15 @@ from hypothesis import strategies as st
 from hypothesis.errors import InvalidArgument
 from lxml import etree
 
-from fuzz import DEFECTS, Mutation
-from fuzz.documents import KINDS, document_specs, opendrive_documents
-from fuzz.generator import (
+from junctionart.fuzz import DEFECTS, Mutation
+from junctionart.fuzz.documents import KINDS, document_specs, opendrive_documents
+from junctionart.fuzz.generator import (
     RELATIONS,
     control_line_groups,
     control_lines,
     generator_params,
 )
-from fuzz.mutations import damaged_documents, defective_documents, document_mutations
+from junctionart.fuzz.mutations import damaged_documents, defective_documents, document_mutations
 
 BAD = [
     (control_lines, {"min_points": 1}),

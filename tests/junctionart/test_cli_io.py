@@ -228,3 +228,17 @@ def test_sigterm_from_outside_ends_generate_with_143(tmp_path):
     err = log.read_text()
     assert proc.returncode == 143 and "junctionart: terminated" in err and "Traceback" not in err
     assert list(out.iterdir()) == []
+
+
+def test_render_without_matplotlib_names_the_extra_and_writes_nothing(tmp_path):
+    """matplotlib is the extra ``figures``: without it, render says what to install in one line, exit 2, no file."""
+    out = tmp_path / "map.png"
+    probe = (
+        "import sys; sys.modules['matplotlib'] = None\n"  # import matplotlib now raises ImportError
+        "from junctionart.cli import main\n"
+        f"sys.exit(main(['render', {str(EXAMPLE)!r}, '-o', {str(out)!r}]))\n"
+    )
+    proc = subprocess.run([sys.executable, "-c", probe], capture_output=True, text=True, check=False)
+    assert proc.returncode == 2, proc.stderr
+    assert proc.stderr.count("\n") == 1 and "pip install 'junctionart[figures]'" in proc.stderr
+    assert "Traceback" not in proc.stderr and not out.exists()

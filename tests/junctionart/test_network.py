@@ -125,6 +125,9 @@ def test_groups_are_joined():
 def test_curved_roads_add_bends():
     flat = _net(Params(width=1000, height=1000), 4)
     bent = _net(Params(width=1000, height=1000, curved_roads=True, curve_probability=1.0), 4)
-    deg2 = lambda n: sum(1 for d in n.degree() if d == 2)
+
+    def deg2(n):
+        return sum(1 for d in n.degree() if d == 2)
+
     assert deg2(bent) > deg2(flat)
     assert math.isfinite(sum(x for x, _ in bent.nodes))

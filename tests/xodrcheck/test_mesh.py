@@ -68,9 +68,15 @@ def _param_poly3() -> tuple[ParamPoly3, float, float]:
     """A paramPoly3 (normalised p) with its arc length and heading change, computed here independently."""
     u, v = np.array([0.0, 60.0, 0.0, 0.0]), np.array([0.0, 0.0, 40.0, -12.0])
     du, dv = np.polynomial.polynomial.polyder(u), np.polynomial.polynomial.polyder(v)
-    speed = lambda p: math.hypot(np.polynomial.polynomial.polyval(p, du), np.polynomial.polynomial.polyval(p, dv))
+
+    def speed(p):
+        return math.hypot(np.polynomial.polynomial.polyval(p, du), np.polynomial.polynomial.polyval(p, dv))
+
     length = quad(speed, 0.0, 1.0, epsabs=1e-12, epsrel=1e-12)[0]
-    heading = lambda p: math.atan2(np.polynomial.polynomial.polyval(p, dv), np.polynomial.polynomial.polyval(p, du))
+
+    def heading(p):
+        return math.atan2(np.polynomial.polynomial.polyval(p, dv), np.polynomial.polynomial.polyval(p, du))
+
     g = ParamPoly3(0.0, 5.0, -3.0, 0.4, length, *u, *v, p_range=PRange.NORMALIZED)
     return g, length, heading(1.0) - heading(0.0)
 

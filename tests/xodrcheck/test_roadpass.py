@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 
-from fuzz.documents import opendrive_documents
-from fuzz.mutations import damaged_documents
+from junctionart.fuzz.documents import opendrive_documents
+from junctionart.fuzz.mutations import damaged_documents
 from tests.conftest import corpus_root
 from xodrcheck import roadpass
 from xodrcheck.config import Config

@@ -10,8 +10,8 @@ from hypothesis import HealthCheck, given, settings
 from lxml import etree
 
 import junctionart as ja
-from fuzz.documents import opendrive_documents
-from fuzz.mutations import damaged_documents
+from junctionart.fuzz.documents import opendrive_documents
+from junctionart.fuzz.mutations import damaged_documents
 from xodrcheck import schema, schema_fast
 
 V18 = (1, 8)

@@ -15,7 +15,6 @@ of hundreds of MB through. A file that is not well-formed is parsed again in rec
 from __future__ import annotations
 
 import dataclasses
-
 import re
 
 from lxml import etree

@@ -24,7 +24,7 @@ def test_two_unlinked_roads_crossing():
 def test_the_pair_is_named_in_file_order_not_id_order(tmp_path):
     """Renaming the roads so that their ids sort the other way round names the same road (found by the renumbering
     property of the fuzzer: the finding moved from one road to the other)."""
-    from fuzz.transform import renumber_roads
+    from junctionart.fuzz.transform import renumber_roads
 
     data = fixture(RULE, "fail.xodr").read_bytes()
     renamed = tmp_path / "renamed.xodr"

@@ -1,4 +1,4 @@
-"""The properties the fuzzers check, as plain functions (used by ``tests/fuzz`` and by ``python -m fuzz``).
+"""The properties the fuzzers check, as plain functions (used by ``tests/fuzz`` and by ``python -m junctionart.fuzz``).
 
 Each raises :class:`AssertionError` with a readable message when the property fails and counts what it checked in
 :data:`STATS`.

@@ -1,6 +1,7 @@
-"""``python -m fuzz [--minutes N] [--profile ci|long] [--runs NAME,...]``: run the fuzzing campaign until time is up.
+"""``python -m junctionart.fuzz [--minutes N] [--profile ci|long] [--runs NAME,...]``: fuzz until time is up.
 
-Every run of :mod:`fuzz.campaign` is repeated in rounds, round-robin, until ``--minutes`` have passed (one round: a
+Every run of :mod:`junctionart.fuzz.campaign` is repeated in rounds, round-robin, until ``--minutes`` have passed
+(one round: a
 tenth of the run's example budget under the profile, so that no round overruns the time by much); stored failing
 examples are replayed first. A run that fails is
 reported and left out of the later rounds. Prints the figures at the end (inputs tried per run, generated maps,
@@ -16,15 +17,15 @@ import warnings
 
 from hypothesis import settings
 
-from fuzz import campaign, profiles
-from fuzz import properties as P
+from junctionart.fuzz import campaign, profiles
+from junctionart.fuzz import properties as P
 
 #: A round runs this fraction of each run's example budget.
 ROUND_PARTS = 10
 
 
 def _parser() -> argparse.ArgumentParser:
-    parser = argparse.ArgumentParser(prog="python -m fuzz", description=__doc__.split("\n\n")[0])
+    parser = argparse.ArgumentParser(prog="python -m junctionart.fuzz", description=__doc__.split("\n\n")[0])
     parser.add_argument("--minutes", type=float, default=10.0, help="wall-clock time to fuzz for (default 10)")
     parser.add_argument(
         "--profile",
@@ -44,12 +45,13 @@ def main(argv: list[str] | None = None) -> int:
     unknown = [n for n in names if n not in campaign.RUNS]
     if unknown or not names:
         print(
-            f"python -m fuzz: unknown run {unknown[0] if unknown else '(none)'}; runs: {', '.join(campaign.RUNS)}",
+            f"python -m junctionart.fuzz: unknown run {unknown[0] if unknown else '(none)'}; "
+            f"runs: {', '.join(campaign.RUNS)}",
             file=sys.stderr,
         )
         return 2
     if not args.minutes > 0:
-        print("python -m fuzz: --minutes must be positive", file=sys.stderr)
+        print("python -m junctionart.fuzz: --minutes must be positive", file=sys.stderr)
         return 2
     # damaged files overflow numpy on purpose (1e308, NaN); the checker turns that into findings
     warnings.simplefilter("ignore", RuntimeWarning)

@@ -72,7 +72,7 @@ def param_poly3(b_u: float, c_u: float, d_u: float, c_v: float, d_v: float, arc_
     normal = {"aU": 0.0, "bU": b_u, "cU": c_u, "dU": d_u, "aV": 0.0, "bV": 0.0, "cV": c_v, "dV": d_v}
     length = _normalised_length(normal)
     if not arc_length:
-        return Element("paramPoly3", length, tuple(normal.items()) + (("pRange", "normalized"),))
+        return Element("paramPoly3", length, (*tuple(normal.items()), ("pRange", "normalized")))
     L = length
     scaled = {
         "aU": 0.0,
@@ -84,7 +84,7 @@ def param_poly3(b_u: float, c_u: float, d_u: float, c_v: float, d_v: float, arc_
         "cV": c_v / L**2,
         "dV": d_v / L**3,
     }
-    return Element("paramPoly3", length, tuple(scaled.items()) + (("pRange", "arcLength"),))
+    return Element("paramPoly3", length, (*tuple(scaled.items()), ("pRange", "arcLength")))
 
 
 def _heading_change(e: Element, ds: np.ndarray) -> np.ndarray:

@@ -390,7 +390,7 @@ def _rename(m: Mutation, root) -> bool:
     els = _elements(root)
     tags = sorted({el.tag for el in els})
     el = m.pick(0, els)
-    el.tag = m.pick(1, tags + ["bogus"])
+    el.tag = m.pick(1, [*tags, "bogus"])
     return True
 
 
@@ -461,7 +461,7 @@ def damaged_documents(
     if base is not None and not isinstance(base, st.SearchStrategy):
         raise InvalidArgument(f"base={base!r} must be a strategy of bytes")
     if base is None:
-        from fuzz.documents import opendrive_documents
+        from junctionart.fuzz.documents import opendrive_documents
 
         base = opendrive_documents(max_roads_per_chain=2, max_elements=2, max_lanes=2)
     return _damaged(base, document_mutations(defects=defects, damage=damage), min_mutations, max_mutations)
@@ -484,7 +484,7 @@ def defective_documents(
     if base is not None and not isinstance(base, st.SearchStrategy):
         raise InvalidArgument(f"base={base!r} must be a strategy of bytes")
     if base is None:
-        from fuzz.documents import opendrive_documents
+        from junctionart.fuzz.documents import opendrive_documents
 
         base = opendrive_documents()
     return _defective(base, kinds)

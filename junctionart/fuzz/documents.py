@@ -15,7 +15,7 @@ import numpy as np
 from hypothesis import strategies as st
 from hypothesis.errors import InvalidArgument
 
-from fuzz import xodrbuild as xb
+from junctionart.fuzz import xodrbuild as xb
 
 #: Element kinds that :func:`opendrive_documents` may use.
 KINDS = ("line", "arc", "spiral", "paramPoly3")
@@ -156,7 +156,10 @@ def _document_specs(
     jroads = [next(ids) for _ in range(4)]
     right_only = _lanes(0, n_right, widths, outer, True, True)
     reverse_only = _lanes(0, n_left, widths, outer, True, True, flip=True)
-    back = lambda q: xb.Pose(q.x, q.y, q.hdg + math.pi)
+
+    def back(q):
+        return xb.Pose(q.x, q.y, q.hdg + math.pi)
+
     quarter = TURN_RADIUS * math.pi / 2
     a_end, b_start, c_start = (
         xb.LinkSpec("road", names_a[-1], "end"),

@@ -1,7 +1,7 @@
 """The fuzzing campaign: every property paired with the strategy that feeds it, as named runs.
 
-The test suite (``tests/fuzz``) and ``python -m fuzz`` run the same :data:`RUNS`, so a failing example one of them
-stores in the example database (:data:`fuzz.profiles.DATABASE_DIR`) is replayed first by the other.
+The test suite (``tests/fuzz``) and ``python -m junctionart.fuzz`` run the same :data:`RUNS`, so a failing example one
+of them stores in the example database (:data:`fuzz.profiles.DATABASE_DIR`) is replayed first by the other.
 """
 
 from __future__ import annotations
@@ -15,10 +15,10 @@ from typing import Any
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from fuzz import properties as P
-from fuzz.mutations import DEFECTS, damaged_documents, defective_documents
-from fuzz.profiles import tolerated
-from fuzz.transform import move_and_rotate, renumber_roads, road_ids
+from junctionart.fuzz import properties as P
+from junctionart.fuzz.mutations import DEFECTS, damaged_documents, defective_documents
+from junctionart.fuzz.profiles import tolerated
+from junctionart.fuzz.transform import move_and_rotate, renumber_roads, road_ids
 
 #: Examples each run has checked in this process.
 TRIED: Counter = Counter()
@@ -43,7 +43,7 @@ class Run:
 
 # ------------------------------------------------------------------------------------------------ checker runs
 def _documents() -> st.SearchStrategy:
-    from fuzz.documents import opendrive_documents
+    from junctionart.fuzz.documents import opendrive_documents
 
     return opendrive_documents()
 
@@ -99,7 +99,7 @@ def _check_renumbering(case) -> None:
 
 # ------------------------------------------------------------------------------------------------ generator runs
 def _maps() -> st.SearchStrategy:
-    from fuzz.generator import control_line_groups, generator_params
+    from junctionart.fuzz.generator import control_line_groups, generator_params
 
     return st.tuples(generator_params(max_size=450), st.one_of(st.none(), control_line_groups(extent=300.0)), SEEDS)
 
@@ -110,7 +110,7 @@ def _check_map(case) -> None:
 
 
 def _invalid_lines() -> st.SearchStrategy:
-    from fuzz.generator import invalid_control_line_files
+    from junctionart.fuzz.generator import invalid_control_line_files
 
     return st.tuples(invalid_control_line_files(), SEEDS)
 
@@ -124,7 +124,7 @@ def _check_invalid_lines(case) -> None:
 
 
 def _invalid_params() -> st.SearchStrategy:
-    from fuzz.generator import invalid_generator_params
+    from junctionart.fuzz.generator import invalid_generator_params
 
     return invalid_generator_params()
 
@@ -138,7 +138,7 @@ def _check_invalid_params(case) -> None:
 
 
 def _round_trips() -> st.SearchStrategy:
-    from fuzz.generator import generator_params
+    from junctionart.fuzz.generator import generator_params
 
     return st.tuples(generator_params(max_size=400), SEEDS)
 
@@ -207,7 +207,7 @@ def hypothesis_test(
 ) -> Callable[[], None]:
     """The Hypothesis test of run ``name`` under ``config`` (``strategy``: a narrower strategy than the run's own,
     e.g. one defect kind, stored under ``key``). Its database key is the run's own (the same for the test suite and
-    ``python -m fuzz``), so stored failures are replayed wherever the run goes next."""
+    ``python -m junctionart.fuzz``), so stored failures are replayed wherever the run goes next."""
     run = RUNS[name]
 
     def example(case) -> None:

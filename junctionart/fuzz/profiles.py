@@ -1,17 +1,15 @@
 """Hypothesis profiles: ``ci`` (bounded, run by the test suite) and ``long`` (for hours on a workstation).
 
 Failing examples of the ``long`` profile are stored in :data:`DATABASE_DIR` (inside the repository, committed) and
-replayed first on the next run of ``python -m fuzz`` (:mod:`fuzz.campaign`). Hypothesis deletes an entry there as soon
-as it no longer fails, and neither profile runs the ``target`` phase (whose pareto fronts would be stored too), so the
-directory holds only open failures and stays small. Failures that were fixed are kept as explicit regressions in
-:data:`REGRESSIONS`. The profile is chosen with ``$XODR_FUZZ_PROFILE`` (default ``ci``).
-
-``ci`` is derandomized: every CI run draws the same examples (seeded from each test), so a CI result is
-reproducible and a red build always means a change broke something, never that the search got lucky; exploring is
-the ``long`` profile's job, whose failures land in the database and, once understood, in :data:`REGRESSIONS`, which
-both profiles replay explicitly. ``ci`` does not shrink: a failure is reported with the example as found, within the
-time budget (shrinking one generated map took minutes). ``long`` shrinks, to report a small example after hours of
-search.
+replayed first on the next run of ``python -m junctionart.fuzz`` (:mod:`junctionart.fuzz.campaign`). Hypothesis deletes
+an entry there as soon as it no longer fails, and neither profile runs the ``target`` phase (whose pareto fronts would
+be stored too), so the directory holds only open failures and stays small. Failures that were fixed are kept as explicit
+regressions in :data:`REGRESSIONS`. The profile is chosen with ``$XODR_FUZZ_PROFILE`` (default ``ci``). ``ci`` is
+derandomized: every CI run draws the same examples (seeded from each test), so a CI result is reproducible and a red
+build always means a change broke something, never that the search got lucky; exploring is the ``long`` profile's job,
+whose failures land in the database and, once understood, in :data:`REGRESSIONS`, which both profiles replay explicitly.
+``ci`` does not shrink: a failure is reported with the example as found, within the time budget (shrinking one generated
+map took minutes). ``long`` shrinks, to report a small example after hours of search.
 """
 
 from __future__ import annotations
@@ -31,7 +29,7 @@ PROFILES = ("ci", "long")
 #: damaged documents per run) and keeps the whole of ``tests/fuzz`` to about four minutes on two shared cores
 #: (measured: a generated map of the ``maps`` run costs ~0.13 s to generate and check on average, a damaged document
 #: ~0.04 s); ``faults`` bounds the search of the fault-injection tests, which find their fault within a few examples.
-#: ``long`` sizes the rounds of ``python -m fuzz --profile long``, which repeats them until its time is up.
+#: ``long`` sizes the rounds of ``python -m junctionart.fuzz --profile long``, which repeats them until its time is up.
 BUDGETS: dict[str, dict[str, int]] = {
     "ci": {
         "maps": 500,

@@ -8,14 +8,14 @@ Strategies (plural nouns, keyword bounds, arguments validated before anything is
 * :func:`document_mutations`, :func:`damaged_documents`, :func:`defective_documents` - known defects and random
   damage to any OpenDRIVE file.
 
-The properties (:mod:`fuzz.properties`) and the strategies that feed them form the runs of :mod:`fuzz.campaign`, shared
-by the test suite (``tests/fuzz``, profile ``ci``) and ``python -m fuzz --minutes N [--profile long]``, which repeats
-every run until the time is up and prints figures. Profiles, example budgets, the example database and the explicit
-regressions are in :mod:`fuzz.profiles`.
+The properties (:mod:`junctionart.fuzz.properties`) and the strategies that feed them form the runs of
+:mod:`junctionart.fuzz.campaign`, shared by the test suite (``tests/fuzz``, profile ``ci``) and ``python -m
+junctionart.fuzz --minutes N [--profile long]``, which repeats every run until the time is up and prints figures.
+Profiles, example budgets, the example database and the explicit regressions are in :mod:`junctionart.fuzz.profiles`.
 """
 
-from fuzz.documents import document_specs, opendrive_documents
-from fuzz.mutations import (
+from junctionart.fuzz.documents import document_specs, opendrive_documents
+from junctionart.fuzz.mutations import (
     DAMAGE,
     DEFECTS,
     Mutation,
@@ -50,7 +50,7 @@ def __getattr__(name: str):
         "invalid_control_line_files",
         "invalid_generator_params",
     ):
-        from fuzz import generator
+        from junctionart.fuzz import generator
 
         return getattr(generator, name)
     raise AttributeError(name)

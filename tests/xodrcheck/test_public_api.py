@@ -1,0 +1,40 @@
+"""The package's public names: each one in ``__all__`` resolves (lazily) to the object its module defines, and the
+README's three-line use works on a real file."""
+
+from __future__ import annotations
+
+import importlib
+
+import pytest
+
+import xodrcheck
+
+
+@pytest.mark.parametrize("name", xodrcheck.__all__)
+def test_every_public_name_resolves_to_its_module_object(name):
+    value = getattr(xodrcheck, name)
+    module = xodrcheck._EXPORTS.get(name, "xodrcheck.check")
+    importlib.import_module("xodrcheck.check")  # binds the package attribute 'check' to the submodule, then...
+    assert getattr(importlib.import_module(module), name) is value
+    assert callable(xodrcheck.check)  # ...the function is still what the package names
+
+
+def test_all_lists_the_lazy_names_and_the_eager_ones():
+    assert sorted(xodrcheck.__all__) == sorted([*xodrcheck._EXPORTS, "Report", "check", "is_valid", "is_valid_reason"])
+
+
+def test_unknown_name_is_an_attribute_error():
+    with pytest.raises(AttributeError, match="no attribute 'chek'"):
+        xodrcheck.chek  # noqa: B018
+
+
+def test_read_check_and_is_valid_on_a_file(tmp_path):
+    path = tmp_path / "bad.xodr"
+    path.write_text('<?xml version="1.0"?>\n<OpenDRIVE><header revMajor="1" revMinor="6"/></OpenDRIVE>\n')
+    result = xodrcheck.read(str(path))
+    assert result.document is not None and len(result.document.roads) == 0
+    report = xodrcheck.check(str(path))
+    assert report.ok is xodrcheck.is_valid(str(path))
+    assert isinstance(xodrcheck.is_valid_reason(str(path)), str)
+    with pytest.raises(xodrcheck.XodrError):
+        xodrcheck.read(str(tmp_path / "missing.xodr"))
