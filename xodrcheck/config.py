@@ -104,6 +104,13 @@ class Tolerances:
         "Connection lanes of one incoming road may run together this far from their start before they part.",
         rules="J101",
     )
+    signal_reach: float = _tolerance(
+        50.0,
+        "m",
+        "A signal on an incoming road this close to the road's end at a junction regulates the junction (a junction "
+        "with such signals should state no priorities, junctions.priority.no_signals).",
+        rules="J015",
+    )
     chord: float = _tolerance(
         0.01,
         "m",

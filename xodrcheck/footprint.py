@@ -160,7 +160,9 @@ class Relations:
     Roads *related* here may overlap: a road with itself (its own overlaps are :attr:`OverlapIndex.self_pairs`),
     consecutive roads (a road link either way: ASAM OpenDRIVE 10.3 allows overlaps of roads whose reference lines are
     linked), members of one junction (Annex F ``road.overlap_inside_junction``: only roads with the same junction id
-    may overlap), and the roads of one direct junction (the incoming and linked roads that split or merge there).
+    may overlap), the roads of one direct junction (the incoming and linked roads that split or merge there), the roads
+    of a crossing (they cross there, 12.8; that they overlap only within its road sections is
+    ``crossing-range-short``'s) and a virtual junction's roads with its main road (12.7).
 
     Roads that only share a junction otherwise (two of its legs, or a connecting road and a leg it does not join) are
     not related, but :meth:`shared_junction` names the junction: their sidewalks and shoulders commonly meet at the
@@ -186,9 +188,20 @@ class Relations:
                 for road_id in (c.incoming_road, c.connecting_road, c.linked_road):
                     if road_id is not None:
                         groups.setdefault(road_id, set()).add(junction.id)
+            for road_id in (*junction.crossing_roads, junction.main_road):
+                if road_id is not None:
+                    groups.setdefault(road_id, set()).add(junction.id)
         self._links = links
         self._groups = groups
-        self._direct = frozenset(j.id for j in document.junctions if j.type is JunctionType.DIRECT)
+        #: Junctions whose roads may all overlap: direct junctions (their roads split or merge) and crossings (their
+        #: roads cross, 12.8).
+        self._direct = frozenset(
+            j.id for j in document.junctions if j.type in (JunctionType.DIRECT, JunctionType.CROSSING)
+        )
+        #: Virtual junction id -> its main road, on which the junction's own roads (cross paths too) lie (12.7).
+        self._main_road = {
+            j.id: j.main_road for j in document.junctions if j.type is JunctionType.VIRTUAL and j.main_road is not None
+        }
         self.junction_of = {road.id: road.junction for road in document.roads}
 
     def related(self, a: str, b: str) -> bool:
@@ -196,6 +209,8 @@ class Relations:
             return True
         junction = self.junction_of.get(a)
         if junction is not None and junction == self.junction_of.get(b):
+            return True
+        if b == self._main_road.get(junction or "") or a == self._main_road.get(self.junction_of.get(b) or ""):
             return True
         return bool(self._groups.get(a, set()) & self._groups.get(b, set()) & self._direct)
 

@@ -424,6 +424,10 @@ class Junction:
     type: JunctionType = JunctionType.DEFAULT
     connections: tuple[Connection, ...] = ()
     line: int = 0
+    #: A virtual junction's ``mainRoad`` (12.7): the road it lies on, which runs through it.
+    main_road: str | None = None
+    #: The roads a crossing's ``<roadSection>`` elements name (12.8): they cross each other in it.
+    crossing_roads: tuple[str, ...] = ()
 
     @property
     def incoming_roads(self) -> tuple[str, ...]:

@@ -127,7 +127,13 @@ def build_junction(ctx: Context, el: etree._Element) -> Junction | None:
                     temporary_links,
                 )
             )
-        return Junction(junction_id, el.get("name"), junction_type, tuple(connections), el.sourceline)
+        crossing_roads = tuple(
+            dict.fromkeys(road for r in el.iterchildren("roadSection") if (road := r.get("roadId")) is not None)
+        )
+        main_road = el.get("mainRoad") if junction_type is JunctionType.VIRTUAL else None
+        return Junction(
+            junction_id, el.get("name"), junction_type, tuple(connections), el.sourceline, main_road, crossing_roads
+        )
     finally:
         ctx.junction = None
 

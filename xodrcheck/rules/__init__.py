@@ -20,8 +20,10 @@ prefix    category    codes
                       (:mod:`.outline_curves`);
                       ``G9xx`` redundant records (:mod:`.records`)
 ``C``     curvature   ``C0xx`` (:mod:`.curvature`)
-``J``     junction    ``J0xx`` junction topology (:mod:`.junction`); ``J1xx`` junction geometry
-                      (:mod:`.junction_geometry`)
+``J``     junction    ``J0xx`` junction topology (:mod:`.junction`), attribute and element usage by junction type
+                      (:mod:`.junction_usage`), priorities, virtual junctions and when a junction is needed
+                      (:mod:`.junction_roles`), direct junctions, cross paths and boundary roads
+                      (:mod:`.junction_members`); ``J1xx`` junction geometry (:mod:`.junction_geometry`)
 ``O``     overlap     ``O0xx`` (:mod:`.overlap`)
 ``H``     header      ``H0xx`` header, default regulations, whole-file recommendations (:mod:`.header`)
 ``B``     object      ``B0xx`` road objects: attributes and lane validity (:mod:`.object_attributes`), outlines and
@@ -72,6 +74,9 @@ FAMILIES = (
     "records",
     "curvature",
     "junction",
+    "junction_usage",
+    "junction_roles",
+    "junction_members",
     "junction_geometry",
     "overlap",
     "header",

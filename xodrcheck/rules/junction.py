@@ -23,8 +23,9 @@ from xodrcheck.model import (
     LaneType,
     Road,
 )
+from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, link_at, travel_direction
-from xodrcheck.rules.registry import rule
+from xodrcheck.rules.registry import NO_UID, rule
 
 
 def _toward(end: ContactPoint) -> int:
@@ -129,14 +130,22 @@ def _describe(link) -> str:
     return "none" if link is None else f"{link.element_type.value} {link.element_id}"
 
 
-@rule("J002", "connection-contact-point", Category.JUNCTION, Severity.ERROR)
+@rule(
+    "J002",
+    "connection-contact-point",
+    Category.JUNCTION,
+    Severity.ERROR,
+    uids=(U.CONNECTION_START_ALONG, U.CONNECTION_END_OPPOSITE),
+    every_version=True,
+)
 def connection_contact_point(ctx: Context):
     """A connection's ``contactPoint`` does not match the connecting road's links.
 
     ``contactPoint="start"`` says the connecting road starts at the incoming road, so its predecessor must be the
     incoming road; ``"end"`` says it ends there, so its successor must be (ASAM's
     ``junctions.connection.start_along_linkage`` and ``end_opposite_linkage``). In a direct junction the linked road's
-    link at the contact point names the junction. A connection without ``contactPoint`` is reported too.
+    link at the contact point names the junction. A connection without ``contactPoint`` is reported too (naming no
+    rule of the standard: which end it would be is unknown).
 
     Passes::
 
@@ -160,17 +169,20 @@ def connection_contact_point(ctx: Context):
             if c.contact_point is None:
                 yield connection_contact_point.finding(
                     f"{at} has no contactPoint: which end of road {target.id} touches road {c.incoming_road}?",
+                    uid=NO_UID,
                     road=target.id,
                     line=c.line or None,
                 )
                 continue
             link = link_at(target, c.contact_point)
             word = "predecessor" if c.contact_point is ContactPoint.START else "successor"
+            uid = U.CONNECTION_START_ALONG if c.contact_point is ContactPoint.START else U.CONNECTION_END_OPPOSITE
             if direct:
                 if link is None or link.element_type is not ElementType.JUNCTION or link.element_id != junction.id:
                     yield connection_contact_point.finding(
                         f"{at}: contactPoint {c.contact_point.value} says linked road {target.id} meets the junction "
                         f"at its {c.contact_point.value}, but its {word} is {_describe(link)}",
+                        uid=uid,
                         road=target.id,
                         **ctx.end_at(target, c.contact_point),
                         line=c.line or None,
@@ -186,6 +198,7 @@ def connection_contact_point(ctx: Context):
                 f"{at}: contactPoint {c.contact_point.value} says connecting road {target.id} "
                 f"{'starts' if c.contact_point is ContactPoint.START else 'ends'} at incoming road {c.incoming_road}, "
                 f"but its {word} is {_describe(link)}{hint}",
+                uid=uid,
                 road=target.id,
                 **ctx.end_at(target, c.contact_point),
                 line=c.line or None,
@@ -231,15 +244,26 @@ def junction_lane_link_direction(ctx: Context):
             )
 
 
-@rule("J004", "junction-lane-link-outbound", Category.JUNCTION, Severity.WARNING)
+@rule(
+    "J004",
+    "junction-lane-link-outbound",
+    Category.JUNCTION,
+    Severity.WARNING,
+    uids=(U.CONNECTION_ONE_LINK,),
+    every_version=True,
+)
 def junction_lane_link_outbound(ctx: Context):
     """A junction ``laneLink`` starts at a lane whose traffic leaves the junction.
 
     A connection describes traffic arriving on the incoming road; its lane links go from lanes that travel into the
     junction to lanes of the connecting road. Links from lanes that carry traffic out of the junction describe the
     reverse direction, which belongs to the connection whose incoming road is the other end of that connecting road
-    (OpenDRIVE 1.7: "a connecting road shall only have the laneLink element for that direction"). A warning from 1.7
-    on; older files, written before the standard said so and often listing both directions, get an info.
+    (OpenDRIVE 1.7: "a connecting road shall only have the laneLink element for that direction"). From 1.8 on an error
+    (ASAM's ``junctions.connection.one_link_to_incoming``: "its <laneLink> elements shall only be specified for the
+    lanes that lead into the junction"; its first sentence is ``connection-duplicate``'s); in 1.7 files a warning;
+    older files, written before the standard said so and often listing both directions, get an info. Direct junctions
+    are not checked: their lane links join the linked roads' lanes in both directions (12.6.1 links lane 1 of the
+    road that ends at the junction, whose traffic leaves it).
 
     Passes (right-hand traffic; road 1 ends at the junction, so lane -1 travels into it)::
 
@@ -251,8 +275,13 @@ def junction_lane_link_outbound(ctx: Context):
         <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start">
           <laneLink from="1" to="1"/></connection>
     """
-    severity = Severity.WARNING if ctx.version_at_least(7) else Severity.INFO
+    severity = (
+        Severity.ERROR if ctx.version_at_least(8) else Severity.WARNING if ctx.version_at_least(7) else Severity.INFO
+    )
+    uid = U.CONNECTION_ONE_LINK if severity is Severity.ERROR else NO_UID
     for r in resolved_connections(ctx):
+        if r.junction.type is JunctionType.DIRECT:
+            continue  # 12.6: a direct junction's lane links join the roads' lanes in both directions
         for ll in r.connection.lane_links:
             a = ctx.lane_at(r.incoming, r.incoming_end, ll.from_lane)
             if a is None or a.id == 0 or a.type is LaneType.BIDIRECTIONAL:
@@ -264,6 +293,7 @@ def junction_lane_link_outbound(ctx: Context):
                 f"starts at lane {a.id} of road {r.incoming.id}, whose traffic ({r.incoming.rule.value}) leaves the "
                 "junction; list only lanes that enter it",
                 severity=severity,
+                uid=uid,
                 road=r.incoming.id,
                 lane=a.id,
                 **ctx.end_at(r.incoming, r.incoming_end),
@@ -275,7 +305,8 @@ def junction_lane_link_outbound(ctx: Context):
 def incoming_lane_unconnected(ctx: Context):
     """A drivable lane that travels into a junction has no ``laneLink`` in it: its traffic reaches a dead end.
 
-    Every road linking to the junction is checked, whether or not a connection names it. Roads with a connection
+    Every road linking to the junction is checked, whether or not a connection names it (in a direct junction a lane
+    of a linked road is linked by the laneLinks whose ``to`` names it). Roads with a connection
     that has no laneLink at all are skipped (which lanes such a connection joins is not stated), and so are lanes of
     zero width at the junction and ``bidirectional`` lanes (shared centre lanes that often end at a junction).
 
@@ -301,6 +332,11 @@ def incoming_lane_unconnected(ctx: Context):
             if not c.lane_links:
                 implicit.add(key)
             linked.setdefault(key, set()).update(ll.from_lane for ll in c.lane_links)
+            if junction.type is JunctionType.DIRECT and c.linked_road is not None:
+                # 12.6: a direct junction's lane links join the lanes of both roads, both ways
+                linked.setdefault((junction.id, c.linked_road), set()).update(ll.to_lane for ll in c.lane_links)
+                if not c.lane_links:
+                    implicit.add((junction.id, c.linked_road))
     for road in ctx.document.roads:
         if road.junction is not None or not road.lane_sections:
             continue
@@ -371,7 +407,14 @@ def junction_merge(ctx: Context):
         )
 
 
-@rule("J007", "connection-duplicate", Category.JUNCTION, Severity.ERROR)
+@rule(
+    "J007",
+    "connection-duplicate",
+    Category.JUNCTION,
+    Severity.ERROR,
+    uids=(U.CONNECTION_ONE_LINK,),
+    every_version=True,
+)
 def connection_duplicate(ctx: Context):
     """A connecting road appears in more than one connection from the same incoming road.
 
@@ -379,7 +422,9 @@ def connection_duplicate(ctx: Context):
 
     Each connecting road is represented by at most one connection per incoming road (1.8; ASAM's
     ``junctions.connection.one_link_to_incoming``); 1.7 allowed exactly one connection per connecting road
-    (``one_connection_element``). Readers keep one of the duplicates and lose the other's lane links.
+    (``one_connection_element``). Readers keep one of the duplicates and lose the other's lane links. (The second
+    sentence of ``one_link_to_incoming``, lane links only from lanes that enter the junction, is
+    ``junction-lane-link-outbound``'s.)
 
     Passes::
 
@@ -410,6 +455,7 @@ def connection_duplicate(ctx: Context):
                     f"junction {junction.id}: connecting road {c.connecting_road} is in connections "
                     f"{first_road[c.connecting_road].id} and {c.id}; OpenDRIVE 1.7 allows one connection per "
                     "connecting road",
+                    uid=NO_UID,
                     road=c.connecting_road,
                     line=c.line or None,
                 )
@@ -417,7 +463,14 @@ def connection_duplicate(ctx: Context):
             first_road.setdefault(c.connecting_road, c)
 
 
-@rule("J008", "connecting-road-is-incoming", Category.JUNCTION, Severity.ERROR)
+@rule(
+    "J008",
+    "connecting-road-is-incoming",
+    Category.JUNCTION,
+    Severity.ERROR,
+    uids=(U.CONNECTION_NOT_INCOMING,),
+    every_version=True,
+)
 def connecting_road_is_incoming(ctx: Context):
     """A road is the connecting road of one connection and the incoming road of another.
 

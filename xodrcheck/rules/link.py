@@ -33,7 +33,8 @@ from dataclasses import dataclass, field
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.lanes import RoadGeometry
-from xodrcheck.model import ContactPoint, ElementType, Road
+from xodrcheck.model import ContactPoint, ElementType, JunctionType, Road
+from xodrcheck.rules import junction_uids as JU
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules import road_uids as RU
 from xodrcheck.rules.context import Context, Neighbour, link_at
@@ -98,6 +99,21 @@ def _describe(road: Road, end: ContactPoint, neighbour: Neighbour) -> str:
     return f"the {end.value} of road {road.id} and the {neighbour.contact.value} of road {neighbour.road.id}{via}"
 
 
+def _junction_uid(
+    ctx: Context, road: Road, neighbour: Neighbour, severity: Severity | None, direct: str = JU.DIRECT_SMOOTH
+) -> str:
+    """The junction rule an error at a junction joint enforces: the linked lanes of a common junction's connection
+    (from the incoming road into the connecting road, and from the connecting road on) fit smoothly
+    (``junctions.connection.smooth_fit``), those of a direct junction too (``direct``); other road links and warnings
+    name none."""
+    junction = neighbour.junction or ctx.junction_of(road) or ctx.junction_of(neighbour.road)
+    if severity is not Severity.ERROR or junction is None:
+        return NO_UID
+    if junction.type is JunctionType.DIRECT:
+        return direct
+    return JU.CONNECTION_SMOOTH_FIT if junction.type is JunctionType.DEFAULT else NO_UID
+
+
 def _in_junction(ctx: Context, road: Road) -> bool:
     return road.junction is not None and ctx.junction(road.junction) is not None
 
@@ -143,7 +159,14 @@ def link_gap(ctx: Context):
             )
 
 
-@rule("K102", "link-kink", Category.LINK, Severity.ERROR)
+@rule(
+    "K102",
+    "link-kink",
+    Category.LINK,
+    Severity.ERROR,
+    uids=(JU.CONNECTION_SMOOTH_FIT, JU.DIRECT_HEADING),
+    every_version=True,
+)
 def link_kink(ctx: Context):
     """Two linked roads meet at an angle: the heading changes abruptly at the contact (a kink, with or without a gap).
 
@@ -151,6 +174,9 @@ def link_kink(ctx: Context):
     A kink over ``kink`` (0.01 rad, 0.57 deg: the first road's course leaves the second by the 1 cm ``gap`` within a
     metre) is an error, one over ``heading`` (1 mrad) a warning. A start-to-start or end-to-end link joins roads
     running in opposite directions: the heading leaving one road must be the opposite of the heading leaving the other.
+    At a junction connection an error enforces ``junctions.connection.smooth_fit`` (1.9: the linked lanes fit
+    smoothly, no kink); at a direct junction ``junctions.direct.road_ramp_heading`` (the junction lies where the
+    headings of road and ramp are identical).
 
     Passes (road 2 continues road 1 straight on)::
 
@@ -175,6 +201,7 @@ def link_kink(ctx: Context):
                 f"{_describe(road, end, neighbour)}: make the headings at the contact points agree"
                 f"{warning_note(severity, tol, 'heading')}",
                 severity=severity,
+                uid=_junction_uid(ctx, road, neighbour, severity, JU.DIRECT_HEADING),
                 **_where(road, end, mine, _joint_line(road, end, neighbour)),
             )
 
@@ -225,7 +252,14 @@ def _border_gap(mine: RoadEnd, lane: int, theirs: RoadEnd, other: int) -> tuple[
     return max(_plan_distance(p, q) for p, q in pairs), pairs[1][0]
 
 
-@rule("K103", "lane-border-gap", Category.LINK, Severity.ERROR)
+@rule(
+    "K103",
+    "lane-border-gap",
+    Category.LINK,
+    Severity.ERROR,
+    uids=(JU.CONNECTION_SMOOTH_FIT, JU.DIRECT_SMOOTH),
+    every_version=True,
+)
 def lane_border_gap(ctx: Context):
     """Two lanes linked across a road link or a junction connection do not meet: their borders are apart.
 
@@ -233,7 +267,9 @@ def lane_border_gap(ctx: Context):
     junction connection), the inner and outer border of one lane at its road's end must coincide with the borders of
     the other lane at its contact point (in either order). This catches gaps and overlaps between linked lanes (ASAM's
     ``lane.smoothness.contact_point_no_horizontal_gaps``), crossed lane links and lanes linked to a lane of another
-    width. Borders over ``gap`` (1 cm, ASAM's threshold) apart are an error, over ``position`` (1 mm) a warning.
+    width. Borders over ``gap`` (1 cm, ASAM's threshold) apart are an error, over ``position`` (1 mm) a warning. An
+    error at a junction connection enforces ``junctions.connection.smooth_fit`` (1.9) or, in a direct junction,
+    ``junctions.direct.linked_lane_smoothness``: the linked lanes fit smoothly as described for roads (10.3).
 
     Passes (lane -1 of both roads is 3.5 m wide and the roads meet)::
 
@@ -263,6 +299,7 @@ def lane_border_gap(ctx: Context):
                 f"{_describe(road, end, neighbour)} but their borders are {gap:.4g} m apart: fix the link, the "
                 f"widths or the geometry so the linked lanes meet{warning_note(severity, tol)}",
                 severity=severity,
+                uid=_junction_uid(ctx, road, neighbour, severity),
                 **_where(road, end, point, line or _joint_line(road, end, neighbour), lane),
             )
 
@@ -318,7 +355,14 @@ def _steps(ctx: Context, tol: float) -> Iterator[_Step]:
     yield from (step for step in steps.values() if step.points is not None)
 
 
-@rule("K104", "link-step", Category.LINK, Severity.ERROR)
+@rule(
+    "K104",
+    "link-step",
+    Category.LINK,
+    Severity.ERROR,
+    uids=(JU.CONNECTION_SMOOTH_FIT, JU.DIRECT_SMOOTH),
+    every_version=True,
+)
 def link_step(ctx: Context):
     """Two linked roads or lanes do not meet in height: the road surface steps up or down at the contact.
 
@@ -328,7 +372,8 @@ def link_step(ctx: Context):
     the elevation profile, the superelevation that tilts the lateral axis (a roll mismatch shows as a step at the lane
     edges) and each lane's ``<height>``. A step over ``gap`` (1 cm) is an error, over ``position`` (1 mm) a warning;
     one finding per contact, at its largest step, counting the lane pairs that step. Horizontal gaps are ``link-gap``
-    and ``lane-border-gap``.
+    and ``lane-border-gap``. At a junction connection an error enforces ``junctions.connection.smooth_fit`` (1.9) or
+    ``junctions.direct.linked_lane_smoothness`` (direct junctions), as ``lane-border-gap``'s.
 
     Passes (both roads at 0 m where they meet)::
 
@@ -355,6 +400,7 @@ def link_step(ctx: Context):
             f"({mine.x:.3f}, {mine.y:.3f}) at z={mine.z:.3f} and z={theirs.z:.3f}{lanes}; make the elevation, "
             f"superelevation and lane heights continue across the contact{warning_note(severity, tol)}",
             severity=severity,
+            uid=_junction_uid(ctx, step.road, step.neighbour, severity),
             **_where(step.road, step.end, mine, step.line, step.lane),
         )
 

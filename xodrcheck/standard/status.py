@@ -56,6 +56,20 @@ NOT_ENFORCED: dict[str, str] = {
         "says that a reader places the object's CRG in the object's local frame and ignores the CRG file's own "
         "reference line, position, curvature and heading: those are in the CRG file, outside the .xodr"
     ),
+    # junctions (12.4, 12.11)
+    "asam.net:xodr:1.7.0:junctions.connection.lane_change_one_con_road": (
+        "describes one of two ways to connect an incoming road's lanes (one connecting road with several <laneLink> "
+        "elements, which allows lane changes in the junction); a permission, which no file can break"
+    ),
+    "asam.net:xodr:1.7.0:junctions.connection.no_lane_change_for_mult_con_roads": (
+        "describes the other way (one connecting road per pair of lanes, each with one <laneLink>) and what it means: "
+        "no lane changes in the junction; a permission and its consequence for traffic, which no file can break"
+    ),
+    "asam.net:xodr:1.8.0:junctions.elevation_grid.polynome_coefficient_values": (
+        "says how an application interpolates an elevation grid (12.11.1: c and d of the edge polynomials are 0 "
+        "where too few grid points support them); the file holds only the grid's z-values, no coefficients, so no "
+        "file can break it"
+    ),
     # road.type (10.4)
     "asam.net:xodr:1.4.0:road.type.create_new_type_in_parent": (
         "says how a change of road type is written (a new <type> in the <road>); a file has no other way to write "

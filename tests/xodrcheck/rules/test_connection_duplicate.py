@@ -10,3 +10,11 @@ def test_two_connections_for_one_incoming_and_connecting_road():
     (f,) = findings(path, RULE)
     assert f.road == "10"
     assert f.line == line_of(path, '<connection id="2"')
+
+
+def test_duplicate_in_a_1_8_file_names_one_link_to_incoming():
+    from xodrcheck.rules import junction_uids as U
+
+    path = fixture(RULE, "fail_1_8.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.rule_uid, f.road, f.line) == (U.CONNECTION_ONE_LINK, "16", line_of(path, '<connection id="4"'))

@@ -17,3 +17,17 @@ def test_lane_link_from_an_outgoing_lane_is_a_warning_in_17():
 def test_before_17_it_is_an_info():
     (f,) = findings(fixture(RULE, "fail_14.xodr"), RULE)
     assert f.severity is Severity.INFO
+
+
+def test_an_outbound_lane_link_is_an_error_from_1_8():
+    from xodrcheck.rules import junction_uids as U
+
+    path = fixture(RULE, "fail_1_8.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.severity, f.rule_uid, f.road, f.lane) == (Severity.ERROR, U.CONNECTION_ONE_LINK, "1", 1)
+    assert f.line == line_of(path, '<laneLink from="1" to="-1"/>')
+
+
+def test_direct_junctions_are_not_checked():
+    """12.6.1 links lane 1 of the road that ends at a direct junction (its traffic leaves it)."""
+    assert findings(fixture("direct-junction-shape", "pass.xodr"), RULE) == []

@@ -19,3 +19,12 @@ def test_junction_connection_lanes_are_compared():
     found = findings(crossed, RULE)
     assert {(f.road, f.lane) for f in found} == {("1", -1), ("1", -2)}
     assert all("3.5 m apart" in f.message for f in found)
+
+
+def test_gaps_at_junctions_name_the_junction_rules():
+    from xodrcheck.rules import junction_uids as U
+
+    common = findings(fixture(RULE, "fail_t_junction.xodr"), RULE)
+    assert common and {f.rule_uid for f in common} == {U.CONNECTION_SMOOTH_FIT}
+    direct = findings(fixture(RULE, "fail_direct.xodr"), RULE)
+    assert direct and {f.rule_uid for f in direct} == {U.DIRECT_SMOOTH}

@@ -11,3 +11,12 @@ def test_heading_kink_without_gap():
     (f,) = findings(path, RULE)
     assert f.road == "1" and f.severity is Severity.ERROR
     assert "(0.1 rad)" in f.message
+
+
+def test_kinks_at_junctions_name_the_junction_rules():
+    from xodrcheck.rules import junction_uids as U
+
+    common = findings(fixture(RULE, "fail_t_junction.xodr"), RULE)
+    assert {(f.road, f.rule_uid) for f in common} == {("1", U.CONNECTION_SMOOTH_FIT), ("10", U.CONNECTION_SMOOTH_FIT)}
+    (direct,) = findings(fixture(RULE, "fail_direct.xodr"), RULE)
+    assert (direct.rule_uid, direct.severity) == (U.DIRECT_HEADING, Severity.ERROR)

@@ -46,3 +46,12 @@ def test_steps_within_the_position_tolerance_pass(tmp_path):
     path = tmp_path / "tiny.xodr"
     path.write_text(text, encoding="utf-8")
     assert findings(path, RULE) == []
+
+
+def test_steps_at_junctions_name_the_junction_rules():
+    from xodrcheck.rules import junction_uids as U
+
+    common = findings(fixture(RULE, "fail_t_junction.xodr"), RULE)
+    assert len(common) == 2 and {f.rule_uid for f in common} == {U.CONNECTION_SMOOTH_FIT}
+    (direct,) = findings(fixture(RULE, "fail_direct.xodr"), RULE)
+    assert direct.rule_uid == U.DIRECT_SMOOTH
