@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -45,14 +46,15 @@ GOLDEN = {
 
 # ------------------------------------------------------------------------------------------------------ snapshot
 def test_snapshot_counts_a_small_junction():
-    snap = snapshot_of(JUNCTION)
-    assert (snap.roads, snap.junction_roads, snap.junctions, snap.lane_sections, snap.lanes) == (4, 2, 1, 4, 6)
-    assert snap.legs == {"2": 1} and snap.junctions_by_type == {"default": 1}
-    assert snap.lanes_by_type == {"driving": 6}
-    assert snap.lane_length == pytest.approx(4 * 50.0 + 2 * 20.0, abs=1e-3)
-    # 2 connecting lanes x (predecessor + successor) + 2 junction laneLinks
-    assert snap.lane_links == 6
-    assert snap.bbox == pytest.approx((0.0, -3.5, 120.0, 3.5))
+    snap = snapshot_of(JUNCTION)  # a T junction: roads 1, 2, 3 (two lanes each), connecting roads 10, 11, 16, 17
+    assert (snap.roads, snap.junction_roads, snap.junctions, snap.lane_sections, snap.lanes) == (7, 4, 1, 7, 10)
+    assert snap.legs == {"3": 1} and snap.junctions_by_type == {"default": 1}
+    assert snap.lanes_by_type == {"driving": 10}
+    # six 50 m lanes, two 20 m straight connections, two quarter circles (lane centres at radius 8.25 and 11.75 m)
+    assert snap.lane_length == pytest.approx(6 * 50.0 + 2 * 20.0 + (8.25 + 11.75) * math.pi / 2, abs=0.01)
+    # 4 connecting lanes x (predecessor + successor) + 4 junction laneLinks
+    assert snap.lane_links == 12
+    assert snap.bbox == pytest.approx((0.0, -3.5, 120.0, 60.0))
     assert snap.findings == {}
 
 
