@@ -77,13 +77,13 @@ def test_differences_are_readable_and_tolerant():
     noise = dataclasses.replace(old, lane_length=old.lane_length + 4e-4, bbox=tuple(v + 4e-4 for v in old.bbox))
     assert list(differences(old, noise)) == []
     lines = list(differences(old, snapshot_of(DROPPED)))
-    assert "lane links: 6 -> 5 (-1)" in lines
+    assert "lane links: 12 -> 11 (-1)" in lines
     assert "findings L010: 0 -> 1" in lines
     assert any(line.startswith("lane graph topology changed") for line in lines)
-    moved = dataclasses.replace(old, bbox=(old.bbox[0] - 1.0, *old.bbox[1:]), roads=5, legs={"3": 1})
+    moved = dataclasses.replace(old, bbox=(old.bbox[0] - 1.0, *old.bbox[1:]), roads=8, legs={"4": 1})
     lines = list(differences(old, moved))
-    assert "roads: 4 -> 5 (+1)" in lines
-    assert "junctions with 2 legs: 1 -> 0" in lines and "junctions with 3 legs: 0 -> 1" in lines
+    assert "roads: 7 -> 8 (+1)" in lines
+    assert "junctions with 3 legs: 1 -> 0" in lines and "junctions with 4 legs: 0 -> 1" in lines
     assert any(line.startswith("bounding box: x 0.000..120.000") for line in lines)
 
 
@@ -97,7 +97,7 @@ def test_malformed_snapshots_are_refused(data):
 def test_snapshot_then_diff_on_the_command_line(tmp_path, capsys):
     out = tmp_path / "snap.json"
     assert main(["snapshot", str(JUNCTION), "-o", str(out)]) == 0
-    assert json.loads(out.read_text())["roads"] == 4
+    assert json.loads(out.read_text())["roads"] == 7
     capsys.readouterr()
     assert main(["diff", str(out), str(JUNCTION)]) == 0
     assert "no change" in capsys.readouterr().out
@@ -108,7 +108,7 @@ def test_snapshot_then_diff_on_the_command_line(tmp_path, capsys):
 
 def test_snapshot_to_standard_output(capsys):
     assert main(["snapshot", str(JUNCTION)]) == 0
-    assert json.loads(capsys.readouterr().out)["lane_links"] == 6
+    assert json.loads(capsys.readouterr().out)["lane_links"] == 12
 
 
 @pytest.mark.parametrize("case", ["missing-map", "not-xml", "missing-snapshot", "bad-snapshot"])
@@ -203,18 +203,18 @@ def test_plugin_fixture_writes_compares_and_reports(pytester):
     result = pytester.runpytest_subprocess(*PLUGIN, "--xodr-snapshot-update")
     result.assert_outcomes(passed=1)
     written = pytester.path / "snaps" / "map.json"
-    assert json.loads(written.read_text())["roads"] == 4
+    assert json.loads(written.read_text())["roads"] == 7
 
     result = pytester.runpytest_subprocess(*PLUGIN)
     result.assert_outcomes(passed=1)
 
     data = json.loads(written.read_text())
     data["findings"] = {"L010": 1}
-    data["roads"] = 3
+    data["roads"] = 6
     written.write_text(json.dumps(data))
     result = pytester.runpytest_subprocess(*PLUGIN)
     result.assert_outcomes(failed=1)
-    result.stdout.fnmatch_lines(["*differs from*", "*roads: 3 -> 4 (+1)*", "*findings L010: 1 -> 0*"])
+    result.stdout.fnmatch_lines(["*differs from*", "*roads: 6 -> 7 (+1)*", "*findings L010: 1 -> 0*"])
 
 
 def test_plugin_default_snapshot_path_is_beside_the_test(pytester):
