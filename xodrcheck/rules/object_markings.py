@@ -228,14 +228,13 @@ def marking_corner_references(ctx: Context):
     (``.object_marking.enclosed_outline_marking``): a repeated point anywhere else, or on an open outline, is no
     such marking.
 
-
     Passes (a closed outline of points 0-3)::
 
         <marking color="white" ...><cornerReference id="3"/><cornerReference id="0"/></marking>
 
-    Fails::
+    Fails (0 to 2, then back to 1: round the outline more than once)::
 
-        <marking color="white" ...><cornerReference id="2"/><cornerReference id="1"/></marking>
+        <marking color="white" ...><cornerReference id="0"/><cornerReference id="2"/><cornerReference id="1"/></marking>
     """
     old = ctx.version is not None and ctx.version < (1, 9)
     for obj, outline, marking in markings(ctx):

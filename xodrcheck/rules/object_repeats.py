@@ -137,7 +137,6 @@ def repeat_outline_road_corners(ctx: Context):
     (``s``/``t`` of the road) stay where they are, so every instance would have the first one's outline. (A 1.9
     ``<curveLocal>`` outline is in the same local frame and moves with the instance too.)
 
-
     Passes::
 
         <object ...><repeat .../><outline id="0"><cornerLocal u="-1" v="0" z="0" height="0" id="0"/>...</outline>
