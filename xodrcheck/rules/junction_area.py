@@ -1,0 +1,203 @@
+"""A junction's area in plan view (``J024``-``J026``): its boundary closes counter-clockwise (12.10), its reference
+line reaches it (12.9) and its elevation grid covers it (12.11).
+
+The boundary's segments are evaluated with the exact lane geometry (:mod:`xodrcheck.rules.junction_shapes`). A
+boundary is checked only when every segment can be placed (an unknown road or lane is ``J023``'s or the reference
+rules'), and only for common junctions (a boundary elsewhere is ``J012``'s). Gaps between segments over ``gap``
+(1 cm) are errors.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import numpy as np
+
+from xodrcheck.findings import Category, Finding, Severity
+from xodrcheck.junction_elements import JunctionParts, junction_parts
+from xodrcheck.rules import junction_uids as U
+from xodrcheck.rules.context import Context
+from xodrcheck.rules.junction_shapes import (
+    Piece,
+    boundary_pieces,
+    gaps,
+    grid_area,
+    reference_line,
+    ring,
+    signed_area,
+)
+from xodrcheck.rules.registry import rule
+
+
+def _boundaries(ctx: Context) -> Iterator[tuple[JunctionParts, list[Piece]]]:
+    """Common junctions with a boundary whose segments can all be placed, with the placed segments."""
+    for j in junction_parts(ctx):
+        if j.type != "default" or j.boundary is None or j.boundary.unknown:
+            continue
+        pieces = boundary_pieces(ctx, j.boundary)
+        if pieces is not None:
+            yield j, pieces
+
+
+def _closed(ctx: Context, pieces: list[Piece]) -> bool:
+    return all(gap <= ctx.tolerances.gap for _, _, gap in gaps(pieces))
+
+
+def _describe(piece: Piece) -> str:
+    seg = piece.segment
+    kind = "lane" if hasattr(seg, "s_start") else "joint"
+    return f"the {kind} segment of road {seg.road} (line {seg.line})"
+
+
+@rule("J024", "boundary-not-closed", Category.JUNCTION, Severity.ERROR, uids=(U.BOUNDARY_CLOSED,))
+def boundary_not_closed(ctx: Context) -> Iterator[Finding]:
+    """The segments of a junction boundary do not close it: one ends away from where the next one starts.
+
+    The segments of a ``<boundary>`` close the entire junction boundary (``junctions.boundary.segments_close_boundry``,
+    12.10): each segment, in file order, ends where the next begins, and the last ends where the first begins. A lane
+    segment runs along the outer border of ``boundaryLane`` from ``sStart`` to ``sEnd``; a joint crosses its road at
+    ``contactPoint`` from the outer border of ``jointLaneStart`` to that of ``jointLaneEnd`` (all lanes without them).
+    A gap over ``gap`` (1 cm) is an error.
+
+    Passes (joint across road 1's end, lane -1 of connecting road 10 to road 2, joint across road 2 ...)::
+
+        <segment type="joint" roadId="1" contactPoint="end" jointLaneStart="1" jointLaneEnd="-1"/>
+        <segment type="lane" roadId="10" boundaryLane="-1" sStart="start" sEnd="end"/> ...
+
+    Fails (the lane segment stops at s=15 of road 10, 5 m before the next joint)::
+
+        <segment type="lane" roadId="10" boundaryLane="-1" sStart="start" sEnd="15"/>
+    """
+    tol = ctx.tolerances.gap
+    for j, pieces in _boundaries(ctx):
+        for piece, after, gap in gaps(pieces):
+            if gap <= tol:
+                continue
+            x, y = (float(v) for v in piece.end)
+            yield boundary_not_closed.finding(
+                f"{j.describe()}: {_describe(piece)} ends at ({x:.3f}, {y:.3f}), {gap:.3g} m from where "
+                f"{_describe(after)} begins; the segments must close the boundary: make each segment end where the "
+                "next one begins (add segments, or a road for them, where the junction's roads leave a gap)",
+                road=piece.segment.road,
+                x=x,
+                y=y,
+                line=piece.segment.line or None,
+            )
+
+
+@rule(
+    "J025",
+    "boundary-clockwise",
+    Category.JUNCTION,
+    Severity.ERROR,
+    uids=(U.BOUNDARY_COUNTER_CLOCKWISE,),
+)
+def boundary_clockwise(ctx: Context) -> Iterator[Finding]:
+    """The segments of a junction boundary run clockwise around the junction.
+
+    The segments are ordered counter-clockwise (``junctions.boundary.segments_counter_clockwise_order``, 12.10):
+    walked in file order, a closed boundary keeps the junction on its left, so its signed (shoelace) area is
+    positive. Checked on boundaries that close (``boundary-not-closed`` reports the others).
+
+    Passes (around a T junction: road 1's end, along the south edge to road 2, road 2's start, up to road 3 ...)::
+
+        <segment type="joint" roadId="1" contactPoint="end" jointLaneStart="1" jointLaneEnd="-1"/>
+        <segment type="lane" roadId="10" boundaryLane="-1" sStart="start" sEnd="end"/> ...
+
+    Fails (the same segments in reverse order, each from its end to its start)::
+
+        <segment type="lane" roadId="100" boundaryLane="0" sStart="end" sEnd="start"/>
+        <segment type="joint" roadId="3" contactPoint="start"/> ...
+    """
+    for j, pieces in _boundaries(ctx):
+        if len(pieces) < 2 or not _closed(ctx, pieces):
+            continue
+        area = signed_area(ring(pieces))
+        if area < 0:
+            yield boundary_clockwise.finding(
+                f"{j.describe()}: its boundary segments run clockwise around the junction (enclosing "
+                f"{-area:.1f} m²); list them counter-clockwise, each from its start to its end in that order",
+                line=(j.boundary.line if j.boundary else 0) or j.line or None,
+            )
+
+
+@rule(
+    "J026",
+    "junction-area-coverage",
+    Category.JUNCTION,
+    Severity.ERROR,
+    uids=(U.REFLINE_MEETS_BOUNDARY, U.REFLINE_REACHES_ALL, U.GRID_COVERS_BOUNDARY),
+)
+def junction_area_coverage(ctx: Context) -> Iterator[Finding]:
+    """A junction's reference line or elevation grid does not cover its boundary.
+
+    With a junction boundary (12.10) and a junction reference line (12.9), the line crosses the boundary or at least
+    touches it (``junctions.geometry.correct_junction_boundry``), and every point of the junction is reached by a
+    line perpendicular to it (``junctions.geometry.ref_line_definition``): every boundary point lies between the
+    normals at the line's start and end. An elevation grid is valid for the whole area enclosed by the boundary
+    (``junctions.elevation_grid.valid_for_entire_boundry``, 12.11): every boundary point lies in a complete square of
+    the grid (rows ``gridSpacing`` apart from ``sStart`` along the line, points ``gridSpacing`` apart across it). The
+    tolerance is ``gap`` (1 cm).
+
+    Passes (boundary x 50..70, y -3.5..10; line from (45, 0) 30 m east; grid rows at s=0..30, 15 m left, 5 m right)::
+
+        <planView><geometry s="0" x="45" y="0" hdg="0" length="30"><line/></geometry></planView>
+        <elevationGrid sStart="0" gridSpacing="5"><elevation left="0 0 0" center="0" right="0"/> ... (7 rows)
+
+    Fails (the line ends at x=65, short of the boundary's east side at x=70)::
+
+        <planView><geometry s="0" x="45" y="0" hdg="0" length="20"><line/></geometry></planView>
+    """
+    tol = ctx.tolerances.gap
+    for j, pieces in _boundaries(ctx):
+        line = reference_line(j)
+        if line is None:
+            continue
+        xy = ring(pieces)
+        s, t = line.frame(xy)
+        inside = (s >= -tol) & (s <= line.length + tol)
+        if not (inside & (np.abs(t) <= tol)).any() and not _crosses(s, t, line.length, tol):
+            yield junction_area_coverage.finding(
+                f"{j.describe()}: its reference line (from ({line.x:.3f}, {line.y:.3f}), {line.length:g} m long) "
+                "neither crosses nor touches the junction boundary; place the line across the junction",
+                uid=U.REFLINE_MEETS_BOUNDARY,
+                x=line.x,
+                y=line.y,
+                line=line.line or None,
+            )
+        if not inside.all():
+            k = int(np.argmax(np.where(s < 0, -s, s - line.length)))
+            yield junction_area_coverage.finding(
+                f"{j.describe()}: the boundary point ({xy[k, 0]:.3f}, {xy[k, 1]:.3f}) lies at s={s[k]:.3f} along the "
+                f"junction reference line, outside its 0..{line.length:g} m, so no line perpendicular to the "
+                "reference line reaches it; lengthen or move the reference line to span the junction",
+                uid=U.REFLINE_REACHES_ALL,
+                x=float(xy[k, 0]),
+                y=float(xy[k, 1]),
+                line=line.line or None,
+            )
+        for grid in j.grids[:1]:
+            area = grid_area(grid)
+            if area is None:
+                continue
+            out = area.outside(s, t, tol)
+            if out.any():
+                k = int(np.argmax(out))
+                yield junction_area_coverage.finding(
+                    f"{j.describe()}: the boundary point ({xy[k, 0]:.3f}, {xy[k, 1]:.3f}) (s={s[k]:.3f}, "
+                    f"t={t[k]:.3f} from the reference line) lies outside the elevation grid's complete squares "
+                    f"({int(out.sum())} of {len(out)} boundary points do); extend the grid over the whole boundary",
+                    uid=U.GRID_COVERS_BOUNDARY,
+                    x=float(xy[k, 0]),
+                    y=float(xy[k, 1]),
+                    line=grid.line or None,
+                )
+
+
+def _crosses(s: np.ndarray, t: np.ndarray, length: float, tol: float) -> bool:
+    """Whether the closed ring (s, t) crosses the segment t=0, 0<=s<=length: an edge changes side within it."""
+    s2, t2 = np.roll(s, -1), np.roll(t, -1)
+    change = (t > 0) != (t2 > 0)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        at = np.where(change, s + (s2 - s) * (t / (t - t2)), np.nan)
+    return bool(np.any(change & (at >= -tol) & (at <= length + tol)))
