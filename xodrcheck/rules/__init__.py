@@ -31,7 +31,8 @@ prefix    category    codes
                       borders (:mod:`.object_outlines`), markings (:mod:`.object_markings`), skeletons
                       (:mod:`.object_skeletons`), repeats (:mod:`.object_repeats`), where outlines and skeletons
                       lie (:mod:`.object_geometry`), surfaces (:mod:`.object_surfaces`)
-``T``     signal      ``T0xx`` signals, signal references, boards, controllers
+``T``     signal      ``T0xx`` signals, signal references, boards, controllers (:mod:`.signal`,
+                      :mod:`.signal_validity`)
 ``W``     railroad    ``W0xx`` railroads (tracks, switches, stations)
 ``U``     surface     ``U0xx`` road surfaces (CRG, cross-section surfaces)
 ========  ==========  =========================================================================================
@@ -82,6 +83,8 @@ FAMILIES = (
     "junction_geometry",
     "overlap",
     "header",
+    "signal",
+    "signal_validity",
 )
 
 _loaded = False

@@ -35,6 +35,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from xodrcheck.lanes import RoadGeometry
     from xodrcheck.objects import RoadObject, RoadObjects
+    from xodrcheck.signals import Signals
 
 
 def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
@@ -145,6 +146,15 @@ class Context:
         """Road id -> the road's ``<object>`` elements as typed data (of :attr:`road_objects`; roads without objects
         are left out)."""
         return {road: found.objects for road, found in self.road_objects.items() if found.objects}
+
+    @cached_property
+    def signals(self) -> Signals:
+        """The file's signals, signal references, controllers and vmsGroups as typed data (:mod:`xodrcheck.signals`),
+        built from :attr:`tree` once per file; empty when the file is not well-formed."""
+        from xodrcheck.signals import Signals, read_signals
+
+        tree = self.tree
+        return Signals() if tree is None else read_signals(tree.getroot())
 
     # ---------------------------------------------------------------------------------------------------- geometry
     def geometry(self, road_id: str) -> RoadGeometry | None:

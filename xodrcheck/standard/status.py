@@ -81,6 +81,23 @@ NOT_ENFORCED: dict[str, str] = {
     ),
 }
 
+NOT_ENFORCED.update(
+    {
+        # road.signal (14)
+        "asam.net:xodr:1.7.0:road.signal.priority": (
+            "says how applications use signals (before other traffic rules); a file has no way to rank them "
+            "otherwise, so no file can break it"
+        ),
+        "asam.net:xodr:1.7.0:road.signal.dependency.multiple_dependency": (
+            "a permission: a signal may have any number of <dependency> elements, so no file can break it"
+        ),
+        "asam.net:xodr:1.9.0:road.signal.gantry.all_variable_boards_same_gantry": (
+            "the file does not say which gantry a board is on: a signal names no object it is mounted on, so "
+            "boards of different gantries in one <vmsGroup> cannot be told from boards of one"
+        ),
+    }
+)
+
 #: Findings take the severity the standard's wording gives (shall -> error, should -> warning, may -> info), except
 #: for these UIDs: UID -> (severity, why).
 SEVERITY_DEVIATIONS: dict[str, tuple[Severity, str]] = {
