@@ -234,8 +234,9 @@ def _oriented(ctx: Context) -> Iterator[RoadObject | ObjectReference]:
     uids=(U.VALIDITY_PARENT_ORIENTATION, U.VALIDITY_RHT, U.VALIDITY_LHT),
 )
 def validity_against_orientation(ctx: Context):
-    """An object (or object reference) is valid for lanes of the other direction of travel than its ``orientation``
-    says, or for lanes of both directions without ``orientation="none"``.
+    """An object's (or object reference's) validity lanes carry another direction of travel than its orientation.
+
+    Lanes of both directions need ``orientation="none"``.
 
     The lanes of all ``<validity>`` elements shall lie within the parent's ``orientation`` (Annex F
     ``road.object.validty.check_parent_orientation``, 13.6). In right-hand traffic (the road's ``rule``, default RHT),

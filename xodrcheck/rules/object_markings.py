@@ -216,8 +216,9 @@ def _order_problem(positions: list[int], n: int, closed: bool) -> str | None:
     uids=(*_COUNT_UIDS, U.KEEP_ID_ORDERED, U.ENCLOSED_OUTLINE_MARKING),
 )
 def marking_corner_references(ctx: Context):
-    """A marking of an object with an outline names fewer than two outline points, names them out of the outline's
-    order, or repeats one other than to enclose a closed outline.
+    """A marking names fewer than two outline points, names them out of the outline's order, or repeats one.
+
+    (A repeated point is allowed only first and last, to enclose a closed outline.)
 
     With an outline, a marking needs at least two ``<cornerReference>`` elements (Annex F
     ``road.object.marking.outline_corner_reference_count``, from 1.8 also
