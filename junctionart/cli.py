@@ -315,6 +315,19 @@ def _add_intersection(sub: argparse._SubParsersAction) -> None:
     add_arguments(p)
 
 
+def _add_search(sub: argparse._SubParsersAction) -> None:
+    from .search.cli import add_arguments
+
+    p = sub.add_parser(
+        "search",
+        help="quality-diversity search (MAP-Elites, pyribs) for intersections across chosen metrics",
+        description="Fill an archive of intersections spanning two or three metrics with MAP-Elites (needs the "
+        "[search] extra); stop at a budget or when -n elites meet --where. Writes archive.csv, heatmaps, report.md "
+        "and the elites' .xodr (resumable).",
+    )
+    add_arguments(p)
+
+
 class _Parser(argparse.ArgumentParser):
     """Usage errors as one line and exit code 2 (``junctionart generate -h`` still shows the full help)."""
 
@@ -329,6 +342,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     _add_render(sub)
     _add_era(sub)
     _add_intersection(sub)
+    _add_search(sub)
     args = parser.parse_args(argv)
     from xodrcheck.atomic import EXIT_INTERRUPTED, EXIT_TERMINATED, Terminated, signals_raise
 
@@ -361,6 +375,10 @@ def _command(args: argparse.Namespace) -> int:
         from .intersection_cli import run as _intersection
 
         return _intersection(args)
+    if args.command == "search":
+        from .search.cli import run as _search
+
+        return _search(args)
     return _render(args)
 
 

@@ -1,0 +1,1 @@
+"""Quality-diversity search over the intersection genome (``junctionart search``, issue 13)."""

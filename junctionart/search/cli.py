@@ -1,0 +1,112 @@
+"""``junctionart search``: the command line of the quality-diversity search."""
+
+from __future__ import annotations
+
+import argparse
+import sys
+import time
+from collections.abc import Iterator
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from ..errors import ParamsError
+from .measure import DEFAULT_DESCRIPTORS, METRICS, NAMES
+
+if TYPE_CHECKING:
+    from .engine import State
+    from .predicate import Predicate
+
+
+def add_arguments(p: argparse.ArgumentParser) -> None:
+    p.add_argument(
+        "-o",
+        "--output",
+        type=Path,
+        default=Path("search"),
+        help="folder of the results (default: ./search); reused to resume",
+    )
+    p.add_argument(
+        "--descriptors",
+        default=",".join(DEFAULT_DESCRIPTORS),
+        metavar="NAME[:CELLS],...",
+        help=f"two or three metrics spanning the archive, from {', '.join(NAMES)} "
+        f"(default: {','.join(DEFAULT_DESCRIPTORS)}; cells per metric: its default, or NAME:CELLS)",
+    )
+    p.add_argument("--where", default=None, help='stop when -n elites meet this, e.g. "legs >= 6 and min_angle < 30"')
+    p.add_argument(
+        "-n", "--elites", type=int, default=None, help="how many distinct elites must meet --where (default 50)"
+    )
+    p.add_argument(
+        "--evaluations", type=int, default=5000, help="budget: stop after this many evaluated maps (default 5000)"
+    )
+    p.add_argument("--seed", type=int, default=0, help="random seed of the search (default 0)")
+    p.add_argument(
+        "--batch", type=int, default=16, help="candidates per emitter per iteration (default 16, 2 emitters)"
+    )
+    p.add_argument("-j", "--jobs", type=int, default=None, help="worker processes (default: all cores)")
+    p.add_argument("--scheduler", default=None, metavar="ADDRESS", help="run on this Dask scheduler instead")
+    p.add_argument("--no-maps", action="store_true", help="do not write the elites' .xodr files")
+    p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
+
+
+def descriptors(text: str) -> tuple[tuple[str, int], ...]:
+    """``legs,min_angle:24`` -> ((legs, 5), (min_angle, 24))."""
+    out = []
+    for item in (part.strip() for part in text.split(",")):
+        name, _, cells = item.partition(":")
+        if name not in METRICS:
+            raise ParamsError(f"--descriptors: unknown metric {name!r}; choose from {', '.join(NAMES)}")
+        try:
+            n = int(cells) if cells else METRICS[name][2]
+        except ValueError:
+            raise ParamsError(f"--descriptors: {item!r}: CELLS must be an integer") from None
+        if not 1 <= n <= 200:
+            raise ParamsError(f"--descriptors: {item!r}: CELLS must be in [1, 200]")
+        out.append((name, n))
+    if not 2 <= len(out) <= 3 or len({n for n, _ in out}) != len(out):
+        raise ParamsError(f"--descriptors {text!r}: give two or three different metrics")
+    return tuple(out)
+
+
+def run(args: argparse.Namespace) -> int:
+    try:
+        import ribs  # noqa: F401
+    except ImportError:
+        raise ParamsError("junctionart search needs pyribs: pip install 'junctionart[search]'") from None
+    from .engine import Settings
+    from .outputs import write_all
+    from .predicate import Predicate
+    from .run import search
+
+    where = Predicate.parse(args.where, NAMES) if args.where is not None else None
+    wanted = args.elites if args.elites is not None else (50 if where is not None else None)
+    if wanted is not None and wanted < 1:
+        raise ParamsError(f"-n {wanted}: must be at least 1")
+    if args.seed < 0 or not 1 <= args.batch <= 10_000:
+        raise ParamsError("--seed must be >= 0 and --batch in [1, 10000]")
+    settings = Settings(descriptors(args.descriptors), args.seed, args.batch)
+    t0 = time.perf_counter()
+    state = search(args.output, settings, args.evaluations, where, wanted, args.jobs, args.scheduler, not args.quiet)
+    report = write_all(args.output, state, where, maps=not args.no_maps)
+    stats = state.scheduler.archive.stats
+    found = "" if where is None else f", {sum(1 for _ in _meeting(state, where))} meet --where"
+    print(
+        f"{report}: {state.evaluated} maps evaluated, {int(stats.num_elites)} elites ({float(stats.coverage):.1%} "
+        f"coverage, QD-score {float(stats.qd_score):.2f}){found}, {time.perf_counter() - t0:.0f} s"
+    )
+    if where is not None and wanted is not None and sum(1 for _ in _meeting(state, where)) < wanted:
+        print(
+            f"junctionart: warning: the budget of {args.evaluations} maps ran out before {wanted} elites met "
+            f"--where; rerun with a larger --evaluations to resume",
+            file=sys.stderr,
+        )
+    return 0
+
+
+def _meeting(state: State, where: Predicate) -> Iterator[int]:
+    from .engine import elites
+
+    data = elites(state)
+    for row in range(len(data["index"])):
+        if where({n: float(data[n][row]) for n in NAMES}):
+            yield row

@@ -1,0 +1,121 @@
+"""What the search measures on each candidate: the written map, read back and checked by xodrcheck.
+
+Metrics (names for ``--descriptors`` and ``--where``), all from :mod:`xodrcheck.metrics` on the map's one junction:
+
+========================  ==========================================================  ================  =======
+name                      meaning                                                      descriptor range  cells
+========================  ==========================================================  ================  =======
+``legs``                  legs of the junction                                         2.5 .. 7.5        5
+``min_angle``             smallest angle between neighbouring legs (degrees)           0 .. 120          12
+``fov``                   mean of the legs' FOV (degrees)                              0 .. 360          12
+``complexity``            mean of the legs' complexity (the paper's, fixed scales)     0 .. 1            10
+``conflict_ratio``        conflict area / junction area                                0 .. 1            10
+``area``                  area of the connection lanes' union (m^2)                    0 .. 15000        15
+``lanes``                 connection lanes (U-turns included)                          0 .. 80           16
+``u_turns``               U-turn lanes                                                 0 .. 8            8
+========================  ==========================================================  ================  =======
+
+*Feasible*: the map has one junction and xodrcheck finds no error-level finding in it. *Objective* (the quality an
+elite maximises within its cell): compactness, ``1 / (1 + area / 1000 m^2)`` in (0, 1], the same layout built on
+less paved area (infeasible candidates score -1 and never enter the archive).
+"""
+
+from __future__ import annotations
+
+import hashlib
+from dataclasses import dataclass
+
+import numpy as np
+
+#: name -> (low, high, default cells) of each metric used as a descriptor.
+METRICS: dict[str, tuple[float, float, int]] = {
+    "legs": (2.5, 7.5, 5),
+    "min_angle": (0.0, 120.0, 12),
+    "fov": (0.0, 360.0, 12),
+    "complexity": (0.0, 1.0, 10),
+    "conflict_ratio": (0.0, 1.0, 10),
+    "area": (0.0, 15000.0, 15),
+    "lanes": (0.0, 80.0, 16),
+    "u_turns": (0.0, 8.0, 8),
+}
+NAMES = tuple(METRICS)
+#: Default descriptors: the two that make the long tail (many legs, sharp angles between them).
+DEFAULT_DESCRIPTORS = ("legs", "min_angle")
+#: Area (m^2) at which the objective is one half.
+AREA_SCALE = 1000.0
+#: Objective of an infeasible candidate (below every feasible one, so the archive never takes it).
+INFEASIBLE = -1.0
+
+
+@dataclass(frozen=True)
+class Evaluation:
+    """One candidate's result (plain values: it travels back from worker processes or a Dask cluster)."""
+
+    feasible: bool
+    objective: float
+    metrics: dict[str, float]  #: every name of :data:`METRICS` (NaN where not measured)
+    errors: int  #: error-level xodrcheck findings (-1: the generator or reader failed)
+    sha256: str  #: of the written bytes ("" when nothing was written)
+    note: str = ""  #: first error, for the report
+
+
+def objective(area: float) -> float:
+    """Compactness (module docstring)."""
+    return 1.0 / (1.0 + max(area, 0.0) / AREA_SCALE)
+
+
+def measure_document(document) -> dict[str, float]:
+    """Every metric of the (one) junction of a document read by xodrcheck's reader."""
+    from xodrcheck.metrics import junction_legs, junction_metrics, smallest_leg_angle
+
+    junction = document.junctions[0]
+    m = junction_metrics(document, junction)
+    angle = smallest_leg_angle(junction_legs(document, junction))
+
+    def mean(values: list[float | None]) -> float:
+        kept = [v for v in values if v is not None]
+        return float(np.mean(kept)) if kept else float("nan")
+
+    return {
+        "legs": float(m.legs),
+        "min_angle": float("nan") if angle is None else angle,
+        "fov": mean([leg.fov for leg in m.leg_metrics]),
+        "complexity": mean([leg.complexity for leg in m.leg_metrics]),
+        "conflict_ratio": float("nan") if m.conflict_ratio is None else float(m.conflict_ratio),
+        "area": float("nan") if m.area is None else float(m.area),
+        "lanes": float(m.n_connection_lanes),
+        "u_turns": float(m.n_u_turn_lanes),
+    }
+
+
+def _failed(note: str, errors: int = -1, digest: str = "") -> Evaluation:
+    return Evaluation(False, INFEASIBLE, dict.fromkeys(NAMES, float("nan")), errors, digest, note)
+
+
+def evaluate(genome: list[float]) -> Evaluation:
+    """Decode, build, write, check, read back and measure one candidate (runs in a worker)."""
+    from xodrcheck.check import check
+    from xodrcheck.findings import Severity
+    from xodrcheck.reader import read
+
+    from .. import to_bytes
+    from ..errors import JunctionArtError
+    from ..intersection import build
+    from .genome import decode
+
+    try:
+        spec = decode(genome)
+        data = to_bytes(build(spec).document, spec.version)
+    except JunctionArtError as exc:
+        return _failed(f"generator: {exc}")
+    digest = hashlib.sha256(data).hexdigest()
+    errors = [f for f in check(data).findings if f.severity >= Severity.ERROR]
+    document = read(data).document
+    if document is None or len(document.junctions) != 1:
+        return _failed("the map read back has no single junction", len(errors), digest)
+    metrics = measure_document(document)
+    if errors:
+        return Evaluation(False, INFEASIBLE, metrics, len(errors), digest, f"{errors[0].code} {errors[0].message}")
+    if any(np.isnan(v) for v in metrics.values()):
+        return Evaluation(False, INFEASIBLE, metrics, 0, digest, "a metric could not be measured")
+    return Evaluation(True, objective(metrics["area"]), metrics, 0, digest)
