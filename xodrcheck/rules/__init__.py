@@ -80,6 +80,8 @@ FAMILIES = (
     "junction_roles",
     "junction_members",
     "junction_area",
+    "junction_virtual",
+    "junction_paths",
     "junction_geometry",
     "overlap",
     "header",

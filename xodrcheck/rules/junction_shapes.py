@@ -75,7 +75,7 @@ def _lane_piece(ctx: Context, seg: LaneSegment) -> np.ndarray | None:
         return None
     lo, hi = min(a, b), max(a, b)
     hi = min(hi, left_of(float(road.length)))
-    parts = []
+    parts: list[np.ndarray] = []
     for index in range(len(road.lane_sections)):
         start, end = geometry.section_range(index)
         if end < lo or start > hi or (end == lo and index + 1 < len(road.lane_sections)):
@@ -261,3 +261,55 @@ def grid_area(grid: ElevationGrid) -> GridArea | None:
     left = np.array([len(row.left or ()) if row.center else -1 for row in grid.rows], dtype=float)
     right = np.array([len(row.right or ()) if row.center else -1 for row in grid.rows], dtype=float)
     return GridArea(grid.s_start, grid.spacing, np.minimum(left[:-1], left[1:]), np.minimum(right[:-1], right[1:]))
+
+
+# ------------------------------------------------------------------------------------------------------ lane strips
+def strip(ctx: Context, road: Road, lane: int | None, lo: float, hi: float):
+    """The plan-view area of one lane of a usable road (``lane=None``: of the whole road, outermost border to
+    outermost border) between ``lo`` and ``hi`` along it, as a shapely geometry (``None``: nothing there)."""
+    import shapely
+
+    geometry = ctx.geometry(road.id)
+    if geometry is None or usable(ctx, road) is None:
+        return None
+    lo, hi = max(lo, 0.0), min(hi, left_of(float(road.length)))
+    pieces = []
+    for index in range(len(road.lane_sections)):
+        start, end = geometry.section_range(index)
+        if end < lo or start > hi:
+            continue
+        s = section_lines(ctx, road, index).s
+        s = np.unique(np.concatenate(([max(lo, start)], s[(s > lo) & (s < hi)], [min(hi, left_of(end))])))
+        if lane is None:
+            left, right = geometry.side_lanes(index)
+            ids = (left.lanes[-1].id if left.lanes else 0, right.lanes[-1].id if right.lanes else 0)
+            sides = [geometry.lane_points(index, i, s, where="outer") for i in ids]
+        else:
+            try:
+                sides = [geometry.lane_points(index, lane, s, where=w) for w in ("inner", "outer")]
+            except KeyError:
+                continue
+        xy = np.concatenate(
+            (np.column_stack((sides[0].x, sides[0].y)), np.column_stack((sides[1].x, sides[1].y))[::-1])
+        )
+        if len(xy) >= 3 and np.isfinite(xy).all():
+            pieces.append(shapely.make_valid(shapely.Polygon(xy)))
+    return shapely.union_all(pieces) if pieces else None
+
+
+def road_points(ctx: Context, road: Road, s: float | None = None) -> np.ndarray | None:
+    """Every lane border point of a usable road (``s``: only at that ``s``), n x 2; ``None`` without geometry."""
+    geometry = ctx.geometry(road.id)
+    if geometry is None or usable(ctx, road) is None:
+        return None
+    parts: list[np.ndarray] = []
+    for index in range(len(road.lane_sections)):
+        if s is None:
+            lines = section_lines(ctx, road, index).borders
+        else:
+            if int(geometry.section_index(min(s, left_of(float(road.length))))[0]) != index:
+                continue
+            lines = geometry.border_curves(index, np.array([min(s, left_of(float(road.length)))]))
+        parts.extend(np.column_stack((p.x, p.y)) for p in lines.values())
+    xy = np.concatenate(parts) if parts else np.empty((0, 2))
+    return xy[np.isfinite(xy).all(axis=1)]
