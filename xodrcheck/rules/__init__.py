@@ -23,8 +23,10 @@ prefix    category    codes
 ``J``     junction    ``J0xx`` junction topology (:mod:`.junction`), attribute and element usage by junction type
                       (:mod:`.junction_usage`), priorities, virtual junctions and when a junction is needed
                       (:mod:`.junction_roles`), direct junctions, cross paths and boundary roads
-                      (:mod:`.junction_members`), boundary, reference line and grid in plan view
-                      (:mod:`.junction_area`); ``J1xx`` junction geometry (:mod:`.junction_geometry`)
+                      (:mod:`.junction_members`), boundary, reference line, grid, crossing sections and overlap
+                      zones in plan view (:mod:`.junction_area`), virtual junctions' joints (:mod:`.junction_virtual`),
+                      cross paths' placement (:mod:`.junction_paths`); ``J1xx`` junction geometry
+                      (:mod:`.junction_geometry`)
 ``O``     overlap     ``O0xx`` (:mod:`.overlap`)
 ``H``     header      ``H0xx`` header, default regulations, whole-file recommendations (:mod:`.header`)
 ``B``     object      ``B0xx`` road objects: attributes and lane validity (:mod:`.object_attributes`), outlines and

@@ -15,6 +15,7 @@ import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.junction_elements import JunctionParts, junction_parts
+from xodrcheck.model import ElementType, Road
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.junction_shapes import (
@@ -201,3 +202,142 @@ def _crosses(s: np.ndarray, t: np.ndarray, length: float, tol: float) -> bool:
     with np.errstate(divide="ignore", invalid="ignore"):
         at = np.where(change, s + (s2 - s) * (t / (t - t2)), np.nan)
     return bool(np.any(change & (at >= -tol) & (at <= length + tol)))
+
+
+@rule("J029", "crossing-section-coverage", Category.JUNCTION, Severity.ERROR, uids=(U.CROSSING_COVERAGE,))
+def crossing_section_coverage(ctx: Context) -> Iterator[Finding]:
+    """A crossing's ``<roadSection>`` does not cover the whole area where its road overlaps the other roads.
+
+    The ``sStart`` and ``sEnd`` of the ``<roadSection>`` elements of a crossing (``type="crossing"``) cover at least
+    the area where the roads overlap (``junctions.crossing.s_start_end_coverage``, 12.8): the road's lanes between
+    ``sStart`` and ``sEnd`` contain its overlap with every other road of the crossing. Uncovered overlap over
+    ``overlap_area`` (m²) is an error.
+
+    Passes (road 1 runs east along y=0, 7 m wide; rail road 2 crosses it at x=100; each section spans s=95..105)::
+
+        <roadSection id="0" roadId="1" sStart="95" sEnd="105"/>
+        <roadSection id="1" roadId="2" sStart="95" sEnd="105"/>
+
+    Fails (road 2's section spans s=98..102, y=-2..2, but road 1 covers y=-3.5..3.5)::
+
+        <roadSection id="1" roadId="2" sStart="98" sEnd="102"/>
+    """
+    from xodrcheck.rules.junction_shapes import strip
+
+    for j in junction_parts(ctx):
+        if j.type != "crossing":
+            continue
+        roads = {}
+        for section in j.road_sections:
+            road = ctx.road(section.road)
+            if road is not None and road.id not in roads:
+                roads[road.id] = (road, strip(ctx, road, None, 0.0, float(road.length)))
+        for section in j.road_sections:
+            road = ctx.road(section.road)
+            if road is None or section.s_start is None or section.s_end is None or roads[road.id][1] is None:
+                continue
+            lo, hi = sorted((section.s_start, section.s_end))
+            covered = strip(ctx, road, None, lo, hi)
+            yield from _uncovered(ctx, j, section, road, roads, covered)
+
+
+def _uncovered(ctx: Context, j: JunctionParts, section, road, roads, covered) -> Iterator[Finding]:
+    import shapely
+
+    mine = roads[road.id][1]
+    for other_id, (_, area) in roads.items():
+        if other_id == road.id or area is None:
+            continue
+        overlap = shapely.intersection(mine, area)
+        left = overlap if covered is None else shapely.difference(overlap, covered)
+        if left.area <= ctx.tolerances.overlap_area:
+            continue
+        point = left.representative_point()
+        yield crossing_section_coverage.finding(
+            f"{j.describe()}: the <roadSection> of road {road.id} (s={section.s_start:g} to {section.s_end:g}) leaves "
+            f"{left.area:.2f} m² of its overlap with road {other_id} uncovered, around ({point.x:.3f}, "
+            f"{point.y:.3f}); widen sStart..sEnd to cover the whole area where the roads overlap",
+            road=road.id,
+            x=float(point.x),
+            y=float(point.y),
+            line=section.line or None,
+        )
+
+
+def _zone_lanes(ctx: Context, j: JunctionParts) -> list[tuple[Road, int, bool, float, int]] | None:
+    """The two overlapping lanes a direct junction marks with ``overlapZone``: (road, lane, whether the junction is
+    at the road's end, overlapZone, line); ``None`` unless one pair of links marks one exit or entry (J021)."""
+    marked = [(c, ll) for c in j.connections for ll in c.lane_links if ll.has_overlap_zone]
+    if len(marked) != 2 or any(
+        ll.overlap_zone is None or ll.from_lane is None or ll.to_lane is None for _, ll in marked
+    ):
+        return None
+    (c1, l1), (c2, l2) = marked
+    out = []
+    if c1.incoming_road == c2.incoming_road and l1.from_lane == l2.from_lane:  # an exit: the linked roads' lanes
+        for c, ll in marked:
+            road = ctx.road(c.linked_road)
+            if road is None or c.contact_point not in ("start", "end"):
+                return None
+            out.append((road, ll.to_lane, c.contact_point == "end", ll.overlap_zone, ll.line))
+    elif c1.linked_road == c2.linked_road and l1.to_lane == l2.to_lane:  # an entry: the incoming roads' lanes
+        for c, ll in marked:
+            road = ctx.road(c.incoming_road)
+            link = road.successor if road is not None else None
+            if road is None:
+                return None
+            at_end = link is not None and link.element_type is ElementType.JUNCTION and link.element_id == j.id
+            out.append((road, ll.from_lane, at_end, ll.overlap_zone, ll.line))
+    else:
+        return None
+    return out  # type: ignore[return-value]
+
+
+@rule("J030", "overlap-zone-too-short", Category.JUNCTION, Severity.ERROR, uids=(U.DIRECT_OVERLAP_COVERAGE,))
+def overlap_zone_too_short(ctx: Context) -> Iterator[Finding]:
+    """A direct junction's ``overlapZone`` does not reach as far as its two lanes overlap.
+
+    The value of ``overlapZone`` covers at least the overlapping area and may be larger
+    (``junctions.direct.overlap_zone_coverage``, 12.6.2): measured along each of the two overlapping lanes from the
+    junction (the linked roads' lanes of an exit, the incoming roads' lanes of an entry), the first ``overlapZone``
+    metres contain all of the area the two lanes share. Shared area beyond both zones over ``overlap_area`` (m²) is
+    an error.
+
+    Passes (road 3 curves off road 2's lane -2 with radius 100 m: they part 26.5 m after the junction)::
+
+        <laneLink from="-2" to="-2" overlapZone="30"/> ... <laneLink from="-2" to="-1" overlapZone="30"/>
+
+    Fails (the zones end after 15 m, while the lanes still share space)::
+
+        <laneLink from="-2" to="-2" overlapZone="15"/> ... <laneLink from="-2" to="-1" overlapZone="15"/>
+    """
+    import shapely
+
+    from xodrcheck.rules.junction_shapes import strip
+
+    for j in junction_parts(ctx):
+        lanes = _zone_lanes(ctx, j) if j.type == "direct" else None
+        if lanes is None:
+            continue
+        whole = [strip(ctx, road, lane, 0.0, float(road.length)) for road, lane, _, _, _ in lanes]
+        zones = [
+            strip(ctx, road, lane, road.length - zone if at_end else 0.0, road.length if at_end else zone)
+            for road, lane, at_end, zone, _ in lanes
+        ]
+        if any(area is None for area in whole) or any(zone is None for zone in zones):
+            continue
+        left = shapely.difference(shapely.intersection(whole[0], whole[1]), shapely.union(zones[0], zones[1]))
+        if left.area <= ctx.tolerances.overlap_area:
+            continue
+        point = left.representative_point()
+        (a, la, _, za, line), (b, lb, _, zb, _) = lanes
+        yield overlap_zone_too_short.finding(
+            f"{j.describe()}: lane {la} of road {a.id} (overlapZone {za:g} m) and lane {lb} of road {b.id} "
+            f"(overlapZone {zb:g} m) still share {left.area:.2f} m² beyond their zones, around ({point.x:.3f}, "
+            f"{point.y:.3f}); make overlapZone cover the whole stretch where the lanes overlap",
+            road=a.id,
+            lane=la,
+            x=float(point.x),
+            y=float(point.y),
+            line=line or None,
+        )

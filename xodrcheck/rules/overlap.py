@@ -22,9 +22,10 @@ from __future__ import annotations
 from collections import defaultdict
 from collections.abc import Iterator
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.rules import junction_uids as JU
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
@@ -119,16 +120,28 @@ def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: 
             lanes = sorted((b, a) for a, b in lanes)
         key = surfaces.lanes[o.lane_a]
         road = ctx.road(key.road)
-        yield check.finding(
-            _message(ctx, roads, pair.area, lanes, o, what),
-            road=key.road,
-            lane=key.lane,
-            section_s=key.section_s,
-            s=o.s_a,
-            x=o.x,
-            y=o.y,
-            line=road.line if road is not None else None,
-        )
+        where: dict[str, Any] = {
+            "road": key.road,
+            "lane": key.lane,
+            "section_s": key.section_s,
+            "s": o.s_a,
+            "x": o.x,
+            "y": o.y,
+        }
+        message = _message(ctx, roads, pair.area, lanes, o, what)
+        line = road.line if road is not None else None
+        if check is not connection_overlap:
+            yield check.finding(message, line=line, **where)
+            continue
+        yield check.finding(message, uid=U.OVERLAP_INSIDE_JUNCTION, line=line, **where)
+        owners = [r.junction if (r := ctx.road(road_id)) is not None else None for road_id in roads]
+        if None not in owners and owners[0] != owners[1]:  # two junctions overlap (junctions.no_overlap, 12.1)
+            yield check.finding(
+                f"junction {owners[0]} and junction {owners[1]} overlap: {message}; junctions shall not overlap",
+                uid=JU.NO_OVERLAP,
+                line=line,
+                **where,
+            )
 
 
 _NOT_ROADSIDE = (
@@ -217,6 +230,7 @@ def lane_fold(ctx: Context):
     "connection-overlap",
     Category.OVERLAP,
     Severity.ERROR,
+    uids=(JU.NO_OVERLAP,),
     partial={U.OVERLAP_INSIDE_JUNCTION: _NOT_ROADSIDE},
     every_version=True,
 )
@@ -227,7 +241,8 @@ def connection_overlap(ctx: Context):
     same height and by more than ``Tolerances.overlap_area`` m2 with a drivable lane involved, a road that is not in
     the junction and not linked to them: another junction's connecting road, an unrelated road, or a leg of the
     junction they do not join (Annex F ``road.overlap_inside_junction``: only roads with the same junction id may
-    overlap on the same level).
+    overlap on the same level). Where the other road is a connecting road of another junction, the two junctions
+    overlap, and a second finding names ``junctions.no_overlap`` (12.1: no junctions of any type overlap).
 
     Passes: a four-leg junction whose left turns cross the straight connections (all in junction 100).
 

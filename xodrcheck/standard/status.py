@@ -65,6 +65,22 @@ NOT_ENFORCED: dict[str, str] = {
         "describes the other way (one connecting road per pair of lanes, each with one <laneLink>) and what it means: "
         "no lane changes in the junction; a permission and its consequence for traffic, which no file can break"
     ),
+    "asam.net:xodr:1.8.0:junctions.direct.flat_exits_entries": (
+        "states a limit of the model ('currently only flat entries and exits can be modeled by overlapping direct "
+        "junctions', 12.6), not a property with a measure: 12.6 gives no slope or height limit for 'flat'. Where the "
+        "overlapping lanes' surfaces do not meet, link-step (K104) and lane-border-gap (K103) report it at the "
+        "junction's joints (junctions.direct.linked_lane_smoothness)"
+    ),
+    "asam.net:xodr:1.8.0:junctions.direct.split_or_merge": (
+        "not enforced yet: whether traffic crosses inside a direct junction needs the paths through it, which 12.6 "
+        "does not model (its linked roads overlap by design, 12.6.2); its shape, one road on one side and several "
+        "on the other, is direct-junction-shape's (J020, junctions.direct.road_connectivity)"
+    ),
+    "asam.net:xodr:1.8.0:junctions.elevation_grid.entry_exit_smoothness": (
+        "not enforced yet: comparing the grid's height with the roads' at the junction's entries and exits needs "
+        "the grid's interpolation (12.11.1: polynomials through the grid points, with the transition zone of the "
+        "boundary's joints), which xodrcheck does not evaluate; no corpus map has an elevation grid"
+    ),
     "asam.net:xodr:1.8.0:junctions.elevation_grid.polynome_coefficient_values": (
         "says how an application interpolates an elevation grid (12.11.1: c and d of the edge polynomials are 0 "
         "where too few grid points support them); the file holds only the grid's z-values, no coefficients, so no "

@@ -34,3 +34,16 @@ def test_leg_reaching_into_a_connection_it_does_not_join():
     (f,) = findings(path, RULE)
     assert f.road == "10" and "connecting road 10 and road 3 overlap by 17.5 m2" in f.message  # 7 m x 2.5 m
     assert "road 3 is one of its legs, not linked to it" in f.message
+
+
+def test_connecting_roads_of_two_junctions_overlap():
+    from xodrcheck.rules import junction_uids as JU
+    from xodrcheck.rules import road_uids as U
+
+    found = findings(fixture(RULE, "fail_two_junctions.xodr"), RULE)
+    both = [f for f in found if f.rule_uid == JU.NO_OVERLAP]
+    inside = [f for f in found if f.rule_uid == U.OVERLAP_INSIDE_JUNCTION]
+    # each overlapping pair is a road of junction 100 on one of junction 200: one finding under each rule
+    assert len(both) == len(inside) >= 1 and {f.road for f in both} == {f.road for f in inside}
+    assert all(f.message.startswith("junction 100 and junction 200 overlap") for f in both)
+    assert not [f for f in findings(fixture(RULE, "fail.xodr"), RULE) if f.rule_uid == JU.NO_OVERLAP]
