@@ -75,6 +75,10 @@ def generate_layout(
     layout = intersections.build(laned, params, rng)
     step(STAGES[4])
     doc = cleanup.document(layout, params, name=f"junctionart seed {int(seed)}")
+    if params.scenario:
+        from .scenario.dress import dress
+
+        doc = dress(doc, layout, params, int(seed))
     return Result(lines, net, laned, layout, doc)
 
 

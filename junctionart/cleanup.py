@@ -13,7 +13,7 @@ import math
 from dataclasses import dataclass
 
 from .intersections.model import Layout, RoadPlan
-from .lanegeom import lane_id, taper_length
+from .lanegeom import forward_side, lane_id, taper_length
 from .opendrive import (
     Arc,
     Connection,
@@ -30,7 +30,8 @@ from .opendrive import (
     Road,
     RoadMark,
 )
-from .params import Params, TrafficRule
+from .params import Params, Roadside, TrafficRule
+from .scenario.roadside import side_lanes
 
 SOLID_NEAR_JUNCTION = 30.0
 ROAD_SPEED = 50.0
@@ -112,11 +113,31 @@ def _section(rp: RoadPlan, span: _Span, params: Params, prev: _Span | None, nxt:
                 1 if has_next else None,
             )
         )
+    if params.roadside is not Roadside.NONE:
+        for side in (1, -1):
+            lanes_by_side[side].extend(
+                side_lanes(
+                    params,
+                    side,
+                    _inner(rp, span, side, params),
+                    _inner(rp, prev, side, params) if prev is not None else None,
+                    _inner(rp, nxt, side, params) if nxt is not None else None,
+                )
+            )
     two_way = rp.lanes.forward > 0 and rp.lanes.backward > 0
     centre = Lane(0, "none", (), (RoadMark(0.0, "solid", "yellow" if two_way else "standard", lane_change="none"),))
     left = tuple(sorted(lanes_by_side[1], key=lambda l: l.id))
     right = tuple(sorted(lanes_by_side[-1], key=lambda l: -l.id))
     return LaneSection(span.s0, left, centre, right)
+
+
+def _inner(rp: RoadPlan, span: _Span, side: int, params: Params) -> int:
+    """Lanes of one side (+1 left, -1 right) of ``span`` inside its roadside: driving lanes, and the median on the
+    left."""
+    forward = forward_side(params.traffic_rule) == side
+    idx = 0 if forward else 1
+    n = max(span.start[idx], span.end[idx])
+    return n + (1 if side > 0 and rp.lanes.median else 0)
 
 
 def _road(rp: RoadPlan, rid: str, junction_ids: list[str], params: Params) -> Road:

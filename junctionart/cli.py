@@ -128,6 +128,20 @@ OPTIONS = [
         "legs of a junction closer than this (degrees) lose a road where the map stays connected (0: keep all)",
     ),
     ("--taper-length", "taper_length", float, "length of lane splits and merges (m)"),
+    (
+        "--roadside",
+        "roadside",
+        str,
+        "beside the outer driving lanes: urban (kerb 0.2 m + sidewalk 2 m, raised 0.15 m), rural (shoulder 1.5 m +"
+        " border 0.5 m) or none; continued round junction corners",
+    ),
+    (
+        "--signals",
+        "junction_control",
+        str,
+        "junction control: auto (drawn by leg count and road class), traffic-lights, stop, yield or none",
+    ),
+    ("--country", "country", str, "country whose sign catalogue the signs come from"),
 ]
 
 
@@ -164,6 +178,13 @@ def _add_generate(sub: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--transitions", help="JSON object (or @file) of MDP transition probabilities (default: the paper's)"
     )
+    p.add_argument(
+        "--profile",
+        choices=("paper", "scenario"),
+        default=None,
+        help="paper (default): the JunctionArt paper's maps, byte for byte as before; scenario: a test map with "
+        "what scenarios need (urban roadside, junction control auto); options given as well override the profile",
+    )
     p.add_argument("-q", "--quiet", action="store_true", help="no summary line, no progress bar")
     p.add_argument("-v", "--verbose", action="store_true", help="list each repair the generator made, on stderr")
     for opt, field, typ, help_ in OPTIONS:
@@ -190,7 +211,7 @@ def _params(args: argparse.Namespace):
             values["transitions"] = json.loads(text)
         except (OSError, json.JSONDecodeError) as exc:
             raise ParamsError(f"--transitions: cannot read JSON ({exc})") from None
-    return Params.create(**values)
+    return Params.create(args.profile, **values)
 
 
 def _generate(args: argparse.Namespace) -> int:

@@ -72,13 +72,23 @@ class RoadMark:
 
 
 @dataclass(frozen=True)
+class LaneHeight:
+    """``<height>``: the lane's inner and outer edge raised above the road surface (a kerb, a sidewalk)."""
+
+    s: float  # sOffset in the lane section
+    inner: float
+    outer: float
+
+
+@dataclass(frozen=True)
 class Lane:
     id: int
-    type: str  # "driving", "median", "none"
+    type: str  # "driving", "median", "none", "sidewalk", "curb", "shoulder", "border"
     widths: tuple[Cubic, ...] = ()
     marks: tuple[RoadMark, ...] = ()
     predecessor: int | None = None
     successor: int | None = None
+    heights: tuple[LaneHeight, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -97,6 +107,69 @@ class Link:
 
 
 @dataclass(frozen=True)
+class Validity:
+    """``<validity>``: the lanes (ids ``from_lane`` to ``to_lane``) a signal or object applies to."""
+
+    from_lane: int
+    to_lane: int
+
+
+@dataclass(frozen=True)
+class SignalLink:
+    """A signal's ``<reference>`` (to a signal or object it works with) or ``<dependency>`` (on a signal)."""
+
+    element_id: str
+    type: str
+    element_type: str = "signal"  # references only: "signal" or "object"
+
+
+@dataclass(frozen=True)
+class Signal:
+    """A ``<signal>`` at (s, t) of its road, valid for traffic in ``orientation`` ("+", "-" or "none")."""
+
+    id: str
+    name: str
+    s: float
+    t: float
+    orientation: str
+    dynamic: bool
+    country: str
+    type: str
+    subtype: str
+    z_offset: float
+    width: float
+    height: float
+    h_offset: float = 0.0
+    validity: tuple[Validity, ...] = ()
+    dependencies: tuple[SignalLink, ...] = ()
+    references: tuple[SignalLink, ...] = ()
+
+
+@dataclass(frozen=True)
+class Corner:
+    """A ``<cornerRoad>`` of an object's outline: a point in the road's s/t frame."""
+
+    s: float
+    t: float
+
+
+@dataclass(frozen=True)
+class RoadObject:
+    """An ``<object>`` (a crosswalk) with one closed outline of road-frame corners."""
+
+    id: str
+    type: str
+    name: str
+    s: float
+    t: float
+    length: float | None  #: bounding box (None: no box, the outline alone gives the shape)
+    width: float | None
+    outline: tuple[Corner, ...]
+    orientation: str = "none"
+    validity: tuple[Validity, ...] = ()
+
+
+@dataclass(frozen=True)
 class Road:
     id: str
     length: float
@@ -109,6 +182,10 @@ class Road:
     lane_offset: tuple[Cubic, ...] = ()
     name: str = ""
     speed_kmh: float | None = None
+    road_type: str = "town"  #: the ``<type>`` written with ``speed_kmh``
+    elevation: tuple[Cubic, ...] = ()  #: ``s`` absolute; empty: flat at height 0
+    objects: tuple[RoadObject, ...] = ()
+    signals: tuple[Signal, ...] = ()
 
 
 @dataclass(frozen=True)
@@ -127,10 +204,28 @@ class Connection:
 
 
 @dataclass(frozen=True)
+class JunctionController:
+    """A junction's ``<controller>`` reference: the signal group ``id`` is shown green ``sequence``-th in the cycle."""
+
+    id: str
+    sequence: int
+
+
+@dataclass(frozen=True)
 class Junction:
     id: str
     name: str
     connections: tuple[Connection, ...]
+    controllers: tuple[JunctionController, ...] = ()
+
+
+@dataclass(frozen=True)
+class Controller:
+    """A ``<controller>``: a signal group whose signals always show the same state."""
+
+    id: str
+    name: str
+    signals: tuple[str, ...]  #: ids of the controlled signals
 
 
 @dataclass(frozen=True)
@@ -149,6 +244,7 @@ class Document:
     header: Header
     roads: tuple[Road, ...]
     junctions: tuple[Junction, ...]
+    controllers: tuple[Controller, ...] = ()
 
     def road(self, road_id: str) -> Road:
         for r in self.roads:

@@ -27,6 +27,24 @@ class TrafficRule(enum.Enum):
     LHT = "LHT"
 
 
+class JunctionControl(enum.Enum):
+    """How junctions of 3+ legs are controlled (:mod:`junctionart.scenario.signals`)."""
+
+    AUTO = "auto"  #: by leg count and road class, with the documented probabilities
+    TRAFFIC_LIGHTS = "traffic-lights"  #: every junction signalised
+    STOP = "stop"  #: stop signs on the legs off the priority road
+    YIELD = "yield"  #: yield signs on the legs off the priority road
+    NONE = "none"  #: no signals (the paper's maps)
+
+
+class Roadside(enum.Enum):
+    """What lies beyond the outermost driving lanes (:mod:`junctionart.scenario.roadside`)."""
+
+    URBAN = "urban"  #: kerb and sidewalk on both sides of every road, continued round junction corners
+    RURAL = "rural"  #: paved shoulder and an unpaved border on both sides, continued round junction corners
+    NONE = "none"  #: driving lanes and medians only (the paper's maps)
+
+
 STATES = ("orthogonal", "parallel", "random", "commonEnd")
 
 #: The original's MDP over the shape of the next section between a pair of control lines.
@@ -91,6 +109,11 @@ class Params:
     min_leg_angle: float = 20.0
     taper_length: float = 25.0  #: length of a lane split / merge
     version: str = "1.8"  #: OpenDRIVE version written: "1.8", "1.9" or "1.7"
+    # Scenario features (issue 16): off by default, so the defaults give the paper's maps byte for byte; the
+    # "scenario" profile (:data:`PROFILES`) turns them on.
+    roadside: Roadside = Roadside.NONE  #: sidewalks and kerbs, or shoulders, beside the driving lanes
+    junction_control: JunctionControl = JunctionControl.NONE  #: traffic lights or signs at junctions
+    country: str = "DE"  #: whose sign catalogue the signs come from (:mod:`junctionart.scenario.catalogue`)
 
     def __post_init__(self) -> None:
         validate(self)
@@ -102,18 +125,25 @@ class Params:
         """A copy with some fields changed (validated again)."""
         return replace(self, **changes)
 
+    @property
+    def scenario(self) -> bool:
+        """Whether any scenario feature is on (the "paper" profile has none)."""
+        return self.roadside is not Roadside.NONE or self.junction_control is not JunctionControl.NONE
+
     @classmethod
-    def create(cls, **values: Any) -> Params:
-        """Build from plain values (strings for enums, a nested dict for ``transitions``), validated."""
+    def create(cls, profile: str | None = None, **values: Any) -> Params:
+        """Build from plain values (strings for enums, a nested dict for ``transitions``), validated. ``profile``
+        ("paper", the default, or "scenario") sets the scenario features first; ``values`` override it."""
         names = {f.name for f in fields(cls)}
         unknown = sorted(set(values) - names)
         if unknown:
             raise ParamsError(f"unknown parameter {unknown[0]!r}; valid: {', '.join(sorted(names))}")
-        v = dict(values)
-        if "split_strategy" in v and not isinstance(v["split_strategy"], SplitStrategy):
-            v["split_strategy"] = _enum(SplitStrategy, "split_strategy", v["split_strategy"])
-        if "traffic_rule" in v and not isinstance(v["traffic_rule"], TrafficRule):
-            v["traffic_rule"] = _enum(TrafficRule, "traffic_rule", v["traffic_rule"])
+        if profile is not None and profile not in PROFILES:
+            raise ParamsError(f"profile={profile!r}: must be one of {', '.join(PROFILES)}")
+        v = {**PROFILES[profile or "paper"], **values}
+        for name, kind in _ENUMS.items():
+            if name in v and not isinstance(v[name], kind):
+                v[name] = _enum(kind, name, v[name])
         if "transitions" in v and isinstance(v["transitions"], dict):
             _check_transition_dict(v["transitions"])
             v["transitions"] = _frozen_transitions(v["transitions"])
@@ -123,6 +153,24 @@ class Params:
         if "control_line_lanes" in v and isinstance(v["control_line_lanes"], list):
             v["control_line_lanes"] = tuple(tuple(x) if isinstance(x, list) else x for x in v["control_line_lanes"])
         return cls(**v)
+
+
+#: Enum-valued parameters, read from their values' text by :meth:`Params.create`.
+_ENUMS: dict[str, type[enum.Enum]] = {
+    "split_strategy": SplitStrategy,
+    "traffic_rule": TrafficRule,
+    "roadside": Roadside,
+    "junction_control": JunctionControl,
+}
+
+#: Named sets of parameter values. "paper" (the defaults): the JunctionArt paper's maps, every scenario feature off, so
+#: earlier maps, the golden snapshots and the paper's ERA are reproduced byte for byte. "scenario": a drivable test
+#: map with what scenarios need (urban roadside: kerbs and sidewalks continued round every junction corner; junction
+#: control drawn per junction: traffic lights with signal groups, stop or yield signs).
+PROFILES: dict[str, dict[str, Any]] = {
+    "paper": {},
+    "scenario": {"roadside": Roadside.URBAN, "junction_control": JunctionControl.AUTO},
+}
 
 
 def _enum(kind: type[enum.Enum], name: str, value: Any) -> Any:
@@ -170,7 +218,7 @@ def _distribution(name: str, value: Any) -> None:
 def _check_transition_dict(t: Any) -> None:
     if not isinstance(t, dict):
         raise ParamsError(f"transitions={t!r}: must map a state to {{next state: probability}}")
-    valid = ("start",) + STATES
+    valid = ("start", *STATES)
     for state, row in t.items():
         if state not in valid:
             raise ParamsError(f"transitions: unknown state {state!r}; valid: {', '.join(valid)}")
@@ -256,3 +304,15 @@ def validate(p: Params) -> None:
     _range("taper_length", p.taper_length, 5.0, 200.0)
     if p.version not in VERSIONS:
         raise ParamsError(f"version={p.version!r}: must be one of {', '.join(VERSIONS)}")
+    _validate_scenario(p)
+
+
+def _validate_scenario(p: Params) -> None:
+    for name, kind in _ENUMS.items():
+        if not isinstance(getattr(p, name), kind):
+            valid = ", ".join(str(m.value) for m in kind)  # type: ignore[attr-defined]
+            raise ParamsError(f"{name}={getattr(p, name)!r}: must be one of {valid}")
+    from .scenario.catalogue import COUNTRIES
+
+    if p.country not in COUNTRIES:
+        raise ParamsError(f"country={p.country!r}: must be one of {', '.join(sorted(COUNTRIES))}")

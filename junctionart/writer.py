@@ -23,6 +23,7 @@ from pathlib import Path
 from .errors import JunctionArtError, OutputError
 from .opendrive import (
     Arc,
+    Controller,
     Cubic,
     Document,
     Geometry,
@@ -34,6 +35,9 @@ from .opendrive import (
     ParamPoly3,
     Road,
     RoadMark,
+    RoadObject,
+    Signal,
+    Validity,
 )
 
 REV_MINOR = {"1.8": 8, "1.9": 9, "1.7": 7}
@@ -119,7 +123,7 @@ def _mark_line(m: RoadMark) -> str:
 def _lane(add, lane: Lane) -> None:
     head = f'          <lane id="{lane.id}" type="{_esc(lane.type)}" level="false"'
     linked = lane.predecessor is not None or lane.successor is not None
-    if not (linked or (lane.id != 0 and lane.widths) or lane.marks):
+    if not (linked or (lane.id != 0 and lane.widths) or lane.marks or lane.heights):
         add(head + "/>")
         return
     add(head + ">")
@@ -135,6 +139,8 @@ def _lane(add, lane: Lane) -> None:
             add(_cubic_line(6, "width", w, "sOffset"))
     for m in lane.marks:
         add(_mark_line(m))
+    for h in lane.heights:
+        add(f'            <height sOffset="{fmt(h.s)}" inner="{fmt(h.inner)}" outer="{fmt(h.outer)}"/>')
     add("          </lane>")
 
 
@@ -171,7 +177,7 @@ def _road(out: _Out, road: Road) -> None:
             _link(out, 3, "successor", road.successor)
         out.close(2, "link")
     if road.speed_kmh is not None:
-        out.open(2, "type", ' s="0.0" type="town"')
+        out.open(2, "type", f' s="0.0" type="{_esc(road.road_type)}"')
         out.leaf(3, "speed", f' max="{fmt(road.speed_kmh)}" unit="km/h"')
         out.close(2, "type")
     add("    <planView>")
@@ -179,7 +185,11 @@ def _road(out: _Out, road: Road) -> None:
         _geometry(add, g)
     add("    </planView>")
     add("    <elevationProfile>")
-    add('      <elevation s="0.0" a="0.0" b="0.0" c="0.0" d="0.0"/>')
+    if road.elevation:
+        for c in road.elevation:
+            add(_cubic_line(3, "elevation", c, "s"))
+    else:
+        add('      <elevation s="0.0" a="0.0" b="0.0" c="0.0" d="0.0"/>')
     add("    </elevationProfile>")
     add("    <lateralProfile/>")  # empty: valid, and tells readers there is no superelevation
     add("    <lanes>")
@@ -188,7 +198,67 @@ def _road(out: _Out, road: Road) -> None:
     for sec in road.sections:
         _section(add, sec)
     add("    </lanes>")
+    if road.objects:
+        add("    <objects>")
+        for obj in road.objects:
+            _object(add, obj)
+        add("    </objects>")
+    if road.signals:
+        add("    <signals>")
+        for sig in road.signals:
+            _signal(add, sig)
+        add("    </signals>")
     add("  </road>")
+
+
+def _validity(add, depth: int, validity: tuple[Validity, ...]) -> None:
+    for v in validity:
+        add(f'{_INDENT[depth]}<validity fromLane="{v.from_lane}" toLane="{v.to_lane}"/>')
+
+
+def _object(add, o: RoadObject) -> None:
+    box = "" if o.length is None or o.width is None else f' length="{fmt(o.length)}" width="{fmt(o.width)}"'
+    add(
+        f'      <object id="{_esc(o.id)}" type="{_esc(o.type)}" name="{_esc(o.name)}" s="{fmt(o.s)}" t="{fmt(o.t)}"'
+        f' zOffset="0.0" orientation="{_esc(o.orientation)}"{box} hdg="0.0" pitch="0.0" roll="0.0" height="0.0">'
+    )
+    add("        <outlines>")
+    add('          <outline id="0" closed="true">')
+    for k, c in enumerate(o.outline):
+        add(f'            <cornerRoad s="{fmt(c.s)}" t="{fmt(c.t)}" dz="0.0" height="0.0" id="{k}"/>')
+    add("          </outline>")
+    add("        </outlines>")
+    _validity(add, 4, o.validity)
+    add("      </object>")
+
+
+def _signal(add, g: Signal) -> None:
+    head = (
+        f'      <signal s="{fmt(g.s)}" t="{fmt(g.t)}" id="{_esc(g.id)}" name="{_esc(g.name)}"'
+        f' dynamic="{"yes" if g.dynamic else "no"}" orientation="{_esc(g.orientation)}" zOffset="{fmt(g.z_offset)}"'
+        f' country="{_esc(g.country)}" type="{_esc(g.type)}" subtype="{_esc(g.subtype)}" hOffset="{fmt(g.h_offset)}"'
+        f' pitch="0.0" roll="0.0" height="{fmt(g.height)}" width="{fmt(g.width)}"'
+    )
+    if not (g.validity or g.dependencies or g.references):
+        add(head + "/>")
+        return
+    add(head + ">")
+    _validity(add, 4, g.validity)
+    for d in g.dependencies:
+        add(f'        <dependency id="{_esc(d.element_id)}" type="{_esc(d.type)}"/>')
+    for r in g.references:
+        add(
+            f'        <reference elementType="{_esc(r.element_type)}" elementId="{_esc(r.element_id)}"'
+            f' type="{_esc(r.type)}"/>'
+        )
+    add("      </signal>")
+
+
+def _controller(out: _Out, c: Controller) -> None:
+    out.open(1, "controller", f' id="{_esc(c.id)}" name="{_esc(c.name)}"')
+    for sid in c.signals:
+        out.leaf(2, "control", f' signalId="{_esc(sid)}"')
+    out.close(1, "controller")
 
 
 def _junction(out: _Out, j: Junction) -> None:
@@ -209,6 +279,8 @@ def _junction(out: _Out, j: Junction) -> None:
         for ll in c.lane_links:
             out.leaf(3, "laneLink", f' from="{ll.from_lane}" to="{ll.to_lane}"')
         out.close(2, "connection")
+    for jc in j.controllers:
+        out.leaf(2, "controller", f' id="{_esc(jc.id)}" sequence="{jc.sequence}"')
     out.close(1, "junction")
 
 
@@ -231,6 +303,8 @@ def to_bytes(doc: Document, version: str = "1.8") -> bytes:
     )
     for road in doc.roads:
         _road(out, road)
+    for c in doc.controllers:
+        _controller(out, c)
     for j in doc.junctions:
         _junction(out, j)
     out.close(0, "OpenDRIVE")

@@ -17,6 +17,7 @@ from ..graph import Chain
 from ..lanegeom import border_point, side_width
 from ..opendrive import Geometry, ParamPoly3
 from ..params import Params, TrafficRule
+from ..scenario.roadside import roadside_width
 from .model import JunctionPlan
 from .planning import Junction
 from .roads import Road
@@ -132,11 +133,11 @@ def _road_shapes(roads: list[Road], p: Params) -> list:
     """Each road's reference line buffered by its wider side."""
     if not roads:
         return []
-    w, mw = p.lane_width, p.median_width
+    w, mw, rs = p.lane_width, p.median_width, roadside_width(p)
     halves, lines = [], []
     for road in roads:
         cfg = road.spec.lanes
-        halves.append(max(side_width(cfg.forward, cfg.median, w, mw), side_width(cfg.backward, cfg.median, w, mw)))
+        halves.append(max(side_width(cfg.forward, cfg.median, w, mw), side_width(cfg.backward, cfg.median, w, mw)) + rs)
         lines.append(np.concatenate([sample(e, max(2, int(e.length / 5.0) + 2)) for e in road.geometry]))
     indices = np.repeat(np.arange(len(lines)), [len(x) for x in lines])
     return list(
@@ -152,8 +153,8 @@ def _junction_shapes(roads: list[Road], j: Junction, connections: list[Geometry]
     for key in j.keys:
         road = roads[key.chain]
         cfg, at = road.spec.lanes, contact(road.geometry, key.at_start)
-        left = side_width(cfg.backward if rht else cfg.forward, cfg.median, w, mw)
-        right = side_width(cfg.forward if rht else cfg.backward, False, w, mw)
+        left = side_width(cfg.backward if rht else cfg.forward, cfg.median, w, mw) + roadside_width(p)
+        right = side_width(cfg.forward if rht else cfg.backward, False, w, mw) + roadside_width(p)
         corners.append(border_point(at.x, at.y, at.hdg, left))
         corners.append(border_point(at.x, at.y, at.hdg, -right))
     shapes = [shapely.MultiPoint(np.array(corners)).convex_hull.buffer(-0.5)]

@@ -11,6 +11,7 @@ import math
 
 from ..lanegeom import side_width
 from ..params import Params
+from ..scenario.roadside import roadside_width
 from . import links as linkplan
 from .legs import Leg, neighbour_gaps
 
@@ -22,11 +23,13 @@ def incident_distances(L: list[Leg], plan: linkplan.LinkPlan, params: Params, sc
     actual widths, room for a turn between neighbouring legs that ``plan`` links, times ``scale`` (the node's
     random factor and growth). Neighbours at a sharp angle that no lane links need only keep their stubs apart."""
     # lanes at the junction: a turn lane added before it widens the incoming side
+    # (the roadside lanes, when the map has them, widen every leg alike)
     half = [
         max(
             side_width(max(leg.n_in, plan.n_in_end[i]), leg.median, params.lane_width, params.median_width),
             side_width(leg.n_out, leg.median, params.lane_width, params.median_width),
         )
+        + roadside_width(params)
         for i, leg in enumerate(L)
     ]
     r = [h + params.min_turn_radius + 2.0 for h in half]

@@ -24,6 +24,7 @@ from ..lanegeom import border_point, inner_offset, lane_id, min_curve_radius, si
 from ..lanes import LaneConfig
 from ..opendrive import Geometry
 from ..params import Params
+from ..scenario.roadside import roadside_width
 
 #: Total turning (rad) of a road's bends beyond which its borders are tested for crossing themselves.
 SELF_OVERLAP_TURN = 0.9 * math.pi
@@ -181,7 +182,7 @@ def shape_road(P: list[tuple[float, float]], r0: float, r1: float, spec: RoadSpe
     geom = fillet_chain(start, [v for v, _ in rounded], end, [r for _, r in rounded])
     if geom[-1].s + geom[-1].length < spec.need:
         return _TOO_SHORT
-    if sum(corners.turns) > SELF_OVERLAP_TURN and _folds(geom, widest):
+    if sum(corners.turns) > SELF_OVERLAP_TURN and _folds(geom, widest + roadside_width(params)):
         return RoadShape((), Misfit.SHARP_BEND, int(np.argmax(corners.turns)))
     return RoadShape(geom)
 

@@ -56,6 +56,14 @@ def test_lane_count_changes_are_tapers_with_links(maps):
     assert tapers > 0
 
 
+def _left(sec):
+    return sec.left
+
+
+def _right(sec):
+    return sec.right
+
+
 def test_markings(maps):
     solid_near = broken = 0
     for result in maps:
@@ -64,8 +72,8 @@ def test_markings(maps):
                 if road.junction != "-1":
                     assert all(m.type == "none" for l in (*sec.left, sec.center, *sec.right) for m in l.marks)
                     continue
-                two_way = any(s.right for s in road.sections) and any(
-                    l.type == "driving" for s in road.sections for l in s.left
+                two_way = all(
+                    any(l.type == "driving" for s in road.sections for l in lanes(s)) for lanes in (_left, _right)
                 )
                 (centre,) = sec.center.marks
                 assert centre.type == "solid"
