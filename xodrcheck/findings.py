@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 import enum
-from dataclasses import asdict, dataclass
+from dataclasses import dataclass
 
 
 class Severity(enum.IntEnum):
@@ -63,12 +63,6 @@ class Finding:
     #: ``asam.net:xodr:1.7.0:road.lane.link.zero_width_at_start``); ``None`` for the project's own rules.
     rule_uid: str | None = None
     z: float | None = None
-
-    def to_dict(self) -> dict:
-        d = asdict(self)
-        d["category"] = self.category.value
-        d["severity"] = str(self.severity)
-        return d
 
 
 class XodrError(Exception):

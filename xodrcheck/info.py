@@ -79,10 +79,6 @@ class MapInfo:
     #: Reader findings by severity name (``error``, ``warning``, ``info``; all three always present).
     findings: Mapping[str, int]
 
-    @property
-    def has_errors(self) -> bool:
-        return self.findings.get(str(Severity.ERROR), 0) > 0
-
 
 def junction_legs(junction: Junction, document: Document) -> int:
     """Legs of a junction: the distinct roads outside it that its connections join.

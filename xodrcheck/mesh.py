@@ -57,10 +57,6 @@ class LaneSurfaces:
     def __len__(self) -> int:
         return len(self.lanes)
 
-    @property
-    def lane_index(self) -> dict[LaneKey, int]:
-        return {key: i for i, key in enumerate(self.lanes)}
-
     @cached_property
     def face_areas(self) -> np.ndarray:
         """Area of each face in 3D."""

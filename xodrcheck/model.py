@@ -387,9 +387,6 @@ class Road:
             return None
         return replace(self, lane_offset=layer.lane_offset, lane_sections=layer.lane_sections, temporary_lanes=None)
 
-    def lane_key(self, section: LaneSection, lane_id: int) -> LaneKey:
-        return LaneKey(self.id, section.s, lane_id)
-
 
 # --------------------------------------------------------------------------------------------------------------------
 # Junctions

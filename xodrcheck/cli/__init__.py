@@ -30,7 +30,7 @@ COMMANDS = {
     "diff": "Compare a map with its snapshot (from 'xodrcheck snapshot'): print what changed, exit 1 if anything did.",
 }
 SUBCOMMANDS = tuple(COMMANDS)
-EXIT_OK, EXIT_FINDINGS, EXIT_USAGE, EXIT_INCOMPLETE = 0, 1, 2, 3
+EXIT_OK, EXIT_USAGE, EXIT_INCOMPLETE = 0, 2, 3
 
 
 def command_module(name: str) -> ModuleType:

@@ -28,19 +28,8 @@ _SMALL_STEP = 1e-4  # a step counts as small (its Taylor prediction trusted) bel
 _TINY = 1e-300
 
 
-def _horner(coef: np.ndarray, p: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """Value and first three derivatives of ``a + b p + c p^2 + d p^3``."""
-    a, b, c, d = coef
-    return (
-        a + p * (b + p * (c + p * d)),
-        b + p * (2.0 * c + p * (3.0 * d)),
-        2.0 * c + p * (6.0 * d),
-        np.full_like(p, 6.0 * d),
-    )
-
-
 def _speed(u: np.ndarray, v: np.ndarray, p: np.ndarray) -> np.ndarray:
-    """``|C'(p)|`` (the same arithmetic as :func:`_horner`'s first derivative)."""
+    """``|C'(p)|`` (Horner's scheme, the same arithmetic as :func:`frame`'s first derivative)."""
     du = u[1] + p * (2.0 * u[2] + p * (3.0 * u[3]))
     dv = v[1] + p * (2.0 * v[2] + p * (3.0 * v[3]))
     return np.hypot(du, dv)
@@ -122,10 +111,6 @@ class CubicCurve:
         t = (sigma - self.cumulative[k]) * self.inverse_span[k]
         return k, a + t * (b + t * (c + t * d))
 
-    def derivatives(self, p: np.ndarray):
-        """``(U, U', U'', U''')`` and ``(V, V', V'', V''')`` at ``p``."""
-        return _horner(self.u, p), _horner(self.v, p)
-
 
 def _guess_table(breaks: np.ndarray, cumulative: np.ndarray, speed: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """Per panel, ``1 / span`` and the power coefficients in ``t`` (the panel's fraction of arc length) of the cubic
@@ -154,7 +139,7 @@ def frame(curve: CubicCurve, p: np.ndarray):
     ``(U'V'' - V'U'') / |C'|^3`` and its derivative with respect to arc length (chain rule through ``|C'|``).
     """
     (ua, ub, uc, ud), (va, vb, vc, vd) = curve.u, curve.v
-    # _horner's arithmetic, with the constant third derivatives kept scalar.
+    # Horner's scheme for the value and first three derivatives; the constant third derivatives kept scalar.
     u0, v0 = ua + p * (ub + p * (uc + p * ud)), va + p * (vb + p * (vc + p * vd))
     u1, v1 = ub + p * (2.0 * uc + p * (3.0 * ud)), vb + p * (2.0 * vc + p * (3.0 * vd))
     u2, v2 = 2.0 * uc + p * (6.0 * ud), 2.0 * vc + p * (6.0 * vd)

@@ -153,10 +153,6 @@ def evaluate(profile: Profile, s, origin: float = 0.0) -> np.ndarray:
     return jet(profile, s, origin)[0]
 
 
-def derivative(profile: Profile, s, origin: float = 0.0) -> np.ndarray:
-    return jet(profile, s, origin)[1]
-
-
 def second_derivative(profile: Profile, s, origin: float = 0.0) -> np.ndarray:
     return jet(profile, s, origin)[2]
 

@@ -16,22 +16,6 @@ from collections.abc import Sequence
 from xodrcheck.findings import Finding
 from xodrcheck.report import summary
 
-FINDING_KEYS = (
-    "code",
-    "name",
-    "category",
-    "severity",
-    "message",
-    "road",
-    "lane",
-    "s",
-    "x",
-    "y",
-    "z",
-    "line",
-    "rule_uid",
-)
-
 
 def _number(v):
     return None if v is None or (isinstance(v, float) and not math.isfinite(v)) else v
