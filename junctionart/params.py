@@ -37,6 +37,14 @@ class JunctionControl(enum.Enum):
     NONE = "none"  #: no signals (the paper's maps)
 
 
+class Terrain(enum.Enum):
+    """The ground the map is laid on (:mod:`junctionart.scenario.terrain`)."""
+
+    FLAT = "flat"  #: every road at height 0 (the paper's maps)
+    ROLLING = "rolling"  #: up to 5 % grade
+    HILLY = "hilly"  #: up to 8 % grade
+
+
 class Roadside(enum.Enum):
     """What lies beyond the outermost driving lanes (:mod:`junctionart.scenario.roadside`)."""
 
@@ -113,6 +121,7 @@ class Params:
     # "scenario" profile (:data:`PROFILES`) turns them on.
     roadside: Roadside = Roadside.NONE  #: sidewalks and kerbs, or shoulders, beside the driving lanes
     junction_control: JunctionControl = JunctionControl.NONE  #: traffic lights or signs at junctions
+    terrain: Terrain = Terrain.FLAT  #: elevation profiles follow this ground
     country: str = "DE"  #: whose sign catalogue the signs come from (:mod:`junctionart.scenario.catalogue`)
 
     def __post_init__(self) -> None:
@@ -128,7 +137,11 @@ class Params:
     @property
     def scenario(self) -> bool:
         """Whether any scenario feature is on (the "paper" profile has none)."""
-        return self.roadside is not Roadside.NONE or self.junction_control is not JunctionControl.NONE
+        return (
+            self.roadside is not Roadside.NONE
+            or self.junction_control is not JunctionControl.NONE
+            or self.terrain is not Terrain.FLAT
+        )
 
     @classmethod
     def create(cls, profile: str | None = None, **values: Any) -> Params:
@@ -161,6 +174,7 @@ _ENUMS: dict[str, type[enum.Enum]] = {
     "traffic_rule": TrafficRule,
     "roadside": Roadside,
     "junction_control": JunctionControl,
+    "terrain": Terrain,
 }
 
 #: Named sets of parameter values. "paper" (the defaults): the JunctionArt paper's maps, every scenario feature off, so

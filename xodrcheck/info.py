@@ -12,6 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from xodrcheck.config import Tolerances
+from xodrcheck.elevation_info import ElevationInfo, elevation_info
 from xodrcheck.findings import Finding, Severity
 from xodrcheck.lanes import RoadGeometry, geometry_of
 from xodrcheck.model import (
@@ -78,6 +79,8 @@ class MapInfo:
     bbox: BoundingBox | None
     #: Reader findings by severity name (``error``, ``warning``, ``info``; all three always present).
     findings: Mapping[str, int]
+    #: Height range, steepest grade and largest z step at a road link (:mod:`xodrcheck.elevation_info`).
+    elevation: ElevationInfo | None = None
 
 
 def junction_legs(junction: Junction, document: Document) -> int:
@@ -225,4 +228,5 @@ def map_info(result: ReadResult, tolerances: Tolerances | None = None) -> MapInf
         geometries=_sorted(geometries),
         bbox=bounding_box(doc, tolerances),
         findings=findings,
+        elevation=elevation_info(doc),
     )

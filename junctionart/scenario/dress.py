@@ -8,7 +8,7 @@ from __future__ import annotations
 
 from ..intersections.model import Layout
 from ..opendrive import Document
-from ..params import JunctionControl, Params, Roadside
+from ..params import JunctionControl, Params, Roadside, Terrain
 from .corners import add_corners
 from .ids import Ids
 
@@ -18,6 +18,10 @@ def dress(doc: Document, layout: Layout, params: Params, seed: int) -> Document:
     ids = Ids(doc)
     if params.roadside is not Roadside.NONE:
         doc = add_corners(doc, layout, params, ids)
+    if params.terrain is not Terrain.FLAT:
+        from .terrain import add_terrain
+
+        doc = add_terrain(doc, layout, params, seed)
     if params.junction_control is not JunctionControl.NONE:
         from .signals import add_signals
 

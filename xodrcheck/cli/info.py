@@ -9,7 +9,9 @@ junction), ``junctions`` ({``total``: int, ``by_type``: {type: int}, ``by_legs``
 ``reference_line_length_m`` (float), ``geometry`` ({kind: int}), ``bounding_box`` ({``min_x``, ``min_y``, ``max_x``,
 ``max_y``: float, ``basis``: "lane borders" | "reference line" | "lane borders and reference line"} or null),
 ``findings`` ({``error``, ``warning``, ``info``: int}: what the reader found; the rules are not run, so a file
-``xodrcheck check`` fails may show 0 errors here), ``findings_counted`` (str, says so).
+``xodrcheck check`` fails may show 0 errors here), ``findings_counted`` (str, says so), ``elevation`` ({``min_z``,
+``max_z`` (m), ``max_grade`` (fraction), ``max_link_step_m``, ``links``: int} or null: see
+:mod:`xodrcheck.elevation_info`).
 
 A file that cannot be read whole (not well-formed, not OpenDRIVE) prints nothing and exits 2, as in every command; a
 file read whole with reader errors is summarised and exits 1.
@@ -23,6 +25,7 @@ import json
 import sys
 
 from xodrcheck.cli._common import guarded, read_file, report_errors
+from xodrcheck.elevation_info import ElevationInfo
 from xodrcheck.info import MapInfo, map_info
 
 NAME = "info"
@@ -61,7 +64,27 @@ def to_json(info: MapInfo) -> dict:
         else {"min_x": box.min_x, "min_y": box.min_y, "max_x": box.max_x, "max_y": box.max_y, "basis": box.basis},
         "findings": dict(info.findings),
         "findings_counted": FINDINGS_COUNTED,
+        "elevation": None if info.elevation is None else _elevation_json(info.elevation),
     }
+
+
+def _elevation_json(e: ElevationInfo) -> dict:
+    return {
+        "min_z": e.min_z,
+        "max_z": e.max_z,
+        "max_grade": e.max_grade,
+        "max_link_step_m": e.max_link_step,
+        "links": e.links,
+    }
+
+
+def _elevation_text(e: ElevationInfo | None) -> str:
+    if e is None:
+        return "none"
+    return (
+        f"z {e.min_z:.3f} .. {e.max_z:.3f} m, max grade {100 * e.max_grade:.2f} %, largest z step at a road link "
+        f"{e.max_link_step:.3g} m ({e.links} links)"
+    )
 
 
 def _counts(mapping, unit: str = "") -> str:
@@ -96,6 +119,7 @@ def to_text(info: MapInfo) -> str:
             else f"x {box.min_x:.3f} .. {box.max_x:.3f}, y {box.min_y:.3f} .. {box.max_y:.3f} "
             f"({box.max_x - box.min_x:.1f} m x {box.max_y - box.min_y:.1f} m, {box.basis})",
         ),
+        ("elevation", _elevation_text(info.elevation)),
         ("findings", ", ".join(f"{n} {sev}" for sev, n in info.findings.items()) + f" {FINDINGS_COUNTED}"),
     ]
     width = max(len(label) for label, _ in rows)

@@ -27,6 +27,7 @@ JSON_KEYS = {
     "geometry",
     "bounding_box",
     "findings",
+    "elevation",
 }
 
 
