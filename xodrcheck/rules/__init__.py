@@ -10,7 +10,7 @@ prefix    category    codes
 ========  ==========  =========================================================================================
 ``X``     xml         ``X0xx``-``X8xx`` reader rules (:mod:`.xml`); ``X9xx`` the engine's own (:mod:`.internal`)
 ``S``     schema      ``S0xx`` XSD validation (:mod:`.schema`)
-``R``     reference   ``R0xx`` ids and references (:mod:`.reference`)
+``R``     reference   ``R0xx`` ids and references (:mod:`.reference`; ``R02x`` other classes: :mod:`.ids`)
 ``K``     link        ``K0xx`` road-link topology (:mod:`.link_topology`, :mod:`.link_usage`); ``K1xx`` positions at
                       contacts (:mod:`.link`)
 ``L``     lane        ``L0xx`` lane topology (:mod:`.lane`, :mod:`.lane_attributes`); ``L1xx`` lane geometry
@@ -35,8 +35,8 @@ prefix    category    codes
                       lie (:mod:`.object_geometry`), surfaces (:mod:`.object_surfaces`)
 ``T``     signal      ``T0xx`` signals, signal references, boards, controllers (:mod:`.signal`,
                       :mod:`.signal_validity`)
-``W``     railroad    ``W0xx`` railroads (tracks, switches, stations)
-``U``     surface     ``U0xx`` road surfaces (CRG, cross-section surfaces)
+``W``     railroad    ``W0xx`` railroads (tracks, switches, stations; :mod:`.railroad`)
+``U``     surface     ``U0xx`` road surfaces (CRG, cross-section surfaces; :mod:`.surface`)
 ========  ==========  =========================================================================================
 """
 
@@ -52,6 +52,7 @@ FAMILIES = (
     "xml",
     "schema",
     "reference",
+    "ids",
     "link_topology",
     "link_usage",
     "link",
@@ -89,6 +90,8 @@ FAMILIES = (
     "header",
     "signal",
     "signal_validity",
+    "surface",
+    "railroad",
 )
 
 _loaded = False

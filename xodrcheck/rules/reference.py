@@ -10,6 +10,7 @@ from collections.abc import Iterable
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, LaneSection, Road
+from xodrcheck.rules import feature_uids as F
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, link_at
 from xodrcheck.rules.registry import NO_UID, Rule, rule
@@ -25,7 +26,7 @@ def _duplicates(rule_: Rule, items: Iterable, what: str, **where):
             first[item.id] = item.line
 
 
-@rule("R001", "duplicate-road-id", Category.REFERENCE, Severity.ERROR)
+@rule("R001", "duplicate-road-id", Category.REFERENCE, Severity.ERROR, uids=(F.ID_UNIQUE_IN_CLASS,), every_version=True)
 def duplicate_road_id(ctx: Context):
     """Two roads share an id. Links, connections and tools that look roads up by id reach only one of them.
 
@@ -42,7 +43,14 @@ def duplicate_road_id(ctx: Context):
     yield from _duplicates(duplicate_road_id, ctx.document.roads, "road")
 
 
-@rule("R002", "duplicate-junction-id", Category.REFERENCE, Severity.ERROR)
+@rule(
+    "R002",
+    "duplicate-junction-id",
+    Category.REFERENCE,
+    Severity.ERROR,
+    uids=(F.ID_UNIQUE_IN_CLASS,),
+    every_version=True,
+)
 def duplicate_junction_id(ctx: Context):
     """Two junctions share an id.
 
@@ -59,12 +67,20 @@ def duplicate_junction_id(ctx: Context):
     yield from _duplicates(duplicate_junction_id, ctx.document.junctions, "junction")
 
 
-@rule("R003", "duplicate-lane-id", Category.REFERENCE, Severity.ERROR, uids=(U.LANE_ID_UNIQUE,), every_version=True)
+@rule(
+    "R003",
+    "duplicate-lane-id",
+    Category.REFERENCE,
+    Severity.ERROR,
+    uids=(U.LANE_ID_UNIQUE, F.ID_UNIQUE_IN_LANE_SECTION),
+    every_version=True,
+)
 def duplicate_lane_id(ctx: Context):
     """Two lanes of one lane section share an id.
 
     Annex F ``road.lane.lane_id_unique`` (1.9): lane ids are unique per lane section and lane layer; the lane sections
-    of the temporary layer are checked too.
+    of the temporary layer are checked too. Before 1.9 the finding names ``ids.id_unique_in_lane_section`` (lane IDs
+    shall be unique within a lane section), which the 1.9 rule refines.
 
     Passes::
 
@@ -74,6 +90,9 @@ def duplicate_lane_id(ctx: Context):
 
         <right><lane id="-1" type="driving">...</lane><lane id="-1" type="sidewalk">...</lane></right>
     """
+    from xodrcheck.standard import applies
+
+    uid = U.LANE_ID_UNIQUE if applies(U.LANE_ID_UNIQUE, ctx.version) else F.ID_UNIQUE_IN_LANE_SECTION
     for road in ctx.document.roads:
         temporary = road.temporary_lanes.lane_sections if road.temporary_lanes is not None else ()
         for section in (*road.lane_sections, *temporary):
@@ -85,6 +104,7 @@ def duplicate_lane_id(ctx: Context):
                     yield duplicate_lane_id.finding(
                         f"lane id {lane.id} appears twice in the {_layer(section, temporary)}lane section at "
                         f"s={section.s:g} of road {road.id}{seen}",
+                        uid=uid,
                         road=road.id,
                         lane=lane.id,
                         section_s=section.s,
@@ -99,7 +119,14 @@ def _layer(section, temporary) -> str:
     return "temporary layer's " if any(section is other for other in temporary) else ""
 
 
-@rule("R004", "duplicate-connection-id", Category.REFERENCE, Severity.ERROR)
+@rule(
+    "R004",
+    "duplicate-connection-id",
+    Category.REFERENCE,
+    Severity.ERROR,
+    uids=(F.ID_UNIQUE_IN_CLASS,),
+    every_version=True,
+)
 def duplicate_connection_id(ctx: Context):
     """Two connections of one junction share an id.
 
@@ -115,7 +142,14 @@ def duplicate_connection_id(ctx: Context):
         yield from _duplicates(duplicate_connection_id, junction.connections, f"junction {junction.id}: connection")
 
 
-@rule("R010", "road-link-target-missing", Category.REFERENCE, Severity.ERROR)
+@rule(
+    "R010",
+    "road-link-target-missing",
+    Category.REFERENCE,
+    Severity.ERROR,
+    uids=(F.ONLY_REF_DEFINED_IDS,),
+    every_version=True,
+)
 def road_link_target_missing(ctx: Context):
     """A road's predecessor or successor names a road or junction that does not exist.
 
@@ -160,7 +194,14 @@ def road_link_target_missing(ctx: Context):
                 )
 
 
-@rule("R011", "connection-road-missing", Category.REFERENCE, Severity.ERROR)
+@rule(
+    "R011",
+    "connection-road-missing",
+    Category.REFERENCE,
+    Severity.ERROR,
+    uids=(F.ONLY_REF_DEFINED_IDS,),
+    every_version=True,
+)
 def connection_road_missing(ctx: Context):
     """A junction connection names an incoming, connecting or linked road that does not exist, or lacks one.
 
@@ -181,7 +222,9 @@ def connection_road_missing(ctx: Context):
             at = f"junction {junction.id} connection {c.id}"
             where = {"road": c.incoming_road, "line": c.line or junction.line or None}
             if c.incoming_road is None:
-                yield connection_road_missing.finding(f"{at} has no incomingRoad", **{**where, "road": None})
+                yield connection_road_missing.finding(
+                    f"{at} has no incomingRoad", uid=NO_UID, **{**where, "road": None}
+                )
             elif ctx.road(c.incoming_road) is None:
                 yield connection_road_missing.finding(
                     f"{at}: incomingRoad {c.incoming_road!r} does not exist", **{**where, "road": None}
@@ -193,12 +236,19 @@ def connection_road_missing(ctx: Context):
                 else "connectingRoad"
             )
             if target is None:
-                yield connection_road_missing.finding(f"{at} has no {attr}", **where)
+                yield connection_road_missing.finding(f"{at} has no {attr}", uid=NO_UID, **where)
             elif ctx.road(target) is None:
                 yield connection_road_missing.finding(f"{at}: {attr} {target!r} does not exist", **where)
 
 
-@rule("R012", "junction-lane-link-missing-lane", Category.REFERENCE, Severity.ERROR)
+@rule(
+    "R012",
+    "junction-lane-link-missing-lane",
+    Category.REFERENCE,
+    Severity.ERROR,
+    uids=(F.ONLY_REF_DEFINED_IDS,),
+    every_version=True,
+)
 def junction_lane_link_missing_lane(ctx: Context):
     """A junction ``laneLink`` names a lane that does not exist where it must.
 
@@ -285,7 +335,14 @@ def connecting_road_outside_junction(ctx: Context):
             )
 
 
-@rule("R014", "road-junction-missing", Category.REFERENCE, Severity.ERROR)
+@rule(
+    "R014",
+    "road-junction-missing",
+    Category.REFERENCE,
+    Severity.ERROR,
+    uids=(F.ONLY_REF_DEFINED_IDS,),
+    every_version=True,
+)
 def road_junction_missing(ctx: Context):
     """A road's ``junction`` attribute names a junction that does not exist.
 
@@ -329,7 +386,14 @@ def _lane_link_targets(
     return f"road {target.id} at its {link.contact_point.value}", ctx.section_at(target, link.contact_point)
 
 
-@rule("R015", "lane-link-missing-lane", Category.REFERENCE, Severity.ERROR, uids=(U.LINK_NO_LINK,), every_version=True)
+@rule(
+    "R015",
+    "lane-link-missing-lane",
+    Category.REFERENCE,
+    Severity.ERROR,
+    uids=(U.LINK_NO_LINK, F.ONLY_REF_DEFINED_IDS),
+    every_version=True,
+)
 def lane_link_missing_lane(ctx: Context):
     """A lane's ``predecessor`` or ``successor`` names a lane that does not exist, or there is nothing to link to.
 
@@ -380,6 +444,6 @@ def lane_link_missing_lane(ctx: Context):
                             yield lane_link_missing_lane.finding(
                                 f"road {road.id} lane {lane.id} (lane section s={section.s:g}): {word} lane "
                                 f"{target_id} does not exist in {described}",
-                                uid=NO_UID,
+                                uid=F.ONLY_REF_DEFINED_IDS,
                                 **where,
                             )

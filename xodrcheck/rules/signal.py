@@ -18,7 +18,7 @@ def has_signals(ctx: Context) -> bool:
     """Whether the file may hold signals, controllers or vmsGroups (a byte search, so files without any skip the XML
     walk)."""
     data = ctx.data
-    return ctx.tree is not None and (data is None or b"<signal" in data or b"controller" in data or b"vmsGroup" in data)
+    return ctx.tree is not None and (data is None or b"signal" in data or b"controller" in data or b"vmsGroup" in data)
 
 
 def _blank(value: str | None) -> bool:

@@ -111,6 +111,24 @@ NOT_ENFORCED.update(
             "the file does not say which gantry a board is on: a signal names no object it is mounted on, so "
             "boards of different gantries in one <vmsGroup> cannot be told from boards of one"
         ),
+        # road.railroad (15)
+        "asam.net:xodr:1.7.0:road.railroad.rail_lane_width_validity": (
+            "compares a rail or tram lane's width with the width of the rail-bound vehicles using it, which the file "
+            "does not give (no vehicle or gauge is written in OpenDRIVE)"
+        ),
+        # road.crg (10.6), road.cross_section_surface (10.5.4)
+        "asam.net:xodr:1.7.0:road.crg.use_last_entry": (
+            "says which of overlapping CRG entries applications use (the last one); a file cannot break that, and "
+            "overlapping entries are reported under road.crg.only_on_per_s (U003)"
+        ),
+        "asam.net:xodr:1.8.0:road.cross_section_surface.height": (
+            "says how a lane's @height combines with a cross section surface (it is added in z); a permission about "
+            "evaluation that no file can break"
+        ),
+        "asam.net:xodr:1.8.0:road.cross_section_surface.lane_def_valid": (
+            "says where a cross section surface applies (within the road's lanes: its outer strips reach the outer "
+            "lane edges); the surface's extent is defined by the lanes, so no file can make it reach elsewhere"
+        ),
     }
 )
 

@@ -1,0 +1,13 @@
+"""Rule undefined-reference (R021): the findings each fail fixture gives."""
+
+from tests.xodrcheck.rules.helpers import findings, fixture, line_of
+
+RULE = "undefined-reference"
+
+
+def test_dependency_and_object_reference_to_missing_ids():
+    path = fixture(RULE, "fail.xodr")
+    dep, ref = sorted(findings(path, RULE), key=lambda f: f.line)
+    assert dep.road == "1" and dep.line == line_of(path, '<dependency id="60"')
+    assert "names a signal that the file does not define" in dep.message
+    assert ref.road == "2" and "<objectReference id='70'> names an object" in ref.message

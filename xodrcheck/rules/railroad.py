@@ -1,0 +1,215 @@
+"""Railroads (chapter 15): rail and tram lanes, switches, stations: ``W001``-``W005``."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+import numpy as np
+from lxml import etree
+
+from xodrcheck.findings import Category, Severity
+from xodrcheck.model import LaneType
+from xodrcheck.rules import feature_uids as U
+from xodrcheck.rules.context import Context, placed_lane_ids
+from xodrcheck.rules.registry import rule
+
+_RAIL = (LaneType.RAIL, LaneType.TRAM)
+
+
+@rule("W001", "rail-lanes-per-road", Category.RAILROAD, Severity.ERROR, uids=(U.ONE_RAIL_PER_ROAD,))
+def rail_lanes_per_road(ctx: Context):
+    """A lane section has more than one ``rail`` or ``tram`` lane.
+
+    There shall only be one tram or one rail lane per road (Annex F ``road.railroad.one_rail_per_road``, 15.2): a
+    road carries one pair of tracks; a second track is a road of its own.
+
+    Passes::
+
+        <right><lane id="-1" type="tram" .../></right>
+
+    Fails::
+
+        <left><lane id="1" type="tram" .../></left> <right><lane id="-1" type="tram" .../></right>
+    """
+    for road in ctx.document.roads:
+        for section in road.lane_sections:
+            rails = [lane for lane in section.lanes if lane.type in _RAIL]
+            if len(rails) > 1:
+                ids = ", ".join(f"{lane.id} ({lane.type.value})" for lane in rails)
+                yield rail_lanes_per_road.finding(
+                    f"road {road.id}: the lane section at s={section.s:g} has {len(rails)} rail-bound lanes ({ids}): "
+                    "one pair of tracks per road; model each further track as a road of its own",
+                    road=road.id,
+                    section_s=section.s,
+                    s=section.s,
+                    line=section.line,
+                )
+
+
+@rule("W002", "rail-reference-line-off-centre", Category.RAILROAD, Severity.ERROR, uids=(U.RAIL_REFLINE_CENTERED,))
+def rail_reference_line_off_centre(ctx: Context):
+    """The reference line of a road with a rail or tram lane does not run along the centre of that lane.
+
+    The road reference line shall be in the centre of the pair of railroad tracks (Annex F
+    ``road.railroad.rail_refline_centered``, 15.2): the track is the lane, so its centre is at ``t = 0`` (a
+    ``<laneOffset>`` of half the lane's width moves a one-sided rail lane onto the line). Checked at the start, middle
+    and end of each lane section; the tolerance is ``gap``.
+
+    Passes::
+
+        <laneOffset s="0" a="0.75" .../> ... <right><lane id="-1" type="rail"><width a="1.5" .../>
+
+    Fails::
+
+        <right><lane id="-1" type="rail"><width a="1.5" .../>   <!-- centre at t = -0.75 -->
+    """
+    tol = ctx.tolerances.gap
+    for road in ctx.document.roads:
+        for index, section in enumerate(road.lane_sections):
+            rails = [lane for lane in section.lanes if lane.type in _RAIL]
+            if len(rails) != 1:
+                continue  # none, or several (rail-lanes-per-road)
+            geometry = ctx.geometry(road.id)
+            lane = rails[0]
+            if geometry is None or lane.id not in placed_lane_ids(geometry, index):
+                continue
+            start, end = section.s, road.section_end(index)
+            s = np.array([start, (start + end) / 2, end])
+            inner, outer = geometry.inner_outer(index, lane.id, s)
+            centre = (np.asarray(inner) + np.asarray(outer)) / 2
+            worst = int(np.argmax(np.abs(centre)))
+            if abs(centre[worst]) > tol:
+                yield rail_reference_line_off_centre.finding(
+                    f"road {road.id}: the centre of {lane.type.value} lane {lane.id} is at t={centre[worst]:.3f} m at "
+                    f"s={s[worst]:g}, not on the reference line: the reference line runs in the centre of the "
+                    "tracks (shift the lane onto it with <laneOffset>)",
+                    road=road.id,
+                    lane=lane.id,
+                    section_s=section.s,
+                    s=float(s[worst]),
+                    line=lane.line,
+                )
+
+
+def _stations(ctx: Context) -> Iterator[etree._Element]:
+    if ctx.tree is None or (ctx.data is not None and b"station" not in ctx.data):
+        return
+    yield from ctx.tree.getroot().iterchildren("{*}station")
+
+
+@rule(
+    "W003",
+    "station-without-platform",
+    Category.RAILROAD,
+    Severity.ERROR,
+    uids=(U.PLATFORMS_MIN_AMOUNT, U.ONE_PLATFORM_PER_STATION, U.PLATFORMS_MIN_SEGMENTS, U.SEGMENTS_PER_PLATFORM),
+)
+def station_without_platform(ctx: Context):
+    """A ``<station>`` has no ``<platform>``, or a ``<platform>`` has no ``<segment>``.
+
+    Each station shall have at least one platform (Annex F ``road.railroad.platforms.min_amount`` and
+    ``stations.one_platform_per_station``), and each platform at least one segment, which names the track beside it
+    (``platforms.min_segments`` and ``segment.segments_per_platform_min_amount``; 15.4). Each of the two pairs of
+    UIDs states one requirement, so a defect gives one finding per UID.
+
+    Passes::
+
+        <station id="1" name="Main"><platform id="1"><segment roadId="1" sStart="10" sEnd="60" side="right"/>
+
+    Fails::
+
+        <station id="1" name="Main"/>
+    """
+    for station in _stations(ctx):
+        platforms = list(station.iterchildren("{*}platform"))
+        name = f"station {station.get('id')!r} ({station.get('name')})"
+        if not platforms:
+            for uid in (U.PLATFORMS_MIN_AMOUNT, U.ONE_PLATFORM_PER_STATION):
+                yield station_without_platform.finding(
+                    f"{name} has no <platform>: a station has at least one platform, where passengers get on and off",
+                    uid=uid,
+                    line=station.sourceline,
+                )
+        for platform in platforms:
+            if next(platform.iterchildren("{*}segment"), None) is None:
+                for uid in (U.PLATFORMS_MIN_SEGMENTS, U.SEGMENTS_PER_PLATFORM):
+                    yield station_without_platform.finding(
+                        f"platform {platform.get('id')!r} of {name} has no <segment>: a segment names the track "
+                        "(road, sStart, sEnd, side) the platform lies beside",
+                        uid=uid,
+                        line=platform.sourceline,
+                    )
+
+
+def _switches(ctx: Context) -> list[tuple[str, etree._Element]]:
+    """(road id, ``<switch>``) for every switch of the file."""
+    if ctx.tree is None or (ctx.data is not None and b"switch" not in ctx.data):
+        return []
+    return [
+        (road.get("id", "?"), switch)
+        for road in ctx.tree.getroot().iterchildren("{*}road")
+        for railroad in road.iterchildren("{*}railroad")
+        for switch in railroad.iterchildren("{*}switch")
+    ]
+
+
+def _track(switch: etree._Element, kind: str) -> str | None:
+    el = next(switch.iterchildren(f"{{*}}{kind}"), None)
+    return None if el is None else el.get("id")
+
+
+@rule(
+    "W004",
+    "switch-topology",
+    Category.RAILROAD,
+    Severity.ERROR,
+    uids=(U.SWITCH_CONNECTION, U.SINGLE_SWITCH_NO_PARTNER),
+)
+def switch_topology(ctx: Context):
+    """Switches are connected through a main track, or a single switch names a partner.
+
+    A side track connects two switches placed on main tracks; main tracks shall not be used to connect two switches
+    (Annex F ``road.railroad.switch.check_switch_conn``): a road that is one switch's side track is not another
+    switch's main track. Partner switches are two switches linked by a side track; a single switch (whose side track
+    reaches no other switch) has no partner (``switch.single_switch_no_partner``; 15.3).
+
+    Passes::
+
+        <switch id="12" ...><mainTrack id="1" .../><sideTrack id="2" .../><partner id="32"/></switch>
+        <switch id="32" ...><mainTrack id="3" .../><sideTrack id="2" .../><partner id="12"/></switch>
+
+    Fails::
+
+        <switch id="12" ...><mainTrack id="1" .../><sideTrack id="2" .../><partner id="32"/></switch>
+        <switch id="32" ...><mainTrack id="2" .../><sideTrack id="3" .../></switch>
+    """
+    switches = _switches(ctx)
+    side_of: dict[str, list[str]] = {}
+    for _, switch in switches:
+        side = _track(switch, "sideTrack")
+        if side is not None:
+            side_of.setdefault(side, []).append(switch.get("id", "?"))
+    for road_id, switch in switches:
+        sid, main, side = switch.get("id", "?"), _track(switch, "mainTrack"), _track(switch, "sideTrack")
+        others = [other for other in side_of.get(main or "", []) if other != sid]
+        if others:
+            yield switch_topology.finding(
+                f"switch {sid!r} on road {road_id} has road {main} as its main track, which is the side track of "
+                f"switch {others[0]!r}: two switches are connected by a side track, not a main track",
+                uid=U.SWITCH_CONNECTION,
+                road=road_id,
+                line=switch.sourceline,
+            )
+        partner = next(switch.iterchildren("{*}partner"), None)
+        if partner is None:
+            continue
+        linked = [other for other in side_of.get(side or "", []) if other != sid]
+        if not linked:
+            yield switch_topology.finding(
+                f"switch {sid!r} on road {road_id} names partner {partner.get('id')!r}, but its side track "
+                f"{side} reaches no other switch: a single switch has no partner (remove <partner>, or give both "
+                "switches the side track that links them)",
+                uid=U.SINGLE_SWITCH_NO_PARTNER,
+                road=road_id,
+                line=partner.sourceline,
+            )
