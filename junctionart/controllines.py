@@ -167,6 +167,7 @@ def _lanes(where: str, raw: Any) -> tuple[int, int] | None:
             raise InputError(f"{where}: lane counts must be integers in [0, 3], got {fwd!r}, {bwd!r}")
     if fwd == 0 and bwd == 0:
         raise InputError(f"{where}: lanes cannot be 0 in both directions")
+    assert isinstance(fwd, int) and isinstance(bwd, int)  # checked above
     return (fwd, bwd)
 
 

@@ -9,8 +9,14 @@ import os
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, settings
 
 REPO = Path(__file__).resolve().parents[1]
+
+# Tests never depend on timing: every Hypothesis test (the fuzz campaign's profiles do the same) runs without a
+# deadline and without the too_slow health check, which a busy CI machine trips on strategies that are not slow.
+settings.register_profile("tests", deadline=None, suppress_health_check=[HealthCheck.too_slow])
+settings.load_profile("tests")
 
 
 def corpus_root() -> Path:

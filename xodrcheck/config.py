@@ -11,6 +11,7 @@ import math
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from xodrcheck.findings import XodrError
 
@@ -208,7 +209,7 @@ class ConfigError(XodrError, ValueError):
 
 def _tolerances_from(mapping: dict, base: Tolerances) -> Tolerances:
     known = {f.name: f for f in dataclasses.fields(Tolerances)}
-    values = {}
+    values: dict[str, Any] = {}
     for key, value in mapping.items():
         name = key.replace("-", "_")
         if name not in known:

@@ -52,7 +52,7 @@ def tool_version() -> str:
 
 def asset(name: str) -> str:
     """A file of ``xodrcheck/mapview/static`` (package data)."""
-    return resources.files("xodrcheck.mapview").joinpath("static", name).read_text(encoding="utf-8")
+    return resources.files("xodrcheck.mapview").joinpath("static").joinpath(name).read_text(encoding="utf-8")
 
 
 def json_script(value: object) -> str:

@@ -82,14 +82,15 @@ def _declaration(data: bytes) -> tuple[int, int]:
 
 def _decode_wide(data: bytes, findings: list[Finding]) -> bytes | None:
     """UTF-16/32 bytes as UTF-8 (declaration rewritten), the input itself when it is not wide, ``None`` when broken."""
-    codec = bom = None
+    codec: str | None = None
+    bom = b""
     for mark, name in _BOMS:
         if data.startswith(mark):
             codec, bom = name, mark
             break
     else:
-        for start, name in _WIDE_STARTS:
-            if data.startswith(start):
+        for prefix, name in _WIDE_STARTS:
+            if data.startswith(prefix):
                 codec, bom = name, b""
                 break
     if codec is None:
@@ -174,7 +175,8 @@ def _check_declared_encoding(data: bytes, findings: list[Finding]) -> None:
 def _drop_doctype(data: bytes, findings: list[Finding]) -> tuple[bytes | None, frozenset[str]]:
     """Replace a DOCTYPE in the prolog by as many newlines (``None`` when it never ends); also the names of the
     entities it declared."""
-    pos = _PROLOG_SKIP.match(data).end()
+    prolog = _PROLOG_SKIP.match(data)  # always matches (possibly the empty string)
+    pos = prolog.end() if prolog else 0
     if not data.startswith(b"<!DOCTYPE", pos):
         return data, frozenset()
     in_subset = False
