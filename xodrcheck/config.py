@@ -105,6 +105,13 @@ class Tolerances:
         "Connection lanes of one incoming road may run together this far from their start before they part.",
         rules="J101",
     )
+    gantry_reach: float = _tolerance(
+        1.0,
+        "m",
+        "A variable message board (its signal's s/t) this far outside a gantry object's bounding box (length x width "
+        "around the object's s/t) still counts as mounted on that gantry.",
+        rules="T008",
+    )
     signal_reach: float = _tolerance(
         50.0,
         "m",

@@ -10,6 +10,7 @@ absent) so that a rule can tell a missing attribute from a wrong one. Nothing he
 
 from __future__ import annotations
 
+import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 
@@ -46,6 +47,8 @@ class Signal:
     dynamic: str | None
     orientation: str | None
     validities: tuple[Validity, ...] = ()
+    s: float | None = None
+    t: float | None = None
     #: The ``<sign>`` elements of each ``<staticBoard>``, one tuple per board (1.8).
     static_boards: tuple[tuple[Sign, ...], ...] = ()
     #: Number of ``<vmsBoard>`` children (1.8).
@@ -131,6 +134,14 @@ def _integer(el: etree._Element, name: str) -> int | None:
         return None
 
 
+def _number(el: etree._Element, name: str) -> float | None:
+    try:
+        value = float(el.get(name))  # type: ignore[arg-type]
+    except (TypeError, ValueError):
+        return None
+    return value if math.isfinite(value) else None
+
+
 def _validities(el: etree._Element) -> tuple[Validity, ...]:
     return tuple(
         Validity(_integer(v, "fromLane"), _integer(v, "toLane"), v.sourceline or 0) for v in _children(el, "validity")
@@ -163,6 +174,8 @@ def _signal(road_id: str, el: etree._Element) -> Signal:
         el.get("dynamic"),
         el.get("orientation"),
         _validities(el),
+        _number(el, "s"),
+        _number(el, "t"),
         tuple(boards),
         sum(1 for _ in _children(el, "vmsBoard")),
         tuple(semantics),

@@ -34,7 +34,7 @@ prefix    category    codes
                       (:mod:`.object_skeletons`), repeats (:mod:`.object_repeats`), where outlines and skeletons
                       lie (:mod:`.object_geometry`), surfaces (:mod:`.object_surfaces`)
 ``T``     signal      ``T0xx`` signals, signal references, boards, controllers (:mod:`.signal`,
-                      :mod:`.signal_validity`)
+                      :mod:`.signal_validity`, :mod:`.signal_gantry`)
 ``W``     railroad    ``W0xx`` railroads (tracks, switches, stations; :mod:`.railroad`)
 ``U``     surface     ``U0xx`` road surfaces (CRG, cross-section surfaces; :mod:`.surface`)
 ========  ==========  =========================================================================================
@@ -90,6 +90,7 @@ FAMILIES = (
     "header",
     "signal",
     "signal_validity",
+    "signal_gantry",
     "surface",
     "railroad",
 )

@@ -269,8 +269,8 @@ def controller_without_signals(ctx: Context):
     Category.SIGNAL,
     Severity.ERROR,
     partial={
-        U.GANTRY_VMS_GROUP: "whether every gantry has a <vmsGroup> is not checked: the file does not say which "
-        "boards a gantry carries"
+        U.GANTRY_VMS_GROUP: "whether every gantry has one <vmsGroup> is vms-boards-gantry's (T008), as far as the "
+        "boards' positions tell"
     },
 )
 def vms_group_without_boards(ctx: Context):

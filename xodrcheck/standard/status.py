@@ -107,10 +107,6 @@ NOT_ENFORCED.update(
         "asam.net:xodr:1.7.0:road.signal.dependency.multiple_dependency": (
             "a permission: a signal may have any number of <dependency> elements, so no file can break it"
         ),
-        "asam.net:xodr:1.9.0:road.signal.gantry.all_variable_boards_same_gantry": (
-            "the file does not say which gantry a board is on: a signal names no object it is mounted on, so "
-            "boards of different gantries in one <vmsGroup> cannot be told from boards of one"
-        ),
         # road.railroad (15)
         "asam.net:xodr:1.7.0:road.railroad.rail_lane_width_validity": (
             "compares a rail or tram lane's width with the width of the rail-bound vehicles using it, which the file "
