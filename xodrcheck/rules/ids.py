@@ -145,7 +145,8 @@ def _dangling(index: dict[str, list[etree._Element]]) -> Iterator[tuple[etree._E
                 yield el, attr, ident, what
     for el in index[_LINKS]:
         kind, ident = el.get("elementType"), el.get("elementId")
-        if kind in ("signal", "object") and ident is not None and ident not in defined[kind]:
+        known = defined["signal"] | defined["sign"] if kind == "signal" else defined.get(kind or "", set())
+        if kind in ("signal", "object") and ident is not None and ident not in known:
             yield el, "elementId", ident, kind
 
 
