@@ -14,6 +14,8 @@ from junctionart.fuzz.profiles import budget, regressions
 from junctionart.fuzz.transform import move_and_rotate, renumber_roads, road_ids
 from xodrcheck.rules import load_rules
 
+pytestmark = pytest.mark.slow  # part of the full suite (CI); left out by -m "not slow"
+
 
 def _run(name: str) -> int:
     """Run one campaign run with its ``ci`` budget; the number of examples it checked."""

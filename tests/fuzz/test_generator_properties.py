@@ -16,6 +16,8 @@ from junctionart.cli import main as junctionart_main
 from junctionart.fuzz import campaign
 from junctionart.fuzz.profiles import budget, regressions
 
+pytestmark = pytest.mark.slow  # part of the full suite (CI); left out by -m "not slow"
+
 
 def _run(name: str, config: settings | None = None) -> int:
     before = campaign.TRIED[name]

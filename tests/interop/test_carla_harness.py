@@ -20,6 +20,8 @@ from tests.interop.carla_harness import (
 from xodrcheck.lanes import geometry_of
 from xodrcheck.reader import read
 
+pytestmark = pytest.mark.slow  # part of the full suite (CI); left out by -m "not slow"
+
 #: Largest distance (m) between CARLA's waypoint and our lane centre at the same road, lane and s.
 AGREEMENT = 5e-4
 

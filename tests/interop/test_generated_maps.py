@@ -28,6 +28,8 @@ from xodrcheck.check import check
 from xodrcheck.model import LaneType
 from xodrcheck.reader import read
 
+pytestmark = pytest.mark.slow  # part of the full suite (CI); left out by -m "not slow"
+
 REPO = Path(__file__).resolve().parents[2]
 
 #: The ASAM check each version skips (its rule applies to the other version only).

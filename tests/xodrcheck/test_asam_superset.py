@@ -14,7 +14,7 @@ from benchmarks.asam_qc import COVERED_BY, covered, run_asam
 from tests.conftest import REPO, corpus_root
 from xodrcheck.check import check
 
-pytestmark = pytest.mark.corpus
+pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
 FILES = [
     "esmini/resources/xodr/e6mini.xodr",  # paramPoly3 arcLength whose length is 1.6 mm off

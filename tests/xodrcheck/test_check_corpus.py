@@ -14,7 +14,7 @@ import pytest
 from tests.conftest import corpus_files
 from xodrcheck.check import check
 
-pytestmark = pytest.mark.corpus
+pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
 FILES = corpus_files()
 

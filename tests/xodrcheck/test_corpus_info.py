@@ -9,7 +9,7 @@ import pytest
 from tests.conftest import corpus_files, corpus_root
 from xodrcheck.cli import main
 
-pytestmark = pytest.mark.corpus
+pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
 #: The corpus as shipped in shared/ (see its MANIFEST.tsv).
 CORPUS_SIZE = 128

@@ -12,7 +12,7 @@ from xodrcheck.findings import Severity
 from xodrcheck.model import Arc, Line, ParamPoly3, Poly3, Spiral
 from xodrcheck.reader import read
 
-pytestmark = pytest.mark.corpus
+pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
 #: The corpus as shipped in shared/ (see its MANIFEST.tsv).
 CORPUS_SIZE = 128

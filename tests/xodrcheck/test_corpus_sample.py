@@ -11,7 +11,7 @@ import pytest
 from tests.conftest import corpus_files, corpus_root
 from xodrcheck.cli import main
 
-pytestmark = pytest.mark.corpus
+pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
 
 @pytest.mark.parametrize("path", corpus_files(), ids=lambda p: p.relative_to(corpus_root()).as_posix())

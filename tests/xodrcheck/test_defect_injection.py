@@ -18,7 +18,7 @@ from tests.conftest import corpus_root
 from xodrcheck.check import check
 from xodrcheck.findings import Severity
 
-pytestmark = pytest.mark.corpus
+pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
 CARLA = "carla-towns/OpenDrive/Town03.xodr"
 ESMINI = "esmini/resources/xodr/fabriksgatan.xodr"

@@ -26,6 +26,8 @@ from xodrcheck.lanes import RoadGeometry
 from xodrcheck.model import Road, Spiral
 from xodrcheck.reader import read
 
+pytestmark = pytest.mark.slow  # part of the full suite (CI); left out by -m "not slow"
+
 #: The oracle's own agreement bound (m): a point is in the oracle only where the two readers agree this well.
 ORACLE_AGREEMENT = 1e-3
 EXPECTED_FILES = 116

@@ -13,7 +13,7 @@ import pytest
 from tests.conftest import corpus_files, corpus_root
 from xodrcheck.check import check
 
-pytestmark = pytest.mark.corpus
+pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
 FILES = [p for p in corpus_files() if p.relative_to(corpus_root()).parts[0] in ("carla-towns", "esmini")]
 

@@ -21,7 +21,7 @@ from xodrcheck.cli import main
 from xodrcheck.report import render
 from xodrcheck.report.xqar import conform_uid, issue_uid
 
-pytestmark = pytest.mark.corpus
+pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
 MAPS = [
     "esmini/resources/xodr/e6mini.xodr",
