@@ -24,6 +24,7 @@ from __future__ import annotations
 
 import hashlib
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
@@ -64,11 +65,11 @@ def objective(area: float) -> float:
     return 1.0 / (1.0 + max(area, 0.0) / AREA_SCALE)
 
 
-def measure_document(document) -> dict[str, float]:
-    """Every metric of the (one) junction of a document read by xodrcheck's reader."""
+def measure_document(document: Any, junction: Any = None) -> dict[str, float]:
+    """Every metric of ``junction`` (default: the first) of a document read by xodrcheck's reader."""
     from xodrcheck.metrics import junction_legs, junction_metrics, smallest_leg_angle
 
-    junction = document.junctions[0]
+    junction = document.junctions[0] if junction is None else junction
     m = junction_metrics(document, junction)
     angle = smallest_leg_angle(junction_legs(document, junction))
 
