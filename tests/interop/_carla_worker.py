@@ -34,8 +34,9 @@ def main(path: str, distance: float, out: str) -> None:
     world_map = carla.Map("xodrcheck-interop", text)
     waypoints = [_point(wp) for wp in world_map.generate_waypoints(distance)]
     topology = [[_point(a), _point(b)] for a, b in world_map.get_topology()]
+    landmarks = [[str(m.id), str(m.type), str(m.road_id)] for m in world_map.get_all_landmarks()]
     with open(out, "w", encoding="utf-8") as f:
-        json.dump({"waypoints": waypoints, "topology": topology}, f)
+        json.dump({"waypoints": waypoints, "topology": topology, "landmarks": landmarks}, f)
 
 
 if __name__ == "__main__":

@@ -46,6 +46,8 @@ class CarlaResult:
     error: str
     waypoints: tuple[CarlaPoint, ...] = ()
     topology: tuple[tuple[CarlaPoint, CarlaPoint], ...] = ()
+    #: ``Map.get_all_landmarks()``: (signal id, type, road id) of each landmark (a signal as CARLA read it)
+    landmarks: tuple[tuple[str, str, str], ...] = ()
 
     @property
     def crashed(self) -> bool:
@@ -92,4 +94,5 @@ def carla_waypoints(xodr_path: str | os.PathLike, distance: float = 2.0, timeout
         error=_tail(proc.stderr),
         waypoints=tuple(CarlaPoint(**p) for p in data["waypoints"]),
         topology=tuple((CarlaPoint(**a), CarlaPoint(**b)) for a, b in data["topology"]),
+        landmarks=tuple(tuple(m) for m in data.get("landmarks", ())),
     )

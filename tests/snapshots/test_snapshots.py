@@ -149,6 +149,11 @@ GENERATOR_GOLDEN = {
         5,
     ),
     "two_lane_v17_seed11": ({"width": 500, "height": 500, "version": "1.7"}, 11),
+    # issue 16: sidewalks and corners, traffic lights / signs / crosswalks, hilly elevation
+    "scenario_hilly_random_lane_seed9": (
+        {"profile": "scenario", "terrain": "hilly", "width": 700, "height": 700, "randomize_lanes": True},
+        9,
+    ),
 }
 
 

@@ -1,0 +1,137 @@
+"""Interoperability acceptance of scenario maps (issue 16): signals, roadside and hilly terrain load in the tools.
+
+50 maps (``--profile scenario --terrain hilly``, random lanes; every other one curved, every third with traffic lights
+at every junction, every fifth left-hand traffic, every seventh rural), generated once per module. Each must pass:
+
+* ``xodrcheck.check``: no error-level finding;
+* ASAM ``asam-qc-opendrive``: no error-level issue and no checker ending in status "error";
+* SUMO ``netconvert``: exit 0 and one ``tlLogic`` per junction that has ``<controller>`` references;
+* CARLA's parser: ``Map.get_all_landmarks()`` lists every signal (each traffic light among them) and its waypoints
+  follow the elevation (their heights span the map's z range read by xodrcheck).
+"""
+
+from __future__ import annotations
+
+import subprocess
+from dataclasses import dataclass
+from pathlib import Path
+
+import pytest
+from lxml import etree
+
+import junctionart as ja
+from junctionart.params import Params
+from tests.interop.asam_harness import AsamRun, AsamUnavailable
+from tests.interop.carla_harness import CarlaUnavailable, carla_waypoints
+from tests.interop.test_generated_maps import _netconvert
+from xodrcheck.check import check
+from xodrcheck.elevation_info import elevation_info
+from xodrcheck.reader import read
+
+pytestmark = pytest.mark.slow  # part of the full suite (CI); left out by -m "not slow"
+
+COUNT = 50
+
+
+@dataclass(frozen=True)
+class Scene:
+    path: Path
+    seed: int
+
+    @property
+    def root(self):
+        return etree.parse(str(self.path)).getroot()
+
+
+@pytest.fixture(scope="module")
+def scenes(tmp_path_factory) -> list[Scene]:
+    folder = tmp_path_factory.mktemp("scenario")
+    out = []
+    for k in range(COUNT):
+        seed = 5000 + k
+        p = Params.create(
+            "scenario",
+            terrain="hilly",
+            randomize_lanes=True,
+            curved_roads=k % 2 == 1,
+            junction_control="traffic-lights" if k % 3 == 0 else "auto",
+            traffic_rule="LHT" if k % 5 == 4 else "RHT",
+            roadside="rural" if k % 7 == 6 else "urban",
+        )
+        out.append(Scene(ja.write(ja.generate(p, seed), folder / f"scene-{seed}.xodr"), seed))
+    return out
+
+
+@pytest.fixture(scope="module")
+def asam_run(scenes, tmp_path_factory) -> AsamRun:
+    try:
+        return AsamRun([s.path for s in scenes], tmp_path_factory.mktemp("asam"))
+    except AsamUnavailable as exc:
+        pytest.fail(str(exc))
+
+
+def test_plan_has_signals_sidewalks_and_hills(scenes, asam_run):
+    """(Requests ``asam_run`` so that ASAM starts before the other tools' tests run.)"""
+    lit = lights = sidewalks = 0
+    for s in scenes:
+        root = s.root
+        lit += sum(j.find("controller") is not None for j in root.iter("junction"))
+        lights += len(root.findall(".//signal[@type='1000001']"))
+        sidewalks += len(root.findall(".//lane[@type='sidewalk']"))
+    assert len(scenes) == COUNT and lit > 100 and lights > 500 and sidewalks > 1000
+
+
+def test_xodrcheck_finds_no_error(scenes):
+    bad = []
+    for s in scenes:
+        errors = [f for f in check(s.path).findings if f.severity.name == "ERROR"]
+        bad += [f"{s.path.name}: {f.code} road {f.road}: {f.message}" for f in errors[:3]]
+    assert bad == []
+
+
+def test_sumo_builds_a_traffic_light_program_for_every_signalised_junction(scenes, tmp_path):
+    command = _netconvert()
+    bad = []
+    for s in scenes:
+        out = tmp_path / f"{s.path.stem}.net.xml"
+        proc = subprocess.run(
+            [str(command), "--opendrive-files", str(s.path), "-o", str(out)],
+            capture_output=True,
+            text=True,
+            timeout=300,
+            stdin=subprocess.DEVNULL,
+            check=False,
+        )
+        lit = sum(j.find("controller") is not None for j in s.root.iter("junction"))
+        programs = len(etree.parse(str(out)).getroot().findall("tlLogic")) if out.is_file() else -1
+        if proc.returncode != 0 or programs != lit:
+            bad.append(f"{s.path.name}: exit {proc.returncode}, {programs} tlLogic for {lit} signalised junctions")
+    assert bad == []
+
+
+def test_carla_lists_the_signals_as_landmarks_and_follows_the_elevation(scenes):
+    bad = []
+    for s in scenes[:: max(1, COUNT // 12)]:
+        try:
+            result = carla_waypoints(s.path, distance=5.0)
+        except CarlaUnavailable as exc:
+            pytest.fail(f"{exc} (scripts/setup creates .venv-carla)")
+        signals = {(el.get("id"), el.get("type")) for el in s.root.iter("signal")}
+        marks = {(m[0], m[1]) for m in result.landmarks}
+        e = elevation_info(read(s.path).document)
+        zs = [w.z for w in result.waypoints]
+        if not result.loaded or marks != signals:
+            bad.append(f"{s.path.name}: {len(marks)} landmarks for {len(signals)} signals ({result.error})")
+        elif min(zs) > e.min_z + 1.0 or max(zs) < e.max_z - 1.0:
+            bad.append(f"{s.path.name}: waypoints z {min(zs):.2f}..{max(zs):.2f}, map {e.min_z:.2f}..{e.max_z:.2f}")
+    assert bad == []
+
+
+def test_asam_reports_no_error_and_no_checker_error(scenes, asam_run):
+    reports = asam_run.reports()
+    bad = []
+    for s in scenes:
+        report = reports[s.path]
+        bad += [f"{s.path.name}: {i}" for i in report.errors[:3]]
+        bad += [f"{s.path.name}: checker {c} ended in error" for c in report.failed_checkers]
+    assert bad == []
