@@ -191,7 +191,8 @@ def instances(obj: RoadObject) -> list[Instance]:
     for r in obj.repeats:
         if not r.distance > 0 or not r.length >= 0:
             continue
-        count = min(math.floor(r.length / r.distance + 1e-9) + 1, MAX_INSTANCES)
+        ratio = r.length / r.distance  # inf when a huge length meets a tiny distance
+        count = MAX_INSTANCES if not ratio < MAX_INSTANCES else math.floor(ratio + 1e-9) + 1
         ds = np.arange(count) * r.distance
         f = ds / r.length if r.length > 0 else np.zeros(count)
         t = repeat_t(r, r.s + ds)
