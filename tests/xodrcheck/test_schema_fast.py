@@ -221,3 +221,36 @@ def test_valid_19_documents_take_the_fast_path(data):
 @given(damaged_documents(base=_V19_DOCS, min_mutations=1, max_mutations=3))
 def test_damaged_19_documents_are_never_shown_valid_when_they_are_not(data):
     _damaged_is_not_shown_valid(data)
+
+
+class _Recording:
+    """Stands for the derived XSD 1.0 schema: records the tree it is asked to validate, then validates it."""
+
+    def __init__(self, schema10) -> None:
+        self.schema10 = schema10
+        self.seen: list = []
+        self.typed: list[str | None] = []
+
+    def validate(self, tree) -> bool:
+        self.seen.append(tree)
+        junction = tree.getroot().find("junction")
+        self.typed.append(None if junction is None else junction.get(f"{{{schema_fast.XSI}}}type"))
+        return self.schema10.validate(tree)
+
+
+@XSD11_VERSIONS
+@pytest.mark.parametrize("verdict", ["valid", "invalid"])
+def test_the_fast_path_validates_the_tree_in_place_and_restores_it(version, verdict, monkeypatch):
+    """No copy of the document (a parsed 50 MB map is gigabytes): the caller's tree itself is typed, validated, and
+    given back unchanged, with no xsi:type and no xsi namespace declaration left, valid or not."""
+    junction = COMMON if verdict == "valid" else COMMON.replace('contactPoint="start"', 'contactPoint="middle"')
+    tree = _tree(_doc(junction, minor=version[1]))
+    before = etree.tostring(tree)
+    folder, main = schema.SCHEMA_FOLDERS[version]
+    recording = _Recording(schema_fast.derived(folder, main))
+    monkeypatch.setattr(schema_fast, "derived", lambda *_: recording)
+    assert schema_fast.is_valid(tree, schema.compiled(version), folder, main) is (verdict == "valid")
+    assert [t is tree for t in recording.seen] == [True]
+    assert recording.typed[0] is not None  # the junction carried its selected type while validated
+    assert etree.tostring(tree) == before
+    assert schema_fast.XSI not in tree.getroot().find("junction").nsmap.values()
