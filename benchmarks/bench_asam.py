@@ -22,8 +22,8 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-from benchmarks.asam_qc import COVERED_BY, covered, ensure_venv, run_asam
-from xodrcheck.check import check
+from benchmarks.asam_qc import COVERED_BY, covered, ensure_venv, run_asam  # noqa: E402 (after the sys.path entry)
+from xodrcheck.check import check  # noqa: E402 (after the sys.path entry)
 
 _MINOR = re.compile(rb'revMinor\s*=\s*"(\d+)"')
 OLDER = ("Town01.xodr", "fabriksgatan.xodr", "junction_ma.xodr", "highway_merge.xodr")

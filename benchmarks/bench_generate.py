@@ -23,9 +23,9 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-import junctionart as ja
-from junctionart import controllines
-from junctionart.params import Params
+import junctionart as ja  # noqa: E402 (after the sys.path entry)
+from junctionart import controllines  # noqa: E402 (after the sys.path entry)
+from junctionart.params import Params  # noqa: E402 (after the sys.path entry)
 
 #: (label, size, randomize lanes, original CPU s per valid map, original tries per valid map)
 CONFIGS = [

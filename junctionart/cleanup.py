@@ -126,8 +126,8 @@ def _section(rp: RoadPlan, span: _Span, params: Params, prev: _Span | None, nxt:
             )
     two_way = rp.lanes.forward > 0 and rp.lanes.backward > 0
     centre = Lane(0, "none", (), (RoadMark(0.0, "solid", "yellow" if two_way else "standard", lane_change="none"),))
-    left = tuple(sorted(lanes_by_side[1], key=lambda l: l.id))
-    right = tuple(sorted(lanes_by_side[-1], key=lambda l: -l.id))
+    left = tuple(sorted(lanes_by_side[1], key=lambda lane: lane.id))
+    right = tuple(sorted(lanes_by_side[-1], key=lambda lane: -lane.id))
     return LaneSection(span.s0, left, centre, right)
 
 

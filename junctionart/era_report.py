@@ -227,7 +227,7 @@ def write_report(
         "## Distributions by leg count",
         "",
     ]
-    for column, name, unit, figure, paper in (*LEG_METRICS, *JUNCTION_METRICS):
+    for column, name, _unit, figure, paper in (*LEG_METRICS, *JUNCTION_METRICS):
         png = f"dist_{column}.png"
         distribution_figure(column, samples, compare, folder / png)
         per = "incident road (leg)" if column in {c for c, *_ in LEG_METRICS} else "intersection"

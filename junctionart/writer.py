@@ -154,10 +154,10 @@ def _side(add, tag: str, lanes) -> None:
 def _section(add, sec: LaneSection) -> None:
     add(f'      <laneSection s="{fmt(sec.s)}">')
     if sec.left:
-        _side(add, "left", sorted(sec.left, key=lambda l: -l.id))
+        _side(add, "left", sorted(sec.left, key=lambda lane: -lane.id))
     _side(add, "center", (sec.center,))
     if sec.right:
-        _side(add, "right", sorted(sec.right, key=lambda l: -l.id))
+        _side(add, "right", sorted(sec.right, key=lambda lane: -lane.id))
     add("      </laneSection>")
 
 

@@ -24,7 +24,8 @@ def test_first_screen_has_the_main_job_then_the_test_command():
 
 
 def test_main_job_generates_checks_and_draws_a_map(tmp_path):
-    """Everything after ``scripts/setup`` (which CI runs itself), in an empty folder, with this environment's commands."""
+    """Everything after ``scripts/setup`` (which CI runs itself), in an empty folder, with this environment's
+    commands."""
     steps = BLOCKS[0].strip().split(" && ")[1:]
     bin_dir = Path(sys.executable).parent
     for step in steps:

@@ -7,7 +7,8 @@ from a file) so findings can point at it.
 Conventions
 -----------
 * Lengths in metres, angles in radians, as in the standard.
-* ``s`` of a record inside a lane section (width, border, road mark, speed) is the standard's ``sOffset``: relative to the
+* ``s`` of a record inside a lane section (width, border, road mark, speed) is the standard's ``sOffset``: relative to
+the
   lane section's start. ``s`` of a road-level record (geometry, elevation, laneOffset, lane section) is absolute.
 * A value the file did not give and the standard does not default is ``None``, never a made-up 0.
 """

@@ -42,7 +42,8 @@ class LaneLine:
 def section_s_values(start: float, end: float, step: float, budget: int | None = None) -> np.ndarray:
     """``start``, then every ``step``, then ``end`` (a grid point that only rounding separates from ``end`` is left
     out, so the last interval is never a sliver of a few ulps). With a ``budget``, a section needing more steps than
-    that is stepped by ``length / budget`` instead (bounded output on absurdly long sections; the ``s`` column shows it)."""
+    that is stepped by ``length / budget`` instead (bounded output on absurdly long sections; the ``s`` column shows
+    it)."""
     if not (math.isfinite(step) and step > 0):
         raise ValueError(f"step must be a finite number > 0, got {step!r}")
     length = end - start

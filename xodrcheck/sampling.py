@@ -7,7 +7,8 @@ reference line, of every lane border in plan view (offset curves, width change i
 border's length per metre of ``s``, since an outer border is longer than the reference line) and of the elevation is
 probed just inside both ends and in the middle, and the step is divided evenly so that the sagitta
 ``curvature * h^2 / 8`` of every border polyline stays under ``chord``. (Where a profile jumps, as a laneOffset
-record that does not continue its predecessor, the polyline has a knot at the jump but cannot follow it.) A step never needs to be shorter than
+record that does not continue its predecessor, the polyline has a knot at the jump but cannot follow it.) A step never
+needs to be shorter than
 ``2 * chord`` (no arc strays further than half its length from its chord), which also bounds the work near cusps.
 
 Each stage keeps at most about ``budget`` samples per section (``Tolerances.max_samples_per_section``): past it the

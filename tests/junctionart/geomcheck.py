@@ -53,7 +53,7 @@ def measure(path) -> Measures:
             continue
         geo = geos[road.id]
         (sec,) = road.lane_sections
-        (lane,) = list((*sec.left, *sec.right))
+        (lane,) = [*sec.left, *sec.right]
         s = np.linspace(0.0, road.length, 200)
         for where in ("centre",):
             k = np.abs(geo.lane_points(0, lane.id, s, where=where).curvature)

@@ -43,8 +43,8 @@ def test_lane_count_changes_are_tapers_with_links(maps):
                         # the slope vanishes at both ends: a smooth split / merge
                         assert w.b == 0.0
                         assert w.b + 2 * w.c * L + 3 * w.d * L**2 == pytest.approx(0.0, abs=1e-9)
-                    ids_next = {l.id for l in (*nxt.left, *nxt.right)} if nxt else set()
-                    ids_prev = {l.id for l in (*prv.left, *prv.right)} if prv else set()
+                    ids_next = {ln.id for ln in (*nxt.left, *nxt.right)} if nxt else set()
+                    ids_prev = {ln.id for ln in (*prv.left, *prv.right)} if prv else set()
                     if w1 > 0 and lane.id in ids_next:
                         assert lane.successor == lane.id
                     if w1 == pytest.approx(0.0, abs=1e-9):
@@ -70,16 +70,16 @@ def test_markings(maps):
         for road in result.document.roads:
             for sec in road.sections:
                 if road.junction != "-1":
-                    assert all(m.type == "none" for l in (*sec.left, sec.center, *sec.right) for m in l.marks)
+                    assert all(m.type == "none" for ln in (*sec.left, sec.center, *sec.right) for m in ln.marks)
                     continue
                 two_way = all(
-                    any(l.type == "driving" for s in road.sections for l in lanes(s)) for lanes in (_left, _right)
+                    any(ln.type == "driving" for s in road.sections for ln in lanes(s)) for lanes in (_left, _right)
                 )
                 (centre,) = sec.center.marks
                 assert centre.type == "solid"
                 assert centre.color == ("yellow" if two_way else "standard")
                 for side in (sec.left, sec.right):
-                    driving = sorted((l for l in side if l.type == "driving"), key=lambda l: abs(l.id))
+                    driving = sorted((ln for ln in side if ln.type == "driving"), key=lambda ln: abs(ln.id))
                     for k, lane in enumerate(driving):
                         kinds = [m.type for m in lane.marks]
                         if k == len(driving) - 1:

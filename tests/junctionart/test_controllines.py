@@ -89,19 +89,19 @@ def test_examples_load(name):
             ["'a' is used twice"],
         ),
         (
-            '{"lines": [{"id": "a", "points": [[0, 0], [50, 0]], "lanes": [0, 0]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}',
+            '{"lines": [{"id": "a", "points": [[0, 0], [50, 0]], "lanes": [0, 0]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}',  # noqa: E501
             ["0 in both"],
         ),
         (
-            '{"lines": [{"id": "a", "points": [[0, 0], [50, 0]], "lanes": [4, 1]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}',
+            '{"lines": [{"id": "a", "points": [[0, 0], [50, 0]], "lanes": [4, 1]}, {"id": "b", "points": [[0, 9], [9, 9]]}]}',  # noqa: E501
             ["[0, 3]"],
         ),
         (
-            '{"lines": [{"id": "a", "points": [[0, 0], [50, 0]]}, {"id": "b", "points": [[0, 9], [9, 9]]}], "pairs": [["a", "z"]]}',
+            '{"lines": [{"id": "a", "points": [[0, 0], [50, 0]]}, {"id": "b", "points": [[0, 9], [9, 9]]}], "pairs": [["a", "z"]]}',  # noqa: E501
             ["pair", "'z'"],
         ),
         (
-            '{"type": "FeatureCollection", "features": [{"type": "Feature", "geometry": {"type": "Point", "coordinates": [0, 0]}}]}',
+            '{"type": "FeatureCollection", "features": [{"type": "Feature", "geometry": {"type": "Point", "coordinates": [0, 0]}}]}',  # noqa: E501
             ["LineString"],
         ),
         (

@@ -1,7 +1,8 @@
 """Junctions stay close to the size their lanes need (issue 5: connecting roads of 250 m, one of 894 m, before).
 
 Reference: CARLA's towns have connecting roads with a median of 13.5-24.5 m and none over 67 m, on roads of one or two
-lanes a side. The generator's random-lane maps have up to three lanes and a median a side, and skewed legs, so the bounds
+lanes a side. The generator's random-lane maps have up to three lanes and a median a side, and skewed legs, so the
+bounds
 below are looser, but they fail on the old behaviour (median 71 m, maxima 136-249 m at 1 km).
 """
 

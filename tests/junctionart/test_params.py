@@ -43,7 +43,7 @@ def test_bad_values_are_named_with_their_range(changes, words):
 def test_create_from_plain_values():
     p = Params.create(split_strategy="split-last", traffic_rule="LHT", lane_distribution_side=[0.1, 0.4, 0.4, 0.1])
     assert p.split_strategy is SplitStrategy.SPLIT_LAST and p.traffic_rule is TrafficRule.LHT
-    with pytest.raises(ParamsError, match="split_strategy='middle'.*split-first, split-last, random"):
+    with pytest.raises(ParamsError, match=r"split_strategy='middle'.*split-first, split-last, random"):
         Params.create(split_strategy="middle")
     with pytest.raises(ParamsError, match="unknown parameter 'lanes'"):
         Params.create(lanes=3)

@@ -88,7 +88,8 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--scheduler",
         metavar="ADDRESS",
-        help="check the files on a Dask cluster (e.g. tcp://host:8786; needs the dask extra and the paths on its workers)",
+        help="check the files on a Dask cluster (e.g. tcp://host:8786; needs the dask extra and the paths on its "
+        "workers)",
     )
 
 

@@ -6,7 +6,8 @@ speed ``|C'|`` there. It is inverted, for all query points at once, by Newton's 
 ``p <- p - (L(p) - sigma) / |C'(p)|``, where ``L(p)`` is the tabulated value at the panel start plus one more
 Gauss-Legendre integral over the rest. The first guess is the cubic Hermite interpolant of ``p(sigma)`` on the panel
 (values and slopes ``1 / |C'|`` at both boundaries; the tables start at 32 panels, so that this guess is typically
-within 1e-9 of the root), and one Newton step usually reaches double precision. Iteration stops as soon as the residual left after the step just taken, predicted from the
+within 1e-9 of the root), and one Newton step usually reaches double precision. Iteration stops as soon as the residual
+left after the step just taken, predicted from the
 second-order term ``|C'|' dp^2 / 2`` with a wide margin, is under the tolerance (rather than paying one more
 quadrature to measure it), or the measured residual already is.
 """

@@ -16,7 +16,8 @@ spread evenly instead of leaving a gap or an overshoot at the element's end (a l
 
 This is also what the two reference readers of the lane-centre oracle do: esmini's RoadManager tabulates the curve's
 arc length and rescales it to ``@length``; CARLA tabulates arc length (without rescaling). libOpenDRIVE, in its older
-releases, mapped ``ds`` linearly to ``p`` (``p = ds / @length`` or ``p = ds``), which departs from arc length by metres on
+releases, mapped ``ds`` linearly to ``p`` (``p = ds / @length`` or ``p = ds``), which departs from arc length by metres
+on
 strongly non-uniform curves; it is not followed.
 
 Heading is ``hdg + atan2(v'(p), u'(p))``, curvature ``(u'v'' - v'u'') / |c'|^3`` (both independent of the

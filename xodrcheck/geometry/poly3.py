@@ -1,6 +1,7 @@
 """Cubic polynomial ``v(u) = a + b u + c u^2 + d u^3`` in the element's local (u, v) frame (deprecated since 1.6).
 
-The curve is ``(u, v(u))`` rotated by ``hdg`` and moved to ``(x, y)``, literally as the standard writes it, so a non-zero
+The curve is ``(u, v(u))`` rotated by ``hdg`` and moved to ``(x, y)``, literally as the standard writes it, so a
+non-zero
 ``a`` shifts the start off ``(x, y)`` and a non-zero ``b`` turns the start tangent by ``atan(b)``. The element's
 ``@length`` is arc length along that curve, so ``ds`` is mapped to ``u`` by inverting the arc length
 ``integral_0^u sqrt(1 + v'(q)^2) dq`` numerically (see :mod:`xodrcheck.geometry.cubic`). Since arc length is never

@@ -31,7 +31,8 @@ class Pose:
         return Pose(*(np.full(n, np.nan) for _ in range(5)))
 
     def assign(self, index: np.ndarray, other: Pose) -> None:
-        """Write ``other`` into the positions ``index`` of this pose's arrays (the arrays are mutable, the fields not)."""
+        """Write ``other`` into the positions ``index`` of this pose's arrays (the arrays are mutable, the fields
+        not)."""
         self.x[index] = other.x
         self.y[index] = other.y
         self.hdg[index] = other.hdg

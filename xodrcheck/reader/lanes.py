@@ -1,6 +1,7 @@
 """``<lanes>`` to the laneOffset profile and :class:`~xodrcheck.model.LaneSection` values.
 
-Records inside a lane (width, border, height, roadMark, speed) keep ``s`` = their ``sOffset``. A lane without a usable integer
+Records inside a lane (width, border, height, roadMark, speed) keep ``s`` = their ``sOffset``. A lane without a usable
+integer
 ``id`` is skipped (links name lanes by id); a lane whose type is unknown is kept as ``LaneType.UNKNOWN``.
 
 OpenDRIVE 1.9 lane layers (11.2) are read from 1.9 files (and files of unknown version, read as 1.9): a lane link's

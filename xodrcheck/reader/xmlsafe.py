@@ -14,6 +14,7 @@ of hundreds of MB through. A file that is not well-formed is parsed again in rec
 
 from __future__ import annotations
 
+import contextlib
 import dataclasses
 import re
 
@@ -268,10 +269,8 @@ def parse(
         errors = [e for e in errors if not _declared_entity(e, declared)]
         root = None
         if (recover or not errors) and data.strip():
-            try:
+            with contextlib.suppress(etree.XMLSyntaxError):
                 root = etree.fromstring(data, _parser(recover=True))
-            except etree.XMLSyntaxError:
-                pass
         if references:
             _count_references(findings, references)
         if not errors and root is not None:  # only references to the DOCTYPE's entities, which X102 reports

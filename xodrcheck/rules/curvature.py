@@ -1,7 +1,8 @@
 """Curvature (``C0xx``): curves a vehicle can follow and lane borders that do not fold.
 
 Every lane section is sampled and evaluated once (:func:`xodrcheck.rules.sampled.section_lines`: every knot, and
-steps keeping the chord error under ``chord`` for curves within the radius bound) and the curvature of the lines is evaluated exactly there
+steps keeping the chord error under ``chord`` for curves within the radius bound) and the curvature of the lines is
+evaluated exactly there
 (offset-curve curvature with the lane's width change, :mod:`xodrcheck.lanes`).
 
 Decisions
@@ -111,7 +112,7 @@ def reference_radius_too_small(ctx: Context):
         <geometry ... length="1"><arc curvature="2"/></geometry>
     """
     bound = 1.0 / ctx.tolerances.min_radius if ctx.tolerances.min_radius > 0 else math.inf
-    for road, index, geometry, s in _sections(ctx):
+    for road, index, _geometry, s in _sections(ctx):
         section = road.lane_sections[index]
         if not any((lane := section.lane(i)) is not None and lane.drivable for i in (1, -1)):
             continue
@@ -143,7 +144,7 @@ def border_folds(ctx: Context):
 
         <geometry ... length="3"><arc curvature="0.5"/></geometry>
     """
-    for road, index, geometry, s in _sections(ctx):
+    for road, index, _geometry, s in _sections(ctx):
         lines = section_lines(ctx, road, index)
         k = lines.curvature
         for lane_id, t in lines.t.items():

@@ -1,7 +1,8 @@
 """Geometry the geometric rules share, computed once per file.
 
 Each lane section is sampled and evaluated once (:func:`section_lines`) and kept with the check's
-:class:`~xodrcheck.rules.context.Context`, so the link, curvature and junction rules share one evaluation. A road without a plan view or
+:class:`~xodrcheck.rules.context.Context`, so the link, curvature and junction rules share one evaluation. A road
+without a plan view or
 without lane sections has no geometry here (``None``): the reader reports those.
 """
 
