@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import itertools
 import math
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -180,28 +180,23 @@ def _placed_boxes(obj: RoadObject, geometry: RoadGeometry, run: list[Instance]) 
 
 def _thinned(run: list[Box]) -> list[Box]:
     """The boxes of one ``<repeat>``, thinned where its instances pile up (a ``distance`` far below the object's
-    size): only every m-th box is kept (and the last), m the largest power of 2 for which the centre of each box
-    lies within the half-width of the m-th box before it (within its inscribed circle). Kept boxes leave no gap and
-    overlap where the instances do, so the rules' verdicts stand, but a point lies under a few boxes instead of
+    size, or instances past the road's end, all placed at its last point): a box is left out when its centre lies
+    within half the inscribed radius of the last box kept (the last box is always kept). Kept boxes leave no gap
+    and overlap where the instances do, so the rules' verdicts stand, but a point lies under a few boxes instead of
     thousands (10 000 instances 1 mm apart would otherwise make 10^8 pairs to compare)."""
     import shapely
 
     if len(run) < 3:
         return run
-    centres = shapely.get_coordinates(shapely.centroid(np.array([box.polygon for box in run])))
-    inner = np.array([_inner_radius(box.instance.volume) for box in run])
-    stride = 1
-    while 2 * stride < len(run):
-        gap = np.hypot(*(centres[2 * stride :] - centres[: -2 * stride]).T)
-        if not np.all(gap <= inner[: -2 * stride]):
-            break
-        stride *= 2
-    if stride == 1:
-        return run
-    keep = list(range(0, len(run), stride))
-    if keep[-1] != len(run) - 1:
-        keep.append(len(run) - 1)
-    return [run[k] for k in keep]
+    centres = shapely.get_coordinates(shapely.centroid(np.array([box.polygon for box in run]))).tolist()
+    inner = [_inner_radius(box.instance.volume) / 2 for box in run]
+    kept = [0]
+    for k in range(1, len(run) - 1):
+        last = kept[-1]
+        if math.dist(centres[k], centres[last]) > inner[last]:
+            kept.append(k)
+    kept.append(len(run) - 1)
+    return [run[k] for k in kept]
 
 
 def _inner_radius(volume: Volume | None) -> float:
@@ -265,22 +260,25 @@ def surface_volumes_overlap(ctx: Context):
         )
 
 
-def _crossed_roads(ctx: Context, box: Box) -> dict[str, float]:
+def _crossed_roads(ctx: Context, box: Box, wanted: Callable[[str], bool] | None = None) -> dict[str, float]:
     """Road id -> plan-view area of the road's lanes under a surface box (the box's height range within
-    ``clearance`` of the lane surface there)."""
+    ``clearance`` of the lane surface there), for the roads ``wanted`` asks about (all by default): lanes of other
+    roads are passed over before their areas and heights are computed."""
     from xodrcheck.footprint import overlap_index, sample_points
 
     index = overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time)
     footprints, lanes = index.footprints, index.surfaces.lanes
     out: dict[str, float] = {}
     for k in footprints.tree.query(box.polygon, predicate="intersects"):
+        road = lanes[int(k)].road
+        if wanted is not None and not wanted(road):
+            continue
         shared = footprints.polygons[int(k)].intersection(box.polygon)
         if shared.area <= ctx.tolerances.object_volume**2:
             continue
         z, _ = footprints.heights(int(k), sample_points(shared))
         if np.nanmin(np.abs(z - box.low)) >= ctx.tolerances.clearance:
             continue
-        road = lanes[int(k)].road
         out[road] = out.get(road, 0.0) + float(shared.area)
     return out
 
@@ -315,10 +313,14 @@ def surface_object_not_referenced(ctx: Context):
     referenced = {(road, r.id) for road, found in ctx.road_objects.items() for r in found.references}
     reported: set[tuple[str, str]] = set()
     for box in boxes:
-        for road, area in sorted(_crossed_roads(ctx, box).items()):
+        if ctx.out_of_time():
+            return
+
+        def wanted(road: str, obj: RoadObject = box.obj) -> bool:
+            return road != obj.road and (road, obj.id) not in referenced and (road, obj.id) not in reported
+
+        for road, area in sorted(_crossed_roads(ctx, box, wanted).items()):
             key = (road, box.obj.id)
-            if road == box.obj.road or (road, box.obj.id) in referenced or key in reported:
-                continue
             reported.add(key)
             point = box.polygon.centroid
             yield surface_object_not_referenced.finding(
@@ -403,7 +405,8 @@ def surface_hides_road_crg(ctx: Context):
         lo_x, lo_y, hi_x, hi_y = box.polygon.bounds
         reach = math.hypot(hi_x - lo_x, hi_y - lo_y) / 2
         origins = {**placed_on.get(box.obj.id, {}), box.obj.road: box.obj.s}
-        crossed = set(_crossed_roads(ctx, box)) if any(road in road_crgs for road in origins) else set()
+        on_crg = {road for road in origins if road in road_crgs}
+        crossed = set(_crossed_roads(ctx, box, on_crg.__contains__)) if on_crg else set()
         for road in sorted(crossed & set(origins)):
             s_at = origins[road] + box.instance.s - box.obj.s
             crg = next(

@@ -27,7 +27,7 @@ def _repeated(length: str, distance: str) -> bytes:
 
 
 def test_piled_up_instances_are_thinned_and_still_overlap():
-    """10 000 instances 1 mm apart (a typo for 1 m): a handful of boxes, not 10^8 pairs, and the overlap is found."""
+    """10 000 instances 1 mm apart (a typo for 1 m): a few dozen boxes, not 10^8 pairs, and the overlap is found."""
     from xodrcheck.check import check
     from xodrcheck.reader import read
     from xodrcheck.rules.context import Context
