@@ -38,3 +38,19 @@ def test_main_job_generates_checks_and_draws_a_map(tmp_path):
     xodr, png = tmp_path / "map.xodr", tmp_path / "map.png"
     assert xodr.read_bytes().startswith(b"<?xml")
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and png.stat().st_size > 10_000
+
+
+def test_first_screen_counts_are_the_checkers():
+    """The rule count and the Annex F coverage the README states are the ones ``xodrcheck rules`` reports."""
+    from xodrcheck.rules import load_rules
+    from xodrcheck.standard.status import ENFORCED, MISSING, PARTIAL, statuses
+
+    rules = load_rules()
+    table = statuses(rules)
+    counts = {s: sum(1 for row in table if row.status == s) for s in (ENFORCED, PARTIAL, MISSING)}
+    first_screen = " ".join(README[: README.index("\n---\n")].split())
+    assert f"checks it against {len(rules)} rules" in first_screen
+    assert (
+        f"Of the {len(table)} checker rules of OpenDRIVE 1.9.0 (Annex F) it enforces {counts[ENFORCED]} in full and "
+        f"{counts[PARTIAL]} in part; the other {counts[MISSING]} are" in first_screen
+    )
