@@ -142,7 +142,7 @@ OPTIONS = [
         "junction control: auto (drawn by leg count and road class), traffic-lights, stop, yield or none",
     ),
     ("--country", "country", str, "country whose sign catalogue the signs come from"),
-    ("--terrain", "terrain", str, "flat, rolling (grades up to 5 %) or hilly (up to 8 %); junctions stay planar"),
+    ("--terrain", "terrain", str, "flat, rolling (grades up to 5 %%) or hilly (up to 8 %%); junctions stay planar"),
 ]
 
 

@@ -242,3 +242,19 @@ def test_render_without_matplotlib_names_the_extra_and_writes_nothing(tmp_path):
     assert proc.returncode == 2, proc.stderr
     assert proc.stderr.count("\n") == 1 and "pip install 'junctionart[figures]'" in proc.stderr
     assert "Traceback" not in proc.stderr and not out.exists()
+
+
+@pytest.mark.parametrize("command", ["generate", "render", "era", "intersection", "search"])
+def test_every_subcommand_help_prints_and_exits_0(command, capsys):
+    """Was: ``generate --help`` raised ValueError (a bare '%' in an option's help, which argparse formats)."""
+    with pytest.raises(SystemExit) as exit_info:
+        main([command, "--help"])
+    assert exit_info.value.code == 0
+    assert capsys.readouterr().out.startswith(f"usage: junctionart {command}")
+
+
+def test_the_help_tests_cover_every_subcommand(capsys):
+    with pytest.raises(SystemExit):
+        main(["--help"])
+    listed = capsys.readouterr().out.split("{", 1)[1].split("}", 1)[0].split(",")
+    assert listed == ["generate", "render", "era", "intersection", "search"]
