@@ -20,7 +20,8 @@ CLEAN = fixture("link-not-reciprocal", "pass.xodr")
 TEXT_LINE = re.compile(
     r"^(?P<path>[^:]+):(?P<line>\d+): (?P<code>[A-Z]\d{3}) (?P<severity>error|warning|info) (?P<message>.+?)"
     r"(?: \[(?P<road>[^/\]]+)/(?P<lane>-?\d+|-)/(?P<s>-?\d+\.\d{3}|-)"
-    r"(?: x=(?P<x>-?\d+\.\d{3}) y=(?P<y>-?\d+\.\d{3})(?: z=(?P<z>-?\d+\.\d{3}))?)?\])?$"
+    r"(?: x=(?P<x>-?\d+\.\d{3}) y=(?P<y>-?\d+\.\d{3})(?: z=(?P<z>-?\d+\.\d{3}))?)?\])?"
+    r"(?: \((?P<uid>asam\.net:xodr:[^)]+)\))?$"
 )
 
 
@@ -61,6 +62,7 @@ def test_text_one_line_per_finding(reports):
         assert m, line
         assert (m["path"], int(m["line"]), m["code"], m["severity"]) == (str(BROKEN), f.line, f.code, str(f.severity))
         assert m["road"] == f.road
+        assert m["uid"] == f.rule_uid  # the Annex F rule the finding enforces, where it has one
         assert (float(m["x"]), float(m["y"])) == pytest.approx((f.x, f.y), abs=5e-4)  # every place has coordinates
 
 

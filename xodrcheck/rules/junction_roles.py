@@ -381,26 +381,54 @@ def _link_text(link) -> str:
 
 
 # ---------------------------------------------------------------------------------------------------- when to use
-def reachable(ctx: Context, junction: Junction) -> dict[str, set[str]]:
-    """Road outside the junction -> the roads outside it that a connection leads it to (in a common junction: the
-    road at the connecting road's other end; in a direct junction: the linked road), and the other way round."""
-    out: dict[str, set[str]] = {}
+#: A road end at a junction: the road's id and its contact point (``None`` where the file does not say, and in a
+#: direct junction, whose connections name roads only).
+RoadEnd = tuple[str, ContactPoint | None]
+
+
+def reachable(ctx: Context, junction: Junction) -> dict[RoadEnd, set[RoadEnd]]:
+    """Road end outside the junction -> the road ends outside it that a connection leads it to (in a common junction:
+    the road at the connecting road's other end; in a direct junction: the linked road), and the other way round.
+    Ends, not roads: a road that meets the junction with both ends offers two ways on (a loop), which is the
+    ambiguity a junction resolves."""
+    out: dict[RoadEnd, set[RoadEnd]] = {}
     for c in junction.connections:
         if c.incoming_road is None:
             continue
+        source: RoadEnd = (c.incoming_road, None)
+        target: RoadEnd | None = None
         if junction.type is JunctionType.DIRECT:
-            target = c.linked_road
+            target = (c.linked_road, None) if c.linked_road is not None else None
         else:
             connecting = ctx.road(c.connecting_road)
             if connecting is None or c.contact_point is None:
                 continue
+            near = link_at(connecting, c.contact_point)
+            if near is not None and near.element_type is ElementType.ROAD and near.element_id == c.incoming_road:
+                source = (c.incoming_road, near.contact_point)
             link = link_at(connecting, other_end(c.contact_point))
-            target = link.element_id if link is not None and link.element_type is ElementType.ROAD else None
+            if link is not None and link.element_type is ElementType.ROAD:
+                target = (link.element_id, link.contact_point)
         if target is None:
             continue
-        out.setdefault(c.incoming_road, set()).add(target)
-        out.setdefault(target, set()).add(c.incoming_road)
+        out.setdefault(source, set()).add(target)
+        out.setdefault(target, set()).add(source)
     return out
+
+
+def _both_ends(ctx: Context, junction: Junction) -> set[str]:
+    """Roads outside the junction that meet it with both ends (each end is a leg of its own)."""
+    return {
+        road.id
+        for road in ctx.document.roads
+        if road.junction != junction.id
+        and all(
+            (link := link_at(road, end)) is not None
+            and link.element_type is ElementType.JUNCTION
+            and link.element_id == junction.id
+            for end in (ContactPoint.START, ContactPoint.END)
+        )
+    }
 
 
 @rule(
@@ -433,7 +461,7 @@ def junction_unneeded(ctx: Context):
             continue
         name = _describe(parts.get(junction.id), junction)
         touching = legs(ctx, junction)
-        if len(touching) <= 2:
+        if len(touching) + len(_both_ends(ctx, junction)) <= 2:
             roads = " and ".join(f"road {r}" for r in touching) or "no road"
             yield junction_unneeded.finding(
                 f"{name}: only {roads} meet in it; where two roads meet, link them directly (junctions are for "
@@ -444,7 +472,7 @@ def junction_unneeded(ctx: Context):
             )
         paths = reachable(ctx, junction)
         if paths and all(len(targets) <= 1 for targets in paths.values()):
-            pairs = sorted({tuple(sorted((a, b))) for a, targets in paths.items() for b in targets})
+            pairs = sorted({tuple(sorted((a[0], b[0]))) for a, targets in paths.items() for b in targets})
             shown = ", ".join(f"{a}-{b}" for a, b in pairs)
             yield junction_unneeded.finding(
                 f"{name} leads each road to one other road only ({shown}): no road has two possible successors or "

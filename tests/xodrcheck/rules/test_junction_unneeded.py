@@ -20,3 +20,9 @@ def test_two_roads_in_a_1_9_file_are_also_only_two():
         (U.COMMON_WHEN_TO_USE, Severity.ERROR),
         (U.COMMON_NOT_ONLY_TWO, Severity.WARNING),
     }
+
+
+def test_a_road_meeting_the_junction_with_both_ends_is_two_legs():
+    """Road 2 starts and ends at the junction and road 1 ends there: three legs, road 1 has two ways on (road 2's
+    start and its end). Was: J019 counted roads, not road ends, and called the junction unneeded (fuzz, seed 690)."""
+    assert findings(fixture(RULE, "pass_loop.xodr"), RULE) == []
