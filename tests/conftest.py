@@ -13,6 +13,9 @@ from hypothesis import HealthCheck, settings
 
 REPO = Path(__file__).resolve().parents[1]
 
+#: The corpus as shipped in shared/ (see its MANIFEST.tsv): a copy with fewer files fails every corpus test.
+CORPUS_SIZE = 128
+
 # Tests never depend on timing: every Hypothesis test (the fuzz campaign's profiles do the same) runs without a
 # deadline and without the too_slow health check, which a busy CI machine trips on strategies that are not slow.
 settings.register_profile("tests", deadline=None, suppress_health_check=[HealthCheck.too_slow])
@@ -37,6 +40,9 @@ def corpus_dir() -> Path:
     root = corpus_root()
     if not root.is_dir():
         pytest.fail(f"corpus not found at {root}: set XODR_CORPUS to the shared corpus folder")
+    found = len(corpus_files())
+    if found != CORPUS_SIZE:
+        pytest.fail(f"the corpus at {root} has {found} .xodr files, not {CORPUS_SIZE}: an incomplete copy")
     return root
 
 

@@ -71,7 +71,6 @@ def test_no_discarded_maps():
     params = Params(randomize_lanes=True, curved_roads=True, width=700, height=700)
     maps = [ja.generate_layout(params, seed) for seed in range(10)]
     assert all(r.layout.junctions for r in maps)
-    assert len(maps) == 10
     legs = {j.legs for r in maps for j in r.layout.junctions}
     assert {3, 4} <= legs
     assert all(math.isfinite(rp.length) for r in maps for rp in r.layout.roads)

@@ -6,9 +6,6 @@ tests never depend on timing.
 
 from __future__ import annotations
 
-import time
-from collections import Counter
-
 import pytest
 
 from tests.conftest import corpus_files
@@ -17,10 +14,6 @@ from xodrcheck.check import check
 pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
 FILES = corpus_files()
-
-
-def test_corpus_is_complete(corpus_dir):
-    assert len(FILES) == 128
 
 
 @pytest.mark.parametrize("path", FILES, ids=lambda p: p.name)
@@ -32,19 +25,6 @@ def test_no_crash(corpus_dir, path):
     assert report.rules_run
     unplaced = [f for f in report.findings if f.road is not None and f.s is not None and (f.x is None or f.y is None)]
     assert unplaced == []
-
-
-def test_whole_corpus_time(corpus_dir):
-    started = time.perf_counter()
-    counts: Counter[str] = Counter()
-    for path in FILES:
-        counts.update(f.code for f in check(path).findings)
-    elapsed = time.perf_counter() - started
-    print(
-        f"\nxodrcheck check over {len(FILES)} corpus files: {elapsed:.1f} s; "
-        f"findings by code: {dict(sorted(counts.items()))}"
-    )
-    assert "X900" not in counts
 
 
 #: The non-geometric rules (schema, reference, road-link and lane topology, junction topology, redundant records).

@@ -7,15 +7,12 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from tests.conftest import corpus_files, corpus_root
+from tests.conftest import CORPUS_SIZE, corpus_files, corpus_root
 from xodrcheck.findings import Severity
 from xodrcheck.model import Arc, Line, ParamPoly3, Poly3, Spiral
 from xodrcheck.reader import read
 
 pytestmark = [pytest.mark.corpus, pytest.mark.slow]
-
-#: The corpus as shipped in shared/ (see its MANIFEST.tsv).
-CORPUS_SIZE = 128
 
 _KIND_TAGS = {Line: "line", Arc: "arc", Spiral: "spiral", Poly3: "poly3", ParamPoly3: "paramPoly3"}
 
