@@ -14,12 +14,13 @@ by local name (``{*}tag``). A boundary segment's ``sStart``/``sEnd``/``contactPo
 
 from __future__ import annotations
 
-import math
 import weakref
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from lxml import etree
+
+from xodrcheck.xmlvalues import integer, local, number, numbers
 
 if TYPE_CHECKING:  # pragma: no cover
     from xodrcheck.rules.context import Context
@@ -218,45 +219,6 @@ class JunctionParts:
 
 
 # ------------------------------------------------------------------------------------------------------- parsing
-def local(element: etree._Element) -> str:
-    """An element's tag without its namespace ('' for comments and processing instructions)."""
-    return etree.QName(element).localname if isinstance(element.tag, str) else ""
-
-
-def number(text: str | None) -> float | None:
-    """A finite float from an attribute, or ``None``."""
-    if text is None:
-        return None
-    try:
-        value = float(text)
-    except ValueError:
-        return None
-    return value if math.isfinite(value) else None
-
-
-def integer(text: str | None) -> int | None:
-    if text is None:
-        return None
-    try:
-        return int(text)
-    except ValueError:
-        return None
-
-
-def numbers(text: str | None) -> tuple[float, ...] | None:
-    """A whitespace-separated list of finite floats (``t_junction_grid_position_list``); ``()`` when absent,
-    ``None`` when an item does not parse."""
-    if text is None:
-        return ()
-    out = []
-    for item in text.split():
-        value = number(item)
-        if value is None:
-            return None
-        out.append(value)
-    return tuple(out)
-
-
 _ENDS = {"start": "start", "begin": "start", "end": "end"}
 
 

@@ -10,11 +10,12 @@ absent) so that a rule can tell a missing attribute from a wrong one. Nothing he
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterator
 from dataclasses import dataclass
 
 from lxml import etree
+
+from xodrcheck.xmlvalues import integer, local, number
 
 
 @dataclass(frozen=True, slots=True)
@@ -116,30 +117,19 @@ class Signals:
 
 
 # ------------------------------------------------------------------------------------------------------------ reading
-def _local(el: etree._Element) -> str:
-    return etree.QName(el).localname if isinstance(el.tag, str) else ""
-
-
 def _children(el: etree._Element, name: str) -> Iterator[etree._Element]:
     """Children named ``name`` whatever their namespace (``ctx.tree`` keeps a file's default namespace)."""
     for child in el:
-        if _local(child) == name:
+        if local(child) == name:
             yield child
 
 
 def _integer(el: etree._Element, name: str) -> int | None:
-    try:
-        return int(el.get(name))  # type: ignore[arg-type]
-    except (TypeError, ValueError):
-        return None
+    return integer(el.get(name))
 
 
 def _number(el: etree._Element, name: str) -> float | None:
-    try:
-        value = float(el.get(name))  # type: ignore[arg-type]
-    except (TypeError, ValueError):
-        return None
-    return value if math.isfinite(value) else None
+    return number(el.get(name))
 
 
 def _validities(el: etree._Element) -> tuple[Validity, ...]:
@@ -150,7 +140,7 @@ def _validities(el: etree._Element) -> tuple[Validity, ...]:
 
 def _semantics(el: etree._Element) -> list[tuple[int, tuple[str, ...]]]:
     return [
-        (sem.sourceline or 0, tuple(name for name in map(_local, sem) if name)) for sem in _children(el, "semantics")
+        (sem.sourceline or 0, tuple(name for name in map(local, sem) if name)) for sem in _children(el, "semantics")
     ]
 
 
@@ -193,7 +183,7 @@ def read_signals(root: etree._Element) -> Signals:
             continue
         for group in _children(road, "signals"):
             for el in group:
-                name = _local(el)
+                name = local(el)
                 if name == "signal":
                     signals.append(_signal(road_id, el))
                 elif name == "signalReference":

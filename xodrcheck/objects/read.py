@@ -9,7 +9,6 @@ from 1.9 on. Before 1.9 the standard gave ``outer`` no default: :attr:`Outline.o
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterator
 
 from lxml import etree
@@ -44,6 +43,7 @@ from xodrcheck.objects.model import (
     Surface,
     Vertex,
 )
+from xodrcheck.xmlvalues import integer, number
 
 _BOOLEANS = {"true": True, "1": True, "false": False, "0": False}
 _LAYERS = {layer.value: layer for layer in LaneLayer}
@@ -64,19 +64,11 @@ def _children(el: etree._Element, name: str) -> Iterator[etree._Element]:
 
 
 def _number(el: etree._Element, name: str) -> float | None:
-    raw = el.get(name)
-    try:
-        value = float(raw)  # type: ignore[arg-type]
-    except (TypeError, ValueError):
-        return None
-    return value if math.isfinite(value) else None
+    return number(el.get(name))
 
 
 def _integer(el: etree._Element, name: str) -> int | None:
-    try:
-        return int(el.get(name))  # type: ignore[arg-type]
-    except (TypeError, ValueError):
-        return None
+    return integer(el.get(name))
 
 
 def _boolean(el: etree._Element, name: str) -> bool | None:

@@ -10,7 +10,6 @@ by local name (``{*}tag``, :func:`local`): 1.1/1.2 files may put their elements 
 
 from __future__ import annotations
 
-import math
 import weakref
 from collections.abc import Iterator
 from dataclasses import dataclass
@@ -18,6 +17,7 @@ from dataclasses import dataclass
 from lxml import etree
 
 from xodrcheck.rules.context import Context
+from xodrcheck.xmlvalues import integer, local, number
 
 GROUPS = ("left", "center", "right")
 
@@ -70,31 +70,6 @@ class LaneXml:
 class LanesXml:
     sections: tuple[SectionXml, ...]
     lanes: tuple[LaneXml, ...]
-
-
-def local(element: etree._Element) -> str:
-    """An element's tag without its namespace."""
-    return etree.QName(element).localname
-
-
-def number(text: str | None) -> float | None:
-    """A finite float from an attribute, or ``None`` (the reader reports bad values)."""
-    if text is None:
-        return None
-    try:
-        value = float(text)
-    except ValueError:
-        return None
-    return value if math.isfinite(value) else None
-
-
-def integer(text: str | None) -> int | None:
-    if text is None:
-        return None
-    try:
-        return int(text)
-    except ValueError:
-        return None
 
 
 _INDEX: weakref.WeakKeyDictionary[Context, LanesXml] = weakref.WeakKeyDictionary()

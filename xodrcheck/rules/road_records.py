@@ -7,11 +7,11 @@ the tree.
 
 from __future__ import annotations
 
-import math
 import weakref
 from dataclasses import dataclass
 
 from xodrcheck.rules.context import Context
+from xodrcheck.xmlvalues import number
 
 
 @dataclass(frozen=True, slots=True)
@@ -48,17 +48,6 @@ class RoadRecords:
     line: int
     types: tuple[RoadType, ...]
     shapes: tuple[Shape, ...]
-
-
-def number(raw: str | None) -> float | None:
-    """A finite float, or ``None``."""
-    if raw is None:
-        return None
-    try:
-        value = float(raw)
-    except ValueError:
-        return None
-    return value if math.isfinite(value) else None
 
 
 _CACHE: weakref.WeakKeyDictionary[Context, tuple[RoadRecords, ...]] = weakref.WeakKeyDictionary()

@@ -13,12 +13,9 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.xmlvalues import local
 
 _POLYNOMIALS = ("width", "constant", "linear", "quadratic", "cubic")
-
-
-def _local(el: etree._Element) -> str:
-    return etree.QName(el).localname if isinstance(el.tag, str) else ""
 
 
 def _number(el: etree._Element, name: str) -> float | None:
@@ -34,7 +31,7 @@ def _crg_owners(ctx: Context) -> Iterator[tuple[str, str, list[etree._Element]]]
     if ctx.tree is None or (ctx.data is not None and b"CRG" not in ctx.data):
         return
     for owner in ctx.tree.getroot():
-        kind = _local(owner)
+        kind = local(owner)
         if kind not in ("road", "junction"):
             continue
         crgs = [crg for surface in owner.iterchildren("{*}surface") for crg in surface.iterchildren("{*}CRG")]
@@ -198,9 +195,9 @@ def cross_section_surface_with_shape(ctx: Context):
     """
     for road, surface in _surfaces(ctx):
         profile = surface.getparent()
-        others = [el for el in profile if _local(el) in ("shape", "superelevation")]
+        others = [el for el in profile if local(el) in ("shape", "superelevation")]
         if others:
-            names = sorted({_local(el) for el in others})
+            names = sorted({local(el) for el in others})
             yield cross_section_surface_with_shape.finding(
                 f"road {road.get('id')} has a <crossSectionSurface> and {len(others)} "
                 f"<{'>/<'.join(names)}> record(s) (first at line {others[0].sourceline}): the cross section surface "
@@ -241,7 +238,7 @@ def cross_section_surface_extent(ctx: Context):
         for strips in surface.iterchildren("{*}surfaceStrips"):
             for strip in strips.iterchildren("{*}strip"):
                 lists += [
-                    (el, f"<{_local(el)}> of strip {strip.get('id')}") for el in strip if _local(el) in _POLYNOMIALS
+                    (el, f"<{local(el)}> of strip {strip.get('id')}") for el in strip if local(el) in _POLYNOMIALS
                 ]
         for el, what in lists:
             records = [(c, s) for c in el.iterchildren("{*}coefficients") if (s := _number(c, "s")) is not None]
@@ -292,7 +289,7 @@ def cross_section_surface_strips(ctx: Context):
         strips = [s for group in surface.iterchildren("{*}surfaceStrips") for s in group.iterchildren("{*}strip")]
         for sign, side in ((1, "left"), (-1, "right")):
             mine = [s for s in strips if (_int(s.get("id")) or 0) * sign > 0]
-            has_width = {id(s): any(_local(el) == "width" for el in s) for s in mine}
+            has_width = {id(s): any(local(el) == "width" for el in s) for s in mine}
             if len(mine) == 1:
                 (strip,) = mine
                 wrong = [f"id {strip.get('id')} instead of {sign}"] if _int(strip.get("id")) != sign else []
