@@ -47,7 +47,7 @@ class Tolerances:
         "m",
         "A gap or step over this between positions that should coincide is an error: ASAM's checker uses 1 cm "
         "(lane.smoothness.contact_point_no_horizontal_gaps).",
-        rules="G001 G014 K101 K103 K104 L101",
+        rules="G001 G014 K101 K103 K104 L101 J031",
     )
     heading: float = _tolerance(
         1e-3,

@@ -25,7 +25,8 @@ prefix    category    codes
                       (:mod:`.junction_roles`), direct junctions, cross paths and boundary roads
                       (:mod:`.junction_members`), boundary, reference line, grid, crossing sections and overlap
                       zones in plan view (:mod:`.junction_area`), virtual junctions' joints (:mod:`.junction_virtual`),
-                      cross paths' placement (:mod:`.junction_paths`); ``J1xx`` junction geometry
+                      cross paths' placement (:mod:`.junction_paths`), crossing traffic in direct junctions
+                      (:mod:`.junction_direct`); ``J1xx`` junction geometry
                       (:mod:`.junction_geometry`)
 ``O``     overlap     ``O0xx`` (:mod:`.overlap`)
 ``H``     header      ``H0xx`` header, default regulations, whole-file recommendations (:mod:`.header`)
@@ -85,6 +86,7 @@ FAMILIES = (
     "junction_area",
     "junction_virtual",
     "junction_paths",
+    "junction_direct",
     "junction_geometry",
     "overlap",
     "header",

@@ -71,11 +71,6 @@ NOT_ENFORCED: dict[str, str] = {
         "overlapping lanes' surfaces do not meet, link-step (K104) and lane-border-gap (K103) report it at the "
         "junction's joints (junctions.direct.linked_lane_smoothness)"
     ),
-    "asam.net:xodr:1.8.0:junctions.direct.split_or_merge": (
-        "not enforced yet: whether traffic crosses inside a direct junction needs the paths through it, which 12.6 "
-        "does not model (its linked roads overlap by design, 12.6.2); its shape, one road on one side and several "
-        "on the other, is direct-junction-shape's (J020, junctions.direct.road_connectivity)"
-    ),
     "asam.net:xodr:1.8.0:junctions.elevation_grid.entry_exit_smoothness": (
         "not enforced yet: comparing the grid's height with the roads' at the junction's entries and exits needs "
         "the grid's interpolation (12.11.1: polynomials through the grid points, with the transition zone of the "
