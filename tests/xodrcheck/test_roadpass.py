@@ -111,6 +111,37 @@ def test_checker_grid_lines_in_one_pass(corpus_dir: Path):
             assert all(_same(getattr(got.borders[lane_id], n), getattr(p, n)) for n in ("x", "y", "z", "hdg"))
 
 
+@pytest.mark.corpus
+def test_checker_grid_lines_in_batches_are_the_one_pass_numbers(corpus_dir: Path, monkeypatch: pytest.MonkeyPatch):
+    """Bounded memory: the sections are evaluated in batches of samples; any batch size gives the same numbers."""
+    path = corpus_dir / "carla-towns/OpenDrive/Town07.xodr"
+    document = read(path).document
+
+    def lines(batch: int) -> dict:
+        monkeypatch.setattr(sampled, "_BATCH_SAMPLES", batch)
+        return sampled._all_sections(Context(document, Config(), path=str(path), data=None))
+
+    whole, batched = lines(1 << 40), lines(1000)
+    assert len(sampled._batches([len(v.s) for v in whole.values()], 1000)) > 5
+    assert whole.keys() == batched.keys() and len(whole) > 700
+    for key, one in whole.items():
+        other = batched[key]
+        assert np.array_equal(one.s, other.s) and one.t.keys() == other.t.keys()
+        for lane_id, p in one.borders.items():
+            q = other.borders[lane_id]
+            assert np.array_equal(one.t[lane_id], other.t[lane_id])
+            assert all(np.array_equal(getattr(p, n), getattr(q, n)) for n in ("x", "y", "z", "hdg", "curvature"))
+
+
+def test_batches_cover_every_count_once_within_the_limit():
+    counts = [5, 3, 9, 1, 1, 12, 2]
+    ranges = sampled._batches(counts, 8)
+    assert [i for lo, hi in ranges for i in range(lo, hi)] == list(range(len(counts)))
+    assert all(sum(counts[lo:hi]) <= 8 or hi - lo == 1 for lo, hi in ranges)
+    assert ranges == [(0, 2), (2, 3), (3, 5), (5, 6), (6, 7)]
+    assert sampled._batches([], 8) == []
+
+
 def test_superelevation_and_duplicate_lane_ids_are_left_to_the_per_section_code(corpus_dir: Path):
     from tests.xodrcheck.rules.helpers import fixture
 

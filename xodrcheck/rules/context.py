@@ -287,6 +287,18 @@ class Context:
         return {k: tuple(v) for k, v in out.items()}
 
     @cached_property
+    def junction_link_ends(self) -> dict[str, tuple[tuple[Road, ContactPoint], ...]]:
+        """Junction id -> (road, end) of every road end whose predecessor or successor names that junction, in
+        document order (one pass over the roads instead of one per junction)."""
+        out: dict[str, list[tuple[Road, ContactPoint]]] = {}
+        for road in self.document.roads:
+            for end in (ContactPoint.START, ContactPoint.END):
+                link = link_at(road, end)
+                if link is not None and link.element_type is ElementType.JUNCTION and link.element_id is not None:
+                    out.setdefault(link.element_id, []).append((road, end))
+        return {k: tuple(v) for k, v in out.items()}
+
+    @cached_property
     def connections_by_incoming(self) -> dict[tuple[str, str], tuple[Connection, ...]]:
         """(junction id, incoming road id) -> the junction's connections from that road."""
         out: dict[tuple[str, str], list[Connection]] = {}

@@ -71,13 +71,9 @@ def legs(ctx: Context, junction: Junction) -> dict[str, ContactPoint | None]:
     """Roads outside the junction that touch it, with the end that does (``None``: unknown): roads whose predecessor
     or successor names it, and the incoming (and, in a direct junction, linked) roads of its connections."""
     out: dict[str, ContactPoint | None] = {}
-    for road in ctx.document.roads:
-        if road.junction == junction.id:
-            continue
-        for end in (ContactPoint.START, ContactPoint.END):
-            link = link_at(road, end)
-            if link is not None and link.element_type is ElementType.JUNCTION and link.element_id == junction.id:
-                out.setdefault(road.id, end)
+    for road, end in ctx.junction_link_ends.get(junction.id, ()):
+        if road.junction != junction.id:
+            out.setdefault(road.id, end)
     for c in junction.connections:
         for road_id in (c.incoming_road, c.linked_road if junction.type is JunctionType.DIRECT else None):
             found = ctx.road(road_id)
@@ -418,17 +414,11 @@ def reachable(ctx: Context, junction: Junction) -> dict[RoadEnd, set[RoadEnd]]:
 
 def _both_ends(ctx: Context, junction: Junction) -> set[str]:
     """Roads outside the junction that meet it with both ends (each end is a leg of its own)."""
-    return {
-        road.id
-        for road in ctx.document.roads
-        if road.junction != junction.id
-        and all(
-            (link := link_at(road, end)) is not None
-            and link.element_type is ElementType.JUNCTION
-            and link.element_id == junction.id
-            for end in (ContactPoint.START, ContactPoint.END)
-        )
-    }
+    ends: dict[str, int] = {}
+    for road, _ in ctx.junction_link_ends.get(junction.id, ()):
+        if road.junction != junction.id:
+            ends[road.id] = ends.get(road.id, 0) + 1
+    return {road_id for road_id, count in ends.items() if count == 2}
 
 
 @rule(

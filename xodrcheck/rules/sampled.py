@@ -113,17 +113,44 @@ def _all_sections(ctx: Context) -> dict[tuple[str, int], SectionLines]:
                     entries.append((geometry, index))
                     keys.append((road.id, index))
                     grids.append(s)
+    out: dict[tuple[str, int], SectionLines] = {}
+    for lo, hi in _batches([len(s) for s in grids], _BATCH_SAMPLES):
+        _evaluate_batch(entries[lo:hi], keys[lo:hi], grids[lo:hi], out)
+    return out
+
+
+#: Samples evaluated together by :func:`_all_sections` (the temporaries of one pass scale with it: a 10 km map's
+#: sections at once took about 1 GB more than the results; batches keep that to tens of MB at the same speed).
+_BATCH_SAMPLES = 1 << 17
+
+
+def _batches(counts: list[int], limit: int) -> list[tuple[int, int]]:
+    """Consecutive ranges ``[lo, hi)`` of ``counts`` whose sums stay within ``limit`` (a range holds at least one)."""
+    out, lo, total = [], 0, 0
+    for i, n in enumerate(counts):
+        if i > lo and total + n > limit:
+            out.append((lo, i))
+            lo, total = i, 0
+        total += n
+    if lo < len(counts):
+        out.append((lo, len(counts)))
+    return out
+
+
+def _evaluate_batch(entries, keys, grids, out: dict[tuple[str, int], SectionLines]) -> None:
+    """Evaluate one batch of sections together into ``out`` (a batch roadpass cannot cover exactly is left out:
+    those sections are evaluated one at a time when asked for)."""
+    from xodrcheck import roadpass
+
     points = roadpass.section_points(entries, grids)
     if points is None:
-        return {}
-    out = {}
+        return
     for key, s, p in zip(keys, grids, points):
         borders = {
             lane_id: LanePoints(p.x[k], p.y[k], p.z[k], p.hdg[k], p.curvature[k], p.speed[k])
             for k, lane_id in enumerate(p.ids)
         }
         out[key] = SectionLines(s, dict(zip(p.ids, p.t)), p.reference_curvature, borders)
-    return out
 
 
 def left_of(s: float) -> float:

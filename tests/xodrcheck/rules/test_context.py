@@ -128,3 +128,15 @@ def test_locate_fills_coordinates_only_where_a_finding_names_a_place_without_the
     placed = dataclasses.replace(base, x=1.0, y=2.0)
     assert ctx.locate(placed) is placed
     assert ctx.locate(dataclasses.replace(base, s=None)).x is None
+
+
+def test_junction_link_ends_index_every_road_end_naming_a_junction():
+    ctx = context(JUNCTION)
+    expected: dict[str, list[tuple[str, ContactPoint]]] = {}
+    for road in ctx.document.roads:
+        for end in (ContactPoint.START, ContactPoint.END):
+            link = link_at(road, end)
+            if link is not None and link.element_type.value == "junction":
+                expected.setdefault(link.element_id, []).append((road.id, end))
+    got = {j: [(road.id, end) for road, end in ends] for j, ends in ctx.junction_link_ends.items()}
+    assert got == expected and sum(map(len, got.values())) >= 3
