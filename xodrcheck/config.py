@@ -153,6 +153,15 @@ class Tolerances:
         "(header.offset.centered_coords): 32-bit floats resolve 1 mm up to about 8 km, 2 mm up to 16 km.",
         rules="H001",
     )
+    rail_vehicle_min_width: float = _tolerance(
+        2.2,
+        "m",
+        "Narrowest rail-bound vehicle a rail or tram lane must hold (road.railroad.rail_lane_width_validity): the file "
+        "names no vehicle, so this is assumed. 2.2 m is the width of the Tatra KT4 tram (standard and metre gauge), "
+        "among the narrowest rail-bound vehicles in service (2,200 mm, built for 1,435 and 1,000 mm gauge); most trams "
+        "are 2.3-2.65 m wide, main-line coaches about 2.8-3.2 m. Raise it to the vehicles your map is for.",
+        rules="W005",
+    )
     time_budget: float = _tolerance(
         0.0,
         "s",

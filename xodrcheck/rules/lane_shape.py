@@ -90,7 +90,7 @@ def _section_pieces(ctx: Context, road: Road, index: int):
     return lanes, a, b, raw, coefficients
 
 
-def _lane_minima(ctx: Context, road: Road, index: int):
+def lane_minima(ctx: Context, road: Road, index: int):
     """(lane, minimum signed width, s where reached) for every lane with records in a section, from the exact
     per-piece cubics."""
     pieces = _lane_pieces(ctx, road, index)
@@ -144,7 +144,7 @@ def _width_findings(ctx: Context, by_widths: bool):
             if geometry is None:
                 continue
             for index, section in enumerate(road.lane_sections):
-                for lane, minimum, s in _lane_minima(ctx, road, index):
+                for lane, minimum, s in lane_minima(ctx, road, index):
                     if minimum < -tol:
                         found.append((road, geometry, index, section, lane, minimum, s))
         _MINIMA[ctx] = found

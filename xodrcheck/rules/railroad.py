@@ -7,8 +7,8 @@ from collections.abc import Iterator
 import numpy as np
 from lxml import etree
 
-from xodrcheck.findings import Category, Severity
-from xodrcheck.model import LaneType
+from xodrcheck.findings import Category, Finding, Severity
+from xodrcheck.model import Lane, LaneSection, LaneType, Road
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context, placed_lane_ids
 from xodrcheck.rules.registry import rule
@@ -57,11 +57,11 @@ def rail_reference_line_off_centre(ctx: Context):
 
     Passes::
 
-        <laneOffset s="0" a="0.75" .../> ... <right><lane id="-1" type="rail"><width a="1.5" .../>
+        <laneOffset s="0" a="1.25" .../> ... <right><lane id="-1" type="rail"><width a="2.5" .../>
 
     Fails::
 
-        <right><lane id="-1" type="rail"><width a="1.5" .../>   <!-- centre at t = -0.75 -->
+        <right><lane id="-1" type="rail"><width a="2.5" .../>   <!-- centre at t = -1.25 -->
     """
     tol = ctx.tolerances.gap
     for road in ctx.document.roads:
@@ -213,3 +213,65 @@ def switch_topology(ctx: Context):
                 road=road_id,
                 line=partner.sourceline,
             )
+
+
+@rule("W005", "rail-lane-too-narrow", Category.RAILROAD, Severity.ERROR, uids=(U.RAIL_LANE_WIDTH,))
+def rail_lane_too_narrow(ctx: Context) -> Iterator[Finding]:
+    """A ``rail`` or ``tram`` lane is narrower than the rail-bound vehicles using it somewhere along its section.
+
+    The width of the lane shall be at least the width of the rail-bound vehicles (Annex F
+    ``road.railroad.rail_lane_width_validity``, 15.2): the lane is the space the vehicle takes, not the track gauge.
+    OpenDRIVE names no vehicle, so the width is compared with an assumed one, the tolerance
+    ``rail_vehicle_min_width`` (2.2 m: the Tatra KT4 articulated tram, 2,200 mm wide per its maker's data, built for
+    1,435 mm and 1,000 mm gauge and still in service, is among the narrowest rail-bound vehicles; most trams are
+    2.3-2.65 m wide; raise it to the vehicles a map is for). The lane's smallest width over each lane
+    section is exact: the minimum of its width cubics between knots (the one evaluation the lane-shape rules share,
+    ``<width>`` or ``<border>`` records alike). A lane without width or border records is lane-width-undefined's (L022).
+
+    Passes::
+
+        <right><lane id="-1" type="tram"><width sOffset="0" a="2.65" b="0" c="0" d="0"/></lane></right>
+
+    Fails (1.435 m: the gauge, not the vehicle)::
+
+        <right><lane id="-1" type="tram"><width sOffset="0" a="1.435" b="0" c="0" d="0"/></lane></right>
+    """
+    limit = ctx.tolerances.rail_vehicle_min_width
+    for road, section, lane, minimum, s, everywhere in _narrow_rail_lanes(ctx, limit):
+        where = (
+            f"at most {minimum:.4g} m wide along the whole section"
+            if everywhere
+            else f"{minimum:.4g} m wide at s={s:.6g}"
+        )
+        yield rail_lane_too_narrow.finding(
+            f"road {road.id}: {lane.type.value} lane {lane.id} of the lane section at s={section.s:g} is {where}: "
+            f"narrower than {limit:g} m, the narrowest rail-bound vehicle assumed (tolerance rail_vehicle_min_width); "
+            "widen the lane to the vehicles' width (the lane is the space the vehicle takes, not the gauge), or set "
+            "the tolerance to the vehicles of this map",
+            road=road.id,
+            lane=lane.id,
+            section_s=section.s,
+            s=section.s if everywhere else s,
+            line=lane.line or section.line or None,
+        )
+
+
+def _narrow_rail_lanes(ctx: Context, limit: float) -> Iterator[tuple[Road, LaneSection, Lane, float, float, bool]]:
+    """(road, section, lane, smallest width, s where reached, whether the lane is narrower along its whole section)
+    for every rail or tram lane narrower than ``limit`` somewhere; widths from the exact per-piece cubics."""
+    from xodrcheck.rules.lane_shape import lane_minima, lane_width_bounds
+    from xodrcheck.rules.sampled import usable
+
+    for road in ctx.document.roads:
+        if not any(lane.type in _RAIL for section in road.lane_sections for lane in section.lanes):
+            continue
+        if usable(ctx, road) is None:
+            continue
+        for index, section in enumerate(road.lane_sections):
+            if not any(lane.type in _RAIL for lane in section.lanes):
+                continue
+            bounds = lane_width_bounds(ctx, road, index)
+            widest = {} if bounds is None else {lane.id: float(np.max(row)) for lane, row in zip(bounds[0], bounds[4])}
+            for lane, minimum, s in lane_minima(ctx, road, index):
+                if lane.type in _RAIL and minimum < limit - 1e-6:
+                    yield road, section, lane, minimum, s, widest.get(lane.id, limit) < limit - 1e-6

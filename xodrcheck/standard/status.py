@@ -102,11 +102,6 @@ NOT_ENFORCED.update(
         "asam.net:xodr:1.7.0:road.signal.dependency.multiple_dependency": (
             "a permission: a signal may have any number of <dependency> elements, so no file can break it"
         ),
-        # road.railroad (15)
-        "asam.net:xodr:1.7.0:road.railroad.rail_lane_width_validity": (
-            "compares a rail or tram lane's width with the width of the rail-bound vehicles using it, which the file "
-            "does not give (no vehicle or gauge is written in OpenDRIVE)"
-        ),
         # road.crg (10.6), road.cross_section_surface (10.5.4)
         "asam.net:xodr:1.7.0:road.crg.use_last_entry": (
             "says which of overlapping CRG entries applications use (the last one); a file cannot break that, and "

@@ -10,9 +10,9 @@ def test_section_shorter_than_the_overlap():
     path = fixture(RULE, "fail.xodr")
     (f,) = findings(path, RULE)
     assert (f.rule_uid, f.road, f.line) == (U.CROSSING_COVERAGE, "2", line_of(path, 'roadId="2" sStart="98"'))
-    # road 2's 1.5 m lane over y=2..3.5 and y=-3.5..-2 lies on road 1 but outside the section
-    assert "4.50 m²" in f.message
-    assert 100.0 <= f.x <= 101.5 and 2.0 <= abs(f.y) <= 3.5
+    # road 2's 2.5 m lane over y=2..3.5 and y=-3.5..-2 lies on road 1 but outside the section
+    assert "7.50 m²" in f.message
+    assert 98.75 <= f.x <= 101.25 and 2.0 <= abs(f.y) <= 3.5
 
 
 def test_road_1s_section_covers_its_part():

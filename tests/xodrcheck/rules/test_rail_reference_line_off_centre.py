@@ -9,4 +9,4 @@ def test_rail_lane_beside_the_reference_line():
     path = fixture(RULE, "fail.xodr")
     (f,) = findings(path, RULE)
     assert f.road == "1" and f.lane == -1 and f.line == line_of(path, 'type="rail"')
-    assert "is at t=-0.750 m" in f.message
+    assert "is at t=-1.250 m" in f.message
