@@ -47,7 +47,7 @@ class Tolerances:
         "m",
         "A gap or step over this between positions that should coincide is an error: ASAM's checker uses 1 cm "
         "(lane.smoothness.contact_point_no_horizontal_gaps).",
-        rules="G001 G014 K101 K103 K104 L101 J031",
+        rules="G001 G014 K101 K103 K104 L101 J031 J032",
     )
     heading: float = _tolerance(
         1e-3,
@@ -62,6 +62,15 @@ class Tolerances:
         "A heading change over this at a joint is an error: 0.01 rad (0.57 deg) takes the path off the other road's "
         "course by the 1 cm `gap` within one metre.",
         rules="G002 G014 K102",
+    )
+    grade_kink: float = _tolerance(
+        0.01,
+        "rad",
+        "Where a road enters a junction's elevation grid without a transition zone, the surface's pitch (atan of its "
+        "grade along the road) may change this much between the road and the grid; more is not a smooth entry "
+        "(junctions.elevation_grid.entry_exit_smoothness): 0.01 rad (about 1 % of grade), as `kink` in plan view, "
+        "takes the surface 1 cm off within one metre.",
+        rules="J032",
     )
     length_rel: float = _tolerance(
         1e-3,

@@ -24,7 +24,8 @@ prefix    category    codes
                       (:mod:`.junction_usage`), priorities, virtual junctions and when a junction is needed
                       (:mod:`.junction_roles`), direct junctions, cross paths and boundary roads
                       (:mod:`.junction_members`), boundary, reference line, grid, crossing sections and overlap
-                      zones in plan view (:mod:`.junction_area`), virtual junctions' joints (:mod:`.junction_virtual`),
+                      zones in plan view (:mod:`.junction_area`), entries and exits of an elevation grid
+                      (:mod:`.junction_entries`), virtual junctions' joints (:mod:`.junction_virtual`),
                       cross paths' placement (:mod:`.junction_paths`), crossing traffic in direct junctions
                       (:mod:`.junction_direct`); ``J1xx`` junction geometry
                       (:mod:`.junction_geometry`)
@@ -84,6 +85,7 @@ FAMILIES = (
     "junction_roles",
     "junction_members",
     "junction_area",
+    "junction_entries",
     "junction_virtual",
     "junction_paths",
     "junction_direct",

@@ -29,6 +29,7 @@ from xodrcheck.junction_elements import (
     RoadPlace,
     Segment,
 )
+from xodrcheck.lanes import RoadGeometry
 from xodrcheck.model import Road
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.sampled import left_of, section_lines, usable
@@ -105,6 +106,21 @@ def _outer(ctx: Context, road: Road, s: float, lane: int) -> np.ndarray | None:
     return np.array([p.x[0], p.y[0]])
 
 
+def joint_lanes(geometry: RoadGeometry, index: int, seg: JointSegment) -> tuple[int, int]:
+    """The lanes whose outer borders a joint runs between, in lane section ``index`` of its road: ``jointLaneStart``
+    and ``jointLaneEnd``, a missing one the outermost lane (of the other side than the given one; both missing: from
+    the outermost left lane to the outermost right one)."""
+    left, right = geometry.side_lanes(index)
+    outermost_left = left.lanes[-1].id if left.lanes else 0
+    outermost_right = right.lanes[-1].id if right.lanes else 0
+    first, last = seg.lane_start, seg.lane_end
+    if first is None:
+        first = outermost_left if (last is None or last <= 0) else outermost_right
+    if last is None:
+        last = outermost_right if first >= 0 else outermost_left
+    return first, last
+
+
 def _joint_piece(ctx: Context, seg: JointSegment) -> tuple[np.ndarray, bool] | None:
     road = ctx.road(seg.road)
     if road is None or usable(ctx, road) is None:
@@ -117,16 +133,8 @@ def _joint_piece(ctx: Context, seg: JointSegment) -> tuple[np.ndarray, bool] | N
     index = int(geometry.section_index(s)[0])
     if index < 0:
         return None
-    left, right = geometry.side_lanes(index)
-    outermost_left = left.lanes[-1].id if left.lanes else 0
-    outermost_right = right.lanes[-1].id if right.lanes else 0
-    first = seg.lane_start if seg.lane_start is not None else None
-    last = seg.lane_end if seg.lane_end is not None else None
-    free = first is None and last is None
-    if first is None:
-        first = outermost_left if (last is None or last <= 0) else outermost_right
-    if last is None:
-        last = outermost_right if first >= 0 else outermost_left
+    first, last = joint_lanes(geometry, index, seg)
+    free = seg.lane_start is None and seg.lane_end is None
     a, b = _outer(ctx, road, s, first), _outer(ctx, road, s, last)
     if a is None or b is None:
         return None

@@ -71,11 +71,6 @@ NOT_ENFORCED: dict[str, str] = {
         "overlapping lanes' surfaces do not meet, link-step (K104) and lane-border-gap (K103) report it at the "
         "junction's joints (junctions.direct.linked_lane_smoothness)"
     ),
-    "asam.net:xodr:1.8.0:junctions.elevation_grid.entry_exit_smoothness": (
-        "not enforced yet: comparing the grid's height with the roads' at the junction's entries and exits needs "
-        "the grid's interpolation (12.11.1: polynomials through the grid points, with the transition zone of the "
-        "boundary's joints), which xodrcheck does not evaluate; no corpus map has an elevation grid"
-    ),
     "asam.net:xodr:1.8.0:junctions.elevation_grid.polynome_coefficient_values": (
         "says how an application interpolates an elevation grid (12.11.1: c and d of the edge polynomials are 0 "
         "where too few grid points support them); the file holds only the grid's z-values, no coefficients, so no "
