@@ -165,6 +165,14 @@ class Context:
             self._geometry = geometry_of(self.document)
         return self._geometry.get(road_id)
 
+    def road_geometry(self, road: Road) -> RoadGeometry:
+        """The evaluated geometry of a road of the document (every road's id has one; with a duplicated id, that of
+        the first road of the id, as :meth:`geometry` gives)."""
+        geometry = self.geometry(road.id)
+        if geometry is None:
+            raise KeyError(f"road {road.id!r} is not a road of the document")
+        return geometry
+
     def lane_width(self, road: Road, section_index: int, lane_id: int, s: float) -> float | None:
         """Width of a lane at absolute ``s`` of its section (``None`` when the lane gives neither width nor border).
 

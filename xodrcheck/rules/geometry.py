@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from typing import Any
 
 import numpy as np
 
@@ -237,7 +238,7 @@ def degenerate_geometry(ctx: Context):
         for g in road.plan_view:
             if not math.isfinite(g.length) or g.length >= tol:
                 continue
-            where = {"road": road.id, "s": g.s, "x": g.x, "y": g.y, "line": g.line or road.line or None}
+            where: dict[str, Any] = {"road": road.id, "s": g.s, "x": g.x, "y": g.y, "line": g.line or road.line or None}
             if g.length <= 0:
                 yield degenerate_geometry.finding(
                     f"road {road.id}: the {_kind(g)} at s={g.s:g} has length {g.length:g}; remove it or give it a "

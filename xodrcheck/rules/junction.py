@@ -58,15 +58,15 @@ def resolved_connections(ctx: Context) -> Iterator[Resolved]:
             end = ctx.incoming_contact(junction, c)
             if end is None or not incoming.lane_sections or not target.lane_sections:
                 continue
-            if not _contact_agrees(junction, c, target):
+            if not _contact_agrees(junction, c, target, c.contact_point):
                 continue  # reported by connection-contact-point; its lanes cannot be told apart
             yield Resolved(junction, c, incoming, end, target, c.contact_point)
 
 
-def _contact_agrees(junction: Junction, c: Connection, target: Road) -> bool:
+def _contact_agrees(junction: Junction, c: Connection, target: Road, contact: ContactPoint) -> bool:
     """Whether the target road's link at the connection's contact point names the incoming road (default junction)
     or the junction (direct junction)."""
-    link = link_at(target, c.contact_point)
+    link = link_at(target, contact)
     if link is None:
         return False
     if junction.type is JunctionType.DIRECT:
@@ -344,12 +344,14 @@ def incoming_lane_unconnected(ctx: Context):
             link = link_at(road, end)
             if link is None or link.element_type is not ElementType.JUNCTION:
                 continue
-            junction = ctx.junction(link.element_id)
-            if junction is None or junction.type is JunctionType.VIRTUAL or (junction.id, road.id) in implicit:
+            into = ctx.junction(link.element_id)
+            if into is None or into.type is JunctionType.VIRTUAL or (into.id, road.id) in implicit:
                 continue
             index = ctx.section_index_at(road, end)
+            if index is None:  # the road has lane sections (checked above)
+                continue
             section = road.lane_sections[index]
-            have = linked.get((junction.id, road.id), set())
+            have = linked.get((into.id, road.id), set())
             for lane in section.lanes:
                 if lane.id == 0 or not lane.drivable or lane.type is LaneType.BIDIRECTIONAL or lane.id in have:
                     continue
@@ -358,7 +360,7 @@ def incoming_lane_unconnected(ctx: Context):
                 if ctx.zero_width_at(road, index, lane.id, end) is not False:
                     continue
                 yield incoming_lane_unconnected.finding(
-                    f"road {road.id} lane {lane.id} ({lane.type.value}) runs into junction {junction.id} at the "
+                    f"road {road.id} lane {lane.id} ({lane.type.value}) runs into junction {into.id} at the "
                     f"road's {end.value}, but no laneLink of the junction starts at it",
                     road=road.id,
                     lane=lane.id,

@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.model import Connection, ContactPoint, Junction, JunctionType, Road
+from xodrcheck.model import Connection, ContactPoint, JunctionType, Road
 from xodrcheck.rules.context import Context, placed_lane_ids, travel_direction
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import end_s, road_end, section_samples, usable
@@ -31,12 +31,21 @@ if TYPE_CHECKING:
 
 
 @dataclass(frozen=True)
+class _Connected:
+    """A connection whose connecting road exists and can be evaluated, with that road and its contact point."""
+
+    connection: Connection
+    road: Road
+    contact: ContactPoint
+
+
+@dataclass(frozen=True)
 class _Path:
     connection: Connection
     from_lane: int
     road: Road
     lane: int
-    line: int
+    line: int | None
     xy: np.ndarray  # (n, 2) from the contact point on
 
 
@@ -48,7 +57,7 @@ def _enters(incoming: Road, end: ContactPoint, lane_id: int) -> bool:
 
 def _centre_path(ctx: Context, road: Road, lane_id: int, contact: ContactPoint) -> np.ndarray | None:
     """The lane's centre from ``contact`` through the road, following its lane links across sections."""
-    geometry = ctx.geometry(road.id)
+    geometry = ctx.road_geometry(road)
     sections = road.lane_sections
     order = range(len(sections)) if contact is ContactPoint.START else range(len(sections) - 1, -1, -1)
     pieces = []
@@ -80,26 +89,25 @@ def _groups(ctx: Context):
             if incoming is None or usable(ctx, incoming) is None:
                 continue
             connections = ctx.connections_by_incoming.get((junction.id, incoming_id), ())
-            ends: dict[ContactPoint, list[Connection]] = {}
+            ends: dict[ContactPoint, list[_Connected]] = {}
             for c in connections:
                 end = ctx.incoming_contact(junction, c)
                 connecting = ctx.road(c.connecting_road)
                 if end is None or connecting is None or c.contact_point is None or usable(ctx, connecting) is None:
                     continue
-                ends.setdefault(end, []).append(c)
+                ends.setdefault(end, []).append(_Connected(c, connecting, c.contact_point))
             for end, group in ends.items():
                 yield junction, incoming, end, group
 
 
-def _paths(ctx: Context, incoming: Road, end: ContactPoint, connections: list[Connection]) -> list[_Path]:
+def _paths(ctx: Context, incoming: Road, end: ContactPoint, connections: list[_Connected]) -> list[_Path]:
     out: list[_Path] = []
     seen: set[tuple[str, int]] = set()
-    for c in connections:
-        connecting = ctx.road(c.connecting_road)
+    for c, connecting, contact in ((k.connection, k.road, k.contact) for k in connections):
         for link in c.lane_links:
             if not _enters(incoming, end, link.from_lane) or (connecting.id, link.to_lane) in seen:
                 continue
-            xy = _centre_path(ctx, connecting, link.to_lane, c.contact_point)
+            xy = _centre_path(ctx, connecting, link.to_lane, contact)
             if xy is None:
                 continue
             seen.add((connecting.id, link.to_lane))
@@ -125,9 +133,10 @@ def _crossing(p: _Path, q: _Path, tol: float) -> np.ndarray | None:
     a, b = p.xy, q.xy
     if p.from_lane == q.from_lane:
         line_a, line_b = shapely.LineString(a), shapely.LineString(b)
-        a, b = _parted(a, line_b, tol), _parted(b, line_a, tol)
-        if a is None or b is None:
+        part_a, part_b = _parted(a, line_b, tol), _parted(b, line_a, tol)
+        if part_a is None or part_b is None:
             return None
+        a, b = part_a, part_b
     meet = shapely.intersection(shapely.LineString(a), shapely.LineString(b))
     if meet.is_empty:
         return None
@@ -178,22 +187,23 @@ def connection_lanes_cross(ctx: Context):
                 )
 
 
-def _order_pairs(ctx: Context, junction: Junction, incoming: Road, end: ContactPoint, c: Connection):
+def _order_pairs(ctx: Context, incoming: Road, end: ContactPoint, connected: _Connected):
     """(from lane, to lane, lateral position of each at the contact, line) for a connection's laneLinks."""
+    c = connected.connection
     mine = road_end(ctx, incoming, end)
-    theirs = road_end(ctx, ctx.road(c.connecting_road), c.contact_point)
+    theirs = road_end(ctx, connected.road, connected.contact)
     axis = mine.border(0, "outer")
     if axis is None:
         return []
     normal = np.array([-np.sin(axis.outward), np.cos(axis.outward)])
     out = []
     for link in c.lane_links:
-        a = [mine.border(link.from_lane, w) for w in ("inner", "outer")]
-        b = [theirs.border(link.to_lane, w) for w in ("inner", "outer")]
-        if any(p is None for p in (*a, *b)):
+        a0, a1 = (mine.border(link.from_lane, w) for w in ("inner", "outer"))
+        b0, b1 = (theirs.border(link.to_lane, w) for w in ("inner", "outer"))
+        if a0 is None or a1 is None or b0 is None or b1 is None:
             continue
-        along_a = float(normal @ [(a[0].x + a[1].x) / 2, (a[0].y + a[1].y) / 2])
-        along_b = float(normal @ [(b[0].x + b[1].x) / 2, (b[0].y + b[1].y) / 2])
+        along_a = float(normal @ np.array([(a0.x + a1.x) / 2, (a0.y + a1.y) / 2]))
+        along_b = float(normal @ np.array([(b0.x + b1.x) / 2, (b0.y + b1.y) / 2]))
         out.append((link.from_lane, link.to_lane, along_a, along_b, link.line or c.line))
     return out
 
@@ -217,8 +227,9 @@ def junction_lane_links_crossed(ctx: Context):
     """
     tol = ctx.tolerances.position
     for junction, incoming, end, group in _groups(ctx):
-        for c in group:
-            pairs = _order_pairs(ctx, junction, incoming, end, c)
+        for connected in group:
+            c = connected.connection
+            pairs = _order_pairs(ctx, incoming, end, connected)
             for i, (fa, ta, xa, ya, _) in enumerate(pairs):
                 for fb, tb, xb, yb, line in pairs[i + 1 :]:
                     if fa == fb or ta == tb or (xa - xb) * (ya - yb) >= 0 or min(abs(xa - xb), abs(ya - yb)) <= tol:

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from dataclasses import dataclass
+from typing import Any
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, LaneType, Road
@@ -80,11 +81,10 @@ def joints(ctx: Context) -> Iterator[Joint]:
                 continue
             back = link_at(target, link.contact_point)
             mutual = back is not None and back.element_type is ElementType.ROAD and back.element_id == road.id
-            yield Joint(
-                Side(road, ctx.section_index_at(road, end), end),
-                Side(target, ctx.section_index_at(target, link.contact_point), link.contact_point),
-                mutual,
-            )
+            index, target_index = ctx.section_index_at(road, end), ctx.section_index_at(target, link.contact_point)
+            if index is None or target_index is None:  # both roads have lane sections (checked above)
+                continue
+            yield Joint(Side(road, index, end), Side(target, target_index, link.contact_point), mutual)
 
 
 def side_lanes(section: LaneSection) -> tuple[Lane, ...]:
@@ -127,7 +127,7 @@ def centre_lane_invalid(ctx: Context):
     for road in ctx.document.roads:
         for section in road.lane_sections:
             here = f"road {road.id} lane section s={section.s:g}"
-            where = {"road": road.id, "section_s": section.s, "s": section.s}
+            where: dict[str, Any] = {"road": road.id, "section_s": section.s, "s": section.s}
             for lane in section.center:
                 if lane.id != 0:
                     yield centre_lane_invalid.finding(
@@ -216,7 +216,7 @@ def lane_id_sequence(ctx: Context):
     for road in ctx.document.roads:
         for section in road.lane_sections:
             here = f"road {road.id} lane section s={section.s:g}"
-            where = {"road": road.id, "section_s": section.s, "s": section.s}
+            where: dict[str, Any] = {"road": road.id, "section_s": section.s, "s": section.s}
             for name, lanes, sign in (("left", section.left, 1), ("right", section.right, -1)):
                 wrong = [lane for lane in lanes if lane.id * sign <= 0]
                 for lane in wrong:
@@ -511,6 +511,8 @@ def _zero_width_junction_links(ctx: Context):
                 continue
             in_index = ctx.section_index_at(incoming, in_end)
             to_index = ctx.section_index_at(target, c.contact_point)
+            if in_index is None or to_index is None:  # both roads have lane sections (checked above)
+                continue
             for ll in c.lane_links:
                 for road, index, end, lane_id in (
                     (incoming, in_index, in_end, ll.from_lane),

@@ -162,9 +162,9 @@ def _width_at(lane: LaneXml, s: float) -> float | None:
     """A lane's width at absolute ``s`` from its ``<width>`` records (``None`` without any: described by borders)."""
     records = []
     for el in lane.element.iterchildren("{*}width"):
-        values = [number(el.get(k)) for k in ("sOffset", "a", "b", "c", "d")]
-        if all(v is not None for v in values):
-            records.append(Cubic(*values, line=el.sourceline or 0))  # type: ignore[arg-type]
+        s_offset, a, b, c, d = (number(el.get(k)) for k in ("sOffset", "a", "b", "c", "d"))
+        if s_offset is not None and a is not None and b is not None and c is not None and d is not None:
+            records.append(Cubic(s_offset, a, b, c, d, line=el.sourceline or 0))
     if not records or lane.section.s is None:
         return None
     from xodrcheck.geometry import profile
@@ -172,23 +172,25 @@ def _width_at(lane: LaneXml, s: float) -> float | None:
     return float(profile.evaluate(tuple(records), np.array([s]), origin=lane.section.s)[0])
 
 
-def temporary_runs(ctx: Context) -> list[tuple[str, float, float, SectionXml, SectionXml]]:
-    """``(road, start, end, first section, last section)`` of every temporary lane layer section."""
-    out = []
+def temporary_runs(ctx: Context) -> list[tuple[str, float, float | None, SectionXml, SectionXml]]:
+    """``(road, start, end, first section, last section)`` of every temporary lane layer section (``end`` is
+    ``None`` when it cannot be told)."""
+    out: list[tuple[str, float, float | None, SectionXml, SectionXml]] = []
     for road, layers in _layers(ctx).items():
-        sections = sorted((x for x in layers.get("temporary", ()) if x.s is not None), key=lambda x: x.s)  # type: ignore[arg-type,return-value]
+        placed = sorted(((x.s, x) for x in layers.get("temporary", ()) if x.s is not None), key=lambda item: item[0])
+        sections = [x for _, x in placed]
         length = _road_length(ctx, road)
-        run: list[SectionXml] = []
-        end = None
-        for section in sections:
-            if run and (end is None or abs(section.s - end) > ctx.tolerances.position):  # type: ignore[operator]
-                out.append((road, run[0].s, end, run[0], run[-1]))
+        run: list[tuple[float, SectionXml]] = []
+        end: float | None = None
+        for s, section in placed:
+            if run and (end is None or abs(s - end) > ctx.tolerances.position):
+                out.append((road, run[0][0], end, run[0][1], run[-1][1]))
                 run = []
-            run.append(section)
+            run.append((s, section))
             end = section_end(section, sections, length)
         if run:
-            out.append((road, run[0].s, end, run[0], run[-1]))
-    return out  # type: ignore[return-value]
+            out.append((road, run[0][0], end, run[0][1], run[-1][1]))
+    return out
 
 
 @rule("L031", "temporary-layer-not-linked", Category.LANE, Severity.ERROR, uids=(U.LINK_TEMPORARY_TO_PERMANENT,))
@@ -271,7 +273,7 @@ def layer_link_without_section(ctx: Context):
         <lanes><laneSection s="0"> ... <successor id="-1" layer="temporary"/> ...
         <lanes layer="temporary"><laneSection s="20" length="30"> ...
     """
-    runs: dict[str, list[tuple[float, float]]] = {}
+    runs: dict[str, list[tuple[float, float | None]]] = {}
     for road, start, end, _, _ in temporary_runs(ctx):
         runs.setdefault(road, []).append((start, end))
     layers = _layers(ctx)
@@ -288,7 +290,7 @@ def layer_link_without_section(ctx: Context):
             at = section_end(lane.section, permanent, length) if index == 0 else lane.section.s
             if at is not None and (at <= tol if index else length is not None and at >= length - tol):
                 continue  # at the road's start or end the link reaches the linked road's temporary layer
-            edges = [run[index] for run in runs.get(lane.road, ()) if run[index] is not None]
+            edges = [e for e in (run[index] for run in runs.get(lane.road, ())) if e is not None]
             if at is not None and any(abs(at - edge) <= tol for edge in edges):
                 continue
             where = "ends" if index == 0 else "starts"

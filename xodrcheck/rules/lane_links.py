@@ -37,13 +37,13 @@ def lane_link_not_omitted(ctx: Context):
         <road id="1" ...><link><successor elementType="junction" elementId="100"/></link>
           ... <lane id="-1" type="driving"><link><successor id="-1"/></link><width .../></lane>
     """
-    for lane in lane_elements(ctx).lanes:
-        for link in lane.element.iterchildren("{*}link"):
+    for lane_xml in lane_elements(ctx).lanes:
+        for link in lane_xml.element.iterchildren("{*}link"):
             if next(link.iterchildren("{*}predecessor", "{*}successor"), None) is None:
                 yield lane_link_not_omitted.finding(
-                    f"{lane.describe()}: the lane's <link> (line {link.sourceline}) holds no predecessor or successor; "
-                    "leave the empty <link> out",
-                    **lane.where(link.sourceline),
+                    f"{lane_xml.describe()}: the lane's <link> (line {link.sourceline}) holds no predecessor or "
+                    "successor; leave the empty <link> out",
+                    **lane_xml.where(link.sourceline),
                 )
     for road in ctx.document.roads:
         if not road.lane_sections:

@@ -113,8 +113,8 @@ def lane_section_without_lanes(ctx: Context):
 
 def _from_start(lane) -> bool:
     for tag in ("width", "border"):
-        starts = [number(r.get("sOffset")) for r in lane.element.iterchildren(f"{{*}}{tag}")]
-        starts = [s for s in starts if s is not None]
+        read = [number(r.get("sOffset")) for r in lane.element.iterchildren(f"{{*}}{tag}")]
+        starts = [s for s in read if s is not None]
         if starts:
             return min(starts) <= _ZERO
     return False

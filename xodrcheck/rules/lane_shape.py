@@ -62,7 +62,7 @@ def _section_pieces(ctx: Context, road: Road, index: int):
     with the pieces ``[a, b]`` between consecutive knots and ``coefficients[:, :, k]`` the cubic in ``u`` in [0, 1] of
     each lane's width on piece ``k`` (all lanes and pieces of the section in one vectorised pass); ``None`` when the
     section has no piece or no such lane."""
-    geometry = ctx.geometry(road.id)
+    geometry = ctx.road_geometry(road)
     cuts = knots(geometry, index)
     if len(cuts) < 2:
         return None

@@ -95,7 +95,8 @@ def _joint_line(road: Road, end: ContactPoint, neighbour: Neighbour) -> int:
 
 
 def _describe(road: Road, end: ContactPoint, neighbour: Neighbour) -> str:
-    via = f" (junction {neighbour.junction.id}, connection {neighbour.connection.id})" if neighbour.connection else ""
+    junction, connection = neighbour.junction, neighbour.connection
+    via = f" (junction {junction.id}, connection {connection.id})" if connection and junction else ""
     return f"the {end.value} of road {road.id} and the {neighbour.contact.value} of road {neighbour.road.id}{via}"
 
 

@@ -352,7 +352,7 @@ def _road_crgs(ctx: Context) -> dict[str, list[RoadCrg]]:
     for crg in tree.getroot().iterfind("{*}road/{*}surface/{*}CRG"):
         road = crg.getparent().getparent()
         try:
-            start, end = float(crg.get("sStart")), float(crg.get("sEnd"))  # type: ignore[arg-type]
+            start, end = float(crg.get("sStart")), float(crg.get("sEnd"))
         except (TypeError, ValueError):
             continue
         lo, hi = min(start, end), max(start, end)

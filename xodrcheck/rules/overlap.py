@@ -107,13 +107,20 @@ def _message(
     )
 
 
+def _in_junction(ctx: Context, road_id: str) -> bool:
+    road = ctx.road(road_id)
+    return road is not None and road.junction is not None
+
+
 def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: str) -> Iterator:
     surfaces = _overlap_index(ctx).surfaces
     for roads, pair in sorted(_pairs(ctx, drivable).items()):
-        members = [ctx.road(r) is not None and ctx.road(r).junction is not None for r in roads]
+        members = [_in_junction(ctx, r) for r in roads]
         if junction is not None and any(members) is not junction:
             continue
         o, lanes = pair.largest, sorted(pair.lanes)
+        if o is None:  # every pair holds at least one overlap (_pairs)
+            continue
         if junction and not members[0]:  # name the connecting road first
             roads = (roads[1], roads[0])
             o = _swapped(o)

@@ -7,6 +7,7 @@ skip what they cannot resolve, so one defect gives one finding.
 from __future__ import annotations
 
 from collections.abc import Iterable
+from typing import Any
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, LaneSection, Road
@@ -220,7 +221,7 @@ def connection_road_missing(ctx: Context):
         direct = junction.type is JunctionType.DIRECT
         for c in junction.connections:
             at = f"junction {junction.id} connection {c.id}"
-            where = {"road": c.incoming_road, "line": c.line or junction.line or None}
+            where: dict[str, Any] = {"road": c.incoming_road, "line": c.line or junction.line or None}
             if c.incoming_road is None:
                 yield connection_road_missing.finding(
                     f"{at} has no incomingRoad", uid=NO_UID, **{**where, "road": None}
@@ -274,11 +275,16 @@ def junction_lane_link_missing_lane(ctx: Context):
             incoming = ctx.road(c.incoming_road)
             target = ctx.road(ctx.connected_road_id(c))
             in_end = ctx.incoming_contact(junction, c) if incoming is not None else None
-            in_section = ctx.section_at(incoming, in_end) if in_end is not None else None
+            in_section = ctx.section_at(incoming, in_end) if incoming is not None and in_end is not None else None
             to_section = ctx.section_at(target, c.contact_point) if target and c.contact_point else None
             for ll in c.lane_links:
                 line = ll.line or c.line or None
-                if in_section is not None and in_section.lane(ll.from_lane) is None:
+                if (
+                    in_section is not None
+                    and incoming is not None
+                    and in_end is not None
+                    and in_section.lane(ll.from_lane) is None
+                ):
                     yield junction_lane_link_missing_lane.finding(
                         f"junction {junction.id} connection {c.id}: laneLink from lane {ll.from_lane}, but the "
                         f"incoming road {incoming.id} has no lane {ll.from_lane} at its {in_end.value} "
@@ -288,7 +294,12 @@ def junction_lane_link_missing_lane(ctx: Context):
                         **ctx.end_at(incoming, in_end),
                         line=line,
                     )
-                if to_section is not None and to_section.lane(ll.to_lane) is None:
+                if (
+                    to_section is not None
+                    and target is not None
+                    and c.contact_point is not None
+                    and to_section.lane(ll.to_lane) is None
+                ):
                     yield junction_lane_link_missing_lane.finding(
                         f"junction {junction.id} connection {c.id}: laneLink to lane {ll.to_lane}, but road "
                         f"{target.id} has no lane {ll.to_lane} at its {c.contact_point.value} "
@@ -421,7 +432,7 @@ def lane_link_missing_lane(ctx: Context):
                     continue
                 described, target_section = _lane_link_targets(ctx, road, index, end)
                 for lane in lanes_linking:
-                    where = {
+                    where: dict[str, Any] = {
                         "road": road.id,
                         "lane": lane.id,
                         "section_s": section.s,

@@ -115,7 +115,7 @@ def shape_out_of_order(ctx: Context):
     for road in road_records(ctx):
         shapes = [sh for sh in road.shapes if sh.s is not None and sh.t is not None]
         for prev, nxt in itertools.pairwise(shapes):
-            if (nxt.s, nxt.t) < (prev.s, prev.t):  # type: ignore[operator]
+            if (nxt.s, nxt.t) < (prev.s, prev.t):
                 which = "s" if nxt.s != prev.s else f"t at s={nxt.s:g}"
                 yield shape_out_of_order.finding(
                     f"road {road.road}: the <shape> at line {nxt.line} (s={nxt.s:g}, t={nxt.t:g}) comes after the one "

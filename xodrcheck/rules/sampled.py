@@ -84,7 +84,7 @@ def section_lines(ctx: Context, road: Road, section_index: int) -> SectionLines:
     key = (road.id, section_index)
     found = cache.get(key)
     if found is None:
-        geometry = ctx.geometry(road.id)
+        geometry = ctx.road_geometry(road)
         s = _grid(ctx, geometry, section_index)
         found = SectionLines(
             s,

@@ -20,7 +20,7 @@ _POLYNOMIALS = ("width", "constant", "linear", "quadratic", "cubic")
 
 def _number(el: etree._Element, name: str) -> float | None:
     try:
-        value = float(el.get(name))  # type: ignore[arg-type]
+        value = float(el.get(name))
     except (TypeError, ValueError):
         return None
     return value if math.isfinite(value) else None
