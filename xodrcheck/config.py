@@ -18,7 +18,7 @@ from xodrcheck.findings import XodrError
 if sys.version_info >= (3, 11):
     import tomllib
 else:  # pragma: no cover - Python 3.10
-    import tomli as tomllib  # type: ignore[no-redef]
+    import tomli as tomllib
 
 
 def _tolerance(default: float, unit: str, doc: str, rules: str = ""):
@@ -179,18 +179,18 @@ class Tolerances:
         "is incomplete, exit code 3).",
         rules="X901",
     )
-    max_samples_per_section: int = _tolerance(  # type: ignore[assignment]
+    max_samples_per_section: int = _tolerance(
         200_000,
         "1",
         "Most s samples one lane section gets per sampling stage; a longer section is sampled with longer steps "
         "(G013 says so), so time and memory stay bounded.",
         rules="G013",
     )
-    max_file_bytes: int = _tolerance(  # type: ignore[assignment]
+    max_file_bytes: int = _tolerance(
         512 * 1024 * 1024, "B", "Files larger than this are refused with a clear error."
     )
 
-    max_output_points: int = _tolerance(  # type: ignore[assignment]
+    max_output_points: int = _tolerance(
         10_000_000,
         "1",
         "Most points `xodrcheck sample` writes and most vertices `xodrcheck mesh` builds (10 million: about 0.7 GB of "
@@ -213,7 +213,7 @@ class Tolerances:
 #: ``--tolerance`` flags. ``strict``: every deviation over the strict values is an error, as before issue 18.
 PROFILES: dict[str, dict[str, float]] = {
     "default": {},
-    "strict": {"gap": Tolerances.position, "kink": Tolerances.heading},  # type: ignore[dict-item]
+    "strict": {"gap": Tolerances.position, "kink": Tolerances.heading},
 }
 
 

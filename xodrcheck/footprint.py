@@ -45,7 +45,7 @@ class Footprints:
             polygons = np.empty(0, dtype=object)
         invalid = np.flatnonzero(~shapely.is_valid(polygons))
         for i in invalid:
-            polygons[i] = self._triangle_union(i)
+            polygons[i] = self._triangle_union(int(i))
         #: One (multi)polygon per lane strip of :attr:`surfaces`.
         self.polygons = polygons
         #: Lane strips whose outline is not a simple polygon (their footprint is the union of their triangles).
@@ -324,13 +324,16 @@ def _junction_lanes(index: OverlapIndex, drivable_only: bool) -> dict[str, np.nd
     return {j: np.array(v) for j, v in out.items()}
 
 
-def area_and_conflict(polygons: np.ndarray, roads: Sequence[str], min_overlap: float = 0.0) -> tuple[float, float]:
-    """(area of the union, area of the union of the pairwise overlaps) of lane footprints, each tagged with its road
-    id: pairs on the same road (lanes side by side) and overlaps smaller than ``min_overlap`` are not conflicts."""
-    if len(polygons) == 0:
+def area_and_conflict(
+    footprints: np.ndarray | Sequence[object], road_ids: Sequence[str], min_overlap: float = 0.0
+) -> tuple[float, float]:
+    """(area of the union, area of the union of the pairwise overlaps) of lane footprints (shapely geometries), each
+    tagged with its road id: pairs on the same road (lanes side by side) and overlaps smaller than ``min_overlap`` are
+    not conflicts."""
+    if len(footprints) == 0:
         return 0.0, 0.0
-    polygons = np.asarray(polygons, dtype=object)
-    roads = np.asarray(roads, dtype=object)
+    polygons = np.asarray(footprints, dtype=object)
+    roads = np.asarray(road_ids, dtype=object)
     area = float(shapely.area(shapely.union_all(polygons)))
     left, right = shapely.STRtree(polygons).query(polygons, predicate="intersects")
     keep = (left < right) & (roads[left] != roads[right])

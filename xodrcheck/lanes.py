@@ -232,6 +232,8 @@ class RoadGeometry:
         key = (section_index, s.tobytes())
         found = self._evaluations.get(key)
         if found is None:
+            cos: Jet | None
+            sin: Jet | None
             if len(self._roll.starts):
                 roll = Jet(*self._roll.jet(s))
                 cos, sin = roll.cos(), roll.sin()
@@ -406,7 +408,7 @@ class RoadGeometry:
     def _centre_line(evaluation: _Evaluation) -> tuple[Jet, np.ndarray | float]:
         """Plan-view lateral offset (jet) and height above the reference line of lane 0's line."""
         centre = evaluation.borders[0]
-        if evaluation.cos is None:
+        if evaluation.cos is None or evaluation.sin is None:  # no superelevation (both or neither)
             return centre, 0.0
         return centre * evaluation.cos, centre.v * evaluation.sin.v
 
@@ -416,7 +418,7 @@ class RoadGeometry:
     ) -> tuple[Jet, np.ndarray | float]:
         """Lateral offset and height after moving ``step`` (in ``t``) across ``lane``: rolled by the superelevation
         unless the lane is level or the road has none."""
-        if lane.level or evaluation.cos is None:
+        if lane.level or evaluation.cos is None or evaluation.sin is None:
             return lateral + step, height
         return lateral + step * evaluation.cos, height + step.v * evaluation.sin.v
 

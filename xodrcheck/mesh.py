@@ -226,11 +226,7 @@ class _Section:
 
 def _lane_pairs(rg: RoadGeometry, index: int, wanted: frozenset | None) -> list[tuple[Lane, int]]:
     left, right = rg.side_lanes(index)
-    pairs = [
-        (lane, inner.id if k else 0)
-        for side in (left, right)
-        for k, (lane, inner) in enumerate(zip(side.lanes, (None, *side.lanes[:-1])))
-    ]
+    pairs = [(lane, side.lanes[k - 1].id if k else 0) for side in (left, right) for k, lane in enumerate(side.lanes)]
     return [(lane, inner) for lane, inner in pairs if wanted is None or lane_type_name(lane) in wanted]
 
 
@@ -373,16 +369,16 @@ def _strips(
             keys.append(LaneKey(t.rg.road.id, section_s, lane.id))
             types.append(lane_type_name(lane))
         strips.append(len(sizes))
-    n = np.array(sizes, dtype=np.int64)
-    rows = np.empty(2 * len(n), dtype=np.int64)
+    counts = np.array(sizes, dtype=np.int64)
+    rows = np.empty(2 * len(counts), dtype=np.int64)
     rows[0::2], rows[1::2] = inner_at, outer_at
-    vertices = xyz[_ranges(rows, np.repeat(n, 2))]
-    first_vertex = np.concatenate([[0], np.cumsum(2 * n)[:-1]]).astype(np.int64)
-    steps = n - 1
-    j = _ranges(np.zeros(len(n)), steps)
-    owner = np.repeat(np.arange(len(n)), steps)
+    vertices = xyz[_ranges(rows, np.repeat(counts, 2))]
+    first_vertex = np.concatenate([[0], np.cumsum(2 * counts)[:-1]]).astype(np.int64)
+    steps = counts - 1
+    j = _ranges(np.zeros(len(counts)), steps)
+    owner = np.repeat(np.arange(len(counts)), steps)
     inner = first_vertex[owner] + j
-    inner_next, outer = inner + 1, inner + n[owner]
+    inner_next, outer = inner + 1, inner + counts[owner]
     outer_next = outer + 1
     flip = np.array(left, dtype=bool)[owner]
     tris = np.empty((len(j), 2, 3), dtype=np.int64)
@@ -395,10 +391,18 @@ def _strips(
     s_flat = np.concatenate(samples) if samples else np.zeros(0)
     sample_at = np.asarray(offsets, dtype=np.int64)[entry][owner] + j if len(j) else j
     strip_at = np.array(strips, dtype=np.int64)
-    vertex_at = np.concatenate([[0], np.cumsum(2 * n)])[strip_at]
+    vertex_at = np.concatenate([[0], np.cumsum(2 * counts)])[strip_at]
     face_at = np.concatenate([[0], np.cumsum(2 * steps)])[strip_at]
     return _Part(
-        vertices, tris.reshape(-1, 3), np.repeat(s_flat[sample_at], 2), n, keys, types, strip_at, vertex_at, face_at
+        vertices,
+        tris.reshape(-1, 3),
+        np.repeat(s_flat[sample_at], 2),
+        counts,
+        keys,
+        types,
+        strip_at,
+        vertex_at,
+        face_at,
     )
 
 

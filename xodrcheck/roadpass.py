@@ -185,13 +185,13 @@ class _Laws:
         out = (np.zeros(size), np.zeros(size), np.zeros(size))
         if self.single:
             coef = np.array([c for c, _, _, _ in self.single], dtype=float)  # start, a, b, c, d
-            n = np.array([n for _, _, _, n in self.single], dtype=np.int64)
-            dest = _ranges([d for _, d, _, _ in self.single], n)
-            at = _ranges([a for _, _, a, _ in self.single], n)
-            per = np.repeat(coef, n, axis=0)
+            sizes = np.array([n for _, _, _, n in self.single], dtype=np.int64)
+            dests = _ranges([d for _, d, _, _ in self.single], sizes)
+            at = _ranges([a for _, _, a, _ in self.single], sizes)
+            per = np.repeat(coef, sizes, axis=0)
             jet = profile._cubic_jet(per[:, 1], per[:, 2], per[:, 3], per[:, 4], s[at] - per[:, 0], None)
             for o, j in zip(out, jet):
-                o[dest] = j
+                o[dests] = j
         counted = [m for m in self.multi if len(m[0].starts) <= _COUNTED and not np.isnan(m[0].starts).any()]
         if counted:
             self._counted(counted, s, out)
@@ -281,16 +281,17 @@ def _lines(entries: Sequence[Entry], s: np.ndarray, offsets: np.ndarray) -> _Lin
         rows = np.array(steps[depth], dtype=np.int64).reshape(-1, 4)
         out = _ranges(rows[:, 0], rows[:, 2])
         inn = _ranges(rows[:, 1], rows[:, 2])
-        kind = np.repeat(rows[:, 3], rows[:, 2])
+        kinds = np.repeat(rows[:, 3], rows[:, 2])
         for values, own_all, lat in zip(outer, law_jets, lateral):
             inner, own = values[inn], own_all[out]
             with np.errstate(all="ignore"):  # the branches not taken may overflow
                 new = np.where(
-                    kind == 1, inner + own, np.where(kind == -1, inner - own, np.where(kind == 2, own, inner))
+                    kinds == 1, inner + own, np.where(kinds == -1, inner - own, np.where(kinds == 2, own, inner))
                 )
                 values[out] = new
                 lat[out] = lat[inn] + (new - inner)
-    return _Lines(ids, np.array(bases, dtype=np.int64), sample, *lateral, outer[0])
+    q, dq, ddq = lateral
+    return _Lines(ids, np.array(bases, dtype=np.int64), sample, q, dq, ddq, outer[0])
 
 
 def _bend(lines: _Lines, pose: Pose) -> tuple[np.ndarray, np.ndarray]:
@@ -387,7 +388,13 @@ def sample_sections(
     renumber = np.cumsum(~short) - 1
     inside = ~short[cut_owner]
     found = _sample(
-        [entries[k] for k in keep], flat[inside], renumber[cut_owner[inside]], cut_counts[keep], chord, max_step, budget
+        [entries[k] for k in keep.tolist()],
+        flat[inside],
+        renumber[cut_owner[inside]],
+        cut_counts[keep],
+        chord,
+        max_step,
+        budget,
     )
     if found is None:
         return None
@@ -426,11 +433,11 @@ def _sample(
     coarse_ends[np.cumsum(per_section) - 1] = flat[last]
     steps = coarse_ends - coarse
     inset = _PROBE_INSET * steps
-    probes = np.empty((len(coarse), 3))
-    probes[:, 0] = coarse + inset
-    probes[:, 1] = coarse + 0.5 * steps
-    probes[:, 2] = coarse_ends - inset
-    probes = probes.ravel()
+    columns = np.empty((len(coarse), 3))
+    columns[:, 0] = coarse + inset
+    columns[:, 1] = coarse + 0.5 * steps
+    columns[:, 2] = coarse_ends - inset
+    probes = columns.ravel()
     if not np.isfinite(probes).all():
         return None
     offsets = np.concatenate(([0], np.cumsum(3 * per_section)))

@@ -104,11 +104,11 @@ def sample_section(
     coarse_ends = np.append(coarse[1:], cuts[-1])
     steps = coarse_ends - coarse
     inset = _PROBE_INSET * steps
-    probes = np.empty((len(coarse), 3))
-    probes[:, 0] = coarse + inset
-    probes[:, 1] = coarse + 0.5 * steps
-    probes[:, 2] = coarse_ends - inset
-    probes = probes.ravel()
+    columns = np.empty((len(coarse), 3))
+    columns[:, 0] = coarse + inset
+    columns[:, 1] = coarse + 0.5 * steps
+    columns[:, 2] = coarse_ends - inset
+    probes = columns.ravel()
 
     bending = geometry.border_bending(section_index, probes)
     bending = np.fmax(bending, np.abs(profile.second_derivative(geometry.road.elevation, probes)))

@@ -63,7 +63,7 @@ class Snapshot:
     findings: Mapping[str, int]
 
     def to_json(self) -> dict:
-        data = {"format": FORMAT}
+        data: dict[str, object] = {"format": FORMAT}
         for f in fields(self):
             value = getattr(self, f.name)
             data[f.name] = (
@@ -225,7 +225,9 @@ def snapshot_of(source: str | Path | bytes, config: Config | None = None) -> Sna
         lane_length=_rounded(lane_length(doc, config.tolerances)),
         lane_links=len(edges),
         topology=topology_hash(edges),
-        bbox=None if box is None else tuple(_rounded(v) for v in (box.min_x, box.min_y, box.max_x, box.max_y)),
+        bbox=None
+        if box is None
+        else (_rounded(box.min_x), _rounded(box.min_y), _rounded(box.max_x), _rounded(box.max_y)),
         findings=dict(sorted(Counter(f.code for f in report.findings).items())),
     )
 

@@ -93,7 +93,7 @@ def rows(path: str, metrics: tuple[JunctionMetrics, ...]) -> Iterator[dict]:
     """The CSV rows of one file (one per leg; one for a junction without legs)."""
     for m in metrics:
         head = {"file": path, **junction_fields(m)}
-        legs = list(enumerate(m.leg_metrics)) or [(None, None)]
+        legs: list[tuple[int | None, LegMetrics | None]] = list(enumerate(m.leg_metrics)) or [(None, None)]
         for index, leg in legs:
             yield {**head, **leg_fields(index, leg)}
 

@@ -30,7 +30,7 @@ class Pose:
         """``n`` poses filled with NaN (to be assigned piecewise)."""
         return Pose(*(np.full(n, np.nan) for _ in range(5)))
 
-    def assign(self, index: np.ndarray, other: Pose) -> None:
+    def assign(self, index: np.ndarray | slice, other: Pose) -> None:
         """Write ``other`` into the positions ``index`` of this pose's arrays (the arrays are mutable, the fields
         not)."""
         self.x[index] = other.x

@@ -39,20 +39,24 @@ class Piecewise:
         self.starts = np.array([r.s + origin for r in records], dtype=float)
         self.coefficients = np.array([[r.a, r.b, r.c, r.d] for r in records], dtype=float).reshape(-1, 4)
         # One record (the common case): its start and coefficients as plain floats, for the fast path of jet().
-        self._single = (float(self.starts[0]), *map(float, self.coefficients[0])) if len(records) == 1 else None
+        self._single: tuple[float, float, float, float, float] | None = None
+        if len(records) == 1:
+            a, b, c, d = map(float, self.coefficients[0])
+            self._single = (float(self.starts[0]), a, b, c, d)
 
     def jet(self, s) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """Value, first and second derivative at ``s``."""
         s = as_array(s)
         if self._single is not None:
-            start, a, b, c, d = self._single
-            return _cubic_jet(a, b, c, d, s - start, None)
+            start, a0, b0, c0, d0 = self._single
+            return _cubic_jet(a0, b0, c0, d0, s - start, None)
         if len(self.starts) == 0:
             return np.zeros_like(s), np.zeros_like(s), np.zeros_like(s)
         index = np.searchsorted(self.starts, s, side="right") - 1
         active = index >= 0
         index = np.maximum(index, 0)
-        return _cubic_jet(*self.coefficients[index].T, s - self.starts[index], active)
+        a, b, c, d = self.coefficients[index].T
+        return _cubic_jet(a, b, c, d, s - self.starts[index], active)
 
 
 #: Profiles with at most this many records are batched by counting starts (cost: records x points comparisons).
@@ -66,23 +70,14 @@ class Batch:
     ``searchsorted`` finds; done per profile instead when an ``s`` is NaN), the empty ones as zeros and the rest one
     by one."""
 
-    __slots__ = (
-        "_coefficients",
-        "_laws",
-        "_multi",
-        "_offsets",
-        "_record_coefficients",
-        "_record_starts",
-        "_rows",
-        "_starts",
-    )
+    __slots__ = ("_batched", "_coefficients", "_laws", "_multi", "_rows", "_starts")
 
     def __init__(self, laws: tuple[Piecewise, ...]):
         self._laws = laws
-        single = [i for i, law in enumerate(laws) if law._single is not None]
-        self._rows = {i: row for row, i in enumerate(single)}
-        self._starts = np.array([laws[i]._single[0] for i in single], dtype=float)[:, None]
-        self._coefficients = np.array([laws[i]._single[1:] for i in single], dtype=float).reshape(-1, 4).T[..., None]
+        single = [(i, law._single) for i, law in enumerate(laws) if law._single is not None]
+        self._rows = {i: row for row, (i, _) in enumerate(single)}
+        self._starts = np.array([record[0] for _, record in single], dtype=float)[:, None]
+        self._coefficients = np.array([record[1:] for _, record in single], dtype=float).reshape(-1, 4).T[..., None]
         multi = [
             i
             for i, law in enumerate(laws)
@@ -90,23 +85,32 @@ class Batch:
         ]
         self._multi = {i: row for row, i in enumerate(multi)}
         sizes = [len(laws[i].starts) for i in multi]
-        self._offsets = np.concatenate(([0], np.cumsum(sizes)[:-1])).astype(np.intp) if multi else None
-        self._record_starts = np.concatenate([laws[i].starts for i in multi]) if multi else None
-        self._record_coefficients = np.concatenate([laws[i].coefficients for i in multi]).T.copy() if multi else None
+        #: The batched profiles' records: (offset of each profile's first record, record starts, coefficients).
+        self._batched: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
+        if multi:
+            self._batched = (
+                np.concatenate(([0], np.cumsum(sizes)[:-1])).astype(np.intp),
+                np.concatenate([laws[i].starts for i in multi]),
+                np.concatenate([laws[i].coefficients for i in multi]).T.copy(),
+            )
 
     def jets(self, s) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
         """``laws[i].jet(s)`` for every law, in order (read-only: arrays may be shared between laws)."""
         s = as_array(s)
         rows, multi = self._rows, self._multi
         if rows:
-            single = _cubic_jet(*self._coefficients, s - self._starts, None)
-        if multi and np.isnan(s).any():
-            multi = {}
-        if multi:
-            counts = np.add.reduceat(s >= self._record_starts[:, None], self._offsets, axis=0, dtype=np.intp)
-            index = self._offsets[:, None] + np.maximum(counts - 1, 0)
-            ds = s - self._record_starts[index]
-            several = _cubic_jet(*(column[index] for column in self._record_coefficients), ds, counts > 0)
+            a, b, c, d = self._coefficients
+            single = _cubic_jet(a, b, c, d, s - self._starts, None)
+        batched = self._batched if multi else None
+        if batched is not None and np.isnan(s).any():
+            multi, batched = {}, None
+        if batched is not None:
+            offsets, record_starts, record_coefficients = batched
+            counts = np.add.reduceat(s >= record_starts[:, None], offsets, axis=0, dtype=np.intp)
+            index = offsets[:, None] + np.maximum(counts - 1, 0)
+            ds = s - record_starts[index]
+            a, b, c, d = (column[index] for column in record_coefficients)
+            several = _cubic_jet(a, b, c, d, ds, counts > 0)
         out = []
         zero = None
         for i, law in enumerate(self._laws):

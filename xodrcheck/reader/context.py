@@ -259,11 +259,11 @@ def cubic(ctx: Context, el: etree._Element, offset: bool = False) -> Cubic | Non
     """One ``s a b c d`` record (``sOffset a b c d`` with ``offset``), or ``None`` with findings."""
     get = el.get
     try:
-        s = float(get("sOffset" if offset else "s"))  # type: ignore[arg-type]
-        a = float(get("a"))  # type: ignore[arg-type]
-        b = float(get("b"))  # type: ignore[arg-type]
-        c = float(get("c"))  # type: ignore[arg-type]
-        d = float(get("d"))  # type: ignore[arg-type]
+        s = float(get("sOffset" if offset else "s"))
+        a = float(get("a"))
+        b = float(get("b"))
+        c = float(get("c"))
+        d = float(get("d"))
     except (TypeError, ValueError):
         pass
     else:

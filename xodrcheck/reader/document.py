@@ -41,7 +41,7 @@ def build_header(ctx: Context, el: etree._Element) -> Header:
                 "it is read as an OpenDRIVE 1.9 file, so what that version changed may be misread",
                 el,
             )
-    bounds = [ctx.number(el, name, "read as absent", required=False) for name in _BOUNDS]
+    north, south, east, west = (ctx.number(el, name, "read as absent", required=False) for name in _BOUNDS)
     geo_reference = offset = None
     for child in el:
         tag = child.tag
@@ -59,7 +59,10 @@ def build_header(ctx: Context, el: etree._Element) -> Header:
         el.get("version"),
         el.get("date"),
         el.get("vendor"),
-        *bounds,
+        north,
+        south,
+        east,
+        west,
         geo_reference=geo_reference,
         offset=offset,
         line=el.sourceline,
@@ -73,7 +76,7 @@ def _lane_links(ctx: Context, el: etree._Element) -> tuple[tuple[JunctionLaneLin
     with_layers = layered(ctx)
     for ll in el.iterchildren("laneLink"):
         try:
-            link = make_lane_link(int(ll.get("from")), int(ll.get("to")), ll.sourceline)  # type: ignore[arg-type]
+            link = make_lane_link(int(ll.get("from")), int(ll.get("to")), ll.sourceline)
         except (TypeError, ValueError):
             for name in ("from", "to"):  # report whichever is missing or not an integer
                 ctx.integer(ll, name, "the lane link is ignored")

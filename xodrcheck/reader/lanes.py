@@ -84,7 +84,7 @@ def _lane_links(ctx: Context, el: etree._Element) -> _Links:
             k += 2
         raw = child.get("id")
         try:
-            links[k].append(int(raw))  # type: ignore[arg-type]
+            links[k].append(int(raw))
         except (TypeError, ValueError):
             ctx.integer(child, "id", "the lane link is ignored")
     return tuple(links[0]), tuple(links[1]), tuple(links[2]), tuple(links[3])
@@ -93,7 +93,7 @@ def _lane_links(ctx: Context, el: etree._Element) -> _Links:
 def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
     get = el.get
     try:
-        s = float(get("sOffset"))  # type: ignore[arg-type]
+        s = float(get("sOffset"))
         if s - s != 0.0 or s < 0.0:
             raise ValueError
     except (TypeError, ValueError):
@@ -139,14 +139,14 @@ def _lane_type(ctx: Context, el: etree._Element, name: str | None) -> LaneType:
 def _lane(ctx: Context, el: etree._Element) -> Lane | None:
     get = el.get
     try:
-        lane_id = int(get("id"))  # type: ignore[arg-type]
+        lane_id = int(get("id"))
     except (TypeError, ValueError):
         ctx.integer(el, "id", _SKIP_LANE)
         return None
     ctx.lane = lane_id
 
     type_name = get("type")
-    lane_type = LANE_TYPES.get(type_name)  # type: ignore[arg-type]
+    lane_type: LaneType | None = None if type_name is None else LANE_TYPES.get(type_name)
     if lane_type is None:
         lane_type = _lane_type(ctx, el, type_name)
     level = get("level")
@@ -218,7 +218,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
 
 def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
     try:
-        s = float(el.get("s"))  # type: ignore[arg-type]
+        s = float(el.get("s"))
         if s - s != 0.0 or s < 0.0:
             raise ValueError
     except (TypeError, ValueError):
@@ -233,7 +233,9 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
     if el.get("length") is not None and layered(ctx):
         length = ctx.number(el, "length", "read as absent (the section lasts until the next one)", nonneg=True)
     ctx.section_s = s
-    left = center = right = ()
+    left: tuple[Lane, ...] = ()
+    center: tuple[Lane, ...] = ()
+    right: tuple[Lane, ...] = ()
     seen: dict[str, etree._Element] = {}
     for child in el:
         tag = child.tag

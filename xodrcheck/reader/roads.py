@@ -89,9 +89,10 @@ def _param_poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], li
         else:
             ctx.missing(kind, "pRange", "it is required since OpenDRIVE 1.5; " + then)
     else:
-        p_range = ctx.choice(kind, "pRange", _P_RANGES, SKIP_GEOMETRY)
-        if p_range is None:
+        chosen = ctx.choice(kind, "pRange", _P_RANGES, SKIP_GEOMETRY)
+        if chosen is None:
             return None
+        p_range = chosen
     return make_param_poly3(head[0], head[1], head[2], head[3], head[4], *c, p_range=p_range, line=line)
 
 
@@ -248,14 +249,14 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
 
     raw = get("length")
     try:
-        length = float(raw)  # type: ignore[arg-type]
+        length = float(raw)
         valid = length - length == 0.0 and length >= 0.0
     except (TypeError, ValueError):
         valid = False
     if not valid:
         total = sum(g.length for g in plan_view)
-        length = ctx.number(el, "length", f"the sum of its geometry lengths ({total:g}) is used", nonneg=True)
-        length = total if length is None else length
+        given = ctx.number(el, "length", f"the sum of its geometry lengths ({total:g}) is used", nonneg=True)
+        length = total if given is None else given
 
     raw_junction = get("junction")
     if raw_junction is None:
@@ -276,7 +277,8 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
     if link is not None:
         pred, succ = _links(ctx, link)
 
-    elevation = superelevation = ()
+    elevation: Profile = ()
+    superelevation: Profile = ()
     if "elevationProfile" in first:
         elevation = cubics(ctx, first["elevationProfile"], "elevation", RU.ELEVATION_ORDER)
     if "lateralProfile" in first:
