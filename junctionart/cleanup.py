@@ -71,7 +71,7 @@ def _marks(kind: str, color: str, s0: float, s1: float, rp: RoadPlan) -> tuple[R
     """Marks of one border over [s0, s1): ``kind`` in the open, solid within reach of a junction."""
     if kind == "solid":
         return (RoadMark(0.0, "solid", color, lane_change="none"),)
-    cuts = []
+    cuts: list[tuple[float, str]] = []
     near0 = SOLID_NEAR_JUNCTION if rp.start_junction is not None else 0.0
     near1 = rp.length - SOLID_NEAR_JUNCTION if rp.end_junction is not None else rp.length
     pieces = [(0.0, near0, "solid"), (near0, near1, kind), (near1, rp.length, "solid")]

@@ -204,9 +204,9 @@ def fit_connections(
     ok_live &= radius_live >= min_radius
     radius = np.full(n * m, -1.0)
     radius[live] = radius_live
-    score = np.full(n * m, -1.0)
-    score[live] = np.where(ok_live, radius_live, -1.0)
-    score = score.reshape(n, m)
+    flat_score = np.full(n * m, -1.0)
+    flat_score[live] = np.where(ok_live, radius_live, -1.0)
+    score = flat_score.reshape(n, m)
     at = np.full(n * m, -1)
     at[live] = np.arange(len(live))  # candidate -> its row in the full evaluation
     # the last condition, the costliest, only for each target's best candidate so far: total turning equals the
@@ -274,15 +274,15 @@ def fillet_chain(
         dx, dy = v[0] - pose.x, v[1] - pose.y
         along = dx * math.cos(pose.hdg) + dy * math.sin(pose.hdg) - tangent
         if along > 1e-9:
-            g = Line(s, pose.x, pose.y, pose.hdg, along)
-            out.append(g)
+            line = Line(s, pose.x, pose.y, pose.hdg, along)
+            out.append(line)
             s += along
-            pose = end_pose(g)
+            pose = end_pose(line)
         if abs(theta) > 1e-12:
-            g = Arc(s, pose.x, pose.y, pose.hdg, r * abs(theta), math.copysign(1.0 / r, theta))
-            out.append(g)
-            s += g.length
-            pose = end_pose(g)
+            arc = Arc(s, pose.x, pose.y, pose.hdg, r * abs(theta), math.copysign(1.0 / r, theta))
+            out.append(arc)
+            s += arc.length
+            pose = end_pose(arc)
     dx, dy = end[0] - pose.x, end[1] - pose.y
     along = dx * math.cos(pose.hdg) + dy * math.sin(pose.hdg)
     if along > 1e-9 or not out:

@@ -31,6 +31,7 @@ from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor
 from concurrent.futures import wait as _wait
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import Any
 
 from .errors import JunctionArtError, ParamsError
 from .params import Params
@@ -108,7 +109,7 @@ def metric_rows(run: str, seed: int, metrics) -> list[dict]:
             "conflict_area": m.conflict_area,
             "conflict_ratio": m.conflict_ratio,
         }
-        legs = list(enumerate(m.leg_metrics)) or [(None, None)]
+        legs: list[tuple[int | None, Any]] = list(enumerate(m.leg_metrics)) or [(None, None)]
         for i, leg in legs:
             row = dict(head, leg=i)
             if leg is not None:

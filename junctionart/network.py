@@ -102,23 +102,24 @@ def _mdp_pair(A: _LinePoints, B: _LinePoints, params: Params, rng: np.random.Gen
         return b_at(B.line.project(A.line.point_at(a)))
 
     state = "start"
-    a_last = b_last = None
+    last: tuple[float, float] | None = None  # where the previous connection meets A and B
     snap = params.snap_distance
     for _ in range(10_000):
         gap = rng.uniform(params.min_distance, params.max_distance) * rng.uniform(*params.gap_scale)
         state = _choose(rng, table[state])
-        if a_last is None:
+        if last is None:
             a = rng.uniform(0.0, 0.5 * gap)
             b = proj(a) if state == "orthogonal" else rng.uniform(0.0, 0.5 * gap)
-        elif state == "orthogonal":
-            a = a_last + gap
-            b = proj(a)
-        elif state == "parallel":
-            a, b = a_last + gap, b_last + gap
-        elif state == "random":
-            a, b = a_last + gap * rng.uniform(0.5, 1.5), b_last + gap * rng.uniform(0.5, 1.5)
-        else:  # commonEnd: a triangle, one line reuses its last point
-            if rng.random() < 0.5:
+        else:
+            a_last, b_last = last
+            if state == "orthogonal":
+                a = a_last + gap
+                b = proj(a)
+            elif state == "parallel":
+                a, b = a_last + gap, b_last + gap
+            elif state == "random":
+                a, b = a_last + gap * rng.uniform(0.5, 1.5), b_last + gap * rng.uniform(0.5, 1.5)
+            elif rng.random() < 0.5:  # commonEnd: a triangle, one line reuses its last point
                 a, b = a_last + gap, b_last
             else:
                 a, b = a_last, b_last + gap
@@ -127,11 +128,11 @@ def _mdp_pair(A: _LinePoints, B: _LinePoints, params: Params, rng: np.random.Gen
         pa = A.at(min(a, la), snap)
         pb = B.at(b_at(min(b, lb)), snap)
         ba = b_at(pb[0])
-        if a_last is not None and (pa[0] < a_last or ba < b_last):
+        if last is not None and (pa[0] < last[0] or ba < last[1]):
             continue  # snapping would cross the previous connection
         if pa[1] != pb[1]:
             builder.edge(pa[1], pb[1])
-        a_last, b_last = pa[0], ba
+        last = (pa[0], ba)
 
 
 def _merge_close(nodes: list[tuple[float, float]], edges: dict[tuple[int, int], int]) -> dict[tuple[int, int], int]:
@@ -313,8 +314,6 @@ def build(lines: ControlLines, params: Params, rng: np.random.Generator) -> Netw
         for x in (a, b):
             if x not in used:
                 used[x] = len(used)
-    new_nodes = [None] * len(used)
-    for old, new in used.items():
-        new_nodes[new] = nodes[old]
+    new_nodes = tuple(nodes[old] for old in used)  # used numbers the nodes in insertion order
     out_edges = tuple(Edge(used[a], used[b], edges[(a, b)]) for a, b in sorted(edges))
-    return Network(tuple(new_nodes), out_edges)  # type: ignore[arg-type]
+    return Network(new_nodes, out_edges)

@@ -324,7 +324,7 @@ def validate(p: Params) -> None:
 def _validate_scenario(p: Params) -> None:
     for name, kind in _ENUMS.items():
         if not isinstance(getattr(p, name), kind):
-            valid = ", ".join(str(m.value) for m in kind)  # type: ignore[attr-defined]
+            valid = ", ".join(str(m.value) for m in kind)
             raise ParamsError(f"{name}={getattr(p, name)!r}: must be one of {valid}")
     from .scenario.catalogue import COUNTRIES
 

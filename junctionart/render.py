@@ -130,7 +130,7 @@ def render(
             # evaluate is left out of the picture, never fatal
             continue
     fig, ax = plt.subplots(figsize=(size, size))
-    legend = [Patch(color=c, label=name) for name, c in _legend_entries(colours)]
+    legend: list[Patch | Line2D] = [Patch(color=c, label=name) for name, c in _legend_entries(colours)]
     if refs:
         legend.append(Line2D([], [], color=REFERENCE_COLOUR, linewidth=1.5, label="reference line"))
     ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors="none", alpha=0.95))

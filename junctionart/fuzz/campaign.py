@@ -37,7 +37,7 @@ class Run:
     name: str
     budget: str
     strategy: Callable[[], st.SearchStrategy]
-    check: Callable[[Any], None]
+    check: Callable[[Any], object]  # asserts; what it returns is not used
     doc: str
 
 
@@ -59,12 +59,11 @@ def _check_defect(case) -> None:
 
 
 def _moves() -> st.SearchStrategy:
-    finite = {"allow_nan": False, "allow_infinity": False}
     return st.tuples(
         _metamorphic_inputs(),
-        st.floats(-5e4, 5e4, **finite),
-        st.floats(-5e4, 5e4, **finite),
-        st.floats(-math.pi, math.pi, **finite),
+        st.floats(-5e4, 5e4, allow_nan=False, allow_infinity=False),
+        st.floats(-5e4, 5e4, allow_nan=False, allow_infinity=False),
+        st.floats(-math.pi, math.pi, allow_nan=False, allow_infinity=False),
     )
 
 
@@ -217,5 +216,5 @@ def hypothesis_test(
     example.__name__ = example.__qualname__ = f"fuzz_{name.replace('-', '_')}"
     # Every run shares this function's source, which Hypothesis hashes into the database key; the run's name keeps
     # the keys apart (the attribute Hypothesis itself uses to separate parametrized tests).
-    example._hypothesis_internal_add_digest = (key or name).encode()
+    example.__dict__["_hypothesis_internal_add_digest"] = (key or name).encode()
     return config(given(strategy if strategy is not None else run.strategy())(example))

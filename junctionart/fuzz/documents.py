@@ -263,7 +263,7 @@ def document_specs(
         max_roads_per_chain=max_roads_per_chain,
         max_elements=max_elements,
         max_lanes=max_lanes,
-        versions=tuple(tuple(v) for v in versions),
+        versions=tuple((v[0], v[1]) for v in versions),
     )
 
 

@@ -120,6 +120,14 @@ def _float(el, name: str) -> float | None:
     return v if math.isfinite(v) else None
 
 
+def _picked(el, name: str) -> float:
+    """The attribute as a finite number, of an element picked because it has one."""
+    v = _float(el, name)
+    if v is None:
+        raise ValueError(f"<{el.tag}> has no finite {name}")
+    return v
+
+
 def _linked_roads(root):
     """Roads (outside junctions) with at least one road or junction link and a readable plan view."""
     out = []
@@ -140,8 +148,8 @@ def _road_gap(m: Mutation, root) -> bool:
     d = 0.05 + 4.95 * m.amount
     angle = (m.picks[-1] % 360) * math.pi / 180
     for g in _geometries(road):
-        g.set("x", repr(_float(g, "x") + d * math.cos(angle)))
-        g.set("y", repr(_float(g, "y") + d * math.sin(angle)))
+        g.set("x", repr(_picked(g, "x") + d * math.cos(angle)))
+        g.set("y", repr(_picked(g, "y") + d * math.sin(angle)))
     return True
 
 
@@ -152,13 +160,13 @@ def _road_kink(m: Mutation, root) -> bool:
     road = m.pick(0, roads)
     gs = _geometries(road)
     a = (0.02 + 0.48 * m.amount) * (1 if m.picks[-1] % 2 else -1)
-    x0, y0 = _float(gs[0], "x"), _float(gs[0], "y")
+    x0, y0 = _picked(gs[0], "x"), _picked(gs[0], "y")
     c, s = math.cos(a), math.sin(a)
     for g in gs:
-        dx, dy = _float(g, "x") - x0, _float(g, "y") - y0
+        dx, dy = _picked(g, "x") - x0, _picked(g, "y") - y0
         g.set("x", repr(x0 + c * dx - s * dy))
         g.set("y", repr(y0 + s * dx + c * dy))
-        g.set("hdg", repr(_float(g, "hdg") + a))
+        g.set("hdg", repr(_picked(g, "hdg") + a))
     return True
 
 
@@ -174,10 +182,10 @@ def _planview(m: Mutation, root, attribute: str) -> bool:
     g = m.pick(1, gs[1:])
     if attribute == "xy":
         d = 0.05 + 2.0 * m.amount
-        g.set("x", repr(_float(g, "x") + d))
-        g.set("y", repr(_float(g, "y") - d))
+        g.set("x", repr(_picked(g, "x") + d))
+        g.set("y", repr(_picked(g, "y") - d))
     else:
-        g.set("hdg", repr(_float(g, "hdg") + (0.02 + 0.5 * m.amount)))
+        g.set("hdg", repr(_picked(g, "hdg") + (0.02 + 0.5 * m.amount)))
     return True
 
 
@@ -186,7 +194,7 @@ def _road_length(m: Mutation, root) -> bool:
     if not roads:
         return False
     road = m.pick(0, roads)
-    road.set("length", repr(_float(road, "length") * (1.05 + m.amount)))
+    road.set("length", repr(_picked(road, "length") * (1.05 + m.amount)))
     return True
 
 
@@ -251,7 +259,7 @@ def _lane_width_step(m: Mutation, root) -> bool:
     if not widths:
         return False
     w = m.pick(0, widths)
-    w.set("a", repr(_float(w, "a") + 0.5 + m.amount))
+    w.set("a", repr(_picked(w, "a") + 0.5 + m.amount))
     return True
 
 

@@ -54,14 +54,14 @@ def checked(data: bytes, config: Config | None = None, tolerated: frozenset[str]
     return report
 
 
-def checker_survives(data: bytes, tolerated: frozenset[str] = frozenset()) -> Report:
-    """Any document, however damaged: findings or a clear error, never a crash (but the ``tolerated`` known ones,
-    see :func:`checked`)."""
+def checker_survives(data: bytes, tolerated: frozenset[str] = frozenset()) -> Report | None:
+    """Any document, however damaged: findings or a clear error (``None``), never a crash (but the ``tolerated``
+    known ones, see :func:`checked`)."""
     STATS["damaged"] += 1
     try:
         return checked(data, tolerated=tolerated)
     except ReadError:
-        return None  # type: ignore[return-value]
+        return None
 
 
 def document_is_valid(data: bytes) -> Report:
@@ -120,7 +120,9 @@ def invalid_input_refused(action, tmp_file=None) -> str:
 def finding_keys(report: Report, rename: dict[str, str] | None = None) -> Counter:
     """What the metamorphic properties compare: (code, road, lane) of every finding, roads renamed by ``rename``."""
     rename = rename or {}
-    return Counter((f.code, rename.get(f.road, f.road), f.lane) for f in report.findings)
+    return Counter(
+        (f.code, rename.get(f.road, f.road) if f.road is not None else None, f.lane) for f in report.findings
+    )
 
 
 def _arc_lengths(g, p: np.ndarray) -> np.ndarray:

@@ -12,6 +12,7 @@ import numpy as np
 import shapely
 
 from ..curves import HermiteFit
+from ..errors import GenerationError
 
 
 class LinkFit(NamedTuple):
@@ -26,6 +27,14 @@ class LinkFit(NamedTuple):
     start: tuple[float, float]
     hdg: float
     fit: HermiteFit | None
+
+    def curve(self) -> HermiteFit:
+        """The fitted curve, of a link known to have one (a guard: the links compared or built all have one)."""
+        if self.fit is None:
+            raise GenerationError(
+                f"link from leg {self.leg_in} to leg {self.leg_out} has no curve; please report the seed"
+            )
+        return self.fit
 
 
 _P_CROSS = np.linspace(0.0, 1.0, 129)
@@ -48,7 +57,7 @@ def crossing(rows: list[LinkFit], skip: set[int]) -> set[int]:
         return set()
     idx = sorted({n for pair in pairs for n in pair})
     pos = {n: k for k, n in enumerate(idx)}
-    coef = np.array([rows[n].fit.coef for n in idx])
+    coef = np.array([rows[n].curve().coef for n in idx])
     p = _P_CROSS[None, :]
     u = coef[:, 0:1] + p * (coef[:, 1:2] + p * (coef[:, 2:3] + p * coef[:, 3:4]))
     v = coef[:, 4:5] + p * (coef[:, 5:6] + p * (coef[:, 6:7] + p * coef[:, 7:8]))

@@ -48,7 +48,11 @@ def _targets(legs: list[Leg], rule: TrafficRule) -> list[list[int]]:
             if feeders:
                 out[min(feeders, key=lambda i: abs(turn(legs, i, j)))].append(j)
     sign = 1.0 if rule is TrafficRule.RHT else -1.0
-    return [sorted(t, key=lambda j, i=i: sign * turn(legs, i, j)) for i, t in enumerate(out)]
+
+    def by_turn(i: int, targets: list[int]) -> list[int]:
+        return sorted(targets, key=lambda j: sign * turn(legs, i, j))
+
+    return [by_turn(i, t) for i, t in enumerate(out)]
 
 
 def plan(

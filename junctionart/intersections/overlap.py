@@ -45,8 +45,8 @@ def _lane_bodies(gs, side: float, w: float) -> list:
     last = first + n - 1
     pts = np.empty((len(owner), 2))
     cubic = np.array([isinstance(g, ParamPoly3) for g in geoms])
-    for i in np.flatnonzero(~cubic):  # U-turn arcs: few, one sample call each
-        pts[first[i] : last[i] + 1] = sample(geoms[i], int(n[i]))
+    for arc in np.flatnonzero(~cubic):  # U-turn arcs: few, one sample call each
+        pts[first[arc] : last[arc] + 1] = sample(geoms[arc], int(n[arc]))
     if cubic.any():
         rows = cubic[owner]
         idx, at = np.flatnonzero(rows), owner[rows]

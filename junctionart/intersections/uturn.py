@@ -93,7 +93,7 @@ def _centre_points(ref: Arc, w: float) -> np.ndarray:
 
 def _hermite_centre(row: LinkFit, t: float) -> np.ndarray:
     """Lane-centre polyline of a fitted link (its reference line is the lane's inner border, ``t`` from the centre)."""
-    c = row.fit.coef
+    c = row.curve().coef
     p = np.linspace(0.0, 1.0, _SAMPLES)
     u = c[0] + p * (c[1] + p * (c[2] + p * c[3]))
     v = c[4] + p * (c[5] + p * (c[6] + p * c[7]))
