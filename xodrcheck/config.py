@@ -186,9 +186,7 @@ class Tolerances:
         "(G013 says so), so time and memory stay bounded.",
         rules="G013",
     )
-    max_file_bytes: int = _tolerance(
-        512 * 1024 * 1024, "B", "Files larger than this are refused with a clear error."
-    )
+    max_file_bytes: int = _tolerance(512 * 1024 * 1024, "B", "Files larger than this are refused with a clear error.")
 
     max_output_points: int = _tolerance(
         10_000_000,

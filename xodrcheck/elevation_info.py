@@ -78,7 +78,8 @@ def elevation_info(doc: Document) -> ElevationInfo | None:
             if link is None or link.element_type is not ElementType.ROAD or link.element_id not in roads:
                 continue
             theirs = _end_z(roads[link.element_id], link.contact_point)
-            if theirs is None:
+            mine = _end_z(road, own)  # (never None: own is an end)
+            if theirs is None or mine is None:
                 continue
-            step, links = max(step, abs(_end_z(road, own) - theirs)), links + 1  # type: ignore[operator]
+            step, links = max(step, abs(mine - theirs)), links + 1
     return ElevationInfo(lo, hi, grade, step, links)

@@ -174,7 +174,9 @@ def _lerp(start: float | None, end: float | None, fallback: float | None, f: np.
         return None if fallback is None else np.full(len(f), fallback)
     a = start if start is not None else end
     b = end if end is not None else start
-    return a + (b - a) * f  # type: ignore[operator]
+    if a is None or b is None:  # not both None (above), so each falls back on the other
+        return None
+    return a + (b - a) * f
 
 
 def instances(obj: RoadObject) -> list[Instance]:
@@ -197,6 +199,8 @@ def instances(obj: RoadObject) -> list[Instance]:
         f = ds / r.length if r.length > 0 else np.zeros(count)
         t = repeat_t(r, r.s + ds)
         z = _lerp(r.z_offset_start, r.z_offset_end, obj.z_offset or 0.0, f)
+        if z is None:  # never: the fallback is a number
+            continue
         sizes = [
             _lerp(r.length_start, r.length_end, obj.length, f),
             _lerp(r.width_start, r.width_end, obj.width, f),
@@ -207,5 +211,5 @@ def instances(obj: RoadObject) -> list[Instance]:
         for k in range(count):
             length, width, radius, height = (None if a is None else float(a[k]) for a in sizes)
             volume = _volume(None, None, radius, height) if circular else _volume(length, width, None, height)
-            out.append(Instance(float(r.s + ds[k]), float(t[k]), float(z[k]), volume, r.line))  # type: ignore[index]
+            out.append(Instance(float(r.s + ds[k]), float(t[k]), float(z[k]), volume, r.line))
     return out

@@ -78,7 +78,8 @@ def _boolean(el: etree._Element, name: str) -> bool | None:
 
 def _numbers(el: etree._Element, names: tuple[str, ...]) -> tuple[float, ...] | None:
     values = tuple(_number(el, name) for name in names)
-    return None if any(v is None for v in values) else values  # type: ignore[return-value]
+    found = tuple(v for v in values if v is not None)
+    return found if len(found) == len(values) else None
 
 
 def _line(el: etree._Element) -> int:

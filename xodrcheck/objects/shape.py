@@ -51,11 +51,9 @@ def outline_uv(outline: Outline, step: float = 0.1) -> tuple[np.ndarray, np.ndar
             us.append(found[0])
             vs.append(found[1])
         return np.concatenate(us), np.concatenate(vs)
-    if outline.corners and all(isinstance(c, CornerLocal) for c in outline.corners):
-        return (
-            np.array([c.u for c in outline.corners]),  # type: ignore[union-attr]
-            np.array([c.v for c in outline.corners]),  # type: ignore[union-attr]
-        )
+    local = [c for c in outline.corners if isinstance(c, CornerLocal)]
+    if local and len(local) == len(outline.corners):
+        return np.array([c.u for c in local]), np.array([c.v for c in local])
     return None
 
 

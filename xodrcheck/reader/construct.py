@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Callable
-from typing import TypeVar
+from typing import TypeVar, cast
 
 from xodrcheck import model
 
@@ -39,10 +39,10 @@ def constructor(cls: type[T]) -> Callable[..., T]:
     body = "".join(f"    _set_{f.name}(obj, {f.name})\n" for f in fields)
     source = f"def make({', '.join(params)}):\n    obj = _new(_cls)\n{body}    return obj\n"
     exec(source, namespace)
-    make = namespace["make"]
-    make.__name__ = make.__qualname__ = cls.__name__  # type: ignore[attr-defined]
+    make = cast("Callable[..., T]", namespace["make"])  # the function exec just defined
+    make.__name__ = make.__qualname__ = cls.__name__
     make.__doc__ = f"Build a {cls.__name__} (same parameters as the class)."
-    return make  # type: ignore[return-value]
+    return make
 
 
 make_cubic = constructor(model.Cubic)

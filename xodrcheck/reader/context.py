@@ -191,7 +191,8 @@ class Context:
             self.number(el, name, then, nonneg=i in nonneg) if name not in absent else None
             for i, name in enumerate(names)
         ]
-        return None if any(v is None for v in values) else tuple(values)  # type: ignore[arg-type]
+        found = tuple(v for v in values if v is not None)
+        return found if len(found) == len(values) else None
 
     def integer(self, el: etree._Element, name: str, then: str, *, required: bool = True) -> int | None:
         raw = el.get(name)

@@ -97,9 +97,10 @@ def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
         if s - s != 0.0 or s < 0.0:
             raise ValueError
     except (TypeError, ValueError):
-        s = ctx.number(el, "sOffset", SKIP_RECORD, nonneg=True)  # type: ignore[assignment]
-        if s is None:
+        given = ctx.number(el, "sOffset", SKIP_RECORD, nonneg=True)
+        if given is None:
             return None
+        s = given
     kind = get("type")
     if kind is None:
         ctx.missing(el, "type", SKIP_RECORD)
@@ -222,11 +223,10 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
         if s - s != 0.0 or s < 0.0:
             raise ValueError
     except (TypeError, ValueError):
-        s = ctx.number(  # type: ignore[assignment]
-            el, "s", "the lane section and its lanes are skipped", nonneg=True, uid=U.S_ATTR_VALUE
-        )
-        if s is None:
+        given = ctx.number(el, "s", "the lane section and its lanes are skipped", nonneg=True, uid=U.S_ATTR_VALUE)
+        if given is None:
             return None
+        s = given
     single_side = length = None
     if el.get("singleSide") is not None:
         single_side = ctx.boolean(el, "singleSide", "read as absent")

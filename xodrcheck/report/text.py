@@ -15,11 +15,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
+from typing import TypeGuard
 
 from xodrcheck.findings import Finding
 
 
-def _finite(v: float | None) -> bool:
+def _finite(v: float | None) -> TypeGuard[float]:
     return v is not None and math.isfinite(v)
 
 
@@ -31,7 +32,7 @@ def where(f: Finding) -> str:
         parts.append(f"{f.road}/{lane}/{s}")
     if _finite(f.x) and _finite(f.y):
         parts.append(f"x={f.x:.3f} y={f.y:.3f}")
-        if _finite(f.z) and abs(f.z) >= 0.0005:  # type: ignore[arg-type]
+        if _finite(f.z) and abs(f.z) >= 0.0005:
             parts.append(f"z={f.z:.3f}")
     return f" [{' '.join(parts)}]" if parts else ""
 

@@ -273,24 +273,25 @@ def _zone_lanes(ctx: Context, j: JunctionParts) -> list[tuple[Road, int, bool, f
     ):
         return None
     (c1, l1), (c2, l2) = marked
-    out = []
+    out: list[tuple[Road, int, bool, float, int]] = []
     if c1.incoming_road == c2.incoming_road and l1.from_lane == l2.from_lane:  # an exit: the linked roads' lanes
         for c, ll in marked:
             road = ctx.road(c.linked_road)
-            if road is None or c.contact_point not in ("start", "end"):
+            # (lanes and overlapZone are all given: checked above)
+            if road is None or c.contact_point not in ("start", "end") or ll.to_lane is None or ll.overlap_zone is None:
                 return None
             out.append((road, ll.to_lane, c.contact_point == "end", ll.overlap_zone, ll.line))
     elif c1.linked_road == c2.linked_road and l1.to_lane == l2.to_lane:  # an entry: the incoming roads' lanes
         for c, ll in marked:
             road = ctx.road(c.incoming_road)
             link = road.successor if road is not None else None
-            if road is None:
+            if road is None or ll.from_lane is None or ll.overlap_zone is None:
                 return None
             at_end = link is not None and link.element_type is ElementType.JUNCTION and link.element_id == j.id
             out.append((road, ll.from_lane, at_end, ll.overlap_zone, ll.line))
     else:
         return None
-    return out  # type: ignore[return-value]
+    return out
 
 
 @rule("J030", "overlap-zone-too-short", Category.JUNCTION, Severity.ERROR, uids=(U.DIRECT_OVERLAP_COVERAGE,))

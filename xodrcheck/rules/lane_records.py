@@ -42,8 +42,8 @@ def lane_listing_order(ctx: Context):
     for lanes in by_section(ctx):
         listed = [lane for lane in lanes if lane.id is not None and _on_its_side(lane)]
         for before, lane in itertools.pairwise(listed):
-            if lane.id > before.id:  # type: ignore[operator]
-                order = " ".join(str(x.id) for x in sorted(listed, key=lambda x: -x.id))  # type: ignore[operator]
+            if lane.id is not None and before.id is not None and lane.id > before.id:  # (ids given: filtered above)
+                order = " ".join(str(i) for i in sorted((x.id for x in listed if x.id is not None), reverse=True))
                 yield lane_listing_order.finding(
                     f"{lane.describe()}: lane {lane.id} is listed after lane {before.id}; list the lanes from left "
                     f"to right, with falling ids ({order})",

@@ -48,17 +48,17 @@ def lane_sections_from_start(ctx: Context):
         <road id="1" length="100"> ... <lanes><laneSection s="5"> ...
     """
     for road, sections in permanent_sections(ctx).items():
-        starts = [section for section in sections if section.s is not None]
+        starts = [(section.s, section) for section in sections if section.s is not None]
         if not starts:
             continue
-        first = min(starts, key=lambda section: section.s)  # type: ignore[arg-type,return-value]
-        if first.s > _ZERO:  # type: ignore[operator]
+        s, first = min(starts, key=lambda item: item[0])
+        if s > _ZERO:
             yield lane_sections_from_start.finding(
-                f"road {road}: the first lane section starts at s={first.s:g}; from s=0 to there the road has no lane "
+                f"road {road}: the first lane section starts at s={s:g}; from s=0 to there the road has no lane "
                 "section and no centre lane: start the first lane section at s=0",
                 uid=U.LANE_SECT_FIRST if ctx.version is None or ctx.version >= (1, 9) else U.CENTER_ELEM_DEFINITION,
                 road=road,
-                section_s=first.s,
+                section_s=s,
                 s=0.0,
                 line=first.element.sourceline,
             )

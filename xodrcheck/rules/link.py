@@ -291,10 +291,12 @@ def lane_border_gap(ctx: Context):
                 continue
             done.add(key)
             found = _border_gap(mine, lane, theirs, other)
-            severity = None if found is None else tol.grade(found[0])
+            if found is None:
+                continue
+            gap, point = found
+            severity = tol.grade(gap)
             if severity is None:
                 continue
-            gap, point = found  # type: ignore[misc]
             yield lane_border_gap.finding(
                 f"lane {lane} of road {road.id} and lane {other} of road {neighbour.road.id} are linked at "
                 f"{_describe(road, end, neighbour)} but their borders are {gap:.4g} m apart: fix the link, the "
@@ -388,7 +390,9 @@ def link_step(ctx: Context):
     tol = ctx.tolerances
     for step in _steps(ctx, tol.position):
         severity = tol.grade(step.size)
-        mine, theirs = step.points  # type: ignore[misc]
+        if step.points is None:  # _steps yields steps with points only
+            continue
+        mine, theirs = step.points
         what = (
             "their reference lines"
             if step.lane is None
@@ -566,13 +570,15 @@ def _link_groups(pairs: dict[tuple[int, int], int]) -> Iterator[tuple[tuple[int,
         before_of.setdefault(b, []).append(a)
     done: set[tuple[int, int]] = set()
     for a, targets in sorted(after_of.items()):
-        if len(targets) > 1 and all(len(before_of[b]) == 1 for b in targets) and _band(targets):
-            inner, outer = _band(targets)  # type: ignore[misc]
+        band = _band(targets) if len(targets) > 1 and all(len(before_of[b]) == 1 for b in targets) else None
+        if band is not None:
+            inner, outer = band
             done.update((a, b) for b in targets)
             yield (a, a, inner, outer), pairs[(a, targets[0])]
     for b, sources in sorted(before_of.items()):
-        if len(sources) > 1 and all(len(after_of[a]) == 1 for a in sources) and _band(sources):
-            inner, outer = _band(sources)  # type: ignore[misc]
+        band = _band(sources) if len(sources) > 1 and all(len(after_of[a]) == 1 for a in sources) else None
+        if band is not None:
+            inner, outer = band
             done.update((a, b) for a in sources)
             yield (inner, outer, b, b), pairs[(sources[0], b)]
     for (a, b), line in sorted(pairs.items()):

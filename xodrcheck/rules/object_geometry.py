@@ -45,14 +45,16 @@ class Placed:
     def __init__(self, ctx: Context, obj: RoadObject):
         self.ctx, self.obj = ctx, obj
         self.volume = volume_of(obj)
-        self._frame: Frame | bool | None = False
+        self._frame: Frame | None = None
+        self._framed = False
 
     @property
     def frame(self) -> Frame | None:
-        if self._frame is False:
+        if not self._framed:
             geometry = self.ctx.geometry(self.obj.road)
             self._frame = None if geometry is None or not geometry.road.plan_view else frame_of(self.obj, geometry)
-        return self._frame  # type: ignore[return-value]
+            self._framed = True
+        return self._frame
 
     def road_points(self, s, t, dz) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
         """Local ``u``, ``v``, ``z`` of road points (``None`` without frame)."""
@@ -60,7 +62,9 @@ class Placed:
         if frame is None:
             return None
         geometry = self.ctx.geometry(self.obj.road)
-        x, y, _ = road_xy(geometry, s, t)  # type: ignore[arg-type]
+        if geometry is None:  # never: the frame needs the geometry
+            return None
+        x, y, _ = road_xy(geometry, s, t)
         return frame.to_local(x, y, dz)
 
     def plan(self, u: float, v: float) -> dict:

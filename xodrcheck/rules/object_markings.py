@@ -195,7 +195,8 @@ _COUNT_UIDS = (U.MARKING_REFERENCE_COUNT, U.OBJECT_MARKING_REFERENCE_COUNT)
 def _positions(outline: Outline, marking: Marking) -> list[int] | None:
     index = {p.id: k for k, p in reversed(list(enumerate(outline.points))) if p.id is not None}
     found = [None if r.id is None else index.get(r.id) for r in marking.references]
-    return None if any(k is None for k in found) else found  # type: ignore[return-value]
+    positions = [k for k in found if k is not None]
+    return positions if len(positions) == len(found) else None
 
 
 def _order_problem(positions: list[int], n: int, closed: bool) -> str | None:

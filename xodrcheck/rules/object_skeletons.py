@@ -185,11 +185,15 @@ def skeleton_vertex_size(ctx: Context):
             )
 
 
+def _point(v: Vertex) -> tuple[float, float, float] | None:
+    return None if v.a is None or v.b is None or v.c is None else (v.a, v.b, v.c)
+
+
 def _same_place(a: Vertex, b: Vertex, tol: float) -> bool:
-    pa, pb = (a.a, a.b, a.c), (b.a, b.b, b.c)
-    if a.kind != b.kind or None in pa or None in pb:
+    pa, pb = _point(a), _point(b)
+    if a.kind != b.kind or pa is None or pb is None:
         return False
-    return math.dist(pa, pb) <= tol  # type: ignore[arg-type]
+    return math.dist(pa, pb) <= tol
 
 
 @rule("B033", "skeleton-segment-degenerate", Category.OBJECT, Severity.INFO, uids=(U.SKELETON_POINTS_REQUIREMENTS,))

@@ -42,7 +42,7 @@ def road_type_out_of_order(ctx: Context):
     """
     for road in road_records(ctx):
         for prev, nxt in itertools.pairwise(t for t in road.types if t.s is not None):
-            if nxt.s < prev.s:  # type: ignore[operator]
+            if nxt.s is not None and prev.s is not None and nxt.s < prev.s:  # (both are: filtered above)
                 yield road_type_out_of_order.finding(
                     f"road {road.road}: the <type> at line {nxt.line} starts at s={nxt.s:g}, before the one at line "
                     f"{prev.line} (s={prev.s:g}); write the road's types in ascending order of s",
@@ -135,7 +135,11 @@ def shape_groups(shapes: tuple[Shape, ...]) -> Iterator[tuple[float, list[Shape]
         if sh.s is not None and sh.t is not None:
             groups.setdefault(sh.s, []).append(sh)
     for s, group in groups.items():
-        yield s, sorted(group, key=lambda sh: sh.t)  # type: ignore[arg-type, return-value]
+        yield s, sorted(group, key=_t)
+
+
+def _t(shape: Shape) -> float:
+    return math.nan if shape.t is None else shape.t  # (never NaN here: shape_groups keeps shapes with a t)
 
 
 def _right_edge(ctx: Context, road: Road) -> tuple[float, float] | None:
@@ -218,7 +222,7 @@ def shapes_start_left(ctx: Context):
     for records in road_records(ctx):
         for s, group in shape_groups(records.shapes):
             first = group[0]
-            if first.t >= 0:  # type: ignore[operator]
+            if first.t is not None and first.t >= 0:  # (it has a t: shape_groups keeps those only)
                 yield shapes_start_left.finding(
                     f"road {records.road}: the shapes at s={s:g} start at t={first.t:g}: shapes start at the right "
                     "side of the road (a negative t) and run leftwards; add a shape at the right edge",

@@ -45,13 +45,14 @@ def _gantry_boxes(ctx: Context) -> list[tuple[str, float, float, float, float, f
     out = []
     for road_id, objects in ctx.objects.items():
         for obj in objects:
-            if obj.type != "gantry" or None in (obj.s, obj.t, obj.length, obj.width):
+            s, t, length, width = obj.s, obj.t, obj.length, obj.width
+            if obj.type != "gantry" or s is None or t is None or length is None or width is None:
                 continue
-            placed = _place(ctx, road_id, obj.s, obj.t)  # type: ignore[arg-type]
+            placed = _place(ctx, road_id, s, t)
             if placed is None:
                 continue
             x, y, hdg = placed
-            half_l, half_w = obj.length / 2 + reach, obj.width / 2 + reach  # type: ignore[operator]
+            half_l, half_w = length / 2 + reach, width / 2 + reach
             out.append((obj.id, x, y, hdg + (obj.hdg or 0.0), half_l, half_w, road_id, obj.line))
     return out
 

@@ -315,7 +315,9 @@ def cross_section_surface_strips(ctx: Context):
 
 
 def _int(raw: str | None) -> int | None:
+    if raw is None:
+        return None
     try:
-        return int(raw)  # type: ignore[arg-type]
+        return int(raw)
     except (TypeError, ValueError):
         return None
