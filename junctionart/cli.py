@@ -14,7 +14,7 @@ import sys
 import time
 from collections.abc import Sequence
 from pathlib import Path
-from typing import Any, NamedTuple
+from typing import Any, NamedTuple, NoReturn
 
 from .errors import JunctionArtError, OutputError, ParamsError
 from .params import size_check
@@ -353,7 +353,7 @@ def _add_search(sub: argparse._SubParsersAction) -> None:
 class _Parser(argparse.ArgumentParser):
     """Usage errors as one line and exit code 2 (``junctionart generate -h`` still shows the full help)."""
 
-    def error(self, message: str) -> None:  # type: ignore[override]
+    def error(self, message: str) -> NoReturn:
         self.exit(2, f"{self.prog}: error: {message}\n")
 
 

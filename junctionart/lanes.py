@@ -11,6 +11,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .controllines import ControlLines
+from .errors import GenerationError
 from .graph import chains
 from .network import Network
 from .params import Params
@@ -56,7 +57,9 @@ def assign(net: Network, lines: ControlLines, params: Params, rng: np.random.Gen
         elif fixed:
             e, fw = fixed[0]
             line = lines.lines[net.edges[e].line]
-            fwd, bwd = line.lanes  # type: ignore[misc]
+            if line.lanes is None:  # never: fixed holds the edges of lines with given lane counts
+                raise GenerationError(f"control line {net.edges[e].line} has no lane counts; please report the seed")
+            fwd, bwd = line.lanes
             # the line's direction is along its points; the chain may run the other way over this edge
             edge = net.edges[e]
             a, b = (edge.u, edge.v) if fw else (edge.v, edge.u)
@@ -71,4 +74,7 @@ def assign(net: Network, lines: ControlLines, params: Params, rng: np.random.Gen
         cfg = LaneConfig(fwd, bwd, median)
         for e, fw in zip(ch.edges, ch.forward):
             lanes[e] = cfg if fw else cfg.reversed()
-    return LanedNetwork(net, tuple(lanes))  # type: ignore[arg-type]
+    configs = tuple(c for c in lanes if c is not None)
+    if len(configs) != len(lanes):  # never: the chains cover every edge
+        raise GenerationError("an edge of the network is in no chain; please report the seed")
+    return LanedNetwork(net, configs)

@@ -101,9 +101,10 @@ def _operand(node: ast.AST, known: tuple[str, ...], names: list[str], text: str)
 def _operand_value(node: ast.AST, values: Mapping[str, float | None]) -> float | None:
     if isinstance(node, ast.Name):
         return values.get(node.id)
-    if isinstance(node, ast.UnaryOp):
-        return -float(node.operand.value)  # type: ignore[attr-defined]
-    return float(node.value)  # type: ignore[attr-defined]
+    number = node.operand if isinstance(node, ast.UnaryOp) else node  # -NUMBER or NUMBER (_operand admits no other)
+    if not isinstance(number, ast.Constant) or not isinstance(number.value, (int, float)):
+        raise TypeError(f"not a number: {ast.dump(node)}")
+    return -float(number.value) if number is not node else float(number.value)
 
 
 def _value(node: ast.AST, values: Mapping[str, float | None]) -> bool:
