@@ -22,6 +22,7 @@ from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
+from xodrcheck import memory
 from xodrcheck.config import Config, ConfigError
 from xodrcheck.findings import Finding, OutOfTime, Severity
 from xodrcheck.rules import load_rules
@@ -198,9 +199,17 @@ def run_rules(ctx: Context, selection: Selection) -> tuple[list[Finding], list[s
                 )
             )
             continue
+        started = time.monotonic()
         findings.extend(_run_rule(rule, ctx))
         run.append(rule.code)
+        if time.monotonic() - started > _RELEASE_AFTER:
+            memory.release()  # a rule that ran long built and dropped much: give it back before the next
     return findings, run
+
+
+#: Seconds a rule runs before the memory it freed is handed back to the system (:func:`xodrcheck.memory.release`);
+#: quick rules on small files skip it.
+_RELEASE_AFTER = 0.2
 
 
 def _version_text(ctx_version: tuple[int, int] | None) -> str | None:
@@ -227,6 +236,7 @@ def check(
     selection = Selection(tuple(select) or config.select, tuple(ignore) or config.ignore)
     started = time.monotonic()
     result = read(source, max_bytes=config.tolerances.max_file_bytes)
+    memory.release()  # the reader's parse tree is gone: its pages go back to the system before the rules start
     data = _raw(source if isinstance(source, bytes) else _read_bytes(result.path), config.tolerances.max_file_bytes)
     findings = [f for f in result.findings if selection.wants_finding(f)]
     run = [

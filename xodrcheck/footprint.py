@@ -36,6 +36,7 @@ class Footprints:
     def __init__(self, surfaces: LaneSurfaces, out_of_time: Callable[[], bool] | None = None):
         self.surfaces = surfaces
         self._out_of_time = out_of_time
+        self._near: np.ndarray | None = None
         order, owner = surfaces.outline_order()
         xy = surfaces.vertices[:, :2]
         if len(surfaces):
@@ -86,9 +87,12 @@ class Footprints:
         return float(total - shapely.area(self.polygons[lane]))
 
     def near_pairs(self) -> np.ndarray:
-        """``(2, P)`` lane-strip index pairs ``i < j`` whose footprints intersect."""
-        pairs = self.tree.query(self.polygons, predicate="intersects")
-        return pairs[:, pairs[0] < pairs[1]]
+        """``(2, P)`` lane-strip index pairs ``i < j`` whose footprints intersect (queried once: the overlap rules
+        between roads and within a road share it)."""
+        if self._near is None:
+            pairs = self.tree.query(self.polygons, predicate="intersects")
+            self._near = pairs[:, pairs[0] < pairs[1]]
+        return self._near
 
     def heights(self, lane: int, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """Surface height of a lane strip at plan-view ``points`` ``(P, 2)``, and the face index (in the whole mesh)

@@ -57,6 +57,43 @@ def _lane_pieces(ctx: Context, road: Road, index: int):
     return cache[key]
 
 
+_EXTREMES: weakref.WeakKeyDictionary[Context, dict] = weakref.WeakKeyDictionary()
+
+
+def _extremes(ctx: Context, road: Road, index: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(minimum, where, maximum)`` of every piece's cubic of a section (see :func:`_cubic_minimum`), for the whole
+    file in one vectorised pass on first use (the same numbers as section by section: every column is its own cubic;
+    a thousand small calls cost more than the arithmetic)."""
+    cache = _EXTREMES.get(ctx)
+    if cache is None:
+        keys, blocks = [], []
+        for each in ctx.document.roads:
+            if usable(ctx, each) is not None:
+                for i in range(len(each.lane_sections)):
+                    pieces = _lane_pieces(ctx, each, i)
+                    if pieces is not None:
+                        keys.append((id(each), i))
+                        blocks.append(pieces[4])
+        cache = _EXTREMES[ctx] = dict(zip(keys, _split_extremes(blocks)))
+    key = (id(road), index)
+    if key not in cache:  # a road the file-wide pass skipped (asked for by a caller of its own)
+        pieces = _lane_pieces(ctx, road, index)
+        assert pieces is not None, "extremes are asked for sections with pieces only"
+        cache[key] = _split_extremes([pieces[4]])[0]
+    return cache[key]
+
+
+def _split_extremes(blocks: list[np.ndarray]) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
+    if not blocks:
+        return []
+    together = np.concatenate(blocks, axis=1)
+    with np.errstate(over="ignore", invalid="ignore"):
+        low, where = _cubic_minimum(together)
+        high = -_cubic_minimum(-together)[0]
+    cuts = np.cumsum([block.shape[1] for block in blocks])[:-1]
+    return list(zip(np.split(low, cuts), np.split(where, cuts), np.split(high, cuts)))
+
+
 def _section_pieces(ctx: Context, road: Road, index: int):
     """Every lane with records in a section and its signed width as exact cubics: ``(lanes, a, b, coefficients)``
     with the pieces ``[a, b]`` between consecutive knots and ``coefficients[:, :, k]`` the cubic in ``u`` in [0, 1] of
@@ -96,9 +133,8 @@ def lane_minima(ctx: Context, road: Road, index: int):
     pieces = _lane_pieces(ctx, road, index)
     if pieces is None:
         return
-    lanes, a, b, raw, coefficients = pieces
-    with np.errstate(over="ignore", invalid="ignore"):
-        value, u = _cubic_minimum(coefficients)
+    lanes, a, b, raw, _ = pieces
+    value, u, _ = _extremes(ctx, road, index)
     # Where the cubic fit overflows (widths near the float limit), fall back to the smallest width at the nodes.
     nodes = np.where(np.isnan(raw), np.inf, raw)
     lost = ~np.isfinite(value)
@@ -116,10 +152,8 @@ def lane_width_bounds(ctx: Context, road: Road, index: int):
     pieces = _lane_pieces(ctx, road, index)
     if pieces is None:
         return None
-    lanes, a, b, raw, coefficients = pieces
-    with np.errstate(over="ignore", invalid="ignore"):
-        low = _cubic_minimum(coefficients)[0]
-        high = -_cubic_minimum(-coefficients)[0]
+    lanes, a, b, raw, _ = pieces
+    low, _, high = _extremes(ctx, road, index)
     nodes = np.where(np.isfinite(raw), raw, np.nan)
     lost = ~(np.isfinite(low) & np.isfinite(high))
     with np.errstate(invalid="ignore"):

@@ -1,0 +1,49 @@
+"""Give freed memory back to the operating system between the steps of a big check.
+
+A check parses the file with lxml, builds the model, frees the parse tree, and then runs rule after rule, each
+building and dropping numpy arrays and geometry. glibc's allocator keeps most of what is freed in its heap instead of
+returning it (the lxml tree of a 15 MB file is about 200 MB of small blocks): the process's resident size then grows
+with every step although the live data does not, and a 50 MB map peaked at 3.5 GB. :func:`release` asks the
+allocator to return its free pages (``malloc_trim(0)``), which it does in milliseconds. On a C library without
+``malloc_trim`` (macOS, musl) it does nothing: results never depend on it, only the process's size.
+"""
+
+from __future__ import annotations
+
+import ctypes
+import ctypes.util
+import functools
+from collections.abc import Callable
+
+
+@functools.cache
+def _trim() -> Callable[[int], int] | None:
+    try:
+        libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6")
+        trim = libc.malloc_trim
+    except (OSError, AttributeError):
+        return None
+    trim.argtypes = [ctypes.c_size_t]
+    trim.restype = ctypes.c_int
+    return trim
+
+
+def release() -> bool:
+    """Return the allocator's free memory to the operating system; ``True`` if this C library can."""
+    trim = _trim()
+    if trim is None:
+        return False
+    trim(0)
+    return True
+
+
+def resident_mb() -> float | None:
+    """The process's resident set size in MB (Linux ``/proc``), ``None`` where it cannot be read."""
+    try:
+        with open("/proc/self/statm") as handle:
+            pages = int(handle.read().split()[1])
+    except (OSError, ValueError, IndexError):
+        return None
+    import os
+
+    return pages * os.sysconf("SC_PAGE_SIZE") / 2**20
