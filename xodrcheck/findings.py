@@ -32,6 +32,7 @@ class Category(enum.Enum):
     SIGNAL = "signal"
     RAILROAD = "railroad"
     SURFACE = "surface"
+    SIGNAL_CONTROL = "signal-control"
 
     def __str__(self) -> str:
         return self.value

@@ -68,6 +68,7 @@ class SignalReference:
     orientation: str | None
     validities: tuple[Validity, ...] = ()
     line: int = 0
+    s: float | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -189,7 +190,12 @@ def read_signals(root: etree._Element) -> Signals:
                 elif name == "signalReference":
                     references.append(
                         SignalReference(
-                            road_id, el.get("id"), el.get("orientation"), _validities(el), el.sourceline or 0
+                            road_id,
+                            el.get("id"),
+                            el.get("orientation"),
+                            _validities(el),
+                            el.sourceline or 0,
+                            _number(el, "s"),
                         )
                     )
     controllers = tuple(

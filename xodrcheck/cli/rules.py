@@ -176,6 +176,7 @@ def run(args: argparse.Namespace) -> int:
         print(json.dumps([_as_dict(r) for r in rules], indent=2))
         return 0
     width = max((len(r.name) for r in rules), default=0)
+    kind = max((len(r.category.value) for r in rules), default=0)
     for r in rules:
-        print(f"{r.code}  {r.name:<{width}}  {r.category.value:<9}  {r.severity!s:<7}  {r.summary}")
+        print(f"{r.code}  {r.name:<{width}}  {r.category.value:<{kind}}  {r.severity!s:<7}  {r.summary}")
     return 0

@@ -37,6 +37,8 @@ prefix    category    codes
                       lie (:mod:`.object_geometry`), surfaces (:mod:`.object_surfaces`)
 ``T``     signal      ``T0xx`` signals, signal references, boards, controllers (:mod:`.signal`,
                       :mod:`.signal_validity`, :mod:`.signal_gantry`)
+``V``     signal-     ``V0xx`` what signal controllers let go together (:mod:`.signal_control`)
+          control
 ``W``     railroad    ``W0xx`` railroads (tracks, switches, stations; :mod:`.railroad`)
 ``U``     surface     ``U0xx`` road surfaces (CRG, cross-section surfaces; :mod:`.surface`)
 ========  ==========  =========================================================================================
@@ -95,6 +97,7 @@ FAMILIES = (
     "signal",
     "signal_validity",
     "signal_gantry",
+    "signal_control",
     "surface",
     "railroad",
 )
