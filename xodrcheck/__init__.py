@@ -12,20 +12,20 @@ Every error xodrcheck raises on purpose derives from :class:`XodrError` (``ReadE
 all; ``ConfigError``: a bad configuration or tolerance; ``OutputError``: an output file cannot be written). Problems
 *in* a map are never raised: they are :class:`Finding` s of the report.
 
-The other names load on first use (PEP 562), so ``import xodrcheck`` and the command line start fast.
+Every name loads on first use (PEP 562; ``check`` through the package's module type, :class:`_Package`), so
+``import xodrcheck`` and the command line start fast: ``import xodrcheck`` imports no other module of the package.
 """
 
 from __future__ import annotations
 
 import importlib
+import sys
+from types import ModuleType
 from typing import TYPE_CHECKING, Any
-
-# Eager: the submodule xodrcheck.check shares its name with the function, and importing a submodule binds the
-# package attribute to the module, so the function must be bound after it, here.
-from xodrcheck.check import Report, check, is_valid, is_valid_reason
 
 if TYPE_CHECKING:
     from xodrcheck.atomic import OutputError
+    from xodrcheck.check import Report, check, is_valid, is_valid_reason
     from xodrcheck.config import Config, ConfigError, Tolerances
     from xodrcheck.findings import Category, Finding, ReadError, Severity, XodrError
     from xodrcheck.model import Document, LaneKey
@@ -42,9 +42,12 @@ _EXPORTS = {
     "OutputError": "xodrcheck.atomic",
     "ReadError": "xodrcheck.findings",
     "ReadResult": "xodrcheck.reader",
+    "Report": "xodrcheck.check",
     "Severity": "xodrcheck.findings",
     "Tolerances": "xodrcheck.config",
     "XodrError": "xodrcheck.findings",
+    "is_valid": "xodrcheck.check",
+    "is_valid_reason": "xodrcheck.check",
     "read": "xodrcheck.reader",
 }
 
@@ -79,4 +82,28 @@ def __getattr__(name: str) -> Any:
 
 
 def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_EXPORTS))
+    return sorted(set(globals()) | set(_EXPORTS) | {"check"})
+
+
+class _Package(ModuleType):
+    """The package's module type: ``xodrcheck.check`` is the function :func:`xodrcheck.check.check`, loaded on first
+    use, although the submodule of that name binds itself to the package when it is imported (the import system sets
+    the parent's attribute after loading a submodule; this property keeps the function there instead)."""
+
+    @property
+    def check(self) -> Any:
+        override = vars(self).get("_check_function")
+        if override is not None:
+            return override
+        from xodrcheck.check import check
+
+        return check
+
+    @check.setter
+    def check(self, value: Any) -> None:
+        if isinstance(value, ModuleType) and value.__name__ == f"{__name__}.check":
+            return  # the submodule binding itself: the package keeps naming the function
+        vars(self)["_check_function"] = value  # an explicit assignment (a test's monkeypatch, say) wins
+
+
+sys.modules[__name__].__class__ = _Package
