@@ -22,11 +22,20 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-from benchmarks.asam_qc import COVERED_BY, covered, ensure_venv, run_asam  # noqa: E402 (after the sys.path entry)
+from tests.interop.asam_harness import COVERED_BY, covered, run_asam  # noqa: E402 (after the sys.path entry)
 from xodrcheck.check import check  # noqa: E402 (after the sys.path entry)
 
 _MINOR = re.compile(rb'revMinor\s*=\s*"(\d+)"')
 OLDER = ("Town01.xodr", "fabriksgatan.xodr", "junction_ma.xodr", "highway_merge.xodr")
+
+
+def ensure_venv(venv: Path) -> Path:
+    """The ``qc_opendrive`` command of ``venv``, creating the environment (python -m venv + pip) when missing."""
+    command = venv / "bin" / "qc_opendrive"
+    if not command.exists():
+        subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+        subprocess.run([str(venv / "bin" / "pip"), "install", "-q", "asam-qc-opendrive"], check=True)
+    return command
 
 
 def default_files(corpus: Path) -> list[Path]:

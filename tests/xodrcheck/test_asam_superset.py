@@ -5,13 +5,12 @@ ASAM runs from its own virtual environment at ``$ASAM_VENV`` (default ``<repo>/.
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 import pytest
 
-from benchmarks.asam_qc import COVERED_BY, covered, run_asam
-from tests.conftest import REPO, corpus_root
+from tests.conftest import corpus_root
+from tests.interop.asam_harness import COVERED_BY, AsamUnavailable, asam_command, covered, run_asam
 from xodrcheck.check import check
 
 pytestmark = [pytest.mark.corpus, pytest.mark.slow]
@@ -27,14 +26,10 @@ FILES = [
 
 @pytest.fixture(scope="module")
 def qc_opendrive() -> Path:
-    venv = Path(os.environ.get("ASAM_VENV", REPO / ".venv-asam"))
-    command = venv / "bin" / "qc_opendrive"
-    if not command.exists():
-        pytest.fail(
-            f"asam-qc-opendrive not found at {command}: .ci/run creates {venv} "
-            "(python -m venv .venv-asam && .venv-asam/bin/pip install asam-qc-opendrive), or set ASAM_VENV"
-        )
-    return command
+    try:
+        return asam_command()
+    except AsamUnavailable as error:
+        pytest.fail(str(error))
 
 
 def test_every_asam_rule_is_mapped():

@@ -7,7 +7,7 @@ in a subprocess that prints the issue count per rule UID of each checker bundle.
 from __future__ import annotations
 
 import json
-import os
+import re
 import subprocess
 from collections import Counter
 from pathlib import Path
@@ -15,11 +15,12 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from tests.conftest import REPO
+from tests.interop.asam_harness import AsamUnavailable, asam_python
 from xodrcheck.check import check
 from xodrcheck.cli import main
 from xodrcheck.report import render
-from xodrcheck.report.xqar import conform_uid, issue_uid
+from xodrcheck.report.xqar import conform_uid, issue_uid, own_uid
+from xodrcheck.rules import load_rules
 
 pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
@@ -46,12 +47,12 @@ print(json.dumps(out))
 """
 
 
-@pytest.fixture(scope="module")
-def asam_python() -> Path:
-    python = Path(os.environ.get("ASAM_VENV", REPO / ".venv-asam")) / "bin" / "python"
-    if not python.exists():
-        pytest.fail(f"ASAM's environment not found at {python.parent.parent}: scripts/setup creates it")
-    return python
+@pytest.fixture(scope="module", name="asam_python")
+def asam_python_fixture() -> Path:
+    try:
+        return asam_python()
+    except AsamUnavailable as error:
+        pytest.fail(str(error))
 
 
 def _load_with_baselib(python: Path, path: Path) -> dict[str, dict[str, int]]:
@@ -100,3 +101,12 @@ def test_uids_the_framework_would_reject_are_written_conform():
         "asam.net:xodr:1.9.0:road.corner_local.no_mixing_road_local"
     )
     assert conform_uid("asam.net:xodr:1.9.0:road.geometry.s-value_sum").endswith(":road.geometry.s_value_sum")
+
+
+def test_every_own_rule_uid_matches_the_frameworks_pattern():
+    """qc_baselib rejects a result file whose rule UID breaks its pattern (a hyphen in a category or a name)."""
+    # the pattern of qc_baselib's rule_uid: entity:standard:version:dotted name of letter-led words
+    pattern = re.compile(r"^(\w+(\.\w+)+):([a-z]+):([0-9]+(\.[0-9]+)+):(([^\W\d_][\w]*)\.)*[^\W\d_]\w*$")
+    rules = load_rules().values()
+    bad = [uid for r in rules if not pattern.match(uid := own_uid(r.name, r.category.value))]
+    assert not bad, bad

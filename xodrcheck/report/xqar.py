@@ -55,7 +55,7 @@ def conform_uid(uid: str) -> str:
 
 def own_uid(name: str, category: str) -> str:
     """The UID of one of xodrcheck's own rules (the standard has none for it)."""
-    return f"{OWN_ENTITY}:xodr:1.4.0:{category}.{name.replace('-', '_')}"
+    return f"{OWN_ENTITY}:xodr:1.4.0:{category.replace('-', '_')}.{name.replace('-', '_')}"
 
 
 def issue_uid(f: Finding) -> str:
