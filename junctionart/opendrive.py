@@ -154,8 +154,22 @@ class Corner:
 
 
 @dataclass(frozen=True)
+class ObjectMarking:
+    """A ``<marking>`` painted along an object's outline from corner to corner (13.8): ``corners`` are indices into
+    the outline (written as its ``cornerRoad`` ids), in the outline's order; dashes ``line_length`` long with
+    ``space_length`` gaps, ``width`` wide, centred on the outline's edges."""
+
+    corners: tuple[int, ...]
+    color: str = "white"
+    width: float = 0.12
+    line_length: float = 0.5
+    space_length: float = 0.2
+    z_offset: float = 0.0
+
+
+@dataclass(frozen=True)
 class RoadObject:
-    """An ``<object>`` (a crosswalk) with one closed outline of road-frame corners."""
+    """An ``<object>`` (a crosswalk) with one closed outline of road-frame corners, and markings along it."""
 
     id: str
     type: str
@@ -167,6 +181,7 @@ class RoadObject:
     outline: tuple[Corner, ...]
     orientation: str = "none"
     validity: tuple[Validity, ...] = ()
+    markings: tuple[ObjectMarking, ...] = ()
 
 
 @dataclass(frozen=True)

@@ -32,6 +32,7 @@ from .opendrive import (
     LaneSection,
     Line,
     Link,
+    ObjectMarking,
     ParamPoly3,
     Road,
     RoadMark,
@@ -66,7 +67,7 @@ def _esc(text: str) -> str:
     return _SPECIAL.sub(lambda m: _ESCAPES[m.group()], text)
 
 
-_INDENT = tuple("  " * depth for depth in range(8))
+_INDENT = tuple("  " * depth for depth in range(10))
 
 
 class _Out:
@@ -161,7 +162,7 @@ def _section(add, sec: LaneSection) -> None:
     add("      </laneSection>")
 
 
-def _road(out: _Out, road: Road) -> None:
+def _road(out: _Out, road: Road, version: str = "1.8") -> None:
     add = out.lines.append
     out.open(
         1,
@@ -201,7 +202,7 @@ def _road(out: _Out, road: Road) -> None:
     if road.objects:
         add("    <objects>")
         for obj in road.objects:
-            _object(add, obj)
+            _object(add, obj, version)
         add("    </objects>")
     if road.signals:
         add("    <signals>")
@@ -216,7 +217,7 @@ def _validity(add, depth: int, validity: tuple[Validity, ...]) -> None:
         add(f'{_INDENT[depth]}<validity fromLane="{v.from_lane}" toLane="{v.to_lane}"/>')
 
 
-def _object(add, o: RoadObject) -> None:
+def _object(add, o: RoadObject, version: str) -> None:
     box = "" if o.length is None or o.width is None else f' length="{fmt(o.length)}" width="{fmt(o.width)}"'
     add(
         f'      <object id="{_esc(o.id)}" type="{_esc(o.type)}" name="{_esc(o.name)}" s="{fmt(o.s)}" t="{fmt(o.t)}"'
@@ -226,10 +227,32 @@ def _object(add, o: RoadObject) -> None:
     add('          <outline id="0" closed="true">')
     for k, c in enumerate(o.outline):
         add(f'            <cornerRoad s="{fmt(c.s)}" t="{fmt(c.t)}" dz="0.0" height="0.0" id="{k}"/>')
+    in_outline = version == "1.9"  # 1.9 puts an outline's markings into it; 1.7 and 1.8 into the object (13.8)
+    if in_outline:
+        _markings(add, 6, o.markings)
     add("          </outline>")
     add("        </outlines>")
     _validity(add, 4, o.validity)
+    if not in_outline:
+        _markings(add, 4, o.markings)
     add("      </object>")
+
+
+def _markings(add, depth: int, markings: tuple[ObjectMarking, ...]) -> None:
+    """``<markings>`` through outline corners (``cornerReference`` ids are the corners' indices)."""
+    if not markings:
+        return
+    add(f"{_INDENT[depth]}<markings>")
+    for m in markings:
+        add(
+            f'{_INDENT[depth + 1]}<marking width="{fmt(m.width)}" color="{_esc(m.color)}" zOffset="{fmt(m.z_offset)}"'
+            f' spaceLength="{fmt(m.space_length)}" lineLength="{fmt(m.line_length)}" startOffset="0.0"'
+            ' stopOffset="0.0">'
+        )
+        for k in m.corners:
+            add(f'{_INDENT[depth + 2]}<cornerReference id="{k}"/>')
+        add(f"{_INDENT[depth + 1]}</marking>")
+    add(f"{_INDENT[depth]}</markings>")
 
 
 def _signal(add, g: Signal) -> None:
@@ -302,7 +325,7 @@ def to_bytes(doc: Document, version: str = "1.8") -> bytes:
         f'{date}{bounds} vendor="{_esc(h.vendor)}"',
     )
     for road in doc.roads:
-        _road(out, road)
+        _road(out, road, version)
     for c in doc.controllers:
         _controller(out, c)
     for j in doc.junctions:

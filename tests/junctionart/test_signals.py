@@ -261,3 +261,44 @@ def test_xodrcheck_finds_the_conflicts_when_a_junction_s_signal_groups_are_merge
             merged += 1
             break
     assert merged == 3
+
+
+@pytest.mark.parametrize("version", ["1.8", "1.9"])
+def test_crosswalks_are_marked_with_two_broken_lines_along_their_edges_across_the_road(lit, version, tmp_path):
+    """Each crosswalk has two white broken-line markings (13.8), each through the two outline corners of one edge
+    across the road (same s, the two kerbs), the two edges 4 m apart: in the object's <markings> in 1.8, inside the
+    outline in 1.9 (where 1.9 puts them); xodrcheck's marking rules and the schema accept both."""
+    doc = ja.generate(
+        Params.create("scenario", junction_control="traffic-lights", randomize_lanes=True, curved_roads=True),
+        CASES[1][0],
+    )
+    path = write(doc, tmp_path / f"walks-{version}.xodr", version)
+    root = etree.parse(str(path)).getroot()
+    walks = 0
+    for obj in root.iter("object"):
+        if obj.get("type") != "crosswalk":
+            continue
+        walks += 1
+        (outline,) = obj.iter("outline")
+        corners = {int(c.get("id")): (float(c.get("s")), float(c.get("t"))) for c in outline.iterfind("cornerRoad")}
+        holder = outline if version == "1.9" else obj
+        assert len(obj.findall(".//markings")) == 1 and holder.find("markings") is not None
+        marks = holder.findall("markings/marking")
+        assert len(marks) == 2
+        edge_s = []
+        for m in marks:
+            assert m.get("color") == "white" and float(m.get("width")) == 0.12
+            assert float(m.get("lineLength")) == 0.5 and float(m.get("spaceLength")) == 0.2
+            a, b = (corners[int(r.get("id"))] for r in m.iterfind("cornerReference"))
+            assert a[0] == b[0] and abs(a[1] - b[1]) > 2.5  # across the road, kerb to kerb
+            edge_s.append(a[0])
+        assert abs(edge_s[0] - edge_s[1]) == pytest.approx(4.0)
+    assert walks > 10
+    report = check(path)
+    assert [f.code for f in report.findings if f.severity.name in ("ERROR", "WARNING")] == []
+
+
+def test_the_paper_profile_writes_no_object_or_marking():
+    """Markings come with the crosswalks of signalised junctions only: the default maps have neither."""
+    text = ja.writer.to_bytes(ja.generate(Params.create(), 3)).decode()
+    assert "<object " not in text and "<marking" not in text
