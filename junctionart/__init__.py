@@ -28,6 +28,7 @@ __all__ = [
     "JunctionArtError",
     "Params",
     "ParamsError",
+    "Result",
     "generate",
     "generate_layout",
     "to_bytes",

@@ -19,6 +19,9 @@ from typing import Any, NamedTuple, NoReturn
 from .errors import JunctionArtError, OutputError, ParamsError
 from .params import size_check
 
+__all__ = ["main"]
+
+
 #: Single maps at least this large (m^2) show a progress bar over the stages.
 BIG_MAP_AREA = 4_000_000.0
 #: Single maps from control lines at least this long in total (m) show it too (about the lines of a 2 km x 2 km map).

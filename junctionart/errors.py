@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+__all__ = ["GenerationError", "InputError", "JunctionArtError", "MissingDependency", "OutputError", "ParamsError"]
+
 
 class JunctionArtError(Exception):
     """Base of every error junctionart raises on purpose (the CLI turns these into one line and exit code 2)."""

@@ -25,6 +25,18 @@ from typing import IO, Any
 
 from xodrcheck.findings import XodrError
 
+__all__ = [
+    "EXIT_INTERRUPTED",
+    "EXIT_TERMINATED",
+    "OutputError",
+    "Terminated",
+    "atomic_file",
+    "check_target",
+    "signals_raise",
+    "write_bytes",
+]
+
+
 #: Exit status of a command stopped by SIGTERM (128 + the signal number, as a shell reports it).
 EXIT_TERMINATED = 128 + signal.SIGTERM
 #: Exit status of a command stopped by Ctrl-C.

@@ -32,6 +32,8 @@ from xodrcheck.rules.internal import RULE_CRASHED, RULE_OUT_OF_TIME
 from xodrcheck.rules.registry import Rule
 from xodrcheck.standard import annex_rules, applies, is_uid, uid_matches
 
+__all__ = ["Report", "Selection", "check", "is_valid", "is_valid_reason", "run_rules", "validate_selectors"]
+
 
 @dataclass(frozen=True)
 class Report:

@@ -15,6 +15,9 @@ from typing import Any
 
 from xodrcheck.findings import XodrError
 
+__all__ = ["PROFILES", "SEVERITY_NAMES", "Config", "ConfigError", "Tolerances", "load_config"]
+
+
 if sys.version_info >= (3, 11):
     import tomllib
 else:  # pragma: no cover - Python 3.10

@@ -5,6 +5,8 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
+__all__ = ["Category", "Finding", "OutOfTime", "ReadError", "Severity", "XodrError"]
+
 
 class Severity(enum.IntEnum):
     """Ordered so that ``max()`` gives the worst."""

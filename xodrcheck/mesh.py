@@ -27,6 +27,9 @@ from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, geometry_of
 from xodrcheck.model import Document, Lane, LaneKey, Road, document_cache
 
+__all__ = ["MAX_COORDINATE", "LaneSurfaces", "MeshTooLarge", "build_surfaces", "cached_per_chord", "surfaces_of"]
+
+
 #: Largest coordinate (m) a meshed vertex may have: 25 times the Earth's circumference. Beyond it a lane is damaged
 #: input (a width of 1e308, say), and polygon operations (GEOS) fail on such numbers instead of giving an area.
 MAX_COORDINATE = 1e9

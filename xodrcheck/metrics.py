@@ -73,6 +73,28 @@ from xodrcheck.model import (
     Road,
 )
 
+__all__ = [
+    "CURVATURE_SCALE",
+    "DEVIATION_SCALE",
+    "FOV_SCALE",
+    "LOOKBACK",
+    "WEIGHTS",
+    "JunctionMetrics",
+    "Leg",
+    "LegMetrics",
+    "complexity",
+    "connecting_roads",
+    "is_u_turn",
+    "junction_legs",
+    "junction_metrics",
+    "leg_ends",
+    "leg_metrics",
+    "make_leg",
+    "map_metrics",
+    "smallest_leg_angle",
+]
+
+
 #: Distance (m) back along a leg at which its look-back point p0 is taken.
 LOOKBACK = 50.0
 #: The fixed normalisation scales of complexity: curvature (deg/m), FOV (deg), corner deviation (deg).

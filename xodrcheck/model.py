@@ -19,6 +19,43 @@ import enum
 from dataclasses import dataclass, field, replace
 from functools import cached_property
 
+__all__ = [
+    "DRIVABLE_LANE_TYPES",
+    "Arc",
+    "Connection",
+    "ContactPoint",
+    "Cubic",
+    "Document",
+    "ElementDir",
+    "ElementType",
+    "Geometry",
+    "Header",
+    "Junction",
+    "JunctionLaneLink",
+    "JunctionType",
+    "Lane",
+    "LaneHeight",
+    "LaneKey",
+    "LaneLayer",
+    "LaneSection",
+    "LaneType",
+    "Line",
+    "Offset",
+    "PRange",
+    "ParamPoly3",
+    "Poly3",
+    "Profile",
+    "Road",
+    "RoadLink",
+    "RoadMark",
+    "Side",
+    "Speed",
+    "Spiral",
+    "TemporaryLanes",
+    "TrafficRule",
+    "document_cache",
+]
+
 
 # --------------------------------------------------------------------------------------------------------------------
 # Naming a lane: one value type everywhere (findings, meshes, graphs).

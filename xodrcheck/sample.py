@@ -16,6 +16,9 @@ from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, geometry_of
 from xodrcheck.model import Document
 
+__all__ = ["KINDS", "LaneLine", "sample_count", "sample_lanes", "section_s_values"]
+
+
 #: The lines of a lane that can be sampled: its centre, its border towards lane 0 and its border away from it.
 KINDS = ("centre", "inner", "outer")
 

@@ -35,6 +35,19 @@ from xodrcheck.lanes import geometry_of
 from xodrcheck.model import ContactPoint, Document, ElementType, Road
 from xodrcheck.reader import read
 
+__all__ = [
+    "FORMAT",
+    "NotReadWhole",
+    "Snapshot",
+    "SnapshotError",
+    "differences",
+    "lane_length",
+    "lane_links",
+    "snapshot_of",
+    "topology_hash",
+]
+
+
 #: Version of the snapshot format (a snapshot of another version cannot be compared).
 FORMAT = 1
 _DECIMALS = 3

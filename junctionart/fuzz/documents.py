@@ -17,6 +17,17 @@ from hypothesis.errors import InvalidArgument
 
 from junctionart.fuzz import xodrbuild as xb
 
+__all__ = [
+    "DEFAULT_VERSIONS",
+    "KINDS",
+    "MAX_CURVATURE",
+    "TURN_RADIUS",
+    "VERSIONS",
+    "document_specs",
+    "opendrive_documents",
+]
+
+
 #: Element kinds that :func:`opendrive_documents` may use.
 KINDS = ("line", "arc", "spiral", "paramPoly3")
 #: OpenDRIVE versions (major, minor) the documents may declare.

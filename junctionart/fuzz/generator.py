@@ -15,6 +15,16 @@ from hypothesis.errors import InvalidArgument
 from junctionart import Params
 from junctionart.controllines import ControlLine, ControlLines, parse
 
+__all__ = [
+    "RELATIONS",
+    "control_line_groups",
+    "control_lines",
+    "generator_params",
+    "invalid_control_line_files",
+    "invalid_generator_params",
+]
+
+
 #: Relations between two control lines of a pair that :func:`control_line_groups` draws.
 RELATIONS = ("parallel", "nearly-parallel", "sharp-crossing", "crossing", "short", "polyline")
 

@@ -22,6 +22,17 @@ from hypothesis import strategies as st
 from hypothesis.errors import InvalidArgument
 from lxml import etree
 
+__all__ = [
+    "BAD_VALUES",
+    "DAMAGE",
+    "DEFECTS",
+    "Mutation",
+    "damaged_documents",
+    "defective_documents",
+    "document_mutations",
+]
+
+
 #: Defect kind -> rule codes that report it (any one of them is enough).
 DEFECTS: dict[str, frozenset[str]] = {
     "road-gap": frozenset({"K101", "K103"}),

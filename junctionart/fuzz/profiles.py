@@ -22,6 +22,19 @@ from typing import Any
 from hypothesis import HealthCheck, Phase, settings
 from hypothesis.database import DirectoryBasedExampleDatabase
 
+__all__ = [
+    "BUDGETS",
+    "DATABASE_DIR",
+    "PROFILES",
+    "REGRESSIONS",
+    "budget",
+    "current",
+    "database",
+    "regressions",
+    "tolerated",
+]
+
+
 DATABASE_DIR = Path(__file__).resolve().parent / ".examples"
 REGRESSIONS = Path(__file__).resolve().parent / "regressions.json"
 PROFILES = ("ci", "long")

@@ -22,6 +22,22 @@ from xodrcheck.findings import ReadError, Severity
 from xodrcheck.geometry.planview import ReferenceLine
 from xodrcheck.reader import read
 
+__all__ = [
+    "HANG_SECONDS",
+    "ROUND_TRIP_TOLERANCE",
+    "STATS",
+    "checked",
+    "checker_survives",
+    "defect_is_found",
+    "document_is_valid",
+    "errors",
+    "finding_keys",
+    "generated_map_is_valid",
+    "invalid_input_refused",
+    "round_trip_exact",
+]
+
+
 #: Counters of the inputs each property saw (``maps``, ``documents``, ``damaged``, ``refused``...).
 STATS: Counter = Counter()
 #: A check of one small document that takes longer than this (s) is treated as hanging.

@@ -24,6 +24,9 @@ from xodrcheck.findings import Severity
 if TYPE_CHECKING:  # pragma: no cover
     from xodrcheck.check import Report
 
+__all__ = ["DEFAULT_MIN_SEVERITY", "FORMATS", "Hidden", "least_severity", "render", "shown", "summary"]
+
+
 FORMATS = ("text", "json", "junit", "sarif", "github", "xqar", "html")
 
 #: The least severity each format shows unless told otherwise (``--min-severity``, key ``min_severity``).
