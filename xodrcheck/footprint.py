@@ -28,6 +28,8 @@ DRIVABLE_TYPE_NAMES = frozenset(t.value for t in DRIVABLE_LANE_TYPES)
 _UNION_BLOCK = 256
 #: Most points of an overlap polygon's outline sampled for heights (plus its representative point).
 _HEIGHT_POINTS = 24
+#: Lane-strip pairs intersected at a time by :meth:`OverlapIndex.overlaps` (bounds its temporary geometries).
+_PAIR_BLOCK = 4096
 
 
 class Footprints:
@@ -275,15 +277,24 @@ class OverlapIndex:
         the rest per road pair and compare the sum with ``min_area``."""
         if pairs is None:
             pairs = self.unrelated_pairs
+        out: list[Overlap] = []
         if pairs.size == 0:
-            return []
+            return out
+        for lo in range(0, pairs.shape[1], _PAIR_BLOCK):  # blocks: the intersections of a whole map at once took GBs
+            if self._block_overlaps(pairs[:, lo : lo + _PAIR_BLOCK], min_area, clearance, deadline_check, out):
+                break
+        return out
+
+    def _block_overlaps(
+        self, pairs: np.ndarray, min_area: float, clearance: float, deadline_check, out: list[Overlap]
+    ) -> bool:
+        """:meth:`overlaps` of one block of pairs, appended to ``out``; ``True`` when the deadline stopped it."""
         polys = self.footprints.polygons
         shared = shapely.intersection(polys[pairs[0]], polys[pairs[1]])
         areas = shapely.area(shared)
-        out: list[Overlap] = []
         for k in np.flatnonzero(areas > min_area * 1e-3):
             if deadline_check is not None and deadline_check():
-                break
+                return True
             i, j = int(pairs[0, k]), int(pairs[1, k])
             points = sample_points(shared[k])
             z_a, face_a = self.footprints.heights(i, points)
@@ -305,7 +316,7 @@ class OverlapIndex:
                     float(self.surfaces.face_s[face_b[at]]),
                 )
             )
-        return out
+        return False
 
 
 def overlap_index(

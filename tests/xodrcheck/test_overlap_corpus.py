@@ -129,3 +129,16 @@ def test_the_listed_maps_exist(corpus_dir):
 def test_overlap_findings_are_the_listed_ones(corpus_dir, path):
     name = str(path.relative_to(corpus_dir))
     assert overlap_findings(path) == EXPECTED.get(name, set())
+
+
+def test_overlaps_in_blocks_of_pairs_are_the_same(monkeypatch: pytest.MonkeyPatch):
+    """Bounded memory: the lane-strip pairs are intersected a block at a time; any block size gives the same list."""
+    from xodrcheck import footprint
+    from xodrcheck.reader import read
+
+    document = read(corpus_root() / "carla-towns/OpenDrive/Town03.xodr").document
+    index = footprint.OverlapIndex(document, 0.1)
+    whole = index.overlaps(0.01, 2.0)
+    monkeypatch.setattr(footprint, "_PAIR_BLOCK", 7)
+    assert index.unrelated_pairs.shape[1] > 10 * 7 and len(whole) > 5
+    assert index.overlaps(0.01, 2.0) == whole
