@@ -7,10 +7,11 @@ returns the generator's own document model; ``write(document, path, version)`` w
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
+
+from xodrcheck.classcache import dataclass
 
 from . import cleanup, controllines, intersections, lanes, network
 from .controllines import ControlLines

@@ -12,7 +12,7 @@ import enum
 import json
 import sys
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, NamedTuple, NoReturn
 
@@ -149,17 +149,10 @@ OPTIONS = [
 ]
 
 
-def _add_generate(sub: argparse._SubParsersAction) -> None:
+def _add_generate(p: argparse.ArgumentParser) -> None:
     from .params import MAX_AREA, MAX_SIDE, MIN_SIDE, Params
 
     defaults = Params()
-    p = sub.add_parser(
-        "generate",
-        help="generate a road network (.xodr)",
-        description="Generate an OpenDRIVE road network from automatic or given control lines. No map is thrown "
-        "away: where a junction does not fit, the generator repairs the network (merges or enlarges junctions, "
-        "removes or straightens roads); the summary line counts these repairs and --verbose lists them.",
-    )
     p.add_argument(
         "-o",
         "--output",
@@ -275,10 +268,9 @@ def _generate(args: argparse.Namespace) -> int:
     return 0
 
 
-def _add_render(sub: argparse._SubParsersAction) -> None:
+def _add_render(p: argparse.ArgumentParser) -> None:
     from .render import FORMATS
 
-    p = sub.add_parser("render", help="draw a .xodr file as a plan view (PNG, JPEG, SVG, PDF or WebP)")
     p.add_argument("file", type=Path, help="OpenDRIVE file")
     p.add_argument(
         "-o",
@@ -316,41 +308,62 @@ def _check_target(path: str | Path) -> None:
         raise OutputError(str(exc)) from None
 
 
-def _add_era(sub: argparse._SubParsersAction) -> None:
+def _add_era(p: argparse.ArgumentParser) -> None:
     from .era import add_arguments
 
-    p = sub.add_parser(
-        "era",
-        help="expressive range analysis: generate maps, measure intersections, draw figures",
-        description="Generate maps until N intersections are collected per run, measure them with "
-        "xodrcheck and write legs.csv, maps.csv, PNG figures and report.md (resumable).",
-    )
     add_arguments(p)
 
 
-def _add_intersection(sub: argparse._SubParsersAction) -> None:
+def _add_intersection(p: argparse.ArgumentParser) -> None:
     from .intersection_cli import add_arguments
 
-    p = sub.add_parser(
-        "intersection",
-        help="one intersection from explicit legs (headings, lanes in and out, medians, bends)",
-        description="Write a small map with one intersection described leg by leg (--leg) or as JSON (--spec), "
-        "built by the generator's intersection stage: the junction and an approach road per leg.",
-    )
     add_arguments(p)
 
 
-def _add_search(sub: argparse._SubParsersAction) -> None:
+def _add_search(p: argparse.ArgumentParser) -> None:
     from .search.cli import add_arguments
 
-    p = sub.add_parser(
-        "search",
-        help="quality-diversity search (MAP-Elites, pyribs) for intersections across chosen metrics",
-        description="Fill an archive of intersections spanning two or three metrics with MAP-Elites (needs the "
-        "[search] extra); stop at a budget or when -n elites meet --where. Writes archive.csv, heatmaps, report.md "
-        "and the elites' .xodr (resumable).",
-    )
     add_arguments(p)
+
+
+#: Subcommands in the order ``--help`` lists them: (help, description, what adds the arguments). Only the chosen
+#: subcommand's arguments are added, so ``junctionart generate`` imports no module of render, era or search.
+COMMANDS: dict[str, tuple[str, str | None, Callable[[argparse.ArgumentParser], None]]] = {
+    "generate": (
+        "generate a road network (.xodr)",
+        "Generate an OpenDRIVE road network from automatic or given control lines. No map is thrown away: where a "
+        "junction does not fit, the generator repairs the network (merges or enlarges junctions, removes or "
+        "straightens roads); the summary line counts these repairs and --verbose lists them.",
+        _add_generate,
+    ),
+    "render": ("draw a .xodr file as a plan view (PNG, JPEG, SVG, PDF or WebP)", None, _add_render),
+    "era": (
+        "expressive range analysis: generate maps, measure intersections, draw figures",
+        "Generate maps until N intersections are collected per run, measure them with xodrcheck and write legs.csv, "
+        "maps.csv, PNG figures and report.md (resumable).",
+        _add_era,
+    ),
+    "intersection": (
+        "one intersection from explicit legs (headings, lanes in and out, medians, bends)",
+        "Write a small map with one intersection described leg by leg (--leg) or as JSON (--spec), built by the "
+        "generator's intersection stage: the junction and an approach road per leg.",
+        _add_intersection,
+    ),
+    "search": (
+        "quality-diversity search (MAP-Elites, pyribs) for intersections across chosen metrics",
+        "Fill an archive of intersections spanning two or three metrics with MAP-Elites (needs the [search] extra); "
+        "stop at a budget or when -n elites meet --where. Writes archive.csv, heatmaps, report.md and the elites' "
+        ".xodr (resumable).",
+        _add_search,
+    ),
+}
+
+
+def _chosen(argv: Sequence[str] | None) -> str | None:
+    """The subcommand named on the command line (its first word that is not an option), if any."""
+    words = sys.argv[1:] if argv is None else argv
+    first = next((w for w in words if not w.startswith("-")), None)
+    return first if first in COMMANDS else None
 
 
 class _Parser(argparse.ArgumentParser):
@@ -363,11 +376,11 @@ class _Parser(argparse.ArgumentParser):
 def main(argv: Sequence[str] | None = None) -> int:
     parser = _Parser(prog="junctionart", description="Procedural OpenDRIVE road networks.")
     sub = parser.add_subparsers(dest="command", required=True)
-    _add_generate(sub)
-    _add_render(sub)
-    _add_era(sub)
-    _add_intersection(sub)
-    _add_search(sub)
+    chosen = _chosen(argv)
+    for name, (help_text, description, add_arguments) in COMMANDS.items():
+        p = sub.add_parser(name, help=help_text, description=description)
+        if name == chosen:  # the others parse nothing and are never run
+            add_arguments(p)
     args = parser.parse_args(argv)
     from xodrcheck.atomic import EXIT_INTERRUPTED, EXIT_TERMINATED, Terminated, signals_raise
 

@@ -29,9 +29,11 @@ import traceback
 from collections.abc import Callable, Iterable
 from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor
 from concurrent.futures import wait as _wait
-from dataclasses import dataclass, field
+from dataclasses import field
 from pathlib import Path
 from typing import Any
+
+from xodrcheck.classcache import dataclass
 
 from .errors import JunctionArtError, ParamsError
 from .params import Params

@@ -6,9 +6,9 @@ Counts are per travel direction along the chain: ``forward`` lanes travel from i
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
+
+from xodrcheck.classcache import dataclass
 
 from .controllines import ControlLines
 from .errors import GenerationError

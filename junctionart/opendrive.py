@@ -7,7 +7,7 @@ here cannot be hidden by a shared data type. Only what the generator writes is m
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from xodrcheck.classcache import dataclass
 
 
 @dataclass(frozen=True)

@@ -139,6 +139,14 @@ def test_generate_loads_no_checker_scipy_or_figures(tmp_path: Path) -> None:
     assert {"scipy", "matplotlib", "trimesh", "lxml", "tqdm"}.isdisjoint(mods)
 
 
+def test_generate_imports_no_other_subcommand(tmp_path: Path) -> None:
+    names = modules(tmp_path, "junctionart.cli", "junctionart", "generate", "--size", "300x300", "-q", "-o", "m.xodr")
+    assert "junctionart.cli" in names and (tmp_path / "m.xodr").is_file()
+    others = {"junctionart.render", "junctionart.era", "junctionart.intersection_cli", "junctionart.search.cli"}
+    assert others.isdisjoint(names)
+    assert {"multiprocessing", "concurrent", "csv"}.isdisjoint(name.split(".")[0] for name in names)  # era's
+
+
 def test_command_table_matches_the_modules() -> None:
     for name, help_text in COMMANDS.items():
         module = command_module(name)

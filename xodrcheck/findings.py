@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 import enum
-from dataclasses import dataclass
+
+from xodrcheck.classcache import dataclass
 
 __all__ = ["Category", "Finding", "OutOfTime", "ReadError", "Severity", "XodrError"]
 

@@ -49,10 +49,10 @@ lateral offset), with ``q'`` and ``q''`` carried exactly (:mod:`xodrcheck.geomet
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
-from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.geometry import profile
 from xodrcheck.geometry.jet import Jet

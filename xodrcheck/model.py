@@ -16,8 +16,10 @@ the
 from __future__ import annotations
 
 import enum
-from dataclasses import dataclass, field, replace
+from dataclasses import field, replace
 from functools import cached_property
+
+from xodrcheck.classcache import dataclass
 
 __all__ = [
     "DRIVABLE_LANE_TYPES",

@@ -25,10 +25,10 @@ returns ``None``.
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.geometry import parampoly3, profile
 from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
 from xodrcheck.geometry.pose import Pose

@@ -7,10 +7,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, geometry_of

@@ -20,11 +20,11 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Iterator
-from dataclasses import dataclass
 from functools import cache
 from importlib import resources
 
 from xodrcheck import schema_fast
+from xodrcheck.classcache import dataclass
 
 #: (revMajor, revMinor) -> (folder under the package data ``xodrcheck.schemas``, main file).
 SCHEMA_FOLDERS: dict[tuple[int, int], tuple[str, str]] = {

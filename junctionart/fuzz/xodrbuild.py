@@ -10,10 +10,12 @@ hidden by this one).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 from lxml import etree
+
+from xodrcheck.classcache import dataclass
 
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(48)
 _PANELS = 16

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from xodrcheck.classcache import dataclass
 
 from ..lanes import LaneConfig
 from ..opendrive import Geometry

@@ -7,10 +7,12 @@ line in ``repairs`` saying what was changed and why.
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass, field
+from dataclasses import field
 
 import numpy as np
 import shapely
+
+from xodrcheck.classcache import dataclass
 
 from ..graph import Chain
 from ..lanes import LaneConfig

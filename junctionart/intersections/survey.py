@@ -8,7 +8,8 @@ are read from the state each time, because opening exits changes them within the
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
+
+from xodrcheck.classcache import dataclass
 
 from ..graph import Chain, chains
 from ..lanes import LaneConfig

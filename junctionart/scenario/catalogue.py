@@ -14,7 +14,7 @@ Another country is one more :class:`Catalogue` entry in :data:`COUNTRIES`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from xodrcheck.classcache import dataclass
 
 
 @dataclass(frozen=True)

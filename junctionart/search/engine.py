@@ -16,11 +16,13 @@ from __future__ import annotations
 
 import pickle
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import field
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+
+from xodrcheck.classcache import dataclass
 
 from ..errors import ParamsError
 from .measure import INFEASIBLE, METRICS, NAMES, Evaluation, evaluate

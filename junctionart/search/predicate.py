@@ -14,7 +14,8 @@ from __future__ import annotations
 import ast
 import operator
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass
+
+from xodrcheck.classcache import dataclass
 
 from ..errors import ParamsError
 

@@ -6,9 +6,9 @@ derivatives along exactly gives lane headings and offset-curve curvatures withou
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
+
+from xodrcheck.classcache import dataclass
 
 
 @dataclass(frozen=True, slots=True)

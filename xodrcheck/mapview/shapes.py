@@ -13,10 +13,11 @@ further than :data:`MAX_EXTENT` from the map's other points is left out and name
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field, replace
+from dataclasses import field, replace
 
 import numpy as np
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, SideLanes, geometry_of
 from xodrcheck.model import Document, Lane, Road, RoadMark

@@ -8,8 +8,7 @@ counted even when their numbers do not parse: an outline's :attr:`Outline.points
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
+from xodrcheck.classcache import dataclass
 from xodrcheck.model import Arc, Cubic, LaneLayer, Line, ParamPoly3
 
 #: The shapes a ``<curveLocal>`` may have, as plan-view elements starting at ``s = 0``.

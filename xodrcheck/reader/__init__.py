@@ -15,9 +15,9 @@ import io
 import os
 import stat
 import zlib
-from dataclasses import dataclass
 from pathlib import Path
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Finding, ReadError, Severity
 from xodrcheck.model import Document

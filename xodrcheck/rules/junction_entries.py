@@ -24,10 +24,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.junction_elements import JointSegment, JunctionParts, LaneSegment, junction_parts
 from xodrcheck.junction_grid import GridSurface, grid_surface

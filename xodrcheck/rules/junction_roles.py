@@ -13,8 +13,8 @@ from __future__ import annotations
 import math
 import weakref
 from collections.abc import Iterator
-from dataclasses import dataclass
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
 from xodrcheck.junction_elements import JunctionParts, Priority, junction_parts, local, number
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road

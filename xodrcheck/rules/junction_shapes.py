@@ -16,10 +16,10 @@ order follows on from the segment before it (the file does not say which).
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.junction_elements import (
     Boundary,
     ElevationGrid,

@@ -10,9 +10,9 @@ lanes of the other side. Joints into a junction are the junction's (its ``laneLi
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 from typing import Any
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, LaneType, Road
 from xodrcheck.rules import lane_uids as U

@@ -12,10 +12,10 @@ from __future__ import annotations
 
 import weakref
 from collections.abc import Iterator
-from dataclasses import dataclass
 
 from lxml import etree
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.rules.context import Context
 from xodrcheck.xmlvalues import integer, local, number
 

@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
 from xodrcheck.objects import CornerLocal, CornerRoad, Outline, RoadObject, Vertex, curve_points
 from xodrcheck.objects.place import Frame, Volume, frame_of, road_xy, volume_of

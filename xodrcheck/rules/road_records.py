@@ -8,8 +8,8 @@ the tree.
 from __future__ import annotations
 
 import weakref
-from dataclasses import dataclass
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.rules.context import Context
 from xodrcheck.xmlvalues import number
 

@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import math
 import weakref
-from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Severity
 from xodrcheck.lanes import LanePoints, RoadGeometry
