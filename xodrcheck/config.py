@@ -113,10 +113,13 @@ class Tolerances:
         rules="B018 B034",
     )
     junction_start: float = _tolerance(
-        0.05,
+        1.0,
         "m",
-        "Connection lanes of one incoming road may run together this far from their start before they part.",
-        rules="J101",
+        "Connection lanes leaving the same incoming lane carry one queue of vehicles until their centre lines are "
+        "this far apart: where they meet before (a turn weaving a few cm or dm around the straight-on path as they "
+        "part, as in CARLA's Town06) is no crossing, a meeting after they parted is. 1 m: two cars (1.7-2 m wide) on "
+        "paths closer than that cannot be side by side. The strict profile uses 5 cm.",
+        rules="J101 V001",
     )
     gantry_reach: float = _tolerance(
         1.0,
@@ -215,7 +218,7 @@ class Tolerances:
 #: ``--tolerance`` flags. ``strict``: every deviation over the strict values is an error, as before issue 18.
 PROFILES: dict[str, dict[str, float]] = {
     "default": {},
-    "strict": {"gap": Tolerances.position, "kink": Tolerances.heading},
+    "strict": {"gap": Tolerances.position, "kink": Tolerances.heading, "junction_start": 0.05},
 }
 
 

@@ -7,7 +7,9 @@ traffic enters the junction are followed (``junction-lane-link-outbound`` report
 
 * The paths leaving one incoming road may share their start (several turns from one lane) but must not meet
   anywhere else: two turns that cross each other conflict inside the junction (``J101``). Paths from the same lane
-  are compared from where they part (``junction_start`` tolerance); paths from different lanes anywhere.
+  are compared from where they part, their centre lines ``junction_start`` (1 m) apart: until then they carry one
+  queue of vehicles, so a slow weave of a few cm where two turns part is no crossing; paths from different lanes
+  anywhere.
 * Within one connection, the laneLinks keep the lanes' side-by-side order: the incoming lanes ordered across the
   road at the contact must enter connecting lanes in the same order (``J102``), or the lanes swap places at the
   contact point.
