@@ -36,10 +36,11 @@ EXPECTED = {
     "carla-towns/OpenDrive/Town01.xodr": {"G901"},
     # Road 13 (15 µm long) and road 14 both claim junction 678 as predecessor; 678 has no connection from 14 (K001).
     # Lanes of type none and sidewalks end at full width without links (L010); road 6 lane 2 / road 5 lane 2 one-way
-    # link (L011); road 69 left lanes continue road 70 right lanes end-to-start (L012); road 69 lane 1 (driving) into
-    # junction 793 has no laneLink (J005). Junction 825 joins only roads 23 and 24 (connecting road 827 one way, 828
-    # the other): no road has two possible successors there, so a junction is not needed (J019, when_to_use).
-    "carla-towns/OpenDrive/Town03.xodr": {"G901", "J005", "J019", "K001", "L010", "L011", "L012"},
+    # link (L011); road 69 lane 1 (driving) into junction 793 has no laneLink (J005). Road 69's left sidewalk and
+    # shoulders continue road 70's right ones end-to-start: no direction of travel, no L012. Junction 825 joins only
+    # roads 23 and 24 (connecting road 827 one way, 828 the other): no road has two possible successors there, so a
+    # junction is not needed (J019, when_to_use).
+    "carla-towns/OpenDrive/Town03.xodr": {"G901", "J005", "J019", "K001", "L010", "L011"},
     # Connection 2: incoming 103, connecting 151 contactPoint "start", but 151 starts at road 101 (J002); lane 1 of
     # section s=0.1 of road 103 narrows to 1.5 m and has no successor (L010); lanes link across road ends that have no
     # road link (R015, Annex F road.lane.link.no_link); <geoReference> stands beside <header>, 1.4 wants it inside

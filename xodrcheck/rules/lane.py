@@ -14,7 +14,7 @@ from typing import Any
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
-from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, LaneType, Road
+from xodrcheck.model import DRIVABLE_LANE_TYPES, ContactPoint, ElementType, Lane, LaneSection, LaneType, Road
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, link_at, travel_direction
 from xodrcheck.rules.registry import rule
@@ -383,13 +383,23 @@ def lane_link_not_reciprocal(ctx: Context):
                 )
 
 
+#: Lane types whose traffic has a direction (the side of lane 0 and the traffic rule give it).
+_DIRECTED = (DRIVABLE_LANE_TYPES - {LaneType.BIDIRECTIONAL}) | {LaneType.BIKING}
+
+
+def _directed(lane: Lane) -> bool:
+    return lane.type in _DIRECTED
+
+
 @rule("L012", "lane-link-direction", Category.LANE, Severity.ERROR)
 def lane_link_direction(ctx: Context):
     """A lane link joins lanes whose traffic runs in opposite directions.
 
     Inside a road and where a road's end meets the next road's start, right lanes continue right lanes and left lanes
     left lanes. Where two starts or two ends meet, the reference lines run against each other and right lanes continue
-    left lanes. Each road's traffic rule (``rule="RHT"``/``"LHT"``) says which side drives along s.
+    left lanes. Each road's traffic rule (``rule="RHT"``/``"LHT"``) says which side drives along s. Only lanes with a
+    direction of travel count (vehicle lanes but ``bidirectional``, and ``biking``): a sidewalk, shoulder, median or
+    ``none`` lane may continue on the other side of lane 0 (CARLA moves lane 0 to a road's edge that way).
 
     Passes (road 2 starts at road 1's start)::
 
@@ -407,7 +417,7 @@ def lane_link_direction(ctx: Context):
         for lane in side_lanes(mine.section):
             for target_id in mine.links(lane):
                 target = other.section.lane(target_id)
-                if target is None or target_id == 0:
+                if target is None or target_id == 0 or not (_directed(lane) and _directed(target)):
                     continue
                 a = travel_direction(mine.road, lane.id)
                 b = travel_direction(other.road, target_id)

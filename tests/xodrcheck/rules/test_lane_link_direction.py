@@ -17,3 +17,14 @@ def test_same_side_lanes_linked_where_two_ends_meet():
     found = findings(path, RULE)
     assert sorted((f.road, f.lane) for f in found) == [("1", -1), ("1", 1)]
     assert all("two ends meet" in f.message for f in found)
+
+
+def test_sidewalk_continuing_on_the_other_side_of_lane_0():
+    """A sidewalk, shoulder or median has no direction of travel: CARLA's Town03 (roads 69-70-71) and Town06 (roads
+    1-65) link their left sidewalks, shoulders and medians to the next road's right ones (12 findings before)."""
+    assert findings(fixture(RULE, "pass_sidewalk.xodr"), RULE) == []
+
+
+def test_carla_towns_have_no_lane_link_direction_error(corpus_dir):
+    for town in ("Town03", "Town06"):
+        assert findings(corpus_dir / "carla-towns" / "OpenDrive" / f"{town}.xodr", RULE) == []
