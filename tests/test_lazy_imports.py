@@ -111,6 +111,14 @@ def test_plain_check_loads_what_the_rules_need(tmp_path: Path, plain: Path) -> N
     assert mods == {"xodrcheck", "numpy", "lxml", "shapely"}
 
 
+def test_plain_check_loads_no_slow_module_it_does_not_use(tmp_path: Path, plain: Path) -> None:
+    names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(plain))
+    assert "xodrcheck.rules.overlap" in names and "numpy" in names and "xodrcheck.memory" in names
+    # np.unique imports numpy.ma to ask whether its array is masked (the geometry uses xodrcheck.arrays.unique);
+    # ctypes.util (and its subprocess) only found the C library for malloc_trim; no configuration file: no TOML parser
+    assert {"numpy.ma", "ctypes.util", "subprocess", "tomllib", "tomli"}.isdisjoint(names)
+
+
 def test_check_without_overlap_rules_loads_no_shapely(tmp_path: Path, plain: Path) -> None:
     mods = loaded(tmp_path, "xodrcheck.cli", "xodrcheck", "check", "--ignore", "overlap", str(plain))
     assert mods == {"xodrcheck", "numpy", "lxml"}

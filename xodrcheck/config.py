@@ -19,10 +19,13 @@ from xodrcheck.findings import XodrError
 __all__ = ["PROFILES", "SEVERITY_NAMES", "Config", "ConfigError", "Tolerances", "load_config"]
 
 
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover - Python 3.10
-    import tomli as tomllib
+def _toml(text: str) -> dict[str, Any]:
+    """A TOML document's table (the parser is imported here: a check without a configuration file needs none)."""
+    if sys.version_info >= (3, 11):
+        import tomllib
+    else:  # pragma: no cover - Python 3.10
+        import tomli as tomllib
+    return tomllib.loads(text)
 
 
 def _tolerance(default: float, unit: str, doc: str, rules: str = ""):
@@ -224,6 +227,8 @@ PROFILES: dict[str, dict[str, float]] = {
 
 @dataclass(frozen=True)
 class Config:
+    """The checker's configuration: tolerances, rule selection, strictness and what a report shows."""
+
     tolerances: Tolerances = field(default_factory=Tolerances)
     select: tuple[str, ...] = ()  # rule codes or categories; empty: all
     ignore: tuple[str, ...] = ()
@@ -264,11 +269,11 @@ def load_config(start: Path | None = None, overrides: dict | None = None, profil
     for folder in (here, *here.parents):
         own = folder / "xodrcheck.toml"
         if own.is_file():
-            table = tomllib.loads(own.read_text(encoding="utf-8"))
+            table = _toml(own.read_text(encoding="utf-8"))
             break
         pyproject = folder / "pyproject.toml"
         if pyproject.is_file():
-            data = tomllib.loads(pyproject.read_text(encoding="utf-8"))
+            data = _toml(pyproject.read_text(encoding="utf-8"))
             if "xodrcheck" in data.get("tool", {}):
                 table = data["tool"]["xodrcheck"]
                 break

@@ -16,6 +16,8 @@ from xodrcheck.model import ContactPoint, Document, ElementType, Profile, Road
 
 @dataclass(frozen=True)
 class ElevationInfo:
+    """The heights of a map: lowest and highest reference-line point, steepest grade, largest step at a link."""
+
     min_z: float  #: m, lowest point of any reference line
     max_z: float
     max_grade: float  #: largest |dz/ds| of any reference line (a fraction: 0.08 is 8 %)

@@ -10,6 +10,7 @@ from collections.abc import Iterable, Mapping
 
 import numpy as np
 
+from xodrcheck.arrays import unique
 from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.elevation_info import ElevationInfo, elevation_info
@@ -42,6 +43,8 @@ BASIS_MIXED = "lane borders and reference line"
 
 @dataclass(frozen=True)
 class BoundingBox:
+    """The plan-view extent of a map, and what it was measured on (lanes or reference lines)."""
+
     min_x: float
     min_y: float
     max_x: float
@@ -161,7 +164,7 @@ def _reference_s(rg: RoadGeometry, tolerances: Tolerances) -> np.ndarray:
     """Samples of a road without lane sections: element starts, the road end, and steps of at most ``max_step``."""
     length = max(rg.road.length, 0.0)
     count = int(step_counts(np.array([length]), tolerances.max_step, tolerances.max_samples_per_section)[0]) + 1
-    return np.unique(np.concatenate([np.linspace(0.0, length, count), rg.reference_line.breakpoints]))
+    return unique(np.concatenate([np.linspace(0.0, length, count), rg.reference_line.breakpoints]))
 
 
 def bounding_box(document: Document, tolerances: Tolerances | None = None) -> BoundingBox | None:

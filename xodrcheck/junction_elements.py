@@ -31,6 +31,8 @@ RoadPlace = float | str
 
 @dataclass(frozen=True, slots=True)
 class LaneLinkXml:
+    """A connection's ``<laneLink>`` as written (lane ids and overlap zone)."""
+
     from_lane: int | None
     to_lane: int | None
     overlap_zone: float | None
@@ -41,6 +43,8 @@ class LaneLinkXml:
 
 @dataclass(frozen=True, slots=True)
 class ConnectionXml:
+    """A junction ``<connection>`` as written (for the rules about its attributes and children)."""
+
     id: str | None
     #: ``type`` as written (``None``: absent, a regular connection).
     type: str | None
@@ -68,6 +72,8 @@ class CrossPathLink:
 
 @dataclass(frozen=True, slots=True)
 class CrossPath:
+    """A junction's ``<crossPath>``: the crossing road and the roads at its start and end."""
+
     id: str | None
     crossing_road: str | None
     road_at_start: str | None
@@ -79,6 +85,8 @@ class CrossPath:
 
 @dataclass(frozen=True, slots=True)
 class Priority:
+    """A junction's ``<priority>``: the road with the higher and the road with the lower priority."""
+
     high: str | None
     low: str | None
     line: int
@@ -86,6 +94,8 @@ class Priority:
 
 @dataclass(frozen=True, slots=True)
 class RoadSection:
+    """A junction boundary's or a direct junction's ``<roadSection>``: a road between two s positions."""
+
     id: str | None
     road: str | None
     s_start: float | None
@@ -123,6 +133,8 @@ Segment = LaneSegment | JointSegment
 
 @dataclass(frozen=True, slots=True)
 class Boundary:
+    """A junction's ``<boundary>``: its segments, in file order."""
+
     segments: tuple[Segment, ...]
     #: Segments whose ``type`` is neither ``lane`` nor ``joint`` (tag line, type as written).
     unknown: tuple[tuple[int, str | None], ...]
@@ -142,6 +154,8 @@ class GridRow:
 
 @dataclass(frozen=True, slots=True)
 class ElevationGrid:
+    """A junction's ``<elevationGrid>``: start, spacing and rows of heights."""
+
     s_start: float | None
     spacing: float | None
     rows: tuple[GridRow, ...]
@@ -164,6 +178,8 @@ class PlanGeometry:
 
 @dataclass(frozen=True, slots=True)
 class PlanView:
+    """A junction's own ``<planView>`` (the junction's reference line): its geometries."""
+
     geometries: tuple[PlanGeometry, ...]
     line: int
 

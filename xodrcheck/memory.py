@@ -10,18 +10,24 @@ allocator to return its free pages (``malloc_trim(0)``), which it does in millis
 
 from __future__ import annotations
 
-import ctypes
-import ctypes.util
 import functools
 from collections.abc import Callable
 
 
 @functools.cache
 def _trim() -> Callable[[int], int] | None:
-    try:
-        libc = ctypes.CDLL(ctypes.util.find_library("c") or "libc.so.6")
-        trim = libc.malloc_trim
-    except (OSError, AttributeError):
+    # ctypes here, not at the top, and no ctypes.util.find_library (it imports shutil, subprocess and tempfile and
+    # runs ldconfig): the running program's own symbols include the C library's; glibc's soname is the fallback
+    import ctypes
+
+    trim = None
+    for name in (None, "libc.so.6"):
+        try:
+            trim = ctypes.CDLL(name).malloc_trim
+            break
+        except (OSError, AttributeError, TypeError):
+            continue
+    if trim is None:
         return None
     trim.argtypes = [ctypes.c_size_t]
     trim.restype = ctypes.c_int

@@ -221,6 +221,8 @@ class _Bound:
 
 @dataclass
 class _Section:
+    """A lane section to mesh: its road geometry, index and the lanes with their inner neighbours."""
+
     rg: RoadGeometry
     index: int
     #: (lane, id of the lane whose outer border is its inner border) of every meshed lane.

@@ -209,6 +209,8 @@ Profile = tuple[Cubic, ...]
 # --------------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True, slots=True)
 class Line:
+    """A straight line of the plan view (``<line>``)."""
+
     s: float
     x: float
     y: float
@@ -219,6 +221,8 @@ class Line:
 
 @dataclass(frozen=True, slots=True)
 class Arc:
+    """An arc of constant curvature of the plan view (``<arc>``)."""
+
     s: float
     x: float
     y: float
@@ -230,6 +234,8 @@ class Arc:
 
 @dataclass(frozen=True, slots=True)
 class Spiral:
+    """A clothoid of the plan view (``<spiral>``): curvature linear in s from ``curv_start`` to ``curv_end``."""
+
     s: float
     x: float
     y: float
@@ -258,6 +264,8 @@ class Poly3:
 
 @dataclass(frozen=True, slots=True)
 class ParamPoly3:
+    """A parametric cubic of the plan view (``<paramPoly3>``): u and v cubic in a parameter p."""
+
     s: float
     x: float
     y: float
@@ -298,6 +306,8 @@ class RoadLink:
 # --------------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True, slots=True)
 class RoadMark:
+    """A lane's road mark from ``s`` (its ``sOffset``) on (``<roadMark>``)."""
+
     s: float  # sOffset
     type: str
     weight: str | None = None
@@ -309,6 +319,8 @@ class RoadMark:
 
 @dataclass(frozen=True, slots=True)
 class Speed:
+    """A lane's speed limit from ``s`` (its ``sOffset``) on (``<speed>``)."""
+
     s: float  # sOffset
     max: float
     unit: str | None = None
@@ -328,6 +340,8 @@ class LaneHeight:
 
 @dataclass(frozen=True, slots=True)
 class Lane:
+    """One lane of a lane section: id, type, links, width or border laws, road marks, speeds, heights."""
+
     id: int
     type: LaneType
     level: bool = False
@@ -356,6 +370,8 @@ class Lane:
 
 @dataclass(frozen=True, slots=True)
 class LaneSection:
+    """A lane section from ``s`` on: its left, center and right lanes."""
+
     s: float
     single_side: bool | None = None
     left: tuple[Lane, ...] = ()  # in file order; use ``lanes`` for id order
@@ -393,6 +409,8 @@ class TemporaryLanes:
 # --------------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True, slots=True)
 class Road:
+    """A road: reference line (plan view), profiles, lane offset, lane sections and links."""
+
     id: str
     length: float
     junction: str | None = None  # None for "-1" (not inside a junction)
@@ -433,6 +451,8 @@ class Road:
 # --------------------------------------------------------------------------------------------------------------------
 @dataclass(frozen=True, slots=True)
 class JunctionLaneLink:
+    """A ``<laneLink>`` of a junction connection: the incoming lane and the connecting (or linked) lane."""
+
     from_lane: int
     to_lane: int
     line: int = 0
@@ -443,6 +463,9 @@ class JunctionLaneLink:
 
 @dataclass(frozen=True, slots=True)
 class Connection:
+    """A junction's ``<connection>``: the incoming road, the connecting (or linked) road, the contact point and lane
+    links."""
+
     id: str
     incoming_road: str | None
     connecting_road: str | None = None  # default junctions
@@ -456,6 +479,8 @@ class Connection:
 
 @dataclass(frozen=True, slots=True)
 class Junction:
+    """A ``<junction>``: id, name, type and connections."""
+
     id: str
     name: str | None = None
     type: JunctionType = JunctionType.DEFAULT
@@ -491,6 +516,8 @@ class Offset:
 
 @dataclass(frozen=True, slots=True)
 class Header:
+    """The file's ``<header>``: OpenDRIVE revision, name, version, date, vendor, extent and georeference."""
+
     rev_major: int | None
     rev_minor: int | None
     name: str | None = None

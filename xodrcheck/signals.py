@@ -40,6 +40,8 @@ class Sign:
 
 @dataclass(frozen=True, slots=True)
 class Signal:
+    """A road's ``<signal>``: where it stands, what it shows and the lanes it applies to."""
+
     road: str
     id: str | None
     type: str | None
@@ -73,12 +75,16 @@ class SignalReference:
 
 @dataclass(frozen=True, slots=True)
 class Control:
+    """A controller's ``<control>``: the signal it switches."""
+
     signal_id: str | None
     line: int = 0
 
 
 @dataclass(frozen=True, slots=True)
 class Controller:
+    """A ``<controller>``: the signals it switches together."""
+
     id: str | None
     controls: tuple[Control, ...] = ()
     line: int = 0
@@ -86,6 +92,8 @@ class Controller:
 
 @dataclass(frozen=True, slots=True)
 class VmsBoardReference:
+    """A variable message sign's board reference in a VMS group."""
+
     signal_id: str | None
     vms_index: str | None
     line: int = 0
@@ -93,6 +101,8 @@ class VmsBoardReference:
 
 @dataclass(frozen=True, slots=True)
 class VmsGroup:
+    """A group of variable message sign boards."""
+
     id: str | None
     references: tuple[VmsBoardReference, ...] = ()
     line: int = 0

@@ -13,6 +13,8 @@ from xodrcheck.classcache import dataclass
 
 @dataclass(frozen=True, slots=True)
 class Jet:
+    """Values and their first and second derivatives at the same points."""
+
     v: np.ndarray
     d1: np.ndarray
     d2: np.ndarray

@@ -17,6 +17,7 @@ from dataclasses import field, replace
 
 import numpy as np
 
+from xodrcheck.arrays import unique
 from xodrcheck.classcache import dataclass
 from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, SideLanes, geometry_of
@@ -118,7 +119,7 @@ def _section(road: Road, index: int, rg: RoadGeometry, chord: float, max_step: f
     s = rg.sample_s(index, chord=chord, max_step=max_step)
     mark_s = [start for _, lane, origin in marked for start, _ in _mark_starts(lane, origin)]
     extra = np.array([v for v in mark_s if s0 < v < s1], dtype=float)
-    s = np.unique(np.concatenate([s, extra]))
+    s = unique(np.concatenate([s, extra]))
     if len(s) < 2:
         return None
     left, right = rg.side_lanes(index)

@@ -21,6 +21,8 @@ VERTEX_ROAD, VERTEX_LOCAL = "vertexRoad", "vertexLocal"
 
 @dataclass(frozen=True, slots=True)
 class CornerRoad:
+    """An outline corner in road coordinates (``<cornerRoad>``: s, t, dz, height)."""
+
     s: float
     t: float
     dz: float
@@ -31,6 +33,8 @@ class CornerRoad:
 
 @dataclass(frozen=True, slots=True)
 class CornerLocal:
+    """An outline corner in the object's local coordinates (``<cornerLocal>``: u, v, z, height)."""
+
     u: float
     v: float
     z: float
@@ -105,6 +109,8 @@ class Markings:
 
 @dataclass(frozen=True, slots=True)
 class Outline:
+    """An object's outline (``<outline>``): its corners, closed or open, outer or inner."""
+
     id: int | None = None
     outer: bool | None = None
     closed: bool | None = None
@@ -136,6 +142,8 @@ class Outline:
 
 @dataclass(frozen=True, slots=True)
 class Repeat:
+    """An object repeated along the road (``<repeat>``): from s over a length at a distance."""
+
     s: float
     length: float
     distance: float
@@ -187,6 +195,8 @@ _REPEAT_FIELDS = {
 
 @dataclass(frozen=True, slots=True)
 class LaneValidity:
+    """The lanes an object or signal applies to (``<validity>``: fromLane to toLane)."""
+
     from_lane: int
     to_lane: int
     layer: LaneLayer = LaneLayer.PERMANENT  # 1.9
@@ -217,6 +227,8 @@ class Vertex:
 
 @dataclass(frozen=True, slots=True)
 class Polyline:
+    """A polyline of an object's skeleton (``<polyline>``) and its vertices."""
+
     id: int | None = None
     vertices: tuple[Vertex, ...] = ()
     line: int = 0
@@ -224,6 +236,8 @@ class Polyline:
 
 @dataclass(frozen=True, slots=True)
 class Skeleton:
+    """An object's skeleton (``<skeleton>``): its polylines."""
+
     polylines: tuple[Polyline, ...] = ()
     line: int = 0
 
@@ -244,6 +258,8 @@ class Border:
 
 @dataclass(frozen=True, slots=True)
 class Material:
+    """An object's ``<material>``: surface, friction and roughness."""
+
     surface: str | None = None
     friction: float | None = None
     roughness: float | None = None
@@ -263,12 +279,16 @@ class ObjectCrg:
 
 @dataclass(frozen=True, slots=True)
 class Surface:
+    """An object's ``<surface>``: its CRG records."""
+
     crgs: tuple[ObjectCrg, ...] = ()
     line: int = 0
 
 
 @dataclass(frozen=True, slots=True)
 class RoadObject:
+    """A road object (``<object>``): where it stands, its size and shape, outlines, repeats, validity."""
+
     road: str
     id: str
     type: str | None

@@ -46,6 +46,8 @@ _PER_LANE = 8
 
 @dataclass(frozen=True)
 class _Entry:
+    """A road entering an elevation grid: its contact point and the joint segment there."""
+
     road: Road
     end: ContactPoint
     joint: JointSegment | None

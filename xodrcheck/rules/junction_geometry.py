@@ -43,6 +43,8 @@ class _Connected:
 
 @dataclass(frozen=True)
 class _Path:
+    """One lane's path through a junction, sampled in plan view from the contact point on."""
+
     connection: Connection
     from_lane: int
     road: Road

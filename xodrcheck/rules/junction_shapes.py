@@ -19,6 +19,7 @@ import math
 
 import numpy as np
 
+from xodrcheck.arrays import unique
 from xodrcheck.classcache import dataclass
 from xodrcheck.junction_elements import (
     Boundary,
@@ -82,7 +83,7 @@ def _lane_piece(ctx: Context, seg: LaneSegment) -> np.ndarray | None:
         if end < lo or start > hi or (end == lo and index + 1 < len(road.lane_sections)):
             continue
         s = section_lines(ctx, road, index).s
-        s = np.unique(np.concatenate(([max(lo, start)], s[(s > lo) & (s < hi)], [min(hi, left_of(end))])))
+        s = unique(np.concatenate(([max(lo, start)], s[(s > lo) & (s < hi)], [min(hi, left_of(end))])))
         try:
             points = geometry.lane_points(index, seg.lane, s, where="outer")
         except KeyError:
@@ -287,7 +288,7 @@ def strip(ctx: Context, road: Road, lane: int | None, lo: float, hi: float):
         if end < lo or start > hi:
             continue
         s = section_lines(ctx, road, index).s
-        s = np.unique(np.concatenate(([max(lo, start)], s[(s > lo) & (s < hi)], [min(hi, left_of(end))])))
+        s = unique(np.concatenate(([max(lo, start)], s[(s > lo) & (s < hi)], [min(hi, left_of(end))])))
         if lane is None:
             left, right = geometry.side_lanes(index)
             ids = (left.lanes[-1].id if left.lanes else 0, right.lanes[-1].id if right.lanes else 0)

@@ -51,6 +51,9 @@ class Side:
 
 @dataclass(frozen=True, slots=True)
 class Joint:
+    """Where a lane meets another across a lane-section boundary or a road link: both sides and whether the links
+    agree."""
+
     mine: Side
     other: Side
     #: Whether the other side's links at this joint point back here (always inside a road; at a road link when the

@@ -68,6 +68,8 @@ class LaneXml:
 
 @dataclass(frozen=True, slots=True)
 class LanesXml:
+    """A file's lane sections and lanes as written in the XML (for the rules about attributes the model normalises)."""
+
     sections: tuple[SectionXml, ...]
     lanes: tuple[LaneXml, ...]
 

@@ -336,6 +336,8 @@ def surface_object_not_referenced(ctx: Context):
 
 @dataclass(frozen=True, slots=True)
 class RoadCrg:
+    """A road's ``<surface><CRG>`` record: where it applies along the road and how."""
+
     road: str
     s_start: float
     s_end: float

@@ -48,6 +48,8 @@ def _swapped(o: Overlap) -> Overlap:
 
 @dataclass
 class _Pair:
+    """What overlaps between two roads: the total area, the largest overlap and the lane pairs."""
+
     area: float = 0.0
     largest: Overlap | None = None
     lanes: set[tuple[int, int]] = field(default_factory=set)

@@ -32,6 +32,9 @@ NO_UID = ""
 
 @dataclass(frozen=True)
 class Rule:
+    """A rule of the checker: stable code, name, category, severity, documentation and, for a check rule, its
+    function."""
+
     code: str
     name: str
     category: Category
