@@ -1,23 +1,28 @@
-"""Quality-diversity search against random sampling, at the same number of evaluated maps, in one run (issue 13).
+"""Quality-diversity search against random generation, at the same number of evaluated intersections, in one run
+(issue 13).
 
-    python benchmarks/bench_search.py --evaluations 5000 -j 2 -o /tmp/bench_search     # the issue's budget
-    python benchmarks/bench_search.py --evaluations 300 --era-maps 12 --target 50      # what fits a busy hour
+    python benchmarks/bench_search.py --evaluations 5000 -j 2 -o /tmp/bench_search   # the issue's budget, idle machine
+    nice -n 10 python benchmarks/bench_search.py --evaluations 480 --random-cap 600   # what fits a busy 2-core hour
 
-Three samplers fill the same archive (``junctionart search``'s default grid, legs x min_angle, 60 cells; feasible =
-0 error-level xodrcheck findings; objective = compactness):
+Two samplers fill the same archive, ``junctionart search``'s default grid (legs x min_angle x complexity, 5 x 12 x 20
+= 1,200 cells; feasible = 0 error-level xodrcheck findings; objective = compactness):
 
-1. ``junctionart search`` (MAP-Elites, pyribs), ``--evaluations`` maps;
-2. random genomes: the same number of maps, each a uniformly random vector of the same genome;
-3. random generation the way ``junctionart era`` samples: ``--era-maps`` 1 km x 1 km maps with random seeds, two-lane
-   and random-lane in turn, each checked as a whole (a map with an error contributes nothing) and every intersection
-   (3+ legs) measured into the archive; the number of maps is smaller (each holds about 30 intersections and costs
-   about 10 maps of the search), so its figures are given per map and per second.
+1. ``junctionart search`` (MAP-Elites with pyribs' bandit scheduler over its emitters), ``--evaluations`` maps, each
+   one intersection;
+2. random generation the way ``junctionart era`` samples it: 1 km x 1 km maps with seeds 0, 1, 2, ..., two-lane and
+   random-lane in turn (``era``'s two runs), each map checked as a whole (the intersections of a map with an error
+   are evaluated but infeasible) and every intersection of 3+ legs measured; the sample is the first N intersections
+   in (seed, junction) order, ``era``'s own unit, N = the search's evaluated maps.
 
-Then the time to ``--target`` distinct valid 7-leg intersections: a search with ``--where "legs >= 7"`` on a finer
-grid (legs x min_angle:36 x area:20) is timed; random generation's time is its measured seconds per intersection times
-the intersections it needs per 7-leg one: its own sample's rate when it found any, else the rate of ``docs/era``'s
-10,000 + 10,000 intersections (9 7-leg ones). Times are wall clock on this machine (absolute, noisy when it is shared);
-coverage and QD-score are exact counts of one run.
+Both are also binned on the old 2-D grid (legs x min_angle, 60 cells) from the same evaluations, for comparison.
+
+Then the time to ``--target`` distinct valid 7-leg intersections (distinct = different file bytes; valid = 0 errors),
+measured for both from the start of each sampler: the search keeps iterating past ``--evaluations`` until it has
+evaluated that many (or ``--target-budget`` maps); random generation keeps generating maps until it has that many or
+``--random-cap`` seconds have passed, and is then extrapolated from its measured 7-leg rate (the time so far x target
+/ hits; with no hit, a lower bound from the rule of three, 3 / intersections as the 95 % upper bound of the rate).
+Times are wall clock of one process per sampler on this machine (absolute, noisy when it is shared); cells and
+QD-scores are exact counts of the run. Everything runs in this process with ``-j 1`` (one worker; the default).
 """
 
 from __future__ import annotations
@@ -26,8 +31,8 @@ import argparse
 import json
 import sys
 import time
-from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -35,15 +40,14 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
 from junctionart.search.engine import Settings  # noqa: E402
-from junctionart.search.measure import METRICS, NAMES, evaluate, objective  # noqa: E402
+from junctionart.search.measure import DEFAULT_DESCRIPTORS, METRICS, Evaluation, evaluate, objective  # noqa: E402
 
-GRID = (("legs", 5), ("min_angle", 12))
-FINE = (("legs", 5), ("min_angle", 36), ("area", 20))
-#: docs/era/report.md: 7-leg intersections among the 20,198 of both runs (2 two-lane + 7 random-lane).
-ERA_SEVEN, ERA_TOTAL = 9, 20198
+GRID = tuple((name, METRICS[name][2]) for name in DEFAULT_DESCRIPTORS)
+FLAT = (("legs", 5), ("min_angle", 12))
+SEVEN = 7
 
 
-def _archive(grid: tuple[tuple[str, int], ...]):
+def _archive(grid: tuple[tuple[str, int], ...]) -> Any:
     from ribs.archives import GridArchive
 
     return GridArchive(
@@ -55,145 +59,263 @@ def _archive(grid: tuple[tuple[str, int], ...]):
     )
 
 
-def _add(archive, rows: list[dict[str, float]], grid) -> None:
+def filled(rows: list[dict[str, float]], grid: tuple[tuple[str, int], ...]) -> Any:
+    """An archive of ``grid`` holding the best of ``rows`` (feasible metric rows) per cell."""
+    archive = _archive(grid)
     if rows:
         archive.add(
             np.zeros((len(rows), 1)),
             np.array([objective(r["area"]) for r in rows]),
             np.array([[r[n] for n, _ in grid] for r in rows]),
         )
+    return archive
 
 
-def era_map(seed: int) -> tuple[list[dict[str, float]], bool, float]:
-    """One random map as ``era`` samples it (two-lane / random-lane by seed parity): its intersections' metrics,
-    whether xodrcheck finds no error, and the seconds it took."""
+def era_map(seed: int) -> tuple[list[dict[str, float]], list[str], bool]:
+    """One random map as ``era`` samples it (two-lane / random-lane by seed parity): its intersections' metrics (NaN
+    rows kept: evaluated, infeasible), a digest per intersection, and whether xodrcheck finds no error in it."""
+    import hashlib
+
     from junctionart import generate, to_bytes
     from junctionart.params import Params
     from junctionart.search.measure import measure_document
     from xodrcheck.check import check
     from xodrcheck.reader import read
 
-    t0 = time.perf_counter()
     params = Params(width=1000.0, height=1000.0, randomize_lanes=bool(seed % 2))
     data = to_bytes(generate(params, seed), params.version)
     ok = check(data).ok
     document = read(data).document
-    rows = [measure_document(document, j) for j in document.junctions] if document is not None else []
-    rows = [r for r in rows if r["legs"] >= 3 and not any(np.isnan(v) for v in r.values())]
-    return rows, ok, time.perf_counter() - t0
+    rows, keys = [], []
+    for j in document.junctions if document is not None else []:
+        row = measure_document(document, j)
+        if row["legs"] >= 3:
+            rows.append(row)
+            keys.append(hashlib.sha256(f"{seed}:{j.id}".encode()).hexdigest())
+    return rows, keys, ok
 
 
-def _pool_map(pool: ProcessPoolExecutor, fn, items) -> list:
-    return list(pool.map(fn, items, chunksize=1))
+def _feasible(row: dict[str, float]) -> bool:
+    return not any(np.isnan(v) for v in row.values())
 
 
-def random_genomes(pool, n: int, seed: int) -> tuple[list[dict[str, float]], float]:
-    from junctionart.search.genome import random_genomes as draw
+class Clock:
+    """Wall time since a sampler started, and when it reached ``target`` distinct valid 7-leg intersections."""
 
-    t0 = time.perf_counter()
-    vectors = [[float(v) for v in x] for x in draw(np.random.default_rng(seed + 1000), n)]
-    results = _pool_map(pool, evaluate, vectors)
-    return [r.metrics for r in results if r.feasible], time.perf_counter() - t0
+    def __init__(self, target: int) -> None:
+        self.start = time.perf_counter()
+        self.target = target
+        self.sevens: set[str] = set()
+        self.reached: float | None = None
+        self.reached_at = 0
+
+    def seen(self, legs: float, digest: str, evaluated: int) -> None:
+        if legs >= SEVEN and digest not in self.sevens:
+            self.sevens.add(digest)
+            if len(self.sevens) == self.target and self.reached is None:
+                self.reached, self.reached_at = self.elapsed(), evaluated
+
+    def elapsed(self) -> float:
+        return time.perf_counter() - self.start
 
 
-def run_search(folder: Path, grid, budget: int, jobs: int, where: str | None = None, wanted: int | None = None):
-    from junctionart.search.predicate import Predicate
-    from junctionart.search.run import search
+def run_search(folder: Path, n: int, args: argparse.Namespace) -> dict[str, Any]:
+    """The search arm: iterate until ``n`` maps are evaluated and the 7-leg target is met (or the budget spent)."""
+    from tqdm import tqdm
 
-    predicate = Predicate.parse(where, NAMES) if where else None
-    t0 = time.perf_counter()
-    state = search(folder, Settings(grid, 0, 16), budget, predicate, wanted, jobs, progress=False)
-    return state, time.perf_counter() - t0
+    from junctionart import era
+    from junctionart.search.engine import iterate, load_or_start
+    from junctionart.search.run import _distributed
+
+    folder.mkdir(parents=True, exist_ok=True)
+    state = load_or_start(folder, Settings(GRID, args.seed, args.batch), era.generator_version())
+    clock = Clock(args.target)
+    executor = era._Local(args.jobs) if args.jobs > 1 else None
+    bar = tqdm(total=n, unit="map", desc="search")
+    inner = _distributed(executor, None) if executor is not None else (lambda batch: [evaluate(x) for x in batch])
+    rows: list[dict[str, float]] = []
+    snapshot: dict[str, Any] = {}
+
+    def recorded(batch: list[list[float]]) -> list[Evaluation]:
+        results = inner(batch)
+        for k, r in enumerate(results):
+            if r.feasible:
+                if not snapshot:  # the first n maps' feasible rows
+                    rows.append(r.metrics)
+                clock.seen(r.metrics["legs"], r.sha256, state.evaluated + k + 1)
+        bar.update(len(results))
+        return results
+
+    try:
+        while not snapshot or (clock.reached is None and state.evaluated < args.target_budget):
+            iterate(state, recorded)
+            if not snapshot and state.evaluated >= n:
+                snapshot.update(seconds=clock.elapsed(), evaluated=state.evaluated)
+                snapshot["archive"] = _copy(state.scheduler.archive)
+                bar.close()
+                bar = tqdm(total=args.target, unit="7-leg", desc="search, distinct 7-leg", initial=len(clock.sevens))
+            elif snapshot:
+                bar.n = len(clock.sevens)
+                bar.refresh()
+    finally:
+        bar.close()
+        if executor is not None:
+            executor.close()
+    return {**snapshot, "rows": rows, "clock": clock, "total": state.evaluated}
 
 
-def figure(path: Path, archives: list[tuple[str, object]]) -> None:
+def _copy(archive: Any) -> Any:
+    """A frozen copy of a search archive (index, objective) in a plain grid archive of the same shape."""
+    data = archive.data()
+    out = _archive(GRID)
+    if len(data["index"]):
+        out.add(np.zeros((len(data["index"]), 1)), data["objective"], data["measures"])
+    return out
+
+
+def run_random(n: int, args: argparse.Namespace) -> dict[str, Any]:
+    """The random arm: era maps until ``n`` intersections are measured and the 7-leg target or the cap is reached."""
+    from tqdm import tqdm
+
+    clock = Clock(args.target)
+    sample: list[dict[str, float]] = []  # the first n intersections, NaN rows for infeasible ones
+    measured = maps = 0
+    coverage_seconds = None
+    bar = tqdm(total=n, unit="intersection", desc="random generation")
+    seed = 0
+    while coverage_seconds is None or (clock.reached is None and clock.elapsed() < args.random_cap):
+        rows, keys, ok = era_map(seed)
+        maps += 1
+        seed += 1
+        for row, key in zip(rows, keys):
+            measured += 1
+            feasible = ok and _feasible(row)
+            if len(sample) < n:
+                sample.append(row if feasible else dict.fromkeys(row, float("nan")))
+            if feasible:
+                clock.seen(row["legs"], key, measured)
+        if coverage_seconds is None:
+            bar.update(min(len(rows), n - bar.n))
+            if len(sample) >= n:
+                coverage_seconds = clock.elapsed()
+                bar.close()
+                bar = tqdm(unit="map", desc=f"random generation, 7-leg hits (cap {args.random_cap:.0f} s)")
+        else:
+            bar.update(1)
+            bar.set_postfix(sevens=len(clock.sevens), intersections=measured, refresh=False)
+    bar.close()
+    return {
+        "rows": [r for r in sample if _feasible(r)],
+        "seconds": coverage_seconds,
+        "clock": clock,
+        "measured": measured,
+        "maps": maps,
+    }
+
+
+def _time_to_target(arm: dict[str, Any], target: int) -> tuple[float, str]:
+    clock: Clock = arm["clock"]
+    if clock.reached is not None:
+        return clock.reached, "measured"
+    elapsed, hits = clock.elapsed(), len(clock.sevens)
+    if hits:
+        return elapsed * target / hits, f"extrapolated from {hits} hits in {elapsed:.0f} s"
+    count = arm.get("measured", arm.get("total", 0))
+    return elapsed * target / 3, f"lower bound: no hit in {count} in {elapsed:.0f} s (rule of three)"
+
+
+def figure(path: Path, panels: list[tuple[str, Any]]) -> None:
+    """Rows: samplers; columns: leg counts; each panel min_angle x complexity, colour = the cell's objective."""
     from junctionart.extras import pyplot
 
     plt = pyplot("bench_search")
+    dims = [c for _, c in GRID]
+    (lo_a, hi_a, _), (lo_c, hi_c, _) = METRICS["min_angle"], METRICS["complexity"]
     fig, axes = plt.subplots(
-        1, len(archives), figsize=(4.6 * len(archives), 4.4), dpi=100, squeeze=False, layout="constrained"
+        len(panels), dims[0], figsize=(3.0 * dims[0], 3.0 * len(panels)), sharex=True, sharey=True, squeeze=False
     )
-    (lo_a, hi_a, _), (lo_b, hi_b, _) = METRICS["legs"], METRICS["min_angle"]
-    for ax, (title, archive) in zip(axes[0], archives):
-        grid = np.full((GRID[1][1], GRID[0][1]), np.nan)
+    mesh = None
+    for row, (title, archive) in enumerate(panels):
+        cube = np.full(dims, np.nan)
         data = archive.data()
         for idx, value in zip(data["index"], data["objective"]):
-            a, b = np.unravel_index(int(idx), [c for _, c in GRID])
-            grid[b, a] = value
-        mesh = ax.pcolormesh(
-            np.linspace(lo_a, hi_a, 6), np.linspace(lo_b, hi_b, 13), grid, cmap="viridis", vmin=0, vmax=0.6
-        )
-        ax.set(xlabel="legs", ylabel="min_angle (deg)", title=f"{title}: {len(archive)} of 60 cells")
-    fig.colorbar(mesh, ax=axes[0].tolist(), label="objective (compactness)")
-    fig.savefig(path)
+            cube[np.unravel_index(int(idx), dims)] = value
+        for legs in range(dims[0]):
+            ax = axes[row][legs]
+            mesh = ax.pcolormesh(
+                np.linspace(lo_a, hi_a, dims[1] + 1),
+                np.linspace(lo_c, hi_c, dims[2] + 1),
+                cube[legs].T,
+                cmap="viridis",
+                vmin=0,
+                vmax=0.8,
+            )
+            count = int(np.isfinite(cube[legs]).sum())
+            ax.set_title(f"{legs + 3} legs: {count} cells", fontsize=9)
+            ax.set_ylim(0.15, 0.85)
+            if legs == 0:
+                ax.set_ylabel(f"{title}\ncomplexity", fontsize=9)
+            if row == len(panels) - 1:
+                ax.set_xlabel("min_angle (deg)")
+    fig.suptitle(", ".join(f"{t}: {len(a)} cells, QD-score {float(a.stats.qd_score):.1f}" for t, a in panels))
+    fig.tight_layout()
+    if mesh is not None:
+        fig.colorbar(mesh, ax=axes.ravel().tolist(), label="objective (compactness)", shrink=0.8)
+    fig.savefig(path, dpi=90)
     plt.close(fig)
 
 
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    ap.add_argument("--evaluations", type=int, default=5000)
-    ap.add_argument("--era-maps", type=int, default=20)
+    ap.add_argument("--evaluations", type=int, default=480, help="maps of the search = intersections of random")
     ap.add_argument("--target", type=int, default=50, help="distinct valid 7-leg intersections to time")
-    ap.add_argument("--target-budget", type=int, default=3000, help="give up the timed search after this many maps")
-    ap.add_argument("-j", "--jobs", type=int, default=2)
+    ap.add_argument("--target-budget", type=int, default=3000, help="the search gives up after this many maps")
+    ap.add_argument("--random-cap", type=float, default=600.0, help="seconds random generation looks for 7-leg ones")
+    ap.add_argument("--seed", type=int, default=0)
+    ap.add_argument("--batch", type=int, default=16)
+    ap.add_argument("-j", "--jobs", type=int, default=1)
     ap.add_argument("-o", "--output", type=Path, default=Path("bench_search"))
     args = ap.parse_args()
     args.output.mkdir(parents=True, exist_ok=True)
-    out: dict[str, object] = {"evaluations": args.evaluations}
+    t0 = time.perf_counter()
+    evaluate(list(np.full(38, 0.5)))  # imports and caches, outside every timing
+    print(f"warm-up {time.perf_counter() - t0:.0f} s", file=sys.stderr)
 
-    state, qd_seconds = run_search(args.output / "qd", GRID, args.evaluations, args.jobs)
-    with ProcessPoolExecutor(args.jobs) as pool:
-        rand_rows, rand_seconds = random_genomes(pool, state.evaluated, 0)
-        t0 = time.perf_counter()
-        era = _pool_map(pool, era_map, range(args.era_maps))
-        era_seconds = time.perf_counter() - t0
-    random_archive, era_archive = _archive(GRID), _archive(GRID)
-    _add(random_archive, rand_rows, GRID)
-    era_rows = [r for rows, ok, _ in era if ok for r in rows]
-    _add(era_archive, era_rows, GRID)
-    qd = state.scheduler.archive
-    table = [
-        ("MAP-Elites (junctionart search)", state.evaluated, qd, qd_seconds),
-        ("random genomes", state.evaluated, random_archive, rand_seconds),
-        (f"random maps as era ({len(era_rows)} intersections)", args.era_maps, era_archive, era_seconds),
-    ]
-    print(f"{'sampler':52} {'maps':>6} {'cells':>6} {'coverage':>9} {'QD-score':>9} {'wall s':>7}")
-    for name, maps, archive, seconds in table:
-        s = archive.stats
-        print(f"{name:52} {maps:6d} {len(archive):6d} {float(s.coverage):9.1%} {float(s.qd_score):9.3f} {seconds:7.0f}")
-        out[name] = {"maps": maps, "cells": len(archive), "qd_score": float(s.qd_score), "seconds": seconds}
-    ratio = len(qd) / max(len(random_archive), 1)
-    print(
-        f"filled cells, search / random genomes: {ratio:.2f}x; QD-score {float(qd.stats.qd_score):.3f} vs "
-        f"{float(random_archive.stats.qd_score):.3f}"
-    )
-    figure(args.output / "bench_search.png", [(t[0].split(" (")[0], t[2]) for t in table])
+    qd = run_search(args.output / "qd", args.evaluations, args)
+    rand = run_random(qd["evaluated"], args)
+    random_archive = filled(rand["rows"], GRID)
+    n = qd["evaluated"]
+    out: dict[str, Any] = {"evaluations": n, "grid": [list(g) for g in GRID]}
+    print(f"\n{n} evaluated intersections each; grid {' x '.join(f'{a}:{c}' for a, c in GRID)}")
+    print(f"{'sampler':40} {'feasible':>8} {'cells':>6} {'QD-score':>9} {'2-D cells':>9} {'wall s':>7}")
+    for name, archive, rows, seconds in (
+        ("MAP-Elites (junctionart search)", qd["archive"], qd["rows"], qd["seconds"]),
+        ("random generation as era samples", random_archive, rand["rows"], rand["seconds"]),
+    ):
+        flat = len(filled(rows, FLAT))
+        print(
+            f"{name:40} {len(rows):8d} {len(archive):6d} {float(archive.stats.qd_score):9.2f} {flat:9d} {seconds:7.0f}"
+        )
+        out[name] = {
+            "feasible": len(rows),
+            "cells": len(archive),
+            "qd_score": float(archive.stats.qd_score),
+            "cells_legs_x_min_angle": flat,
+            "seconds": seconds,
+        }
+    ratio = len(qd["archive"]) / max(len(random_archive), 1)
+    print(f"filled cells, search / random: {ratio:.2f}x")
+    figure(args.output / "bench_search.png", [("search", qd["archive"]), ("random (era)", random_archive)])
 
-    where = "legs >= 7"
-    target_state, target_seconds = run_search(
-        args.output / "seven", FINE, args.target_budget, args.jobs, where, args.target
-    )
-    from junctionart.search.engine import matches
-    from junctionart.search.predicate import Predicate
-
-    found = matches(target_state, Predicate.parse(where, NAMES))
-    per_intersection = era_seconds / max(sum(len(rows) for rows, _, _ in era), 1)
-    sevens = sum(1 for r in era_rows if r["legs"] >= 7)
-    rate, source = (sevens / len(era_rows), "this run's sample") if sevens else (ERA_SEVEN / ERA_TOTAL, "docs/era")
-    random_time = args.target * per_intersection / rate
-    print(
-        f"{args.target} distinct valid 7-leg intersections: search {target_seconds:.0f} s ({found} found in "
-        f"{target_state.evaluated} maps); random generation {random_time:.0f} s expected "
-        f"({per_intersection:.3f} s per intersection with its check, 1 in {1 / rate:.0f} has 7 legs, {source}); "
-        f"ratio {random_time / target_seconds:.0f}x"
-    )
-    out["seven"] = {
-        "search_seconds": target_seconds,
-        "found": found,
-        "maps": target_state.evaluated,
-        "random_seconds": random_time,
-        "rate_source": source,
-    }
+    times = {}
+    for name, arm in (("search", qd), ("random", rand)):
+        seconds, how = _time_to_target(arm, args.target)
+        times[name] = seconds
+        out[f"seven_{name}"] = {"seconds": seconds, "how": how, "hits": len(arm["clock"].sevens)}
+        print(f"{args.target} distinct valid 7-leg intersections, {name}: {seconds:.0f} s ({how})")
+    out["seven_search"]["maps"] = qd["clock"].reached_at or qd["total"]
+    out["seven_random"].update(intersections=rand["measured"], maps=rand["maps"])
+    print(f"time ratio random / search: {times['random'] / times['search']:.0f}x")
     (args.output / "bench_search.json").write_text(json.dumps(out, indent=1), encoding="utf-8")
     return 0
 

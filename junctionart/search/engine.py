@@ -2,10 +2,15 @@
 
 The archive is a :class:`ribs.archives.GridArchive` over the chosen descriptors (ranges and cells of
 :data:`.measure.METRICS`), with ``threshold_min = 0`` and ``learning_rate = 1`` (plain MAP-Elites: a cell keeps its
-best candidate; infeasible candidates score -1 and never enter). Every metric is stored beside each elite. Two
-emitters sample it: a Gaussian emitter (isotropic mutation, sigma :data:`SIGMA` of the unit box) and an iso+line-DD
-emitter (Vassiliades and Mouret 2018), each starting from its own uniform random batch. One *iteration* asks each
-emitter for a batch, evaluates the candidates (local processes or Dask, results in ask order) and tells the scheduler.
+best candidate; infeasible candidates score -1 and never enter). Every metric is stored beside each elite. A bandit
+scheduler (:class:`ribs.schedulers.BanditScheduler`, UCB1 over the emitters' share of archive improvements, Cully 2021
+and Sung et al. 2023) picks :data:`ACTIVE` emitters of a pool of five each iteration (:data:`EMITTERS`): Gaussian
+mutation of random elites with a small and a large sigma (local refinement and long jumps, the way to cells random
+sampling rarely reaches: 7 legs with a wide smallest angle, high complexity with few legs), iso+line-DD (Vassiliades
+and Mouret 2018), and two CMA-ES emitters (CMA-ME, Fontaine et al. 2020) ranked by improvement of the archive and by a
+random direction in descriptor space (they restart from a random elite when they stop improving). One *iteration*
+asks the active emitters for a batch each, evaluates the candidates (local processes or Dask, results in ask order)
+and tells the scheduler.
 
 The run depends only on the seed and the settings, never on the number of workers: the scheduler (archive, emitters
 and their random generators) is pickled to ``search.pkl`` after every iteration, and a rerun on the same folder
@@ -28,10 +33,18 @@ from ..errors import ParamsError
 from .measure import INFEASIBLE, METRICS, NAMES, Evaluation, evaluate
 from .predicate import Predicate
 
-#: Mutation scale (unit box) of the Gaussian emitter; the iso+line emitter's iso sigma.
-SIGMA = 0.1
+#: The bandit's pool: (kind, mutation scale in the unit box); CMA-ES emitters start from one random vector.
+EMITTERS: tuple[tuple[str, float], ...] = (
+    ("gaussian", 0.05),
+    ("gaussian", 0.2),
+    ("iso_line", 0.05),
+    ("imp", 0.2),
+    ("rd", 0.3),
+)
 #: Line sigma of the iso+line emitter.
 LINE_SIGMA = 0.2
+#: Emitters the bandit runs per iteration (each asks ``Settings.batch`` candidates).
+ACTIVE = 2
 CHECKPOINT = "search.pkl"
 
 
@@ -58,10 +71,10 @@ class State:
 
 
 def new_scheduler(settings: Settings) -> Any:
-    """A fresh pyribs scheduler for ``settings``."""
+    """A fresh pyribs scheduler for ``settings``: a bandit over :data:`EMITTERS` (module docstring)."""
     from ribs.archives import GridArchive
-    from ribs.emitters import GaussianEmitter, IsoLineEmitter
-    from ribs.schedulers import Scheduler
+    from ribs.emitters import EvolutionStrategyEmitter, GaussianEmitter, IsoLineEmitter
+    from ribs.schedulers import BanditScheduler
 
     from .genome import DIM, random_genomes
 
@@ -76,26 +89,38 @@ def new_scheduler(settings: Settings) -> Any:
     )
     rng = np.random.default_rng(settings.seed)
     box = [(0.0, 1.0)] * DIM
-    emitters = [
-        GaussianEmitter(
-            archive,
-            sigma=SIGMA,
-            initial_solutions=random_genomes(rng, settings.batch),
-            bounds=box,
-            batch_size=settings.batch,
-            seed=settings.seed + 1,
-        ),
-        IsoLineEmitter(
-            archive,
-            iso_sigma=SIGMA,
-            line_sigma=LINE_SIGMA,
-            initial_solutions=random_genomes(rng, settings.batch),
-            bounds=box,
-            batch_size=settings.batch,
-            seed=settings.seed + 2,
-        ),
-    ]
-    return Scheduler(archive, emitters)
+    pool: list[Any] = []
+    for k, (kind, sigma) in enumerate(EMITTERS):
+        seed = settings.seed + 1 + k
+        if kind == "gaussian":
+            start = random_genomes(rng, settings.batch)
+            pool.append(
+                GaussianEmitter(
+                    archive, sigma=sigma, initial_solutions=start, bounds=box, batch_size=settings.batch, seed=seed
+                )
+            )
+        elif kind == "iso_line":
+            start = random_genomes(rng, settings.batch)
+            pool.append(
+                IsoLineEmitter(
+                    archive,
+                    iso_sigma=sigma,
+                    line_sigma=LINE_SIGMA,
+                    initial_solutions=start,
+                    bounds=box,
+                    batch_size=settings.batch,
+                    seed=seed,
+                )
+            )
+        else:  # "imp" / "rd": CMA-ES ranked by archive improvement or by a random direction in descriptor space
+            x0 = random_genomes(rng, 1)[0]
+            # no bounds: CMA-ES resamples out-of-box candidates, possibly for ever; decode() clips into the box
+            pool.append(
+                EvolutionStrategyEmitter(
+                    archive, x0=x0, sigma0=sigma, ranker=f"2{kind}", batch_size=settings.batch, seed=seed
+                )
+            )
+    return BanditScheduler(archive, pool, num_active=ACTIVE, reselect="all")
 
 
 def load_or_start(folder: Path, settings: Settings, generator: str) -> State:
