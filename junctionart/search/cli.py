@@ -46,6 +46,13 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("-j", "--jobs", type=int, default=None, help="worker processes (default: all cores)")
     p.add_argument("--scheduler", default=None, metavar="ADDRESS", help="run on this Dask scheduler instead")
     p.add_argument("--no-maps", action="store_true", help="do not write the elites' .xodr files")
+    p.add_argument(
+        "--network",
+        action="store_true",
+        help="also place each elite meeting --where (every elite without it) into an ordinary generated map: "
+        "network/*.xodr, listed in network.csv (each map checked and re-measured: it holds a junction meeting the "
+        "target)",
+    )
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
 
 
@@ -94,6 +101,8 @@ def run(args: argparse.Namespace) -> int:
         f"{report}: {state.evaluated} maps evaluated, {int(stats.num_elites)} elites ({float(stats.coverage):.1%} "
         f"coverage, QD-score {float(stats.qd_score):.2f}){found}, {time.perf_counter() - t0:.0f} s"
     )
+    if args.network:
+        _network(args, where)
     if where is not None and wanted is not None and sum(1 for _ in _meeting(state, where)) < wanted:
         print(
             f"junctionart: warning: the budget of {args.evaluations} maps ran out before {wanted} elites met "
@@ -101,6 +110,28 @@ def run(args: argparse.Namespace) -> int:
             file=sys.stderr,
         )
     return 0
+
+
+def _network(args: argparse.Namespace, where: Predicate | None) -> None:
+    import csv
+    import os
+
+    from .place import place_all
+
+    with open(args.output / "archive.csv", newline="", encoding="utf-8") as stream:
+        rows = list(csv.DictReader(stream))
+    jobs = args.jobs or os.cpu_count() or 1
+    listing = place_all(args.output, rows, None if where is None else where.text, jobs, not args.quiet)
+    with open(listing, newline="", encoding="utf-8") as stream:
+        placed = list(csv.DictReader(stream))
+    done = sum(1 for r in placed if r["map"])
+    print(f"{listing}: {done} of {len(placed)} elites placed into generated maps under {args.output / 'network'}")
+    if done < len(placed):
+        print(
+            f"junctionart: warning: {len(placed) - done} elites could not be placed so that the map keeps a junction "
+            "meeting the target (network.csv lists them without a map)",
+            file=sys.stderr,
+        )
 
 
 def _meeting(state: State, where: Predicate) -> Iterator[int]:

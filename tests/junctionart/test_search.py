@@ -173,3 +173,26 @@ def test_the_checker_and_the_generator_do_not_load_the_search_extra(tmp_path):
     out = str(tmp_path / "m.xodr")
     done = subprocess.run([sys.executable, "-c", probe, out], capture_output=True, text=True, check=True)
     assert done.stdout.strip() == "[]"
+
+
+@pytest.mark.slow
+def test_network_places_elites_into_generated_maps_that_keep_a_junction_meeting_where(tmp_path, capsys):
+    folder = tmp_path / "net"
+    where = "legs >= 4 and min_angle < 80"
+    argv = ["search", "-o", str(folder), *SMALL, "--evaluations", "8", "--where", where, "-n", "2", "--network"]
+    assert main(argv) == 0
+    assert "elites placed into generated maps" in capsys.readouterr().out
+    meeting = [r for r in _archive(folder) if r["meets_where"] == "1"]
+    with open(folder / "network.csv", newline="", encoding="utf-8") as stream:
+        listing = list(csv.DictReader(stream))
+    assert [r["elite"] for r in listing] == [r["file"] for r in meeting] and len(listing) >= 2
+    placed = [r for r in listing if r["map"]]
+    assert len(placed) >= len(listing) - 1  # a placement may fail; most must not
+    predicate = Predicate.parse(where, NAMES)
+    for row in placed:
+        data = (folder / row["map"]).read_bytes()
+        assert [f.code for f in check(data).findings if f.severity >= Severity.ERROR] == []
+        document = read(data).document
+        assert len(document.junctions) > 3  # an ordinary map around it, not the elite alone
+        matching = [j.id for j in document.junctions if predicate(measure_document(document, j))]
+        assert matching and matching == row["junctions"].split()
