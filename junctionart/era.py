@@ -430,16 +430,28 @@ def measure_folder(folder: Path) -> list[dict]:
     return rows
 
 
-def analyse(folder: Path, run_names: Iterable[str], n: int, compare: Path | None, setup: list[str]) -> Path:
-    """Cut each run to its first ``n`` intersections, measure the comparison folder and write figures and report."""
+def analyse(
+    folder: Path, run_names: Iterable[str], n: int, compare: Path | None, setup: list[str], archive: Path | None = None
+) -> Path:
+    """Cut each run to its first ``n`` intersections, measure the comparison folder and write figures and report
+    (with a section on a search's archive folder when given, :mod:`junctionart.era_archive`)."""
     from .era_report import Sample, write_report
 
     rows = read_csv(Path(folder) / "legs.csv")
-    samples = [Sample.of(run, select(rows, run, n)) for run in run_names]
-    other = None
+    selected = {run: select(rows, run, n) for run in run_names}
+    samples = [Sample.of(run, chosen) for run, chosen in selected.items()]
+    other, compare_rows = None, None
     if compare is not None:
-        other = Sample.of(Path(compare).name, measure_folder(compare))
-    return write_report(Path(folder), samples, other, setup)
+        compare_rows = measure_folder(compare)
+        other = Sample.of(Path(compare).name, compare_rows)
+    extra: list[str] = []
+    if archive is not None:
+        from . import era_archive as ea
+
+        runs = [ea.from_rows(run, chosen) for run, chosen in selected.items()]
+        theirs = ea.from_rows(Path(compare).name, compare_rows) if compare is not None and compare_rows else None
+        extra = ea.section(Path(folder), runs, theirs, ea.from_archive(archive))
+    return write_report(Path(folder), samples, other, setup, extra)
 
 
 def add_arguments(p) -> None:
@@ -475,6 +487,14 @@ def add_arguments(p) -> None:
         metavar="DIR",
         help="overlay the distributions of the .xodr maps in DIR (e.g. the CARLA towns)",
     )
+    p.add_argument(
+        "--archive",
+        type=Path,
+        default=None,
+        metavar="DIR",
+        help="add a section setting the elites of a junctionart search folder (its archive.csv) beside the runs "
+        "and --compare",
+    )
     p.add_argument("--max-maps", type=int, default=100_000, help="give up on a run after this many seeds")
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
 
@@ -494,6 +514,8 @@ def run(args) -> int:
         raise ParamsError(f"--runs {args.runs!r}: choose from {', '.join(known)}")
     if args.compare is not None and not args.compare.is_dir():
         raise ParamsError(f"--compare {args.compare}: not a folder")
+    if args.archive is not None and not (args.archive / "archive.csv").is_file():
+        raise ParamsError(f"--archive {args.archive}: no archive.csv there (the folder of a junctionart search)")
     t0 = time.perf_counter()
     table = collect(
         {name: known[name] for name in names},
@@ -523,7 +545,7 @@ def run(args) -> int:
         failed = sum(1 for (r, s), v in table.done.items() if r == name and v < 0)
         setup.append(f"{name}: {len(seeds)} maps measured ({failed} failed), {table.collected(name)} intersections.")
     setup.append(f"This invocation: {seconds:.0f} s wall, peak resident memory {peak:.0f} MB per process.")
-    report = analyse(args.output, names, args.intersections, args.compare, setup)
+    report = analyse(args.output, names, args.intersections, args.compare, setup, args.archive)
     print(
         f"{report}: {', '.join(f'{n} {table.collected(n)} intersections' for n in names)}, {seconds:.0f} s",
         file=sys.stderr,

@@ -212,8 +212,10 @@ def write_report(
     samples: Sequence[Sample],
     compare: Sample | None,
     setup: Sequence[str],
+    extra: Sequence[str] = (),
 ) -> Path:
-    """Draw every figure into ``folder`` and write ``folder/report.md``; ``setup`` lines describe the run."""
+    """Draw every figure into ``folder`` and write ``folder/report.md``; ``setup`` lines describe the run, ``extra``
+    lines (a section of Markdown) end the report."""
     folder.mkdir(parents=True, exist_ok=True)
     lines = [
         "# Expressive range analysis",
@@ -264,6 +266,7 @@ def write_report(
             + f". Paper: {paper}. Here, Pearson correlation: {', '.join(corr) or 'n/a'}.",
             "",
         ]
+    lines += extra
     path = folder / "report.md"
     with atomic_file(path, "w") as stream:
         stream.write("\n".join(lines))
