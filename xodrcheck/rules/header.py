@@ -14,6 +14,7 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.xmlvalues import local
 
 
 def _extent(ctx: Context) -> tuple[float, float, float, float] | None:
@@ -76,10 +77,6 @@ def coordinates_off_centre(ctx: Context):
     )
 
 
-def _local(el) -> str:
-    return el.tag.rsplit("}", 1)[-1] if isinstance(el.tag, str) else ""
-
-
 #: What ``<semantics>`` inside ``<defaultRegulations>`` may hold (6.4.3), besides additional data (6.2).
 _REGULATION_CONTENT = frozenset({"speed", "priority", "userData", "include", "dataQuality"})
 
@@ -112,11 +109,11 @@ def default_regulations_content(ctx: Context):
     for regulations in ctx.tree.getroot().iterfind("{*}header/{*}defaultRegulations"):
         for semantics in regulations.iterfind(".//{*}semantics"):
             for el in semantics:
-                name = _local(el)
+                name = local(el)
                 if name and name not in _REGULATION_CONTENT:
                     owner = semantics.getparent()
                     yield default_regulations_content.finding(
-                        f"the default regulations' <{_local(owner)}> (line {owner.sourceline}) use <{name}>: only "
+                        f"the default regulations' <{local(owner)}> (line {owner.sourceline}) use <{name}>: only "
                         "<speed> and <priority> may be used in <defaultRegulations>; give it on the roads or "
                         "signals it concerns",
                         line=el.sourceline,
