@@ -10,6 +10,7 @@ error in any of them (a property of the test suite).
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
 import numpy as np
 from hypothesis import strategies as st
@@ -164,46 +165,59 @@ def _document_specs(
     names_a = chain_roads(chain_a, None, to_j)
     names_b = chain_roads(chain_b, to_j, None)
     names_c = chain_roads(chain_c, to_j, None)
-    jroads = [next(ids) for _ in range(4)]
+    plan = _LanePlan(n_left, n_right, widths, outer)
+    connecting, junction = _junction(
+        jid, [next(ids) for _ in range(4)], (p, start_b, start_c), (names_a, names_b, names_c), plan
+    )
+    roads += connecting
+    order = draw(st.permutations(range(len(roads))))
+    return xb.DocumentSpec(
+        roads=tuple(roads[i] for i in order),
+        junctions=(junction,),
+        version=draw(st.sampled_from(versions)),
+    )
+
+
+class _LanePlan(NamedTuple):
+    """The lanes of one document's roads: how many per side, their widths from the centre out, the outer lane's type."""
+
+    n_left: int
+    n_right: int
+    widths: list[float]
+    outer: str
+
+
+def _junction(
+    jid: str,
+    jroads: list[str],
+    starts: tuple[xb.Pose, xb.Pose, xb.Pose],
+    names: tuple[list[str], list[str], list[str]],
+    plan: _LanePlan,
+) -> tuple[list[xb.RoadSpec], xb.JunctionSpec]:
+    """The junction's four connecting roads (ids ``jroads``) and its connections, between the end of chain a (its
+    pose ``starts[0]``) and the starts of chains b and c (``starts[1:]``); ``names``: each chain's road ids."""
+    p, start_b, start_c = starts
+    names_a, names_b, names_c = names
+    n_left, n_right, widths, outer = plan
     right_only = _lanes(0, n_right, widths, outer, True, True)
     reverse_only = _lanes(0, n_left, widths, outer, True, True, flip=True)
-
-    def back(q):
-        return xb.Pose(q.x, q.y, q.hdg + math.pi)
-
-    quarter = TURN_RADIUS * math.pi / 2
     a_end, b_start, c_start = (
         xb.LinkSpec("road", names_a[-1], "end"),
         xb.LinkSpec("road", names_b[0], "start"),
         xb.LinkSpec("road", names_c[0], "start"),
     )
-    # Each connecting road carries one direction (one connection per connecting road, as OpenDRIVE 1.7 requires).
-    roads.append(xb.RoadSpec(jroads[0], p, (xb.Element("line", 2 * TURN_RADIUS),), right_only, jid, a_end, b_start))
-    roads.append(
-        xb.RoadSpec(
-            jroads[1],
-            p,
-            (xb.Element("arc", quarter, (("curvature", -1 / TURN_RADIUS),)),),
-            right_only,
-            jid,
-            a_end,
-            c_start,
-        )
+    # Each connecting road carries one direction (one connection per connecting road, as OpenDRIVE 1.7 requires):
+    # straight on from a to b, right from a to c, and back from b and from c.
+    table = (
+        (p, 0.0, right_only, a_end, b_start),
+        (p, -1 / TURN_RADIUS, right_only, a_end, c_start),
+        (_reversed(start_b), 0.0, reverse_only, b_start, a_end),
+        (_reversed(start_c), 1 / TURN_RADIUS, reverse_only, c_start, a_end),
     )
-    roads.append(
-        xb.RoadSpec(jroads[2], back(start_b), (xb.Element("line", 2 * TURN_RADIUS),), reverse_only, jid, b_start, a_end)
-    )
-    roads.append(
-        xb.RoadSpec(
-            jroads[3],
-            back(start_c),
-            (xb.Element("arc", quarter, (("curvature", 1 / TURN_RADIUS),)),),
-            reverse_only,
-            jid,
-            c_start,
-            a_end,
-        )
-    )
+    roads = [
+        xb.RoadSpec(rid, start, (_connecting_element(curvature),), lanes, jid, pred, succ)
+        for rid, (start, curvature, lanes, pred, succ) in zip(jroads, table)
+    ]
     into_a = tuple((-k, -k) for k in range(1, n_right + 1) if k < n_right or n_right == 1 or outer == "driving")
     into_bc = tuple((k, -k) for k in range(1, n_left + 1) if k < n_left or n_left == 1 or outer == "driving")
     connections = (
@@ -212,12 +226,18 @@ def _document_specs(
         xb.ConnectionSpec("2", names_b[0], jroads[2], "start", into_bc),
         xb.ConnectionSpec("3", names_c[0], jroads[3], "start", into_bc),
     )
-    order = draw(st.permutations(range(len(roads))))
-    return xb.DocumentSpec(
-        roads=tuple(roads[i] for i in order),
-        junctions=(xb.JunctionSpec(jid, connections),),
-        version=draw(st.sampled_from(versions)),
-    )
+    return roads, xb.JunctionSpec(jid, connections)
+
+
+def _reversed(pose: xb.Pose) -> xb.Pose:
+    return xb.Pose(pose.x, pose.y, pose.hdg + math.pi)
+
+
+def _connecting_element(curvature: float) -> xb.Element:
+    """A connecting road's one element: the straight connection (2 x :data:`TURN_RADIUS`), or a quarter turn."""
+    if curvature == 0.0:
+        return xb.Element("line", 2 * TURN_RADIUS)
+    return xb.Element("arc", TURN_RADIUS * math.pi / 2, (("curvature", curvature),))
 
 
 def _road_end(road: tuple[xb.Pose, tuple[xb.Element, ...]]) -> xb.Pose:
