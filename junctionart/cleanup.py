@@ -48,6 +48,8 @@ def _taper(a: float, b: float, length: float) -> Cubic:
 
 @dataclass(frozen=True)
 class _Span:
+    """A stretch of a road from ``s0`` to ``s1`` and its (forward, backward) lane counts at both ends."""
+
     s0: float
     s1: float
     start: tuple[int, int]  # (forward, backward) lanes at s0

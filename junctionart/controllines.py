@@ -42,6 +42,8 @@ MAX_COORDINATE = 1e7
 
 @dataclass(frozen=True)
 class ControlLine:
+    """A control line: a polyline the road network follows, its group and its lane counts."""
+
     id: str
     points: tuple[tuple[float, float], ...]
     group: int = 0
@@ -83,6 +85,8 @@ class ControlLine:
 
 @dataclass(frozen=True)
 class ControlLines:
+    """The control lines of a map and the pairs of them that the network joins."""
+
     lines: tuple[ControlLine, ...]
     pairs: tuple[tuple[int, int], ...]  # indexes into lines
 

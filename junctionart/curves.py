@@ -23,6 +23,8 @@ _PANELS = 8
 
 @dataclass(frozen=True)
 class Pose:
+    """A position and heading in the plane."""
+
     x: float
     y: float
     hdg: float
@@ -122,6 +124,8 @@ def arc_lengths(coef: np.ndarray) -> np.ndarray:
 
 @dataclass(frozen=True)
 class HermiteFit:
+    """A cubic fitted between two poses: its coefficients, length and smallest radius."""
+
     coef: tuple[float, ...]
     length: float
     min_radius: float  # smallest radius over the reference line and the given offset lines

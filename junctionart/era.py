@@ -80,6 +80,8 @@ PAPER_RUNS = ("two-lane", "random-lane")
 
 @dataclass(frozen=True)
 class MapResult:
+    """One generated map of an expressive range run: run, seed, status and its junctions' metric rows."""
+
     run: str
     seed: int
     status: str  # "ok" or "failed"

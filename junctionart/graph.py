@@ -9,6 +9,8 @@ from xodrcheck.classcache import dataclass
 
 @dataclass(frozen=True)
 class Chain:
+    """A path through the network graph between two nodes that are not plain pass-throughs: one road."""
+
     nodes: tuple[int, ...]  #: the path, end nodes included
     edges: tuple[int, ...]  #: edge indexes along the path
     forward: tuple[bool, ...]  #: True where the path runs the edge from u to v

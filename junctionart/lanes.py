@@ -19,6 +19,8 @@ from .params import Params
 
 @dataclass(frozen=True)
 class LaneConfig:
+    """The lanes of a road: forward and backward counts, and whether a median separates them."""
+
     forward: int
     backward: int
     median: bool = False
@@ -29,6 +31,8 @@ class LaneConfig:
 
 @dataclass(frozen=True)
 class LanedNetwork:
+    """The road network with a lane configuration for each edge."""
+
     network: Network
     lanes: tuple[LaneConfig, ...]  #: per edge, oriented from edge.u to edge.v
 

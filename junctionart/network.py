@@ -22,6 +22,8 @@ MERGE_DISTANCE = 5.0  #: control points of different lines closer than this beco
 
 @dataclass(frozen=True)
 class Edge:
+    """An edge of the road network: from node u to node v, along a control line or joining two."""
+
     u: int
     v: int
     line: int = -1  #: index of the control line the edge runs along, -1 for a connection between lines
@@ -29,6 +31,8 @@ class Edge:
 
 @dataclass(frozen=True)
 class Network:
+    """The road network as a graph: node positions and edges."""
+
     nodes: tuple[tuple[float, float], ...]
     edges: tuple[Edge, ...]
 

@@ -12,6 +12,8 @@ from xodrcheck.classcache import dataclass
 
 @dataclass(frozen=True)
 class Line:
+    """A straight line of a road's plan view."""
+
     s: float
     x: float
     y: float
@@ -21,6 +23,8 @@ class Line:
 
 @dataclass(frozen=True)
 class Arc:
+    """An arc of constant curvature of a road's plan view."""
+
     s: float
     x: float
     y: float
@@ -64,6 +68,8 @@ class Cubic:
 
 @dataclass(frozen=True)
 class RoadMark:
+    """A lane's road mark from ``s`` on."""
+
     s: float  # sOffset in the lane section
     type: str  # "solid", "broken", "none", "solid solid"
     color: str = "standard"  # "standard" (white), "yellow"
@@ -82,6 +88,8 @@ class LaneHeight:
 
 @dataclass(frozen=True)
 class Lane:
+    """A lane as written: id, type, widths, road marks, links and heights."""
+
     id: int
     type: str  # "driving", "median", "none", "sidewalk", "curb", "shoulder", "border"
     widths: tuple[Cubic, ...] = ()
@@ -93,6 +101,8 @@ class Lane:
 
 @dataclass(frozen=True)
 class LaneSection:
+    """A lane section from ``s`` on: its left, center and right lanes."""
+
     s: float
     left: tuple[Lane, ...]  # ordered by id ascending (1, 2, ...)
     center: Lane
@@ -101,6 +111,8 @@ class LaneSection:
 
 @dataclass(frozen=True)
 class Link:
+    """A road's predecessor or successor: the element's type and id and the contact point."""
+
     element_type: str  # "road" or "junction"
     element_id: str
     contact_point: str | None = None  # "start" / "end" for roads
@@ -186,6 +198,8 @@ class RoadObject:
 
 @dataclass(frozen=True)
 class Road:
+    """A road as written: plan view, lane sections, links, profiles, objects and signals."""
+
     id: str
     length: float
     junction: str  # "-1" outside junctions
@@ -205,12 +219,16 @@ class Road:
 
 @dataclass(frozen=True)
 class LaneLink:
+    """A junction connection's lane link: the incoming lane and the connecting road's lane."""
+
     from_lane: int
     to_lane: int
 
 
 @dataclass(frozen=True)
 class Connection:
+    """A junction connection: incoming road, connecting road, contact point and lane links."""
+
     id: str
     incoming_road: str
     connecting_road: str
@@ -228,6 +246,8 @@ class JunctionController:
 
 @dataclass(frozen=True)
 class Junction:
+    """A junction as written: id, name, connections and controllers."""
+
     id: str
     name: str
     connections: tuple[Connection, ...]
@@ -245,6 +265,8 @@ class Controller:
 
 @dataclass(frozen=True)
 class Header:
+    """The header as written: name, vendor, date and the map's extent."""
+
     name: str = "junctionart"
     vendor: str = "junctionart"
     date: str = ""
@@ -256,6 +278,8 @@ class Header:
 
 @dataclass(frozen=True)
 class Document:
+    """What the writer writes: header, roads, junctions and controllers."""
+
     header: Header
     roads: tuple[Road, ...]
     junctions: tuple[Junction, ...]

@@ -9,12 +9,9 @@ way Python keeps a module's byte code in ``__pycache__``. The key is the whole s
 a class whose fields or options change misses and compiles as usual, and a class built from the cache has the very
 methods dataclasses would build (equal code objects: ``tests/xodrcheck/test_classcache.py``).
 
-The cache: a folder ``$XODRCHECK_CACHE_DIR`` (set but empty: no cache), else ``$XDG_CACHE_HOME/xodrcheck``, else
-``~/.cache/xodrcheck``, holding one file per module and byte-code version (a command loads the files of the modules
-it imports, nothing else). A module's file is rewritten atomically at exit when one of its compilations missed, not
-when Python is told not to write byte code (``PYTHONDONTWRITEBYTECODE``, ``-B``). A file is read only when its owner
-is the user and nobody else may write it (loading it runs its code, as a ``.pyc`` would). A cache that cannot be read
-or written means compiling as usual, never an error.
+The cache: one file per module and byte-code version in the user's cache folder (:mod:`xodrcheck.usercache`: where,
+when it is trusted and written); a command loads the files of the modules it imports, nothing else. A module's file
+is rewritten at exit when one of its compilations missed.
 """
 
 from __future__ import annotations
@@ -22,14 +19,14 @@ from __future__ import annotations
 import _thread
 import atexit
 import builtins
-import contextlib
 import dataclasses
 import marshal
-import os
 import sys
 from pathlib import Path
 from types import CodeType
 from typing import TYPE_CHECKING, Any
+
+from xodrcheck import usercache
 
 #: Most code objects one module's file keeps (this run's first, then those of earlier runs).
 LIMIT = 512
@@ -44,49 +41,26 @@ def _magic() -> bytes:
 
 def cache_dir() -> Path | None:
     """The folder of this Python's cache files (``None``: no cache)."""
-    folder = os.environ.get("XODRCHECK_CACHE_DIR")
+    folder = usercache.root()
     if folder is None:
-        base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
-        folder = os.path.join(base, "xodrcheck")
-    if not folder:
         return None
     tag = sys.implementation.cache_tag or "python"
-    return Path(folder) / f"dataclass-code-{tag}-opt{sys.flags.optimize}"
-
-
-def _trusted(info: os.stat_result) -> bool:
-    """Owned by the user, writable by nobody else."""
-    if hasattr(os, "getuid") and info.st_uid != os.getuid():
-        return False
-    return not info.st_mode & 0o022
+    return folder / f"dataclass-code-{tag}-opt{sys.flags.optimize}"
 
 
 def _read(path: Path) -> dict[str, CodeType]:
     """The code objects of one cache file; nothing when it is missing, foreign, damaged or of another version."""
+    data = usercache.read(path)
+    head = _HEADER + _magic()
+    if data is None or not data.startswith(head):
+        return {}
     try:
-        with open(path, "rb") as stream:
-            if not _trusted(os.fstat(stream.fileno())):
-                return {}
-            data = stream.read()
-        head = _HEADER + _magic()
-        value = marshal.loads(data[len(head) :]) if data.startswith(head) else None
-    except (OSError, ValueError, EOFError, TypeError):
+        value = marshal.loads(data[len(head) :])
+    except (ValueError, EOFError, TypeError):
         return {}
     if not isinstance(value, dict):
         return {}
     return {k: v for k, v in value.items() if isinstance(k, str) and isinstance(v, CodeType)}
-
-
-def _write(path: Path, codes: dict[str, CodeType]) -> None:
-    tmp = path.with_name(f"{path.name}.{os.getpid()}.tmp")
-    try:
-        path.parent.mkdir(mode=0o700, parents=True, exist_ok=True)
-        with open(tmp, "wb") as stream:
-            stream.write(_HEADER + _magic() + marshal.dumps(codes))
-        os.replace(tmp, path)
-    except (OSError, ValueError):
-        with contextlib.suppress(OSError):
-            tmp.unlink()
 
 
 class _Cache:
@@ -121,7 +95,7 @@ class _Cache:
 
     def save(self) -> None:
         """Rewrite the files of the modules that missed (not when Python writes no byte code)."""
-        if self.folder is None or sys.dont_write_bytecode:
+        if self.folder is None or not usercache.writable():
             return
         with self.lock:
             for module in sorted(self.missed):
@@ -130,7 +104,7 @@ class _Cache:
                     if len(codes) >= LIMIT:
                         break
                     codes.setdefault(source, code)
-                _write(self.folder / f"{module}.marshal", codes)
+                usercache.write(self.folder / f"{module}.marshal", _HEADER + _magic() + marshal.dumps(codes))
             self.missed.clear()
 
 

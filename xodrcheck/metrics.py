@@ -117,6 +117,8 @@ class Leg:
 
 @dataclass(frozen=True, slots=True)
 class LegMetrics:
+    """The metrics of one leg of a junction: its road end, incident point and field of view."""
+
     road: str
     end: ContactPoint
     x: float  # incident point
@@ -129,6 +131,9 @@ class LegMetrics:
 
 @dataclass(frozen=True, slots=True)
 class JunctionMetrics:
+    """The expressive-range metrics of one junction (the paper's FOV, maxCurvature, cornerDeviation, complexity,
+    area, conflicts)."""
+
     junction: str
     name: str | None
     type: JunctionType

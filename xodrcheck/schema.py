@@ -18,12 +18,16 @@ their corrected copies (``1.8.1-corrected``, ``1.9.0-corrected``: the official f
 
 from __future__ import annotations
 
+import contextlib
+import pickle
+import sys
 import threading
 from collections.abc import Iterator
 from functools import cache
 from importlib import resources
+from pathlib import Path
 
-from xodrcheck import schema_fast
+from xodrcheck import schema_fast, usercache
 from xodrcheck.classcache import dataclass
 
 #: (revMajor, revMinor) -> (folder under the package data ``xodrcheck.schemas``, main file).
@@ -43,6 +47,8 @@ SCHEMA_FOLDERS: dict[tuple[int, int], tuple[str, str]] = {
 XSD11 = frozenset({(1, 8), (1, 9)})
 
 _lock = threading.Lock()
+#: Bumped when what the XSD 1.1 cache file holds changes.
+_XSD11_CACHE_FORMAT = "xodrcheck xsd11 1"
 
 
 @dataclass(frozen=True, slots=True)
@@ -69,13 +75,53 @@ def _compiled(version: tuple[int, int]):
     source = _schema_file(version)
     with resources.as_file(source) as path:
         if version in XSD11:
-            import xmlschema
-
-            return xmlschema.XMLSchema11(str(path))
+            return _xsd11(version, path)
         from lxml import etree
 
         parser = etree.XMLParser(resolve_entities=False, no_network=True)
         return etree.XMLSchema(etree.parse(str(path), parser))
+
+
+def _xsd11(version: tuple[int, int], path: Path):
+    """xmlschema's XSD 1.1 schema of ``path``, from the user's cache when an identical build is there (building it
+    takes seconds, loading it a tenth of that; :mod:`xodrcheck.usercache`), else built and stored."""
+    import xmlschema
+
+    cached = _xsd11_cache_file(version, path)
+    data = None if cached is None else usercache.read(cached)
+    if data is not None:
+        try:
+            schema = pickle.loads(data)
+        except Exception:  # damaged, or made by another xmlschema: build it again
+            schema = None
+        if isinstance(schema, xmlschema.XMLSchema11):
+            return schema
+    schema = xmlschema.XMLSchema11(str(path))
+    if cached is not None and usercache.writable():
+        # a schema that does not pickle is still used; it is only not cached
+        with contextlib.suppress(pickle.PicklingError, TypeError, AttributeError, RecursionError):
+            usercache.write(cached, pickle.dumps(schema, protocol=pickle.HIGHEST_PROTOCOL))
+    return schema
+
+
+def _xsd11_cache_file(version: tuple[int, int], path: Path) -> Path | None:
+    """Where the build of ``path`` is cached: named after what the build depends on (the schema files' bytes and
+    location, xmlschema's and elementpath's versions, Python's), so any change is a new file, never a stale one."""
+    import hashlib
+
+    import elementpath
+    import xmlschema
+
+    folder = usercache.root()
+    if folder is None:
+        return None
+    key = hashlib.sha256()
+    for part in (_XSD11_CACHE_FORMAT, xmlschema.__version__, elementpath.__version__, sys.version, str(path)):
+        key.update(part.encode() + b"\0")
+    for file in sorted(path.parent.iterdir()):
+        if file.is_file():
+            key.update(file.name.encode() + b"\0" + file.read_bytes() + b"\0")
+    return folder / "xsd11" / f"{version[0]}.{version[1]}-{key.hexdigest()[:32]}.pickle"
 
 
 def compiled(version: tuple[int, int]):

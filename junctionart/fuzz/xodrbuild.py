@@ -23,6 +23,8 @@ _PANELS = 16
 
 @dataclass(frozen=True)
 class Pose:
+    """A position and heading in the plane."""
+
     x: float
     y: float
     hdg: float
@@ -155,6 +157,8 @@ class LaneSpec:
 
 @dataclass(frozen=True)
 class LinkSpec:
+    """A road's predecessor or successor to write: element type and id, contact point."""
+
     element_type: str  # "road" or "junction"
     element_id: str
     contact_point: str | None = None
@@ -162,6 +166,8 @@ class LinkSpec:
 
 @dataclass(frozen=True)
 class RoadSpec:
+    """A road to write: start pose, plan-view elements, lanes and links."""
+
     id: str
     start: Pose
     elements: tuple[Element, ...]
@@ -184,6 +190,8 @@ class RoadSpec:
 
 @dataclass(frozen=True)
 class ConnectionSpec:
+    """A junction connection to write: incoming and connecting roads, contact point, lane links."""
+
     id: str
     incoming: str
     connecting: str
@@ -193,6 +201,8 @@ class ConnectionSpec:
 
 @dataclass(frozen=True)
 class JunctionSpec:
+    """A junction to write: its id and connections."""
+
     id: str
     connections: tuple[ConnectionSpec, ...]
 

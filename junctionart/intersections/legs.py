@@ -26,6 +26,8 @@ class LegKey(NamedTuple):
 
 @dataclass(frozen=True)
 class Leg:
+    """A leg of an intersection: its node and edge, heading, lanes in and out, and whether it has a median."""
+
     key: tuple[int, int]  #: (node, edge of the leg at the node): stable while repairs change the network
     angle: float  #: heading of the leg leaving the node
     n_in: int  #: lanes travelling into the node

@@ -25,6 +25,8 @@ SHARPEST_TURN = math.radians(150.0)
 
 @dataclass(frozen=True)
 class LinkPlan:
+    """Which incoming lane of which leg connects to which outgoing lane, and the lanes that reach the junction."""
+
     n_in_end: tuple[int, ...]  #: per leg: incoming lanes reaching the junction (after merges / turn lanes)
     n_out_end: tuple[int, ...]  #: per leg: outgoing lanes leaving the junction (unfed ones taper out)
     links: tuple[tuple[int, int, int, int], ...]  #: (leg in, lane k in, leg out, lane m out), k and m from 1

@@ -10,6 +10,8 @@ from ..opendrive import Geometry
 
 @dataclass(frozen=True)
 class RoadPlan:
+    """A road of the layout between two nodes: geometry, length, lanes and the lane counts at its ends."""
+
     index: int
     start_node: int
     end_node: int
@@ -26,6 +28,8 @@ class RoadPlan:
 
 @dataclass(frozen=True)
 class ConnectionPlan:
+    """A connecting road of a junction: from an incoming lane to an outgoing lane, its geometry and radius."""
+
     in_road: int
     in_contact: str  #: "start" / "end" of the incoming road
     in_lane: int  #: lane id on the incoming road
@@ -43,6 +47,8 @@ def contact_point(at_start: bool) -> str:
 
 @dataclass(frozen=True)
 class JunctionPlan:
+    """A junction of the layout: its node, position, legs and connections."""
+
     node: int
     position: tuple[float, float]
     legs: int
@@ -51,6 +57,8 @@ class JunctionPlan:
 
 @dataclass(frozen=True)
 class Layout:
+    """The intersection stage's result: roads, junctions and the repairs made."""
+
     roads: tuple[RoadPlan, ...]
     junctions: tuple[JunctionPlan, ...]
     repairs: tuple[str, ...]  #: what was changed to make every intersection fit (no map is ever discarded)

@@ -20,6 +20,8 @@ from ..lanes import LaneConfig
 
 @dataclass
 class NetworkState:
+    """The network while the intersection stage grows, repairs and redraws it."""
+
     nodes: list[tuple[float, float]]
     edges: dict[int, tuple[int, int, LaneConfig]]
     factor: dict[int, float] = field(default_factory=dict)  #: random factor of each node's incident distances

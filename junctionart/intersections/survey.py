@@ -19,6 +19,8 @@ from .state import NetworkState
 
 @dataclass(frozen=True)
 class Survey:
+    """The network's roads (chains) and node degrees at the start of a pass."""
+
     state: NetworkState
     chains: list[Chain]  #: one per road, naming edges by their ids in ``state.edges``
     degree: list[int]  #: per node, at the start of the pass

@@ -31,6 +31,8 @@ _SAMPLES = 129
 
 @dataclass(frozen=True)
 class UTurn:
+    """A U-turn lane of a leg: from an incoming lane to the outgoing lane of the same road."""
+
     leg: int  #: index of the leg (incoming and outgoing)
     id_in: int  #: lane id on the incoming road
     id_out: int  #: lane id on the same road, travelling away

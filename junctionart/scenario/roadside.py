@@ -28,6 +28,8 @@ from ..params import Params, Roadside, TrafficRule
 
 @dataclass(frozen=True)
 class RoadsideLane:
+    """A lane beside the outer driving lanes (kerb, sidewalk, shoulder, border): type, width, height."""
+
     type: str
     width: float  #: m
     height: float  #: m above the road surface (``<height inner outer>``, both edges)

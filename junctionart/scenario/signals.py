@@ -146,6 +146,8 @@ def _control(params: Params, rng: np.random.Generator, legs: dict, roads: dict) 
 
 @dataclass
 class _Made:
+    """What dressing the junctions made: signals, objects, controllers and the junctions' controller references."""
+
     signals: list[tuple[str, Signal]] = dataclasses.field(default_factory=list)
     objects: list[tuple[str, RoadObject]] = dataclasses.field(default_factory=list)
     controllers: list[Controller] = dataclasses.field(default_factory=list)

@@ -4,6 +4,7 @@ module is left as it was."""
 
 from __future__ import annotations
 
+import ast
 import dataclasses
 import inspect
 import json
@@ -206,3 +207,23 @@ def test_every_dataclass_of_both_packages_uses_the_cache() -> None:
         if path.name != "classcache.py" and stdlib.search(path.read_text())
     ]
     assert direct == []
+
+
+def test_every_dataclass_of_both_packages_has_a_docstring() -> None:
+    """Without one, dataclasses makes one from ``inspect.signature`` of the class, at import, on every start."""
+    root = Path(__file__).resolve().parents[2]
+    missing = []
+    for package in ("xodrcheck", "junctionart"):
+        for path in sorted((root / package).rglob("*.py")):
+            for node in ast.walk(ast.parse(path.read_text())):
+                is_dataclass = isinstance(node, ast.ClassDef) and any(_is_dataclass(d) for d in node.decorator_list)
+                if is_dataclass and ast.get_docstring(node) is None:
+                    missing.append(f"{path.relative_to(root)}:{node.name}")
+    assert missing == []
+
+
+def _is_dataclass(decorator: ast.expr) -> bool:
+    target = decorator.func if isinstance(decorator, ast.Call) else decorator
+    return (isinstance(target, ast.Name) and target.id == "dataclass") or (
+        isinstance(target, ast.Attribute) and target.attr == "dataclass"
+    )

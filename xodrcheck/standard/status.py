@@ -150,6 +150,8 @@ ENFORCED, PARTIAL, MISSING = "enforced", "partial", "not enforced"
 
 @dataclass(frozen=True, slots=True)
 class UidStatus:
+    """How far xodrcheck enforces one rule (UID) of the standard, and by which of its rules."""
+
     uid: str
     section: str
     level: str
