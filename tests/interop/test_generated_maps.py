@@ -13,8 +13,6 @@ Each tool runs from its own virtual environment (``scripts/setup`` creates them)
 
 from __future__ import annotations
 
-import os
-import subprocess
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -22,15 +20,19 @@ import pytest
 
 import junctionart as ja
 from junctionart.params import Params
-from tests.interop.asam_harness import AsamRun, AsamUnavailable
-from tests.interop.carla_harness import CarlaUnavailable, carla_waypoints
+from tests.interop.asam_harness import AsamRun
+from tests.interop.tools import (
+    asam_problems,
+    carla,
+    driving_lanes,
+    run_netconvert,
+    start_asam,
+    xodrcheck_errors,
+)
 from xodrcheck.check import check
-from xodrcheck.model import LaneType
 from xodrcheck.reader import read
 
 pytestmark = pytest.mark.slow  # part of the full suite (CI); left out by -m "not slow"
-
-REPO = Path(__file__).resolve().parents[2]
 
 #: The ASAM check each version skips (its rule applies to the other version only).
 SKIPPED = {"1.7": "one_link_to_incoming", "1.8": "one_connection_element"}
@@ -91,10 +93,7 @@ def maps(tmp_path_factory) -> list[Map]:
 @pytest.fixture(scope="module")
 def asam_run(maps, tmp_path_factory) -> AsamRun:
     """ASAM started in the background on every map (the slowest tool: the other tools run meanwhile)."""
-    try:
-        return AsamRun([m.path for m in maps], tmp_path_factory.mktemp("asam"))
-    except AsamUnavailable as exc:
-        pytest.fail(str(exc))
+    return start_asam([m.path for m in maps], tmp_path_factory.mktemp("asam"))
 
 
 def test_plan_covers_sizes_lane_modes_and_at_least_50_seeds(maps, asam_run):
@@ -122,66 +121,29 @@ def test_xodrcheck_finds_no_error(maps):
     bad = []
     for m in maps:
         report = check(m.path)
-        errors = [f for f in report.findings if f.severity.name == "ERROR"]
         assert report.version == m.version
-        if errors:
-            bad.append(f"{m.label}: " + "; ".join(f"{f.code} road {f.road}: {f.message}" for f in errors[:3]))
+        bad += xodrcheck_errors(m.label, report)
     assert bad == []
 
 
-def _netconvert() -> Path:
-    venv = Path(os.environ.get("SUMO_VENV", REPO / ".venv-sumo"))
-    command = venv / "bin" / "netconvert"
-    if not command.is_file():
-        pytest.fail(
-            f"SUMO netconvert not found at {command}: run scripts/setup (it creates .venv-sumo with "
-            "eclipse-sumo==1.28.0), or set SUMO_VENV to an environment that has it"
-        )
-    return command
-
-
 def test_sumo_netconvert_converts_every_map(maps, tmp_path):
-    command = _netconvert()
     bad = []
     for m in maps:
-        out = tmp_path / f"{m.path.stem}.net.xml"
-        proc = subprocess.run(
-            [str(command), "--opendrive-files", str(m.path), "-o", str(out)],
-            capture_output=True,
-            text=True,
-            timeout=300,
-            stdin=subprocess.DEVNULL,
-            check=False,
-        )
+        proc, out = run_netconvert(m.path, tmp_path)
         if proc.returncode != 0 or not out.is_file():
             tail = "\n".join(proc.stderr.strip().splitlines()[-3:])
             bad.append(f"{m.label}: exit {proc.returncode}: {tail}")
     assert bad == []
 
 
-def _driving_lanes(path: Path) -> set[tuple[str, int]]:
-    doc = read(path).document
-    assert doc is not None
-    return {
-        (road.id, lane.id)
-        for road in doc.roads
-        for sec in road.lane_sections
-        for lane in sec.lanes
-        if lane.type is LaneType.DRIVING
-    }
-
-
 def test_carla_loads_every_map_with_waypoints_on_every_driving_lane(maps):
     bad = []
     for m in maps:
-        try:
-            result = carla_waypoints(m.path)
-        except CarlaUnavailable as exc:
-            pytest.fail(f"{exc} (scripts/setup creates .venv-carla)")
+        result = carla(m.path)
         if not result.loaded:
             bad.append(f"{m.label}: CARLA did not load it (exit {result.returncode}): {result.error}")
             continue
-        lanes = _driving_lanes(m.path)
+        lanes = driving_lanes(m.path)
         seen = {(w.road_id, w.lane_id) for w in result.waypoints}
         missing = sorted(lanes - seen)
         if missing:
@@ -199,10 +161,7 @@ def asam_reports(asam_run):
 def test_asam_reports_no_error_and_no_checker_error(maps, asam_reports):
     bad = []
     for m in maps:
-        report = asam_reports[m.path]
-        if report.errors or report.failed_checkers:
-            issues = "; ".join(f"{i.rule} roads {sorted(i.roads)}: {i.description}" for i in report.errors[:3])
-            bad.append(f"{m.label}: {issues} checkers in error: {report.failed_checkers}")
+        bad += asam_problems(m.label, asam_reports[m.path])
     assert bad == []
 
 

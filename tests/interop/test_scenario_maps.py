@@ -12,7 +12,6 @@ at every junction, every fifth left-hand traffic, every seventh rural), generate
 
 from __future__ import annotations
 
-import subprocess
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -21,9 +20,8 @@ from lxml import etree
 
 import junctionart as ja
 from junctionart.params import Params
-from tests.interop.asam_harness import AsamRun, AsamUnavailable
-from tests.interop.carla_harness import CarlaUnavailable, carla_waypoints
-from tests.interop.test_generated_maps import _netconvert
+from tests.interop.asam_harness import AsamRun
+from tests.interop.tools import asam_problems, carla, run_netconvert, start_asam, xodrcheck_errors
 from xodrcheck.check import check
 from xodrcheck.elevation_info import elevation_info
 from xodrcheck.reader import read
@@ -64,10 +62,7 @@ def scenes(tmp_path_factory) -> list[Scene]:
 
 @pytest.fixture(scope="module")
 def asam_run(scenes, tmp_path_factory) -> AsamRun:
-    try:
-        return AsamRun([s.path for s in scenes], tmp_path_factory.mktemp("asam"))
-    except AsamUnavailable as exc:
-        pytest.fail(str(exc))
+    return start_asam([s.path for s in scenes], tmp_path_factory.mktemp("asam"))
 
 
 def test_plan_has_signals_sidewalks_and_hills(scenes, asam_run):
@@ -84,24 +79,14 @@ def test_plan_has_signals_sidewalks_and_hills(scenes, asam_run):
 def test_xodrcheck_finds_no_error(scenes):
     bad = []
     for s in scenes:
-        errors = [f for f in check(s.path).findings if f.severity.name == "ERROR"]
-        bad += [f"{s.path.name}: {f.code} road {f.road}: {f.message}" for f in errors[:3]]
+        bad += xodrcheck_errors(s.path.name, check(s.path))
     assert bad == []
 
 
 def test_sumo_builds_a_traffic_light_program_for_every_signalised_junction(scenes, tmp_path):
-    command = _netconvert()
     bad = []
     for s in scenes:
-        out = tmp_path / f"{s.path.stem}.net.xml"
-        proc = subprocess.run(
-            [str(command), "--opendrive-files", str(s.path), "-o", str(out)],
-            capture_output=True,
-            text=True,
-            timeout=300,
-            stdin=subprocess.DEVNULL,
-            check=False,
-        )
+        proc, out = run_netconvert(s.path, tmp_path)
         lit = sum(j.find("controller") is not None for j in s.root.iter("junction"))
         programs = len(etree.parse(str(out)).getroot().findall("tlLogic")) if out.is_file() else -1
         if proc.returncode != 0 or programs != lit:
@@ -112,10 +97,7 @@ def test_sumo_builds_a_traffic_light_program_for_every_signalised_junction(scene
 def test_carla_lists_the_signals_as_landmarks_and_follows_the_elevation(scenes):
     bad = []
     for s in scenes[:: max(1, COUNT // 12)]:
-        try:
-            result = carla_waypoints(s.path, distance=5.0)
-        except CarlaUnavailable as exc:
-            pytest.fail(f"{exc} (scripts/setup creates .venv-carla)")
+        result = carla(s.path, distance=5.0)
         signals = {(el.get("id"), el.get("type")) for el in s.root.iter("signal")}
         marks = {(m[0], m[1]) for m in result.landmarks}
         e = elevation_info(read(s.path).document)
@@ -131,7 +113,5 @@ def test_asam_reports_no_error_and_no_checker_error(scenes, asam_run):
     reports = asam_run.reports()
     bad = []
     for s in scenes:
-        report = reports[s.path]
-        bad += [f"{s.path.name}: {i}" for i in report.errors[:3]]
-        bad += [f"{s.path.name}: checker {c} ended in error" for c in report.failed_checkers]
+        bad += asam_problems(s.path.name, reports[s.path])
     assert bad == []

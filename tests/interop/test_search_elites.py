@@ -1,18 +1,15 @@
 """Interoperability of ``junctionart search``'s elites (issue 13): 20 elites of a small search load cleanly in ASAM's
 checker (no error, no checker in error), SUMO's netconvert (exit 0) and CARLA's parser (waypoints on every driving
-lane), like the generator's maps (``test_generated_maps.py``, whose tool helpers this reuses)."""
+lane), like the generator's maps (``test_generated_maps.py``; the tool helpers are ``tools.py``'s)."""
 
 from __future__ import annotations
 
 import csv
-import subprocess
 
 import pytest
 
 from junctionart.cli import main
-from tests.interop.asam_harness import AsamRun, AsamUnavailable
-from tests.interop.carla_harness import CarlaUnavailable, carla_waypoints
-from tests.interop.test_generated_maps import _driving_lanes, _netconvert
+from tests.interop.tools import asam_problems, carla, driving_lanes, run_netconvert, start_asam
 
 ELITES = 20
 
@@ -31,41 +28,24 @@ def elites(tmp_path_factory):
 
 
 def test_asam_finds_no_error_in_the_elites(elites, tmp_path):
-    try:
-        reports = AsamRun(elites, tmp_path / "asam").reports()
-    except AsamUnavailable as exc:
-        pytest.fail(str(exc))
+    reports = start_asam(elites, tmp_path / "asam").reports()
     bad = []
     for path in elites:
         report = reports[path]
         assert len(report.statuses) == 23, path.name  # every check ran (guard against a vacuous pass)
-        if report.errors or report.failed_checkers:
-            issues = "; ".join(f"{i.rule}: {i.description}" for i in report.errors[:3])
-            bad.append(f"{path.name}: {issues} checkers in error: {report.failed_checkers}")
+        bad += asam_problems(path.name, report)
     assert bad == []
 
 
 def test_sumo_and_carla_load_the_elites(elites, tmp_path):
-    command = _netconvert()
     bad = []
     for path in elites:
-        out = tmp_path / f"{path.stem}.net.xml"
-        proc = subprocess.run(
-            [str(command), "--opendrive-files", str(path), "-o", str(out)],
-            capture_output=True,
-            text=True,
-            timeout=300,
-            stdin=subprocess.DEVNULL,
-            check=False,
-        )
+        proc, out = run_netconvert(path, tmp_path)
         if proc.returncode != 0 or not out.is_file():
             bad.append(f"{path.name}: netconvert exit {proc.returncode}")
-        try:
-            result = carla_waypoints(path)
-        except CarlaUnavailable as exc:
-            pytest.fail(f"{exc} (scripts/setup creates .venv-carla)")
+        result = carla(path)
         seen = {(w.road_id, w.lane_id) for w in result.waypoints}
-        missing = sorted(_driving_lanes(path) - seen) if result.loaded else ["not loaded"]
+        missing = sorted(driving_lanes(path) - seen) if result.loaded else ["not loaded"]
         if missing:
             bad.append(f"{path.name}: CARLA: no waypoint on {missing[:5]}")
     assert bad == []
