@@ -25,8 +25,11 @@ def _tree(data: bytes):
 
 
 def _version_of(tree) -> tuple[int, int]:
+    """The declared version; 1.8 when the header does not declare one with a schema (a damaged ``revMinor``, say)."""
     header = tree.getroot().find("header")
-    return (1, int(header.get("revMinor"))) if header is not None else V18
+    minor = "" if header is None else header.get("revMinor", "")
+    version = (1, int(minor)) if minor.isdigit() else V18
+    return version if version in schema.SCHEMA_FOLDERS else V18
 
 
 def _fast(tree, version=None) -> bool:
