@@ -2,10 +2,10 @@
 (issue 13).
 
     python benchmarks/bench_search.py --evaluations 5000 -j 2 -o /tmp/bench_search   # the issue's budget, idle machine
-    nice -n 10 python benchmarks/bench_search.py --evaluations 480 --random-cap 600   # what fits a busy 2-core hour
+    nice -n 10 python benchmarks/bench_search.py --evaluations 480 --random-cap 300   # what fits a busy 2-core hour
 
-Two samplers fill the same archive, ``junctionart search``'s default grid (legs x min_angle x complexity, 5 x 12 x 20
-= 1,200 cells; feasible = 0 error-level xodrcheck findings; objective = compactness):
+Two samplers fill the same archive, ``junctionart search``'s default grid (legs x min_angle x area, 5 x 12 x 15 = 900
+cells; feasible = 0 error-level xodrcheck findings; objective = compactness):
 
 1. ``junctionart search`` (MAP-Elites with pyribs' bandit scheduler over its emitters), ``--evaluations`` maps, each
    one intersection;
@@ -14,7 +14,9 @@ Two samplers fill the same archive, ``junctionart search``'s default grid (legs 
    are evaluated but infeasible) and every intersection of 3+ legs measured; the sample is the first N intersections
    in (seed, junction) order, ``era``'s own unit, N = the search's evaluated maps.
 
-Both are also binned on the old 2-D grid (legs x min_angle, 60 cells) from the same evaluations, for comparison.
+Both are also binned on the old 2-D grid (legs x min_angle, 60 cells) from the same evaluations, for comparison;
+``rows.json`` keeps every feasible evaluated intersection's metrics of both samplers, to bin them on other grids.
+``--descriptors`` (legs first) runs the comparison on another grid than the search's default.
 
 Then the time to ``--target`` distinct valid 7-leg intersections (distinct = different file bytes; valid = 0 errors),
 measured for both from the start of each sampler: the search keeps iterating past ``--evaluations`` until it has
@@ -42,7 +44,7 @@ sys.path.insert(0, str(REPO))
 from junctionart.search.engine import Settings  # noqa: E402
 from junctionart.search.measure import DEFAULT_DESCRIPTORS, METRICS, Evaluation, evaluate, objective  # noqa: E402
 
-GRID = tuple((name, METRICS[name][2]) for name in DEFAULT_DESCRIPTORS)
+GRID: tuple[tuple[str, int], ...] = tuple((name, METRICS[name][2]) for name in DEFAULT_DESCRIPTORS)
 FLAT = (("legs", 5), ("min_angle", 12))
 SEVEN = 7
 
@@ -225,12 +227,15 @@ def _time_to_target(arm: dict[str, Any], target: int) -> tuple[float, str]:
 
 
 def figure(path: Path, panels: list[tuple[str, Any]]) -> None:
-    """Rows: samplers; columns: leg counts; each panel min_angle x complexity, colour = the cell's objective."""
+    """Rows: samplers; columns: leg counts; each panel the 2nd x 3rd descriptor, colour = the cell's objective."""
     from junctionart.extras import pyplot
 
     plt = pyplot("bench_search")
     dims = [c for _, c in GRID]
-    (lo_a, hi_a, _), (lo_c, hi_c, _) = METRICS["min_angle"], METRICS["complexity"]
+    names = [n for n, _ in GRID]
+    (lo_a, hi_a, _), (lo_c, hi_c, _) = METRICS[names[1]], METRICS[names[2]] if len(names) > 2 else (0.0, 1.0, 1)
+    if len(dims) == 2:
+        dims.append(1)
     fig, axes = plt.subplots(
         len(panels), dims[0], figsize=(3.0 * dims[0], 3.0 * len(panels)), sharex=True, sharey=True, squeeze=False
     )
@@ -252,11 +257,12 @@ def figure(path: Path, panels: list[tuple[str, Any]]) -> None:
             )
             count = int(np.isfinite(cube[legs]).sum())
             ax.set_title(f"{legs + 3} legs: {count} cells", fontsize=9)
-            ax.set_ylim(0.15, 0.85)
+            if names[2:] == ["complexity"]:
+                ax.set_ylim(0.15, 0.85)
             if legs == 0:
-                ax.set_ylabel(f"{title}\ncomplexity", fontsize=9)
+                ax.set_ylabel(f"{title}\n{names[2] if len(names) > 2 else ''}", fontsize=9)
             if row == len(panels) - 1:
-                ax.set_xlabel("min_angle (deg)")
+                ax.set_xlabel(names[1])
     fig.suptitle(", ".join(f"{t}: {len(a)} cells, QD-score {float(a.stats.qd_score):.1f}" for t, a in panels))
     fig.tight_layout()
     if mesh is not None:
@@ -275,7 +281,17 @@ def main() -> int:
     ap.add_argument("--batch", type=int, default=16)
     ap.add_argument("-j", "--jobs", type=int, default=1)
     ap.add_argument("-o", "--output", type=Path, default=Path("bench_search"))
+    ap.add_argument(
+        "--descriptors", default=None, help="legs first, e.g. legs,min_angle:12,lanes (default: the search's default)"
+    )
     args = ap.parse_args()
+    if args.descriptors:
+        from junctionart.search.cli import descriptors
+
+        global GRID
+        GRID = descriptors(args.descriptors)
+        if GRID[0][0] != "legs":
+            ap.error("--descriptors: legs must come first (the figure has a column per leg count)")
     args.output.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
     evaluate(list(np.full(38, 0.5)))  # imports and caches, outside every timing
@@ -317,6 +333,8 @@ def main() -> int:
     out["seven_random"].update(intersections=rand["measured"], maps=rand["maps"])
     print(f"time ratio random / search: {times['random'] / times['search']:.0f}x")
     (args.output / "bench_search.json").write_text(json.dumps(out, indent=1), encoding="utf-8")
+    rows_out = {"search": qd["rows"], "random": rand["rows"]}  # every feasible evaluated row: other grids post hoc
+    (args.output / "rows.json").write_text(json.dumps(rows_out), encoding="utf-8")
     return 0
 
 

@@ -8,19 +8,22 @@ name                      meaning                                               
 ``legs``                  legs of the junction                                         2.5 .. 7.5        5
 ``min_angle``             smallest angle between neighbouring legs (degrees)           0 .. 120          12
 ``fov``                   mean of the legs' FOV (degrees)                              0 .. 360          12
-``complexity``            mean of the legs' complexity (the paper's, fixed scales)     0 .. 1            20
+``complexity``            mean of the legs' complexity (the paper's, fixed scales)     0 .. 1            10
 ``conflict_ratio``        conflict area / junction area                                0 .. 1            10
 ``area``                  area of the connection lanes' union (m^2)                    0 .. 15000        15
 ``lanes``                 connection lanes (U-turns included)                          0 .. 80           16
 ``u_turns``               U-turn lanes                                                 0 .. 8            8
 ========================  ==========================================================  ================  =======
 
-Default descriptors: ``legs`` x ``min_angle`` x ``complexity``. Random generation (``junctionart era``) puts 96 % of its
-intersections on 3 or 4 legs and its mean leg complexity between 0.28 and 0.51, and no two metrics of the list tell
-the tail apart better: many legs, legs close together (the issue's "approach angle under 30 degrees") or evenly spread
-(a wide smallest angle, which uniform draws of the headings rarely give), and the paper's complexity over 0.5. Two
-descriptors alone (legs x min_angle, 60 cells of which about 41 can be reached) leave nothing for a search to find:
-uniform random vectors fill them as fast as MAP-Elites does (0.94x in ``benchmarks/bench_search.py``'s first run).
+Default descriptors: ``legs`` x ``min_angle`` x ``area``. Random generation (``junctionart era``) puts 96 % of its
+intersections on 3 or 4 legs, at 265 to 3,500 m^2; the tail is many legs, legs close together (the issue's "approach
+angle under 30 degrees") or evenly spread (a wide smallest angle, which uniform draws of the headings rarely give),
+and wide multi-lane junctions. Measured on the same evaluations (``benchmarks/bench_search.py``, ``rows.json``, 320
+per sampler, binned after the fact): legs x min_angle alone (60 cells, about 41 reachable) is filled by uniform
+random vectors as fast as by the search (0.94x); a third descriptor ``complexity`` follows ``min_angle`` closely (a
+diagonal band, 1.46x against era's sampling); ``conflict_ratio`` 1.27x, ``fov`` 1.69x, ``lanes`` 2.1x, ``area``
+2.64x with a higher QD-score (the objective then ranks junctions of one size). With ``area`` a cell's objective is
+bounded by its area range, so the QD-score weighs small and large junctions alike per cell.
 
 *Feasible*: the map has one junction and xodrcheck finds no error-level finding in it. *Objective* (the quality an
 elite maximises within its cell): compactness, ``1 / (1 + area / 1000 m^2)`` in (0, 1], the same layout built on
@@ -41,15 +44,15 @@ METRICS: dict[str, tuple[float, float, int]] = {
     "legs": (2.5, 7.5, 5),
     "min_angle": (0.0, 120.0, 12),
     "fov": (0.0, 360.0, 12),
-    "complexity": (0.0, 1.0, 20),
+    "complexity": (0.0, 1.0, 10),
     "conflict_ratio": (0.0, 1.0, 10),
     "area": (0.0, 15000.0, 15),
     "lanes": (0.0, 80.0, 16),
     "u_turns": (0.0, 8.0, 8),
 }
 NAMES = tuple(METRICS)
-#: Default descriptors: the long tail in three dimensions, 5 x 12 x 20 = 1,200 cells (module docstring).
-DEFAULT_DESCRIPTORS = ("legs", "min_angle", "complexity")
+#: Default descriptors: the long tail in three dimensions, 5 x 12 x 15 = 900 cells (module docstring).
+DEFAULT_DESCRIPTORS = ("legs", "min_angle", "area")
 #: Area (m^2) at which the objective is one half.
 AREA_SCALE = 1000.0
 #: Objective of an infeasible candidate (below every feasible one, so the archive never takes it).
