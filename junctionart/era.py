@@ -297,7 +297,30 @@ def select(rows: list[dict], run: str, n: int) -> list[dict]:
 # --------------------------------------------------------------------------------------------------------------------
 # Executors: local processes or a Dask cluster, behind one submit / wait pair
 # --------------------------------------------------------------------------------------------------------------------
-class _Local:
+class _Executor:
+    """What both executors share on top of their ``submit`` / ``wait_first``."""
+
+    def submit(self, fn, *args):
+        raise NotImplementedError
+
+    def wait_first(self, pending):
+        raise NotImplementedError
+
+    def map_ordered(self, fn: Callable[..., Any], calls: Iterable[tuple], bar: Any = None) -> list[Any]:
+        """``[fn(*args) for args in calls]`` on the workers: every call submitted at once, the results in the order
+        of ``calls`` whatever order they finish in; ``bar`` (a tqdm bar or None) ticks once per finished call."""
+        pending = {self.submit(fn, *args): k for k, args in enumerate(calls)}
+        out: list[Any] = [None] * len(pending)
+        while pending:
+            done, _ = self.wait_first(pending)
+            for future in done:
+                out[pending.pop(future)] = future.result()
+                if bar is not None:
+                    bar.update(1)
+        return out
+
+
+class _Local(_Executor):
     def __init__(self, jobs: int):
         self.pool = ProcessPoolExecutor(max_workers=jobs)
         self.width = jobs
@@ -312,7 +335,7 @@ class _Local:
         self.pool.shutdown(wait=True, cancel_futures=True)
 
 
-class _Dask:
+class _Dask(_Executor):
     def __init__(self, address):
         try:
             from distributed import Client

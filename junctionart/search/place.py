@@ -212,26 +212,16 @@ def place_all(folder: Path, rows: list[dict[str, Any]], where: str | None, jobs:
         from tqdm import tqdm
 
         bar = tqdm(total=len(chosen), unit="map", desc="network")
+    calls = [(json.loads(r["genome"]), where, float(r["legs"])) for r in chosen]
     results: list[Placed | None] = []
     try:
         if executor is None:
-            for r in chosen:
-                results.append(place_genome(json.loads(r["genome"]), where, float(r["legs"])))
+            for call in calls:
+                results.append(place_genome(*call))
                 if bar is not None:
                     bar.update(1)
         else:
-            pending = {
-                executor.submit(place_genome, json.loads(r["genome"]), where, float(r["legs"])): k
-                for k, r in enumerate(chosen)
-            }
-            slots: list[Placed | None] = [None] * len(chosen)
-            while pending:
-                done, _ = executor.wait_first(pending)
-                for future in done:
-                    slots[pending.pop(future)] = future.result()
-                    if bar is not None:
-                        bar.update(1)
-            results = slots
+            results = executor.map_ordered(place_genome, calls, bar)
     finally:
         if executor is not None:
             executor.close()

@@ -17,15 +17,7 @@ def _distributed(executor: Any, bar: Any) -> Evaluator:
     """Evaluate a batch on ``executor`` (era's ``_Local`` or ``_Dask``), results in batch order."""
 
     def run(batch: list[list[float]]) -> list[Evaluation]:
-        pending = {executor.submit(evaluate, x): i for i, x in enumerate(batch)}
-        out: list[Evaluation | None] = [None] * len(batch)
-        while pending:
-            done, _ = executor.wait_first(pending)
-            for future in done:
-                out[pending.pop(future)] = future.result()
-                if bar is not None:
-                    bar.update(1)
-        return [r for r in out if r is not None]
+        return executor.map_ordered(evaluate, [(x,) for x in batch], bar)
 
     return run
 

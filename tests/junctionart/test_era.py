@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import csv
+import time
 from pathlib import Path
 
 import numpy as np
@@ -22,6 +23,36 @@ def _selected(folder: Path, n: int) -> list[dict]:
 
 def _seeds(folder: Path) -> list[int]:
     return [int(r["seed"]) for r in era.read_csv(folder / "maps.csv")]
+
+
+def _squared_later(k: int, seconds: float) -> int:
+    time.sleep(seconds)
+    return k * k
+
+
+class _Ticks:
+    """A stand-in for a tqdm bar: counts ``update`` calls."""
+
+    def __init__(self) -> None:
+        self.n = 0
+
+    def update(self, k: int) -> None:
+        self.n += k
+
+
+def _map_ordered_keeps_the_order_of_the_calls(executor) -> None:
+    calls = [(k, 0.5 if k == 0 else 0.0) for k in range(6)]  # the first call finishes last
+    ticks = _Ticks()
+    try:
+        assert executor.map_ordered(_squared_later, calls, ticks) == [0, 1, 4, 9, 16, 25]
+        assert executor.map_ordered(_squared_later, [], None) == []
+    finally:
+        executor.close()
+    assert ticks.n == 6
+
+
+def test_local_map_ordered_returns_results_in_call_order():
+    _map_ordered_keeps_the_order_of_the_calls(era._Local(2))
 
 
 def test_results_do_not_depend_on_the_number_of_workers(tmp_path):
@@ -99,6 +130,7 @@ def test_dask_local_cluster_gives_the_local_results(tmp_path):
         distributed.Client(cluster) as client,
     ):
         era.collect(SMALL, 10, tmp_path / "dask", scheduler=client, progress=False)
+        _map_ordered_keeps_the_order_of_the_calls(era._Dask(client))
     assert _selected(tmp_path / "local", 10) == _selected(tmp_path / "dask", 10)
 
 

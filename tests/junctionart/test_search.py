@@ -91,6 +91,15 @@ def test_search_stops_at_n_matches_and_resumes_to_the_uninterrupted_archive(sear
     assert "give a new output folder" in capsys.readouterr().err
 
 
+@pytest.mark.slow
+def test_two_workers_give_the_one_worker_archive(searched, tmp_path):
+    folder = tmp_path / "two"
+    two = [("2" if a == "1" and SMALL[k - 1] == "-j" else a) for k, a in enumerate(SMALL)]
+    assert main(["search", "-o", str(folder), *two, "--evaluations", "16", "--where", "legs >= 5", "-n", "100"]) == 0
+    keep = ["cell", "objective", "sha256", "genome", *NAMES]
+    assert [[r[k] for k in keep] for r in _archive(folder)] == [[r[k] for k in keep] for r in _archive(searched)]
+
+
 def test_decoded_genomes_are_valid_descriptions():
     rng = np.random.default_rng(0)
     for x in [*random_genomes(rng, 200), np.zeros(DIM), np.ones(DIM), np.full(DIM, 2.0)]:
