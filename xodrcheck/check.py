@@ -187,26 +187,43 @@ def _run_rule(rule: Rule, ctx: Context) -> list[Finding]:
 
 
 def run_rules(ctx: Context, selection: Selection) -> tuple[list[Finding], list[str]]:
-    """Run every selected check rule on a context; return their findings and the codes run."""
+    """Run every selected check rule on a context; return their findings and the codes run (in the registry's order).
+
+    The rules that read the XML (declared ``xml=True``) run first; then the context's tree and every view built from
+    it are dropped (:meth:`Context.release_tree`) and their memory handed back before the geometry rules build their
+    caches. Findings do not depend on the order: the report sorts them.
+    """
+    wanted = [
+        rule
+        for rule in selection.rules.values()
+        if rule.check is not None and selection.wants_rule(rule) and rule.runs_on(ctx.version)
+    ]
     findings: list[Finding] = []
-    run: list[str] = []
-    for rule in selection.rules.values():
-        if rule.check is None or not selection.wants_rule(rule) or not rule.runs_on(ctx.version):
-            continue
-        if ctx.out_of_time():
-            findings.append(
-                RULE_OUT_OF_TIME.finding(
-                    f"rule {rule.code} {rule.name} not run: the time budget (tolerance time_budget) was spent; "
-                    "the check is incomplete"
-                )
+    ran: set[str] = set()
+    for phase in (True, False):
+        for rule in wanted:
+            if rule.xml is phase:
+                _run_timed(rule, ctx, findings, ran)
+        if phase:
+            ctx.release_tree()
+            memory.release()
+    return findings, [rule.code for rule in wanted if rule.code in ran]
+
+
+def _run_timed(rule: Rule, ctx: Context, findings: list[Finding], ran: set[str]) -> None:
+    if ctx.out_of_time():
+        findings.append(
+            RULE_OUT_OF_TIME.finding(
+                f"rule {rule.code} {rule.name} not run: the time budget (tolerance time_budget) was spent; "
+                "the check is incomplete"
             )
-            continue
-        started = time.monotonic()
-        findings.extend(_run_rule(rule, ctx))
-        run.append(rule.code)
-        if time.monotonic() - started > _RELEASE_AFTER:
-            memory.release()  # a rule that ran long built and dropped much: give it back before the next
-    return findings, run
+        )
+        return
+    started = time.monotonic()
+    findings.extend(_run_rule(rule, ctx))
+    ran.add(rule.code)
+    if time.monotonic() - started > _RELEASE_AFTER:
+        memory.release()  # a rule that ran long built and dropped much: give it back before the next
 
 
 #: Seconds a rule runs before the memory it freed is handed back to the system (:func:`xodrcheck.memory.release`);

@@ -14,7 +14,6 @@ by local name (``{*}tag``). A boundary segment's ``sStart``/``sEnd``/``contactPo
 
 from __future__ import annotations
 
-import weakref
 from typing import TYPE_CHECKING
 
 from lxml import etree
@@ -393,15 +392,12 @@ def read_junctions(root: etree._Element) -> tuple[JunctionParts, ...]:
     return tuple(read_junction(el) for el in _children(root, "junction"))
 
 
-_CACHE: weakref.WeakKeyDictionary[Context, tuple[JunctionParts, ...]] = weakref.WeakKeyDictionary()
-
-
 def junction_parts(ctx: Context) -> tuple[JunctionParts, ...]:
     """The file's junctions as :class:`JunctionParts`, built once per check context (empty when the file is not
     well-formed XML or was built in memory)."""
-    found = _CACHE.get(ctx)
-    if found is None:
+
+    def build() -> tuple[JunctionParts, ...]:
         tree = ctx.tree
-        found = () if tree is None else read_junctions(tree.getroot())
-        _CACHE[ctx] = found
-    return found
+        return () if tree is None else read_junctions(tree.getroot())
+
+    return ctx.xml_view("junction_elements.parts", build)

@@ -9,9 +9,9 @@ from __future__ import annotations
 import dataclasses
 import math
 import time
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from functools import cached_property
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.config import Config, Tolerances
@@ -36,6 +36,18 @@ if TYPE_CHECKING:  # pragma: no cover
     from xodrcheck.lanes import RoadGeometry
     from xodrcheck.objects import RoadObject, RoadObjects
     from xodrcheck.signals import Signals
+
+
+_T = TypeVar("_T")
+
+
+class TreeReleased(RuntimeError):
+    """A rule read the XML tree (:attr:`Context.tree` or a view of it) after the runner dropped it: the rule does not
+    declare ``xml=True`` (an internal error of xodrcheck, reported as ``X900 rule-crashed``)."""
+
+
+#: What :meth:`Context.release_tree` drops with the tree: the cached views built from it.
+_TREE_VIEWS = ("road_objects", "objects", "signals", "_surface_boxes")
 
 
 def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
@@ -93,6 +105,8 @@ class Context:
         self._geometry: Mapping[str, RoadGeometry] | None = None
         self._widths: dict[tuple[int, int, int, float], float | None] = {}
         self._positions: dict[tuple, tuple[float, float, float] | None] = {}
+        self._views: dict[str, Any] = {}
+        self._released = False
 
     # ---------------------------------------------------------------------------------------------------- basics
     @property
@@ -116,12 +130,24 @@ class Context:
         """The file as text (UTF-8, undecodable bytes replaced)."""
         return None if self.data is None else self.data.decode("utf-8", errors="replace")
 
-    @cached_property
+    @property
     def tree(self) -> etree._ElementTree | None:
         """The file parsed safely with the reader's parser (:func:`xodrcheck.reader.parse`: no entities, no network, a
         prefix before the XML declaration and a DOCTYPE blanked out, source lines unchanged), namespaces kept for
-        schema validation. ``None`` when the file is not well-formed (the reader reports why).
+        schema validation, parsed on first use. ``None`` when the file is not well-formed (the reader reports why).
+        Only rules declared with ``xml=True`` read it: after them the runner drops it (:meth:`release_tree`), and
+        reading it then raises :class:`TreeReleased`.
         """
+        if self._released:
+            raise TreeReleased(
+                "internal error: the XML tree was read after the XML rules ran and it was dropped; a rule reading "
+                "ctx.tree (or a view of it) must be registered with xml=True"
+            )
+        if "_tree" not in self.__dict__:
+            self.__dict__["_tree"] = self._parse()
+        return self.__dict__["_tree"]
+
+    def _parse(self) -> etree._ElementTree | None:
         if self.data is None:
             return None
         from lxml import etree
@@ -130,6 +156,23 @@ class Context:
 
         root, _ = parse(self.data, recover=False, strip_namespaces=False)
         return None if root is None else etree.ElementTree(root)
+
+    def xml_view(self, key: str, build: Callable[[], _T]) -> _T:
+        """A view of :attr:`tree` (typed records, or elements) built once per file by ``build`` and dropped with the
+        tree by :meth:`release_tree`; ``key`` names it (its module and purpose)."""
+        if key not in self._views:
+            self._views[key] = build()
+        return self._views[key]
+
+    def release_tree(self) -> None:
+        """Drop :attr:`tree` and every view built from it (:meth:`xml_view`, :attr:`road_objects`, :attr:`signals`):
+        called by the runner once the rules declared ``xml=True`` have run, so that the tree (about 900 bytes per
+        element) never lies under the geometry rules' caches. Reading the tree afterwards raises
+        :class:`TreeReleased`."""
+        self._released = True
+        self._views.clear()
+        for key in ("_tree", *_TREE_VIEWS):
+            self.__dict__.pop(key, None)
 
     @cached_property
     def road_objects(self) -> Mapping[str, RoadObjects]:

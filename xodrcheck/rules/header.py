@@ -87,6 +87,7 @@ _REGULATION_CONTENT = frozenset({"speed", "priority", "userData", "include", "da
     Category.HEADER,
     Severity.ERROR,
     uids=(U.DEFAULT_REGULATIONS_ONLY_SPEED_PRIORITY,),
+    xml=True,
 )
 def default_regulations_content(ctx: Context):
     """The header's ``<defaultRegulations>`` use a signal semantic other than ``<speed>`` and ``<priority>``.
@@ -123,7 +124,7 @@ def default_regulations_content(ctx: Context):
 _PROJ_DEFINITION = re.compile(r"\+(?:proj|init)=\S+|(?<![=:\w])EPSG:\d+", re.IGNORECASE)
 
 
-@rule("H003", "projection-repeated", Category.HEADER, Severity.ERROR, uids=(U.HEADER_MAX_ONE_PROJ,))
+@rule("H003", "projection-repeated", Category.HEADER, Severity.ERROR, uids=(U.HEADER_MAX_ONE_PROJ,), xml=True)
 def projection_repeated(ctx: Context):
     """The map defines its projection more than once: several ``<geoReference>`` elements, or one whose PROJ string
     holds several definitions.

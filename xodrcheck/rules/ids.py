@@ -9,7 +9,6 @@ every version are held to them, not only those the 1.8 schema validates.
 
 from __future__ import annotations
 
-import weakref
 from collections.abc import Iterator
 
 from lxml import etree
@@ -60,7 +59,7 @@ def _road_of(el: etree._Element) -> str | None:
     return None
 
 
-@rule("R020", "duplicate-element-id", Category.REFERENCE, Severity.ERROR, uids=(F.ID_UNIQUE_IN_CLASS,))
+@rule("R020", "duplicate-element-id", Category.REFERENCE, Severity.ERROR, uids=(F.ID_UNIQUE_IN_CLASS,), xml=True)
 def duplicate_element_id(ctx: Context):
     """Two objects, signals, controllers, stations, switches... of one class share an id.
 
@@ -100,19 +99,20 @@ _SIGNS = "road/signals/signal/staticBoard/sign"
 _LINKS = "road/signals/signal/reference"
 _WANTED = frozenset([*_CLASSES.values(), *(path for path, *_ in _REFERENCES), "road", "junction", _SIGNS, _LINKS])
 _PREFIXES = frozenset(path.rsplit("/", k)[0] for path in _WANTED for k in range(path.count("/") + 1))
-_INDEX: weakref.WeakKeyDictionary[Context, dict[str, list[etree._Element]]] = weakref.WeakKeyDictionary()
 
 
 def _index(ctx: Context) -> dict[str, list[etree._Element]]:
     """The elements at each path of :data:`_WANTED` (local names from ``<OpenDRIVE>``), in file order: one walk of
-    the parts of the tree that hold them, shared by the rules of one file."""
-    found = _INDEX.get(ctx)
-    if found is None:
-        found = {path: [] for path in _WANTED}
-        if ctx.tree is not None:
-            _walk(ctx.tree.getroot(), "", found)
-        _INDEX[ctx] = found
-    return found
+    the parts of the tree that hold them, shared by the rules of one file (dropped with the tree)."""
+
+    def build() -> dict[str, list[etree._Element]]:
+        found: dict[str, list[etree._Element]] = {path: [] for path in _WANTED}
+        tree = ctx.tree
+        if tree is not None:
+            _walk(tree.getroot(), "", found)
+        return found
+
+    return ctx.xml_view("ids.index", build)
 
 
 def _walk(el: etree._Element, path: str, out: dict[str, list[etree._Element]]) -> None:
@@ -156,6 +156,7 @@ def _dangling(index: dict[str, list[etree._Element]]) -> Iterator[tuple[etree._E
     Category.REFERENCE,
     Severity.ERROR,
     uids=(F.ONLY_REF_DEFINED_IDS,),
+    xml=True,
 )
 def undefined_reference(ctx: Context):
     """An element refers to an object, signal, controller, switch, road or junction id the file does not define.

@@ -50,7 +50,7 @@ def _describe(piece: Piece) -> str:
     return f"the {kind} segment of road {seg.road} (line {seg.line})"
 
 
-@rule("J024", "boundary-not-closed", Category.JUNCTION, Severity.ERROR, uids=(U.BOUNDARY_CLOSED,))
+@rule("J024", "boundary-not-closed", Category.JUNCTION, Severity.ERROR, uids=(U.BOUNDARY_CLOSED,), xml=True)
 def boundary_not_closed(ctx: Context) -> Iterator[Finding]:
     """The segments of a junction boundary do not close it: one ends away from where the next one starts.
 
@@ -92,6 +92,7 @@ def boundary_not_closed(ctx: Context) -> Iterator[Finding]:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.BOUNDARY_COUNTER_CLOCKWISE,),
+    xml=True,
 )
 def boundary_clockwise(ctx: Context) -> Iterator[Finding]:
     """The segments of a junction boundary run clockwise around the junction.
@@ -128,6 +129,7 @@ def boundary_clockwise(ctx: Context) -> Iterator[Finding]:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.REFLINE_MEETS_BOUNDARY, U.REFLINE_REACHES_ALL, U.GRID_COVERS_BOUNDARY),
+    xml=True,
 )
 def junction_area_coverage(ctx: Context) -> Iterator[Finding]:
     """A junction's reference line or elevation grid does not cover its boundary.
@@ -204,7 +206,7 @@ def _crosses(s: np.ndarray, t: np.ndarray, length: float, tol: float) -> bool:
     return bool(np.any(change & (at >= -tol) & (at <= length + tol)))
 
 
-@rule("J029", "crossing-section-coverage", Category.JUNCTION, Severity.ERROR, uids=(U.CROSSING_COVERAGE,))
+@rule("J029", "crossing-section-coverage", Category.JUNCTION, Severity.ERROR, uids=(U.CROSSING_COVERAGE,), xml=True)
 def crossing_section_coverage(ctx: Context) -> Iterator[Finding]:
     """A crossing's ``<roadSection>`` does not cover the whole area where its road overlaps the other roads.
 
@@ -294,7 +296,7 @@ def _zone_lanes(ctx: Context, j: JunctionParts) -> list[tuple[Road, int, bool, f
     return out
 
 
-@rule("J030", "overlap-zone-too-short", Category.JUNCTION, Severity.ERROR, uids=(U.DIRECT_OVERLAP_COVERAGE,))
+@rule("J030", "overlap-zone-too-short", Category.JUNCTION, Severity.ERROR, uids=(U.DIRECT_OVERLAP_COVERAGE,), xml=True)
 def overlap_zone_too_short(ctx: Context) -> Iterator[Finding]:
     """A direct junction's ``overlapZone`` does not reach as far as its two lanes overlap.
 

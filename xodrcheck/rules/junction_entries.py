@@ -159,6 +159,7 @@ def _where(entry: _Entry) -> str:
     Category.JUNCTION,
     Severity.WARNING,
     uids=(U.GRID_SMOOTH,),
+    xml=True,
 )
 def elevation_grid_entry_exit(ctx: Context) -> Iterator[Finding]:
     """A road enters or leaves a junction's elevation grid with a step or a kink in the surface.

@@ -67,7 +67,7 @@ def direct_junction_shape(ctx: Context):
         )
 
 
-@rule("J021", "direct-overlap-zones", Category.JUNCTION, Severity.ERROR, uids=(U.DIRECT_OVERLAP_EXCLUSIVE,))
+@rule("J021", "direct-overlap-zones", Category.JUNCTION, Severity.ERROR, uids=(U.DIRECT_OVERLAP_EXCLUSIVE,), xml=True)
 def direct_overlap_zones(ctx: Context):
     """A direct junction's ``overlapZone`` attributes do not mark one pair of overlapping lanes.
 
@@ -179,6 +179,7 @@ def _has_elevation(road: Road) -> bool:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.CROSS_PATH_JUNCTION_ID, U.CROSS_PATH_LANE_TYPES, U.CROSS_PATH_ELEVATION),
+    xml=True,
 )
 def cross_path_roads(ctx: Context):
     """A cross path's crossing road is not the junction's, or it connects lanes that are not for walking or biking.
@@ -270,6 +271,7 @@ def _reaches(j: JunctionParts, road: Road, end: ContactPoint | None) -> bool:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.BOUNDARY_EACH_ROAD, U.BOUNDARY_CLOSE_GAP_WITH_NEW_ROADS),
+    xml=True,
 )
 def boundary_roads(ctx: Context):
     """A junction boundary misses a road that touches the junction, or runs along a road that is not the junction's.

@@ -128,6 +128,7 @@ def _junction_area(ctx: Context, j: JunctionParts, crossing: Road):
         U.CROSS_PATH_WITHIN_JUNCTION,
         U.VIRTUAL_CROSS_PATH_S_T,
     ),
+    xml=True,
 )
 def cross_path_ends(ctx: Context) -> Iterator[Finding]:
     """A cross path's crossing road does not start and end on the lanes it links, or leaves its junction's area.

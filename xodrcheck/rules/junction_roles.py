@@ -11,7 +11,6 @@
 from __future__ import annotations
 
 import math
-import weakref
 from collections.abc import Iterator
 
 from xodrcheck.classcache import dataclass
@@ -35,14 +34,12 @@ class SignalXml:
     line: int
 
 
-_SIGNALS: weakref.WeakKeyDictionary[Context, dict[str, tuple[SignalXml, ...]]] = weakref.WeakKeyDictionary()
-
-
 def signals_by_road(ctx: Context) -> dict[str, tuple[SignalXml, ...]]:
     """Road id -> its signals and signal references, read from the XML once per file."""
-    found = _SIGNALS.get(ctx)
-    if found is not None:
-        return found
+    return ctx.xml_view("junction_roles.signals", lambda: _signals_by_road(ctx))
+
+
+def _signals_by_road(ctx: Context) -> dict[str, tuple[SignalXml, ...]]:
     out: dict[str, list[SignalXml]] = {}
     tree = ctx.tree
     if tree is not None:
@@ -62,9 +59,7 @@ def signals_by_road(ctx: Context) -> dict[str, tuple[SignalXml, ...]]:
                             el.sourceline or 0,
                         )
                     )
-    found = {k: tuple(v) for k, v in out.items()}
-    _SIGNALS[ctx] = found
-    return found
+    return {k: tuple(v) for k, v in out.items()}
 
 
 def legs(ctx: Context, junction: Junction) -> dict[str, ContactPoint | None]:
@@ -103,6 +98,7 @@ def parts_by_id(ctx: Context) -> dict[str, JunctionParts]:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.PRIORITY_HIGH_AND_LOW, U.CROSSING_ONE_HIGH),
+    xml=True,
 )
 def junction_priority_pair(ctx: Context):
     """A junction ``<priority>`` is not a pair of two roads, or a crossing gives priority to more than one road.
@@ -160,7 +156,14 @@ def _near_junction(ctx: Context, road: Road, end: ContactPoint | None, s: float 
     return s <= reach if end is ContactPoint.START else s >= road.length - reach
 
 
-@rule("J015", "junction-priority-with-signals", Category.JUNCTION, Severity.WARNING, uids=(U.PRIORITY_NO_SIGNALS,))
+@rule(
+    "J015",
+    "junction-priority-with-signals",
+    Category.JUNCTION,
+    Severity.WARNING,
+    uids=(U.PRIORITY_NO_SIGNALS,),
+    xml=True,
+)
 def junction_priority_with_signals(ctx: Context):
     """A junction states priorities while signals regulate it.
 
@@ -205,7 +208,9 @@ def junction_priority_with_signals(ctx: Context):
 
 
 # ---------------------------------------------------------------------------------------------------- virtual junctions
-@rule("J016", "virtual-junction-controlled", Category.JUNCTION, Severity.ERROR, uids=(U.VIRTUAL_NO_CONTROLLERS,))
+@rule(
+    "J016", "virtual-junction-controlled", Category.JUNCTION, Severity.ERROR, uids=(U.VIRTUAL_NO_CONTROLLERS,), xml=True
+)
 def virtual_junction_controlled(ctx: Context):
     """A virtual junction has controllers or traffic lights.
 
@@ -251,7 +256,7 @@ def virtual_junction_controlled(ctx: Context):
                 )
 
 
-@rule("J017", "virtual-junction-range", Category.JUNCTION, Severity.ERROR, uids=(U.VIRTUAL_ONE_START_END,))
+@rule("J017", "virtual-junction-range", Category.JUNCTION, Severity.ERROR, uids=(U.VIRTUAL_ONE_START_END,), xml=True)
 def virtual_junction_range(ctx: Context):
     """A virtual junction does not name one range ``sStart``..``sEnd`` on its main road.
 
@@ -307,6 +312,7 @@ def _main_road_ends(road: Road, main: str) -> Iterator[tuple[ContactPoint, float
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.VIRTUAL_MAIN_ROAD_ONLY, U.VIRTUAL_START_END),
+    xml=True,
 )
 def virtual_junction_branches(ctx: Context):
     """A connecting road of a virtual junction does not branch off the main road at ``sStart`` or ``sEnd``.
@@ -427,6 +433,7 @@ def _both_ends(ctx: Context, junction: Junction) -> set[str]:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.COMMON_WHEN_TO_USE, U.COMMON_NOT_ONLY_TWO),
+    xml=True,
 )
 def junction_unneeded(ctx: Context):
     """A junction joins roads that could be linked directly.

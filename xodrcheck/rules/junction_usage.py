@@ -44,6 +44,7 @@ def _each(check: Rule, uids: tuple[str, ...], message: str, **where) -> Iterator
         U.DIRECT_CONNECTING_ROAD,
         U.CONNECTION_NO_CONNECTING_ROAD_DIRECT,
     ),
+    xml=True,
 )
 def connection_road_attribute(ctx: Context):
     """A connection names its road with the attribute of another junction type.
@@ -100,6 +101,7 @@ def connection_road_attribute(ctx: Context):
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.COMMON_DIRECT_ATTRIBUTES, U.COMMON_VIRTUAL_ATTRIBUTES, U.VIRTUAL_CONNECTIONS),
+    xml=True,
 )
 def junction_type_attribute(ctx: Context):
     """A junction or its connection uses an attribute that belongs to another junction type.
@@ -214,6 +216,7 @@ def _type_elements(j: JunctionParts) -> Iterator[tuple[str, str, int]]:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.BOUNDARY_ONLY_COMMON, U.CROSSING_ONLY_ROAD_SECTIONS, U.GRID_ONLY_ONE, U.COMMON_NO_PRED_SUCC),
+    xml=True,
 )
 def junction_type_elements(ctx: Context):
     """A junction holds an element its type does not allow, or one too many.
@@ -246,6 +249,7 @@ def junction_type_elements(ctx: Context):
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.REFLINE_ONE_LINE, U.GRID_PERPENDICULAR),
+    xml=True,
 )
 def junction_reference_line_shape(ctx: Context):
     """A junction reference line is not one straight ``<geometry>``, or an elevation grid has no reference line.

@@ -86,6 +86,7 @@ def _lane_gap(
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.VIRTUAL_HEADING, U.VIRTUAL_SMOOTH),
+    xml=True,
 )
 def virtual_junction_joint(ctx: Context) -> Iterator[Finding]:
     """A connecting road of a virtual junction does not join its main road smoothly at ``elementS``.

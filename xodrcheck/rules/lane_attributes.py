@@ -83,7 +83,7 @@ def lane_level_changes(ctx: Context):
                 )
 
 
-@rule("L016", "lane-access-mixed", Category.LANE, Severity.ERROR, uids=(U.ACCESS_NO_MIX,), every_version=True)
+@rule("L016", "lane-access-mixed", Category.LANE, Severity.ERROR, uids=(U.ACCESS_NO_MIX,), every_version=True, xml=True)
 def lane_access_mixed(ctx: Context):
     """A lane's ``<access>`` records mix ``rule="allow"`` and ``rule="deny"`` at one ``sOffset``.
 
@@ -138,7 +138,14 @@ def _int(text: str | None) -> int | None:
 _TYPES = {t.value.lower(): t for t in LaneType}
 
 
-@rule("L023", "lane-direction-reverses-traffic", Category.LANE, Severity.ERROR, uids=(U.LANE_REVERSE_LEFT_RIGHT,))
+@rule(
+    "L023",
+    "lane-direction-reverses-traffic",
+    Category.LANE,
+    Severity.ERROR,
+    uids=(U.LANE_REVERSE_LEFT_RIGHT,),
+    xml=True,
+)
 def lane_direction_reverses_traffic(ctx: Context):
     """Every drivable lane of a lane section has ``direction="reversed"``: the road's traffic rule is turned round.
 

@@ -56,7 +56,7 @@ def _road_length(ctx: Context, road_id: str) -> float | None:
     return None if road is None else road.length
 
 
-@rule("L029", "road-without-centre-lane", Category.LANE, Severity.ERROR, uids=(U.CENTER_LANE,))
+@rule("L029", "road-without-centre-lane", Category.LANE, Severity.ERROR, uids=(U.CENTER_LANE,), xml=True)
 def road_without_centre_lane(ctx: Context):
     """No lane layer of a road has a centre lane in every lane section.
 
@@ -90,7 +90,9 @@ def _has_centre(lanes_of: dict[int, list[LaneXml]], section: SectionXml) -> bool
     return any(lane.group == "center" and lane.id == 0 for lane in lanes_of.get(id(section), ()))
 
 
-@rule("L033", "permanent-section-length", Category.LANE, Severity.ERROR, uids=(U.LAYER_LENGTH_ONLY_TEMPORARY,))
+@rule(
+    "L033", "permanent-section-length", Category.LANE, Severity.ERROR, uids=(U.LAYER_LENGTH_ONLY_TEMPORARY,), xml=True
+)
 def permanent_section_length(ctx: Context):
     """A lane section of the permanent lane layer has a ``length``.
 
@@ -118,7 +120,7 @@ def permanent_section_length(ctx: Context):
             )
 
 
-@rule("L030", "temporary-lane-physical", Category.LANE, Severity.ERROR, uids=(U.LAYER_PHYS_ATTR_TEMPORARY,))
+@rule("L030", "temporary-lane-physical", Category.LANE, Severity.ERROR, uids=(U.LAYER_PHYS_ATTR_TEMPORARY,), xml=True)
 def temporary_lane_physical(ctx: Context):
     """A lane of the temporary lane layer has ``<height>`` or ``<material>`` records.
 
@@ -193,7 +195,9 @@ def temporary_runs(ctx: Context) -> list[tuple[str, float, float | None, Section
     return out
 
 
-@rule("L031", "temporary-layer-not-linked", Category.LANE, Severity.ERROR, uids=(U.LINK_TEMPORARY_TO_PERMANENT,))
+@rule(
+    "L031", "temporary-layer-not-linked", Category.LANE, Severity.ERROR, uids=(U.LINK_TEMPORARY_TO_PERMANENT,), xml=True
+)
 def temporary_layer_not_linked(ctx: Context):
     """A drivable lane where a temporary lane layer section starts or ends is not linked to the permanent layer.
 
@@ -252,7 +256,7 @@ def temporary_layer_not_linked(ctx: Context):
                 )
 
 
-@rule("L032", "layer-link-without-section", Category.LANE, Severity.ERROR, uids=(U.SECTION_NEW_TEMP_TO_PERM,))
+@rule("L032", "layer-link-without-section", Category.LANE, Severity.ERROR, uids=(U.SECTION_NEW_TEMP_TO_PERM,), xml=True)
 def layer_link_without_section(ctx: Context):
     """A permanent lane is linked to a temporary lane, but no permanent lane section starts or ends there.
 

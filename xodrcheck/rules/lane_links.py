@@ -17,7 +17,7 @@ from xodrcheck.rules.registry import rule
 _WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}
 
 
-@rule("L024", "lane-link-not-omitted", Category.LANE, Severity.ERROR, uids=(U.LINK_NO_LINK,))
+@rule("L024", "lane-link-not-omitted", Category.LANE, Severity.ERROR, uids=(U.LINK_NO_LINK,), xml=True)
 def lane_link_not_omitted(ctx: Context):
     """A lane has a ``<link>`` with nothing in it, or lane links where its road starts or ends in a junction.
 

@@ -22,7 +22,7 @@ from xodrcheck.rules.registry import rule
 _ZERO = 1e-9
 
 
-@rule("L017", "lane-listing-order", Category.LANE, Severity.WARNING, uids=(U.LANE_LISTING,))
+@rule("L017", "lane-listing-order", Category.LANE, Severity.WARNING, uids=(U.LANE_LISTING,), xml=True)
 def lane_listing_order(ctx: Context):
     """The lanes of a lane section are not listed from left to right (descending id).
 
@@ -73,6 +73,7 @@ _CENTRE_RECORDS = {
     Category.LANE,
     Severity.ERROR,
     uids=tuple(uid for uid, _ in _CENTRE_RECORDS.values()),
+    xml=True,
 )
 def centre_lane_records(ctx: Context):
     """The centre lane 0 has ``<access>``, ``<height>``, ``<material>`` or ``<speed>`` records.
@@ -119,7 +120,7 @@ _ORDERED = {
 }
 
 
-@rule("L019", "lane-records-out-of-order", Category.LANE, Severity.ERROR, uids=tuple(_ORDERED.values()))
+@rule("L019", "lane-records-out-of-order", Category.LANE, Severity.ERROR, uids=tuple(_ORDERED.values()), xml=True)
 def lane_records_out_of_order(ctx: Context):
     """A lane's ``<access>``, ``<material>``, ``<rule>`` or ``<visibility>`` records come in descending ``sOffset``.
 
@@ -173,6 +174,7 @@ def _first(lanes: list[LaneXml], tag: str) -> tuple[LaneXml, etree._Element] | N
     Category.LANE,
     Severity.ERROR,
     uids=(U.BORDER_EXCLUSIVE_WIDTH, U.WIDTH_NO_BORDER),
+    xml=True,
 )
 def width_and_border_mixed(ctx: Context):
     """One lane group (``<left>`` or ``<right>`` of a lane section) uses both ``<width>`` and ``<border>`` records.
@@ -218,6 +220,7 @@ def width_and_border_mixed(ctx: Context):
     Category.LANE,
     Severity.ERROR,
     uids=(U.BORDER_EXCLUSIVE_OFFSET, U.LANE_OFFSET_NO_BORDER),
+    xml=True,
 )
 def border_with_lane_offset(ctx: Context):
     """A road's lanes use ``<border>`` records and ``<laneOffset>`` together.
@@ -265,7 +268,7 @@ def border_with_lane_offset(ctx: Context):
         )
 
 
-@rule("L022", "lane-width-undefined", Category.LANE, Severity.ERROR, uids=(U.WIDTH_WHOLE_SECTION,))
+@rule("L022", "lane-width-undefined", Category.LANE, Severity.ERROR, uids=(U.WIDTH_WHOLE_SECTION,), xml=True)
 def lane_width_undefined(ctx: Context):
     """A side lane's width is not defined from the start of its lane section: no ``<width>`` at ``sOffset`` 0.
 

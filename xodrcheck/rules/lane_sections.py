@@ -28,6 +28,7 @@ def permanent_sections(ctx: Context) -> dict[str, list[SectionXml]]:
     Category.LANE,
     Severity.ERROR,
     uids=(U.CENTER_ELEM_DEFINITION, U.LANE_SECT_FIRST),
+    xml=True,
 )
 def lane_sections_from_start(ctx: Context):
     """A road's first lane section starts after s=0: from the road's start to there, no lane section, no centre lane.
@@ -70,6 +71,7 @@ def lane_sections_from_start(ctx: Context):
     Category.LANE,
     Severity.ERROR,
     uids=(U.LAYER_MANDATORY_PERMANENT, U.LANE_SECTION_DRIVABLE),
+    xml=True,
 )
 def lane_section_without_lanes(ctx: Context):
     """A lane section has no side lane whose width is given from the section's start: nothing to drive on.
@@ -124,7 +126,7 @@ def _s(section: SectionXml) -> str:
     return "?" if section.s is None else f"{section.s:g}"
 
 
-@rule("L028", "lane-section-beyond-road", Category.LANE, Severity.ERROR, uids=(U.SECTION_LENGTH_LIMIT_ROAD,))
+@rule("L028", "lane-section-beyond-road", Category.LANE, Severity.ERROR, uids=(U.SECTION_LENGTH_LIMIT_ROAD,), xml=True)
 def lane_section_beyond_road(ctx: Context):
     """A lane section with a ``length`` runs past the end of its road.
 

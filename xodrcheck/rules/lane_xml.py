@@ -10,7 +10,6 @@ by local name (``{*}tag``, :func:`local`): 1.1/1.2 files may put their elements 
 
 from __future__ import annotations
 
-import weakref
 from collections.abc import Iterator
 
 from lxml import etree
@@ -74,14 +73,12 @@ class LanesXml:
     lanes: tuple[LaneXml, ...]
 
 
-_INDEX: weakref.WeakKeyDictionary[Context, LanesXml] = weakref.WeakKeyDictionary()
-
-
 def lane_elements(ctx: Context) -> LanesXml:
     """Every lane section and lane of the file as elements (empty when the file is not XML, or built in memory)."""
-    found = _INDEX.get(ctx)
-    if found is not None:
-        return found
+    return ctx.xml_view("lane_xml.lanes", lambda: _lane_elements(ctx))
+
+
+def _lane_elements(ctx: Context) -> LanesXml:
     sections: list[SectionXml] = []
     lanes: list[LaneXml] = []
     tree = ctx.tree
@@ -97,9 +94,7 @@ def lane_elements(ctx: Context) -> LanesXml:
                         group = local(group_el)
                         for lane_el in group_el.iterchildren("{*}lane"):
                             lanes.append(LaneXml(section, group, lane_el, integer(lane_el.get("id"))))
-    found = LanesXml(tuple(sections), tuple(lanes))
-    _INDEX[ctx] = found
-    return found
+    return LanesXml(tuple(sections), tuple(lanes))
 
 
 def by_section(ctx: Context) -> Iterator[list[LaneXml]]:

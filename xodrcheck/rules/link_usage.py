@@ -56,6 +56,7 @@ def _main_roads(ctx: Context) -> dict[str, str]:
     Category.LINK,
     Severity.ERROR,
     uids=_USAGE,
+    xml=True,
 )
 def link_attribute_usage(ctx: Context):
     """A road's ``<predecessor>`` or ``<successor>`` does not use the attribute set of what it links to.

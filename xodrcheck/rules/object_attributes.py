@@ -46,7 +46,7 @@ def at(ctx: Context, obj: RoadObject | ObjectReference, line: int | None = None)
     return where
 
 
-@rule("B001", "object-type-missing", Category.OBJECT, Severity.ERROR, uids=(U.TYPE_ATTR,))
+@rule("B001", "object-type-missing", Category.OBJECT, Severity.ERROR, uids=(U.TYPE_ATTR,), xml=True)
 def object_type_missing(ctx: Context):
     """An ``<object>`` has no ``type``.
 
@@ -70,7 +70,7 @@ def object_type_missing(ctx: Context):
             )
 
 
-@rule("B002", "object-orientation-missing", Category.OBJECT, Severity.ERROR, uids=(U.ORIENTATION,))
+@rule("B002", "object-orientation-missing", Category.OBJECT, Severity.ERROR, uids=(U.ORIENTATION,), xml=True)
 def object_orientation_missing(ctx: Context):
     """An ``<object>`` does not say for which direction of travel it is valid.
 
@@ -96,7 +96,7 @@ def object_orientation_missing(ctx: Context):
         )
 
 
-@rule("B003", "object-off-road", Category.OBJECT, Severity.ERROR, uids=(U.S_T_COORDS,))
+@rule("B003", "object-off-road", Category.OBJECT, Severity.ERROR, uids=(U.S_T_COORDS,), xml=True)
 def object_off_road(ctx: Context):
     """An object's origin is not a place on its road: ``s`` or ``t`` is missing, or ``s`` lies before the road's start
     or past its end.
@@ -132,7 +132,7 @@ def object_off_road(ctx: Context):
             )
 
 
-@rule("B004", "object-shape-ambiguous", Category.OBJECT, Severity.ERROR, uids=(U.CIRCULAR_VS_ANGULAR,))
+@rule("B004", "object-shape-ambiguous", Category.OBJECT, Severity.ERROR, uids=(U.CIRCULAR_VS_ANGULAR,), xml=True)
 def object_shape_ambiguous(ctx: Context):
     """An object's bounding volume is both circular and angular, or only half of an angular one.
 
@@ -180,7 +180,7 @@ def _validities(ctx: Context) -> Iterator[tuple[str, str, str | None, float | No
                 yield structure.kind, structure.road, structure.id, structure.s, v
 
 
-@rule("B005", "validity-lanes-reversed", Category.OBJECT, Severity.ERROR, uids=tuple(_FROM_TO.values()))
+@rule("B005", "validity-lanes-reversed", Category.OBJECT, Severity.ERROR, uids=tuple(_FROM_TO.values()), xml=True)
 def validity_lanes_reversed(ctx: Context):
     """A ``<validity>`` of an object, object reference, tunnel or bridge has ``fromLane`` greater than ``toLane``.
 
@@ -232,6 +232,7 @@ def _oriented(ctx: Context) -> Iterator[RoadObject | ObjectReference]:
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.VALIDITY_PARENT_ORIENTATION, U.VALIDITY_RHT, U.VALIDITY_LHT),
+    xml=True,
 )
 def validity_against_orientation(ctx: Context):
     """An object's (or object reference's) validity lanes carry another direction of travel than its orientation.
@@ -296,7 +297,7 @@ def _structures(ctx: Context) -> Iterator[Structure]:
         yield from found.structures
 
 
-@rule("B007", "structure-type-missing", Category.OBJECT, Severity.ERROR, uids=tuple(_TYPE_UID.values()))
+@rule("B007", "structure-type-missing", Category.OBJECT, Severity.ERROR, uids=tuple(_TYPE_UID.values()), xml=True)
 def structure_type_missing(ctx: Context):
     """A ``<tunnel>`` or ``<bridge>`` has no ``type``.
 

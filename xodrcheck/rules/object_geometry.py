@@ -119,7 +119,7 @@ def _outside_text(volume: Volume, points: Points, k: int, excess: float) -> str:
     )
 
 
-@rule("B018", "outline-outside-volume", Category.OBJECT, Severity.ERROR, uids=(U.OUTLINE_INSIDE_BOX,))
+@rule("B018", "outline-outside-volume", Category.OBJECT, Severity.ERROR, uids=(U.OUTLINE_INSIDE_BOX,), xml=True)
 def outline_outside_volume(ctx: Context):
     """A point of an object's outline lies outside the object's bounding volume.
 
@@ -241,6 +241,7 @@ def _boundary_outside(volume: Volume, points: np.ndarray, vertices: tuple[Vertex
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.SKELETON_INSIDE_BOX, U.SKELETON_BOUNDARY_INSIDE_BOX),
+    xml=True,
 )
 def skeleton_outside_volume(ctx: Context):
     """A point of an object's skeleton lies outside the object's bounding volume, or its cross-section does not reach
@@ -339,7 +340,7 @@ def _loose_touch(own: np.ndarray, lines: tuple[int, ...], other: tuple[np.ndarra
     return None
 
 
-@rule("B019", "inner-outline-touch", Category.OBJECT, Severity.ERROR, uids=(U.INNER_TOUCHES_OUTER,))
+@rule("B019", "inner-outline-touch", Category.OBJECT, Severity.ERROR, uids=(U.INNER_TOUCHES_OUTER,), xml=True)
 def inner_outline_touch(ctx: Context):
     """An inner outline touches the outer outline at a point only one of them has, or lies outside it.
 

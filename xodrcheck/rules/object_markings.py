@@ -45,6 +45,7 @@ def referenced_outline(obj: RoadObject, outline: Outline | None, marking: Markin
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.MARKING_COLOUR, U.OBJECT_MARKING_COLOUR),
+    xml=True,
 )
 def marking_colour_missing(ctx: Context):
     """An object's ``<marking>`` has no ``color``.
@@ -77,6 +78,7 @@ def marking_colour_missing(ctx: Context):
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.MARKINGS_WITH_OUTLINE, U.MARKINGS_WITHOUT_OUTLINE, U.MARKING_ON_OUTLINE),
+    xml=True,
 )
 def marking_placement(ctx: Context):
     """An object's markings are not where OpenDRIVE 1.9 puts them, or not on one of its outlines.
@@ -150,6 +152,7 @@ def _not_on_outline(obj: RoadObject, outline: Outline | None, marking: Marking) 
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.NO_REFERENCE_WITHOUT_OUTLINE, U.SIDE_WITHOUT_OUTLINE),
+    xml=True,
 )
 def marking_without_outline(ctx: Context):
     """A marking of an object without outline names outline points, or no side of the bounding volume.
@@ -215,6 +218,7 @@ def _order_problem(positions: list[int], n: int, closed: bool) -> str | None:
     Category.OBJECT,
     Severity.ERROR,
     uids=(*_COUNT_UIDS, U.KEEP_ID_ORDERED, U.ENCLOSED_OUTLINE_MARKING),
+    xml=True,
 )
 def marking_corner_references(ctx: Context):
     """A marking names fewer than two outline points, names them out of the outline's order, or repeats one.

@@ -37,6 +37,7 @@ def name_of(outline: Outline) -> str:
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.ROAD_LOCAL_EXCLUSIVITY, U.LOCAL_NO_MIXING),
+    xml=True,
 )
 def outline_corners_mixed(ctx: Context):
     """An ``<outline>`` mixes ``<cornerRoad>``, ``<cornerLocal>`` and ``<curveLocal>`` elements.
@@ -85,6 +86,7 @@ _MIN_UID = {CORNER_ROAD: U.ROAD_MIN_AMOUNT, CORNER_LOCAL: U.LOCAL_MIN_AMOUNT}
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.OUTLINE_FOLLOWED_BY_CORNER, U.ROAD_MIN_AMOUNT, U.LOCAL_MIN_AMOUNT),
+    xml=True,
 )
 def outline_too_few_corners(ctx: Context):
     """An ``<outline>`` has fewer than two corners of its kind (or no corner or curve at all).
@@ -140,6 +142,7 @@ _SEQUENCE_UID = {CORNER_ROAD: U.ROAD_SEQUENTIAL_IDS, CORNER_LOCAL: U.LOCAL_SEQUE
     Category.OBJECT,
     Severity.WARNING,
     uids=(*_FIRST_UID.values(), *_SEQUENCE_UID.values()),
+    xml=True,
 )
 def outline_corner_ids(ctx: Context):
     """The corner ids of an outline do not count 0, 1, 2, ... in the order the corners are listed.
@@ -185,7 +188,7 @@ def outline_corner_ids(ctx: Context):
 _ID_UID = {CORNER_ROAD: U.ROAD_ID_WITH_MARKINGS, CORNER_LOCAL: U.LOCAL_ID_WITH_MARKINGS}
 
 
-@rule("B013", "outline-corner-id-missing", Category.OBJECT, Severity.ERROR, uids=tuple(_ID_UID.values()))
+@rule("B013", "outline-corner-id-missing", Category.OBJECT, Severity.ERROR, uids=tuple(_ID_UID.values()), xml=True)
 def outline_corner_id_missing(ctx: Context):
     """A corner of an outline that has ``<markings>`` has no ``id``.
 
@@ -225,6 +228,7 @@ def outline_corner_id_missing(ctx: Context):
     Severity.ERROR,
     uids=(U.BORDERS_DIFFERENT_OUTLINE_IDS,),
     every_version=True,
+    xml=True,
 )
 def outline_id_duplicate(ctx: Context):
     """Two outlines of one object have the same ``id``.
@@ -256,7 +260,7 @@ def outline_id_duplicate(ctx: Context):
                 )
 
 
-@rule("B015", "border-outline-missing", Category.OBJECT, Severity.ERROR)
+@rule("B015", "border-outline-missing", Category.OBJECT, Severity.ERROR, xml=True)
 def border_outline_missing(ctx: Context):
     """A ``<border>`` names an outline its object does not have.
 
@@ -285,7 +289,7 @@ def border_outline_missing(ctx: Context):
             )
 
 
-@rule("B016", "border-corner-references", Category.OBJECT, Severity.ERROR, uids=(U.BORDERS_COMPLETE_OUTLINE,))
+@rule("B016", "border-corner-references", Category.OBJECT, Severity.ERROR, uids=(U.BORDERS_COMPLETE_OUTLINE,), xml=True)
 def border_corner_references(ctx: Context):
     """A ``<border>``'s corner references do not match its ``useCompleteOutline``.
 
@@ -334,7 +338,7 @@ def border_corner_references(ctx: Context):
                     )
 
 
-@rule("B017", "outline-outer-count", Category.OBJECT, Severity.ERROR, uids=(U.EXACTLY_ONE_OUTER,))
+@rule("B017", "outline-outer-count", Category.OBJECT, Severity.ERROR, uids=(U.EXACTLY_ONE_OUTER,), xml=True)
 def outline_outer_count(ctx: Context):
     """An ``<outlines>`` element has no outer outline, or more than one.
 

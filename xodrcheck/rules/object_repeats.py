@@ -12,7 +12,7 @@ from xodrcheck.rules.object_attributes import all_objects, at, label
 from xodrcheck.rules.registry import rule
 
 
-@rule("B040", "repeat-beyond-road", Category.OBJECT, Severity.ERROR, uids=(U.REPEAT_VALID_S_LENGTH,))
+@rule("B040", "repeat-beyond-road", Category.OBJECT, Severity.ERROR, uids=(U.REPEAT_VALID_S_LENGTH,), xml=True)
 def repeat_beyond_road(ctx: Context):
     """A ``<repeat>`` starts before its road or runs past its end.
 
@@ -83,6 +83,7 @@ _FIELD = {a: f"{n}_{'start' if a.endswith('Start') else 'end'}" for n, *pair in 
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.REPEAT_SIZE_WITH_SHAPE, U.REPEAT_WIDTH_WITH_RADIUS),
+    xml=True,
 )
 def repeat_size_overridden(ctx: Context):
     """A ``<repeat>`` changes a size the object's shape does not let it change.
@@ -128,7 +129,7 @@ def repeat_size_overridden(ctx: Context):
                 )
 
 
-@rule("B042", "repeat-outline-road-corners", Category.OBJECT, Severity.ERROR, uids=(U.REPEAT_OUTLINE_LOCAL,))
+@rule("B042", "repeat-outline-road-corners", Category.OBJECT, Severity.ERROR, uids=(U.REPEAT_OUTLINE_LOCAL,), xml=True)
 def repeat_outline_road_corners(ctx: Context):
     """A repeated object has an outline of ``<cornerRoad>`` points.
 

@@ -35,6 +35,7 @@ def polyline_name(polyline: Polyline) -> str:
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.VERTEX_ROAD_NO_MIXING, U.VERTEX_LOCAL_NO_MIXING),
+    xml=True,
 )
 def skeleton_vertices_mixed(ctx: Context):
     """A skeleton ``<polyline>`` mixes ``<vertexRoad>`` and ``<vertexLocal>`` points.
@@ -78,6 +79,7 @@ _MIN_UID = {VERTEX_ROAD: U.VERTEX_ROAD_MIN_AMOUNT, VERTEX_LOCAL: U.VERTEX_LOCAL_
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.SKELETON_FOLLOWED_BY_VERTEX, *_MIN_UID.values()),
+    xml=True,
 )
 def skeleton_too_few_vertices(ctx: Context):
     """A skeleton ``<polyline>`` has fewer than two points of its kind.
@@ -135,6 +137,7 @@ def _size(v: Vertex) -> str:
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.SKELETON_RADIUS_OR_WIDTH_LENGTH, *_SIZE_UID.values()),
+    xml=True,
 )
 def skeleton_vertex_size(ctx: Context):
     """The points of a skeleton polyline do not all give their cross-section the same way.
@@ -196,7 +199,14 @@ def _same_place(a: Vertex, b: Vertex, tol: float) -> bool:
     return math.dist(pa, pb) <= tol
 
 
-@rule("B033", "skeleton-segment-degenerate", Category.OBJECT, Severity.INFO, uids=(U.SKELETON_POINTS_REQUIREMENTS,))
+@rule(
+    "B033",
+    "skeleton-segment-degenerate",
+    Category.OBJECT,
+    Severity.INFO,
+    uids=(U.SKELETON_POINTS_REQUIREMENTS,),
+    xml=True,
+)
 def skeleton_segment_degenerate(ctx: Context):
     """Two successive points of a skeleton polyline are at the same place: the segment between them has no
     direction.

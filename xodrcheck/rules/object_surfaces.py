@@ -35,7 +35,7 @@ def surface_objects(ctx: Context) -> Iterator[RoadObject]:
             yield obj
 
 
-@rule("B050", "surface-object-shape", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_ANGULAR_ONLY,))
+@rule("B050", "surface-object-shape", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_ANGULAR_ONLY,), xml=True)
 def surface_object_shape(ctx: Context):
     """An object with a ``<surface>`` is not an angular box: it is circular, has outlines, or has no box at all.
 
@@ -69,7 +69,7 @@ def surface_object_shape(ctx: Context):
         )
 
 
-@rule("B051", "surface-crg-count", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_ONE_CRG,))
+@rule("B051", "surface-crg-count", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_ONE_CRG,), xml=True)
 def surface_crg_count(ctx: Context):
     """An object references more than one CRG file.
 
@@ -96,7 +96,14 @@ def surface_crg_count(ctx: Context):
             )
 
 
-@rule("B052", "surface-repeated-continuously", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_DISCRETE_REPEAT,))
+@rule(
+    "B052",
+    "surface-repeated-continuously",
+    Category.OBJECT,
+    Severity.ERROR,
+    uids=(U.SURFACE_DISCRETE_REPEAT,),
+    xml=True,
+)
 def surface_repeated_continuously(ctx: Context):
     """An object with a ``<surface>`` is repeated continuously (``distance="0"``).
 
@@ -206,7 +213,7 @@ def _inner_radius(volume: Volume | None) -> float:
     return volume.radius if volume.radius is not None else min(volume.length, volume.width) / 2
 
 
-@rule("B053", "surface-volumes-overlap", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_NO_BOX_OVERLAP,))
+@rule("B053", "surface-volumes-overlap", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_NO_BOX_OVERLAP,), xml=True)
 def surface_volumes_overlap(ctx: Context):
     """The bounding volumes of two objects with a ``<surface>`` overlap.
 
@@ -289,6 +296,7 @@ def _crossed_roads(ctx: Context, box: Box, wanted: Callable[[str], bool] | None 
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.SURFACE_REFERENCE_ON_OVERLAP,),
+    xml=True,
 )
 def surface_object_not_referenced(ctx: Context):
     """An object with a ``<surface>`` lies over the lanes of a road that does not reference it.
@@ -372,6 +380,7 @@ def _road_crgs(ctx: Context) -> dict[str, list[RoadCrg]]:
         U.SURFACE_HIDE_ROAD_CRG: "the road CRG's extent across the road is in the CRG file, which is not read: its "
         "area is taken as the road's lanes from sStart to sEnd"
     },
+    xml=True,
 )
 def surface_hides_road_crg(ctx: Context):
     """An object's CRG hides a road surface CRG that is not ``attached``.
@@ -433,7 +442,7 @@ def surface_hides_road_crg(ctx: Context):
             )
 
 
-@rule("B056", "perp-to-road-skewed", Category.OBJECT, Severity.WARNING, uids=(U.SURFACE_SKEWED_CRG,))
+@rule("B056", "perp-to-road-skewed", Category.OBJECT, Severity.WARNING, uids=(U.SURFACE_SKEWED_CRG,), xml=True)
 def perp_to_road_skewed(ctx: Context):
     """An object set perpendicular to the road (``perpToRoad="true"``) is not small against the curvature of the
     road's elevation there.

@@ -76,6 +76,7 @@ def _gap(a: CurveLocal, b: CurveLocal, tol: float) -> tuple[float, float, float]
     Category.GEOMETRY,
     Severity.ERROR,
     uids=(U.CURVE_LOCAL_CONTINUOUS,),
+    xml=True,
 )
 def curve_outline_discontinuous(ctx: Context):
     """A ``<curveLocal>`` of an object outline does not start where the previous one ends.
@@ -116,7 +117,7 @@ def curve_outline_discontinuous(ctx: Context):
             )
 
 
-@rule("G061", "outline-empty", Category.GEOMETRY, Severity.ERROR, uids=(U.CURVE_LOCAL_MIN_AMOUNT,))
+@rule("G061", "outline-empty", Category.GEOMETRY, Severity.ERROR, uids=(U.CURVE_LOCAL_MIN_AMOUNT,), xml=True)
 def outline_empty(ctx: Context):
     """An object's ``<outline>`` holds no ``<cornerRoad>``, ``<cornerLocal>`` or ``<curveLocal>``: it has no shape.
 
@@ -154,7 +155,7 @@ _CURVE_UIDS = (U.CURVE_LOCAL_ARC_LENGTH_RANGE, U.CURVE_LOCAL_NORMALIZED_RANGE, U
 _CURVE_UID = dict(zip(("arcLength_range", "normalized_range", "length_match"), _CURVE_UIDS, strict=True))
 
 
-@rule("G062", "curve-local-length-mismatch", Category.GEOMETRY, Severity.ERROR, uids=_CURVE_UIDS)
+@rule("G062", "curve-local-length-mismatch", Category.GEOMETRY, Severity.ERROR, uids=_CURVE_UIDS, xml=True)
 def curve_local_length_mismatch(ctx: Context):
     """A ``<curveLocal>``'s paramPoly3 is not as long as the curve's ``length`` over its parameter range.
 

@@ -103,6 +103,7 @@ def _stations(ctx: Context) -> Iterator[etree._Element]:
     Category.RAILROAD,
     Severity.ERROR,
     uids=(U.PLATFORMS_MIN_AMOUNT, U.ONE_PLATFORM_PER_STATION, U.PLATFORMS_MIN_SEGMENTS, U.SEGMENTS_PER_PLATFORM),
+    xml=True,
 )
 def station_without_platform(ctx: Context):
     """A ``<station>`` has no ``<platform>``, or a ``<platform>`` has no ``<segment>``.
@@ -164,6 +165,7 @@ def _track(switch: etree._Element, kind: str) -> str | None:
     Category.RAILROAD,
     Severity.ERROR,
     uids=(U.SWITCH_CONNECTION, U.SINGLE_SWITCH_NO_PARTNER),
+    xml=True,
 )
 def switch_topology(ctx: Context):
     """Switches are connected through a main track, or a single switch names a partner.

@@ -49,6 +49,7 @@ def _redundant(profile: Profile) -> list[tuple[Cubic, Cubic]]:
     Severity.INFO,
     uids=(U.AVOID_REDUNDANT_INFO,),
     every_version=True,
+    xml=True,
 )
 def redundant_record(ctx: Context):
     """A record repeats what the previous one already says.

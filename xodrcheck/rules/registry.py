@@ -47,6 +47,9 @@ class Rule:
     partial: Mapping[str, str] = field(default_factory=lambda: MappingProxyType({}))
     #: Run on files older than the rule's UIDs too (without claiming the UIDs there).
     every_version: bool = False
+    #: Reads the file's XML (``ctx.tree`` or a view built from it: objects, signals, lane or junction elements). Such
+    #: rules run first; the tree is then dropped before the geometry rules (:meth:`Context.release_tree`).
+    xml: bool = False
 
     @property
     def summary(self) -> str:
@@ -134,11 +137,13 @@ def rule(
     uids: Iterable[str] = (),
     partial: Mapping[str, str] | None = None,
     every_version: bool = False,
+    xml: bool = False,
 ) -> Callable[[CheckFn], Rule]:
     """Decorator registering a check function as a rule; its docstring is the rule's documentation.
 
     ``uids`` are the Annex F rules it enforces; ``partial`` maps those it enforces only in part to what it leaves out
-    (they are enforced UIDs too); ``every_version`` keeps it running on files older than its UIDs.
+    (they are enforced UIDs too); ``every_version`` keeps it running on files older than its UIDs; ``xml`` declares
+    that it reads the XML tree (``ctx.tree``, directly or through a view of it): it runs before the tree is dropped.
     """
 
     def wrap(fn: CheckFn) -> Rule:
@@ -153,6 +158,7 @@ def rule(
                 _uids(uids, partial),
                 MappingProxyType(dict(partial or {})),
                 every_version,
+                xml,
             )
         )
 

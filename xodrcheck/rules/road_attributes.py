@@ -24,7 +24,7 @@ from xodrcheck.rules.sampled import section_lines, usable
 _ALPHA_2 = re.compile(r"[A-Z]{2}")
 
 
-@rule("G052", "road-type-out-of-order", Category.GEOMETRY, Severity.ERROR, uids=(U.TYPE_ORDER,))
+@rule("G052", "road-type-out-of-order", Category.GEOMETRY, Severity.ERROR, uids=(U.TYPE_ORDER,), xml=True)
 def road_type_out_of_order(ctx: Context):
     """A road's ``<type>`` records are not in ascending order of ``s``.
 
@@ -53,7 +53,7 @@ def road_type_out_of_order(ctx: Context):
                 break
 
 
-@rule("G053", "country-code-not-alpha2", Category.GEOMETRY, Severity.ERROR, uids=(U.TYPE_ALPHA_2,))
+@rule("G053", "country-code-not-alpha2", Category.GEOMETRY, Severity.ERROR, uids=(U.TYPE_ALPHA_2,), xml=True)
 def country_code_not_alpha2(ctx: Context):
     """A ``country`` attribute is not an ISO 3166-1 ALPHA-2 code (two capital letters).
 
@@ -96,7 +96,7 @@ def _what_code(code: str) -> str:
     return "not a country code" if code.strip() else "empty"
 
 
-@rule("G054", "shape-out-of-order", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPE_ORDER,))
+@rule("G054", "shape-out-of-order", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPE_ORDER,), xml=True)
 def shape_out_of_order(ctx: Context):
     """A road's ``<shape>`` records are not in ascending order, first of ``s``, then of ``t``.
 
@@ -156,7 +156,7 @@ def _right_edge(ctx: Context, road: Road) -> tuple[float, float] | None:
     return best
 
 
-@rule("G055", "shape-t-coverage", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPE_T_COVERAGE,))
+@rule("G055", "shape-t-coverage", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPE_T_COVERAGE,), xml=True)
 def shape_t_coverage(ctx: Context):
     """The ``<shape>`` records at some ``s`` do not cover the road's full width: the first starts left of the road's
     right edge.
@@ -202,7 +202,7 @@ def shape_t_coverage(ctx: Context):
                 )
 
 
-@rule("G056", "shapes-start-left", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPES_START_RIGHT,))
+@rule("G056", "shapes-start-left", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPES_START_RIGHT,), xml=True)
 def shapes_start_left(ctx: Context):
     """The ``<shape>`` records at some ``s`` do not start at the right side of the road: the first ``t`` is not
     negative.

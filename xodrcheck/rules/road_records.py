@@ -7,8 +7,6 @@ the tree.
 
 from __future__ import annotations
 
-import weakref
-
 from xodrcheck.classcache import dataclass
 from xodrcheck.rules.context import Context
 from xodrcheck.xmlvalues import number
@@ -50,16 +48,9 @@ class RoadRecords:
     shapes: tuple[Shape, ...]
 
 
-_CACHE: weakref.WeakKeyDictionary[Context, tuple[RoadRecords, ...]] = weakref.WeakKeyDictionary()
-
-
 def road_records(ctx: Context) -> tuple[RoadRecords, ...]:
     """Every ``<road>``'s types and shapes (roads without an id are left out; the reader reports them)."""
-    found = _CACHE.get(ctx)
-    if found is None:
-        found = tuple(_build(ctx))
-        _CACHE[ctx] = found
-    return found
+    return ctx.xml_view("road_records", lambda: tuple(_build(ctx)))
 
 
 def _build(ctx: Context):

@@ -11,7 +11,7 @@ from xodrcheck.rules.registry import rule
 MAX_REPORTED = 200
 
 
-@rule("S001", "schema-invalid", Category.SCHEMA, Severity.ERROR)
+@rule("S001", "schema-invalid", Category.SCHEMA, Severity.ERROR, xml=True)
 def schema_invalid(ctx: Context):
     """The file does not validate against the XSD of the OpenDRIVE version its header declares.
 
@@ -48,7 +48,7 @@ def schema_invalid(ctx: Context):
         )
 
 
-@rule("S002", "schema-not-validated", Category.SCHEMA, Severity.INFO)
+@rule("S002", "schema-not-validated", Category.SCHEMA, Severity.INFO, xml=True)
 def schema_not_validated(ctx: Context):
     """The file could not be validated: its header declares no OpenDRIVE version that has a schema (1.1 to 1.9).
 

@@ -34,6 +34,7 @@ def _blank(value: str | None) -> bool:
         U.SIGNAL_TYPE: "whether the type and subtype name a sign of the country's catalogue is not checked (the "
         "catalogues are outside the file)"
     },
+    xml=True,
 )
 def signal_type_unspecified(ctx: Context):
     """A signal (or a sign on a static board) has no ``type`` or no ``subtype``, or an empty one.
@@ -68,7 +69,7 @@ def signal_type_unspecified(ctx: Context):
                 )
 
 
-@rule("T002", "signal-country-missing", Category.SIGNAL, Severity.ERROR, uids=(U.SIGNAL_COUNTRY,))
+@rule("T002", "signal-country-missing", Category.SIGNAL, Severity.ERROR, uids=(U.SIGNAL_COUNTRY,), xml=True)
 def signal_country_missing(ctx: Context):
     """A signal (or a sign on a static board) has no ``country``.
 
@@ -134,6 +135,7 @@ def _board_problems(signal: Signal) -> Iterator[tuple[str, str]]:
     Category.SIGNAL,
     Severity.ERROR,
     uids=(U.MULTI_BOARD_TYPE, U.STATIC_BOARD_TYPE, U.MULTI_BOARD_SUB_BOARDS, U.MULTI_BOARD_DYNAMIC),
+    xml=True,
 )
 def signal_board_type(ctx: Context):
     """A signal board's ``type`` or ``dynamic`` does not match its boards (14.7).
@@ -158,7 +160,7 @@ def signal_board_type(ctx: Context):
             yield signal_board_type.finding(f"signal {signal.id!r} {why}", uid=uid, road=signal.road, line=signal.line)
 
 
-@rule("T004", "static-board-single-sign", Category.SIGNAL, Severity.ERROR, uids=(U.STATIC_BOARD_SINGLE,))
+@rule("T004", "static-board-single-sign", Category.SIGNAL, Severity.ERROR, uids=(U.STATIC_BOARD_SINGLE,), xml=True)
 def static_board_single_sign(ctx: Context):
     """A static board carries a single sign (or none).
 
@@ -198,6 +200,7 @@ def static_board_single_sign(ctx: Context):
         U.SEMANTICS_CATEGORY: "whether the categories given fit the sign's traffic behaviour is not checked (that "
         "needs the country's sign catalogue); only semantics without any category are found"
     },
+    xml=True,
 )
 def signal_semantics_empty(ctx: Context):
     """A signal's (or sign's) ``<semantics>`` names no traffic behaviour.
@@ -227,7 +230,7 @@ def signal_semantics_empty(ctx: Context):
                 )
 
 
-@rule("T006", "controller-without-signals", Category.SIGNAL, Severity.ERROR, uids=(U.CONTROLLER_SIGNALS,))
+@rule("T006", "controller-without-signals", Category.SIGNAL, Severity.ERROR, uids=(U.CONTROLLER_SIGNALS,), xml=True)
 def controller_without_signals(ctx: Context):
     """A ``<controller>`` controls no signal of the file.
 
@@ -272,6 +275,7 @@ def controller_without_signals(ctx: Context):
         U.GANTRY_VMS_GROUP: "whether every gantry has one <vmsGroup> is vms-boards-gantry's (T008), as far as the "
         "boards' positions tell"
     },
+    xml=True,
 )
 def vms_group_without_boards(ctx: Context):
     """A ``<vmsGroup>`` references no variable message board.

@@ -238,7 +238,7 @@ def _lights(placed: list[Placement]) -> str:
     return " and ".join([placed[0].describe(), *others]) + (" release" if others else " releases")
 
 
-@rule("V001", "conflicting-signals-same-controller", Category.SIGNAL_CONTROL, Severity.WARNING)
+@rule("V001", "conflicting-signals-same-controller", Category.SIGNAL_CONTROL, Severity.WARNING, xml=True)
 def conflicting_signals_same_controller(ctx: Context):
     """Two traffic lights of one controller release junction movements that cross: they always show green together.
 

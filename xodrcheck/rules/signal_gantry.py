@@ -73,6 +73,7 @@ def _gantry_of(boxes, x: float, y: float) -> str | None:
     Category.SIGNAL,
     Severity.ERROR,
     partial={U.GANTRY_SAME: _LEFT_OUT, U.GANTRY_VMS_GROUP: _LEFT_OUT},
+    xml=True,
 )
 def vms_boards_gantry(ctx: Context):
     """A ``<vmsGroup>`` lists boards of different gantries, or a gantry's boards are not in exactly one group.

@@ -56,6 +56,7 @@ def _direction_problem(orientation: str | None, rht: bool, negative: bool, posit
     Category.SIGNAL,
     Severity.ERROR,
     uids=(U.VALIDITY_RHT, U.VALIDITY_LHT, U.REFERENCE_RHT, U.REFERENCE_LHT),
+    xml=True,
 )
 def signal_validity_direction(ctx: Context):
     """A signal's (or signal reference's) lane validity lies on the side its ``orientation`` does not apply to.
@@ -97,7 +98,7 @@ def signal_validity_direction(ctx: Context):
         )
 
 
-@rule("T011", "signal-reference-lane-order", Category.SIGNAL, Severity.ERROR, uids=(U.REFERENCE_LANE_ORDER,))
+@rule("T011", "signal-reference-lane-order", Category.SIGNAL, Severity.ERROR, uids=(U.REFERENCE_LANE_ORDER,), xml=True)
 def signal_reference_lane_order(ctx: Context):
     """A signal reference's ``<validity>`` has ``fromLane`` greater than ``toLane``.
 
@@ -125,7 +126,7 @@ def signal_reference_lane_order(ctx: Context):
                 )
 
 
-@rule("T012", "signal-reference-orientation", Category.SIGNAL, Severity.ERROR, uids=(U.REFERENCE_DIRECTION,))
+@rule("T012", "signal-reference-orientation", Category.SIGNAL, Severity.ERROR, uids=(U.REFERENCE_DIRECTION,), xml=True)
 def signal_reference_orientation(ctx: Context):
     """A ``<signalReference>`` does not say the direction it applies to.
 
@@ -153,7 +154,9 @@ def signal_reference_orientation(ctx: Context):
             )
 
 
-@rule("T013", "signal-reference-not-signal", Category.SIGNAL, Severity.ERROR, uids=(U.REFERENCE_SIGNALS_ONLY,))
+@rule(
+    "T013", "signal-reference-not-signal", Category.SIGNAL, Severity.ERROR, uids=(U.REFERENCE_SIGNALS_ONLY,), xml=True
+)
 def signal_reference_not_signal(ctx: Context):
     """A ``<signalReference>`` names an object (or another element that is not a signal).
 

@@ -67,6 +67,7 @@ def _crg_problems(crg: etree._Element) -> Iterator[tuple[str, str]]:
     Category.SURFACE,
     Severity.ERROR,
     uids=(U.CRG_ATTACH_FRICTION, U.CRG_FRICTION_Z, U.CRG_H_OFFSET, U.CRG_NO_OPPOSITE, U.CRG_ST_OFFSET_GLOBAL),
+    xml=True,
 )
 def crg_attribute_for_mode(ctx: Context):
     """A ``<CRG>`` uses an attribute its mode or purpose does not allow.
@@ -96,7 +97,7 @@ def crg_attribute_for_mode(ctx: Context):
                 )
 
 
-@rule("U002", "crg-junction-and-connecting-road", Category.SURFACE, Severity.ERROR, uids=(U.CRG_JUNCTION,))
+@rule("U002", "crg-junction-and-connecting-road", Category.SURFACE, Severity.ERROR, uids=(U.CRG_JUNCTION,), xml=True)
 def crg_junction_and_connecting_road(ctx: Context):
     """A junction and one of its connecting roads both have ``<CRG>`` data.
 
@@ -127,7 +128,7 @@ def crg_junction_and_connecting_road(ctx: Context):
         )
 
 
-@rule("U003", "crg-overlap", Category.SURFACE, Severity.WARNING, uids=(U.CRG_ONE_PER_S,))
+@rule("U003", "crg-overlap", Category.SURFACE, Severity.WARNING, uids=(U.CRG_ONE_PER_S,), xml=True)
 def crg_overlap(ctx: Context):
     """Two ``<CRG>`` entries of one road or junction with the same purpose overlap in ``s``.
 
@@ -178,6 +179,7 @@ def _surfaces(ctx: Context) -> Iterator[tuple[etree._Element, etree._Element]]:
     Category.SURFACE,
     Severity.ERROR,
     uids=(U.SURFACE_NO_SHAPE,),
+    xml=True,
 )
 def cross_section_surface_with_shape(ctx: Context):
     """A road has a cross section surface and also ``<shape>`` or ``<superelevation>`` records.
@@ -213,6 +215,7 @@ def cross_section_surface_with_shape(ctx: Context):
     Category.SURFACE,
     Severity.ERROR,
     uids=(U.SURFACE_START_END,),
+    xml=True,
 )
 def cross_section_surface_extent(ctx: Context):
     """A cross section surface's polynomials do not start at the road's start, or start beyond its end.
@@ -267,6 +270,7 @@ def cross_section_surface_extent(ctx: Context):
     Category.SURFACE,
     Severity.ERROR,
     uids=(U.SURFACE_USE_STRIP, U.SURFACE_USE_WIDTH),
+    xml=True,
 )
 def cross_section_surface_strips(ctx: Context):
     """A side of a cross section surface uses its strips wrongly.

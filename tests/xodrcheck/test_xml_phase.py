@@ -1,0 +1,78 @@
+"""The XML rules run first; then the file's XML tree is dropped before the geometry rules (issue 18: a 51 MB map's
+tree is ~750 MB, and it lay under every geometry cache). Every rule that reads the tree declares ``xml=True``."""
+
+from __future__ import annotations
+
+import gc
+from pathlib import Path
+
+import numpy as np
+import pytest
+from lxml import etree
+
+from tests.conftest import corpus_root
+from xodrcheck.check import Selection, run_rules
+from xodrcheck.reader import read
+from xodrcheck.rules import load_rules
+from xodrcheck.rules.context import Context, TreeReleased
+
+FIXTURES = Path(__file__).parent / "rules" / "fixtures"
+#: A small corpus map with junctions, signals, controllers and objects: it exercises every view of the tree.
+MAP = "esmini/resources/xodr/fabriksgatan_traffic_lights.xodr"
+
+
+def _context(path: Path) -> Context:
+    data = path.read_bytes()
+    document = read(data).document
+    assert document is not None
+    return Context(document, path=str(path), data=data)
+
+
+def _opendrive_elements() -> int:
+    """Live lxml elements of an OpenDRIVE document (the tree or any view holding its elements)."""
+    gc.collect()
+    return sum(
+        1
+        for o in gc.get_objects()
+        if isinstance(o, etree._Element) and str(o.getroottree().getroot().tag).endswith("OpenDRIVE")
+    )
+
+
+def test_the_tree_is_gone_after_the_xml_rules_and_the_findings_are_unchanged():
+    path = corpus_root() / MAP
+    ctx = _context(path)
+    assert ctx.tree is not None and _opendrive_elements() > 0
+    with np.errstate(all="ignore"):
+        findings, ran = run_rules(ctx, Selection())
+    assert _opendrive_elements() == 0  # nothing holds the tree or an element of it
+    with pytest.raises(TreeReleased, match="xml=True"):
+        _ = ctx.tree
+    assert not [f for f in findings if f.code.startswith("X9")], findings  # no rule read the tree too late
+    # the same rules, each alone in registry order on a context that keeps its tree: the same findings
+    rules = load_rules()
+    assert ran == [code for code in rules if code in set(ran)]
+    kept = _context(path)
+    with np.errstate(all="ignore"):
+        alone = [f for code in ran for f in rules[code].check(kept)]
+    assert sorted(map(repr, findings)) == sorted(map(repr, alone))
+    assert {"S001", "R020", "L023"} <= set(ran) and sum(rules[code].xml for code in ran) > 20
+
+
+@pytest.mark.parametrize("path", sorted(FIXTURES.rglob("*.xodr")), ids=lambda p: f"{p.parent.name}/{p.name}")
+def test_only_rules_declared_xml_read_the_tree(path: Path):
+    """Every other rule runs on a context whose tree is already dropped: reading it (or a view of it) raises."""
+    data = path.read_bytes()
+    document = read(data).document
+    if document is None:
+        return  # an unreadable fixture: the reader's findings only, no rule runs
+    ctx = Context(document, path=str(path), data=data)
+    ctx.release_tree()
+    with np.errstate(all="ignore"):
+        for rule in load_rules().values():
+            if rule.check is not None and not rule.xml and rule.runs_on(ctx.version):
+                try:
+                    list(rule.check(ctx))
+                except TreeReleased:  # pragma: no cover - the failure this test looks for
+                    pytest.fail(f"rule {rule.code} reads the XML tree without declaring xml=True")
+                except Exception:
+                    pass  # a crash of its own is another test's business (the runner reports it as X900)
