@@ -146,6 +146,13 @@ OPTIONS = [
     ),
     ("--country", "country", str, "country whose sign catalogue the signs come from"),
     ("--terrain", "terrain", str, "flat, rolling (grades up to 5 %%) or hilly (up to 8 %%); junctions stay planar"),
+    (
+        "--overpass-probability",
+        "overpass_probability",
+        float,
+        "chance that a crossing of control lines becomes an overpass (5.5 m over the other road, ramps within the "
+        "terrain's grade limits) instead of a junction, where both roads are long enough",
+    ),
 ]
 
 
@@ -180,7 +187,8 @@ def _add_generate(p: argparse.ArgumentParser) -> None:
         choices=("paper", "scenario"),
         default=None,
         help="paper (default): the JunctionArt paper's maps, byte for byte as before; scenario: a test map with "
-        "what scenarios need (urban roadside, junction control auto); options given as well override the profile",
+        "what scenarios need (urban roadside, junction control auto, overpass probability 0.5); options given as well "
+        "override the profile",
     )
     p.add_argument("-q", "--quiet", action="store_true", help="no summary line, no progress bar")
     p.add_argument("-v", "--verbose", action="store_true", help="list each repair the generator made, on stderr")

@@ -15,6 +15,7 @@ from shapely import LineString, STRtree
 from xodrcheck.classcache import dataclass
 
 from .controllines import ControlLine, ControlLines
+from .grade_separation import GradeSeparation
 from .params import Params
 
 MERGE_DISTANCE = 5.0  #: control points of different lines closer than this become one node
@@ -35,6 +36,8 @@ class Network:
 
     nodes: tuple[tuple[float, float], ...]
     edges: tuple[Edge, ...]
+    #: (upper, lower) edge indexes of each crossing kept as an overpass (:mod:`junctionart.grade_separation`)
+    overpasses: tuple[tuple[int, int], ...] = ()
 
     def degree(self) -> list[int]:
         deg = [0] * len(self.nodes)
@@ -171,14 +174,19 @@ def _merge_close(nodes: list[tuple[float, float]], edges: dict[tuple[int, int], 
     return out
 
 
-def _planarize(nodes: list[tuple[float, float]], edges: dict[tuple[int, int], int]) -> dict[tuple[int, int], int]:
-    """Split crossing edges at their crossing point (a new node), until no two edges cross."""
+def _planarize(
+    nodes: list[tuple[float, float]], edges: dict[tuple[int, int], int], grade: GradeSeparation | None = None
+) -> dict[tuple[int, int], int]:
+    """Split crossing edges at their crossing point (a new node), until no two edges cross, except where ``grade``
+    keeps the crossing as an overpass."""
     for _ in range(50):
         keys = sorted(edges)
         geoms = [LineString([nodes[a], nodes[b]]) for a, b in keys]
         tree = STRtree(geoms)
         left, right = tree.query(geoms, predicate="crosses")
         pairs = sorted({(int(i), int(j)) for i, j in zip(left, right) if i < j})
+        if grade is not None and grade.probability > 0.0:
+            pairs = [(i, j) for i, j in pairs if not _overpass(grade, geoms[i], geoms[j])]
         if not pairs:
             return edges
         used: set[int] = set()
@@ -198,6 +206,12 @@ def _planarize(nodes: list[tuple[float, float]], edges: dict[tuple[int, int], in
                 edges[(min(b, n), max(b, n))] = line
         edges = _merge_close(nodes, edges)
     return edges
+
+
+def _overpass(grade: GradeSeparation, a: LineString, b: LineString) -> bool:
+    """Whether the crossing of ``a`` and ``b`` is (or now becomes) an overpass."""
+    inter = a.intersection(b)
+    return inter.geom_type == "Point" and (grade.is_kept(inter) or grade.keep(a, b, inter))
 
 
 def _split_at_nodes(nodes: list[tuple[float, float]], edges: dict[tuple[int, int], int]) -> dict[tuple[int, int], int]:
@@ -310,9 +324,12 @@ def build(lines: ControlLines, params: Params, rng: np.random.Generator) -> Netw
     edges = _merge_close(nodes, builder.edges)
     if params.curved_roads:
         edges = _bend(nodes, edges, params, rng)
-    edges = _split_at_nodes(nodes, _planarize(nodes, edges))
+    grade = GradeSeparation(params)
+    edges = _split_at_nodes(nodes, _planarize(nodes, edges, grade))
     _connect(nodes, edges, ends)
-    edges = _split_at_nodes(nodes, _planarize(nodes, edges))
+    edges = _split_at_nodes(nodes, _planarize(nodes, edges, grade))
+    while grade.kept and grade.settle(nodes, sorted(edges)):  # an overpass edge was split: refuse it, split it
+        edges = _split_at_nodes(nodes, _planarize(nodes, edges, grade))
     # Renumber: only nodes that carry an edge, in first-use order of the sorted edge list.
     used: dict[int, int] = {}
     for a, b in sorted(edges):
@@ -321,4 +338,4 @@ def build(lines: ControlLines, params: Params, rng: np.random.Generator) -> Netw
                 used[x] = len(used)
     new_nodes = tuple(nodes[old] for old in used)  # used numbers the nodes in insertion order
     out_edges = tuple(Edge(used[a], used[b], edges[(a, b)]) for a, b in sorted(edges))
-    return Network(new_nodes, out_edges)
+    return Network(new_nodes, out_edges, grade.pairs(nodes, sorted(edges)) if grade.kept else ())

@@ -124,6 +124,9 @@ class Params:
     roadside: Roadside = Roadside.NONE  #: sidewalks and kerbs, or shoulders, beside the driving lanes
     junction_control: JunctionControl = JunctionControl.NONE  #: traffic lights or signs at junctions
     terrain: Terrain = Terrain.FLAT  #: elevation profiles follow this ground
+    #: chance that a crossing of two control lines becomes an overpass instead of a junction, where both roads are
+    #: long enough for the ramps (:mod:`junctionart.scenario.overpass`); 0: every crossing is a junction
+    overpass_probability: float = 0.0
     country: str = "DE"  #: whose sign catalogue the signs come from (:mod:`junctionart.scenario.catalogue`)
 
     def __post_init__(self) -> None:
@@ -143,6 +146,7 @@ class Params:
             self.roadside is not Roadside.NONE
             or self.junction_control is not JunctionControl.NONE
             or self.terrain is not Terrain.FLAT
+            or self.overpass_probability > 0.0
         )
 
     @classmethod
@@ -182,10 +186,11 @@ _ENUMS: dict[str, type[enum.Enum]] = {
 #: Named sets of parameter values. "paper" (the defaults): the JunctionArt paper's maps, every scenario feature off, so
 #: earlier maps, the golden snapshots and the paper's ERA are reproduced byte for byte. "scenario": a drivable test
 #: map with what scenarios need (urban roadside: kerbs and sidewalks continued round every junction corner; junction
-#: control drawn per junction: traffic lights with signal groups, stop or yield signs).
+#: control drawn per junction: traffic lights with signal groups, stop or yield signs; half of the crossings of control
+#: lines long enough for ramps become overpasses, the others junctions).
 PROFILES: dict[str, dict[str, Any]] = {
     "paper": {},
-    "scenario": {"roadside": Roadside.URBAN, "junction_control": JunctionControl.AUTO},
+    "scenario": {"roadside": Roadside.URBAN, "junction_control": JunctionControl.AUTO, "overpass_probability": 0.5},
 }
 
 
@@ -324,6 +329,7 @@ def validate(p: Params) -> None:
 
 
 def _validate_scenario(p: Params) -> None:
+    _range("overpass_probability", p.overpass_probability, 0.0, 1.0)
     for name, kind in _ENUMS.items():
         if not isinstance(getattr(p, name), kind):
             valid = ", ".join(str(m.value) for m in kind)

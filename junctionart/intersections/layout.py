@@ -12,7 +12,9 @@ fits, and records what it did (``Layout.repairs``):
   gets its incident points moved outward (its roads are rebuilt at once); after one step, links that still fail are
   dropped where every incoming lane keeps a link and every outgoing lane a feeder; after ``MAX_GROWTH`` steps the
   leg that still fails is dropped;
-* roads or junction areas that overlap where the map does not connect them lose a road.
+* roads or junction areas that overlap where the map does not connect them lose a road (an overpass's two roads are
+  connected by its deck's clearance);
+* an overpass whose laid roads leave no room for its ramps becomes a junction (:mod:`.overpasses`).
 
 Each repair removes an edge or a node or enlarges a bounded counter, so the loop ends. Repairs that touch different
 parts of the network share one pass: a repair marks the nodes it touched, later repairs in the pass leave them alone,
@@ -40,6 +42,7 @@ from .fitting import SCALES, LinkFitter
 from .growth import Growth
 from .model import Layout
 from .overlap import remove_overlaps
+from .overpasses import fit_overpasses
 from .planning import Planner
 from .prune import drop_acute_legs, drop_excess_legs, open_exits
 from .roads import lay_roads
@@ -58,6 +61,7 @@ class Builder:
         self.p = params
         self.rng = rng
         self.st = NetworkState(list(net.nodes), {k: (e.u, e.v, laned.lanes[k]) for k, e in enumerate(net.edges)})
+        self.st.overpasses = set(net.overpasses)
         self.planner = Planner(self.st, params, rng)
         self.fitter = LinkFitter(params)
 
@@ -97,7 +101,10 @@ class Builder:
         remove_overlaps(view, roads, junctions, plans, self.p)
         if st.dirty:
             return None
-        return Layout(tuple(road_plans(view, roads, junctions)), tuple(plans), tuple(st.repairs))
+        decks = fit_overpasses(view, roads, self.p)
+        if st.dirty:
+            return None
+        return Layout(tuple(road_plans(view, roads, junctions)), tuple(plans), tuple(st.repairs), decks)
 
 
 def build(laned: LanedNetwork, params: Params, rng: np.random.Generator) -> Layout:

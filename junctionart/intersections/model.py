@@ -62,3 +62,4 @@ class Layout:
     roads: tuple[RoadPlan, ...]
     junctions: tuple[JunctionPlan, ...]
     repairs: tuple[str, ...]  #: what was changed to make every intersection fit (no map is ever discarded)
+    overpasses: tuple[tuple[int, int], ...] = ()  #: (upper, lower) indexes into ``roads`` of each overpass

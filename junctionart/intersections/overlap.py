@@ -19,6 +19,7 @@ from ..opendrive import Geometry, ParamPoly3
 from ..params import Params, TrafficRule
 from ..scenario.roadside import roadside_width
 from .model import JunctionPlan
+from .overpasses import separated
 from .planning import Junction
 from .roads import Road
 from .roadshape import contact
@@ -95,7 +96,7 @@ def remove_overlaps(
     a road is removed (one whose removal keeps the map connected when there is one)."""
     st = view.state
     lanes = {jp.node: [c.geometry for c in jp.connections] for jp in plans}
-    for cands in overlaps(view.chains, roads, junctions, lanes, p):
+    for cands in overlaps(view.chains, roads, junctions, lanes, p, separated(view)):
         if any(st.touched(view.chains[c].nodes) for c in cands):
             continue
         chosen = next((c for c in cands if st.connected_without(set(view.chains[c].edges))), cands[0])
@@ -112,13 +113,14 @@ def overlaps(
     junctions: dict[int, Junction],
     connections: dict[int, list[Geometry]],
     p: Params,
+    decks: frozenset[frozenset[int]] = frozenset(),
 ) -> list[list[int]]:
     """For each overlap, the chains (roads) whose removal would end it, in order of preference.
 
     Roads are their reference lines buffered by their wider side; a junction is the convex hull of its legs' end
     cross-sections together with the body of each of its connection lanes (``connections``: their reference lines,
     the lane lying on the traffic side), since a wide turn can leave the hull. Roads sharing an end node, and a
-    junction with its own legs, may touch.
+    junction with its own legs, may touch, and so may the two roads of an overpass (``decks``: pairs of chains).
     """
     shapes = _road_shapes(roads, p)
     owners = [(Part.ROAD, c) for c in range(len(roads))]
@@ -126,7 +128,7 @@ def overlaps(
         for shape in _junction_shapes(roads, j, connections.get(node, []), p):
             shapes.append(shape)
             owners.append((Part.JUNCTION, node))
-    return _overlapping(chs, np.array(shapes, dtype=object), owners)
+    return _overlapping(chs, np.array(shapes, dtype=object), owners, decks)
 
 
 def _road_shapes(roads: list[Road], p: Params) -> list:
@@ -163,7 +165,9 @@ def _junction_shapes(roads: list[Road], j: Junction, connections: list[Geometry]
     return shapes
 
 
-def _overlapping(chs: list[Chain], shapes: np.ndarray, owners: list[tuple[Part, int]]) -> list[list[int]]:
+def _overlapping(
+    chs: list[Chain], shapes: np.ndarray, owners: list[tuple[Part, int]], decks: frozenset[frozenset[int]]
+) -> list[list[int]]:
     """The removal candidates of every pair of shapes sharing area (at least 0.01 m2) where the map does not connect
     their owners."""
     left_i, right_i = shapely.STRtree(shapes).query(shapes)  # bounding boxes first
@@ -175,6 +179,8 @@ def _overlapping(chs: list[Chain], shapes: np.ndarray, owners: list[tuple[Part, 
     found = []
     for i, j in sorted(zip(left_i[hit].tolist(), right_i[hit].tolist())):
         cands = _candidates(chs, owners[i], owners[j])
+        if cands is not None and owners[i][0] is owners[j][0] is Part.ROAD and frozenset(cands) in decks:
+            continue
         if cands is not None and shapes[i].intersection(shapes[j]).area >= 0.01:
             found.append(cands)
     return found

@@ -30,6 +30,8 @@ class NetworkState:
     drawn: dict[tuple[int, int], tuple[bool, bool]] = field(default_factory=dict)  #: per leg: turn lane, split first
     repairs: list[str] = field(default_factory=list)
     dirty: set[int] = field(default_factory=set)
+    #: (upper, lower) edges crossing as an overpass (:mod:`junctionart.grade_separation`)
+    overpasses: set[tuple[int, int]] = field(default_factory=set)
 
     def degree(self) -> list[int]:
         deg = [0] * len(self.nodes)
@@ -115,6 +117,14 @@ class NetworkState:
         if a != b and not exists:
             self.insert_planar(a, b, cfg)
         self.repairs.append(why + " (straightened)")
+
+    def at_grade(self, pair: tuple[int, int], why: str) -> None:
+        """Turn an overpass back into a crossing at grade: the upper edge is laid again, split with the lower one
+        where they cross (a new intersection)."""
+        self.overpasses.discard(pair)
+        a, b, cfg = self.edges.pop(pair[0])
+        self.insert_planar(a, b, cfg)
+        self.repairs.append(why)
 
     def insert_planar(self, a: int, b: int, cfg: LaneConfig) -> None:
         """Add edge a-b; where it crosses an existing edge both are split at a new node (a new intersection)."""

@@ -18,7 +18,7 @@ def dress(doc: Document, layout: Layout, params: Params, seed: int) -> Document:
     ids = Ids(doc)
     if params.roadside is not Roadside.NONE:
         doc = add_corners(doc, layout, params, ids)
-    if params.terrain is not Terrain.FLAT:
+    if params.terrain is not Terrain.FLAT or layout.overpasses:
         from .terrain import add_terrain
 
         doc = add_terrain(doc, layout, params, seed)

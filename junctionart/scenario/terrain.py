@@ -13,6 +13,7 @@ at its node's height, so z and the grade (zero) are continuous at every link. Fl
 from __future__ import annotations
 
 import dataclasses
+import itertools
 import math
 
 import numpy as np
@@ -21,6 +22,7 @@ from ..curves import end_pose
 from ..intersections.model import Layout
 from ..opendrive import Cubic, Document, Road
 from ..params import Params, Terrain
+from .overpass import RAMP_LIMITS, RISE, Crossing, crossing, half_width
 
 #: (maximum grade, smallest vertical-curve radius in m) per terrain: 5 % and 1500 m rolling, 8 % and 600 m hilly,
 #: the order of the limits for 50 km/h streets in common road-design guides (steeper only in mountains).
@@ -33,8 +35,9 @@ ITERATIONS = 200
 
 
 def rise_bound(length: float, terrain: Terrain) -> float:
-    """Largest height difference (m) between the ends of a road of ``length`` under ``terrain``'s limits."""
-    grade, radius = LIMITS[terrain]
+    """Largest height difference (m) between the ends of a road of ``length`` under ``terrain``'s limits (on flat
+    terrain the overpass ramps' limits, :data:`junctionart.scenario.overpass.RAMP_LIMITS`)."""
+    grade, radius = LIMITS.get(terrain, RAMP_LIMITS)
     return min(grade * length / 1.5, length * length / (6.0 * radius))
 
 
@@ -52,7 +55,7 @@ def ground(rng: np.random.Generator, terrain: Terrain):
     theta = rng.uniform(0.0, 2.0 * math.pi, 3)
     phase = rng.uniform(0.0, 2.0 * math.pi, 3)
     weight = rng.uniform(0.5, 1.0, 3)
-    amp = AMPLITUDE[terrain] / weight.sum()
+    amp = AMPLITUDE.get(terrain, 0.0) / weight.sum()
 
     def z(x: float, y: float) -> float:
         arg = 2.0 * math.pi * (x * np.cos(theta) + y * np.sin(theta)) / lam + phase
@@ -61,44 +64,114 @@ def ground(rng: np.random.Generator, terrain: Terrain):
     return z
 
 
-def node_heights(layout: Layout, params: Params, seed: int) -> dict[int, float]:
-    """Height of every node that a road meets, within the limits on every road."""
-    z_of = ground(np.random.default_rng([seed, 17]), params.terrain)
+#: A stretch of a road at one height variable: (variable, offset added to it, s where it starts, s where it ends).
+#: Road ends are stretches of length 0 at their node; an overpass's crossing is a level stretch of both roads, the
+#: upper one :data:`RISE` above the lower one.
+Stretch = tuple[int, float, float, float]
+
+
+def _crossings(layout: Layout, params: Params) -> list[tuple[int, int, Crossing]]:
+    """(upper road index, lower road index, where they cross) of each overpass."""
+    out = []
+    for up, low in layout.overpasses:
+        c = crossing(layout.roads[up].geometry, layout.roads[low].geometry)
+        if c is not None:  # stage 3 kept only crossings it measured
+            out.append((up, low, c))
+    return out
+
+
+def _stretches(layout: Layout, params: Params) -> dict[int, list[Stretch]]:
+    """Each road's stretches in order of s: its start node, its overpass crossings, its end node."""
+    out: dict[int, list[Stretch]] = {rp.index: [(rp.start_node, 0.0, 0.0, 0.0)] for rp in layout.roads}
+    for k, (up, low, c) in enumerate(_crossings(layout, params)):
+        ru, rl = layout.roads[up], layout.roads[low]
+        h_up, h_low = c.level(_half(ru, params), _half(rl, params))
+        out[up].append((-1 - k, RISE, c.s_a - h_up, c.s_a + h_up))
+        out[low].append((-1 - k, 0.0, c.s_b - h_low, c.s_b + h_low))
+    for rp in layout.roads:
+        out[rp.index] = [*sorted(out[rp.index], key=lambda st: st[2]), (rp.end_node, 0.0, rp.length, rp.length)]
+    return out
+
+
+def _half(rp, params: Params) -> float:
+    counts = (rp.lanes.forward, rp.lanes.backward, rp.fwd_start, rp.bwd_start, rp.fwd_end, rp.bwd_end)
+    return half_width(counts, rp.lanes.median, params)
+
+
+def node_heights(layout: Layout, params: Params, seed: int, stretches: dict[int, list[Stretch]] | None = None):
+    """Height of every node that a road meets (and of every overpass crossing's lower road, keyed -1, -2, ...),
+    within the limits on every road piece."""
+    z_of = ground(np.random.default_rng([seed, 17]), params.terrain) if params.terrain is not Terrain.FLAT else _level
     z: dict[int, float] = {}
     for rp in layout.roads:
         start, end = rp.geometry[0], end_pose(rp.geometry[-1])
         z.setdefault(rp.start_node, z_of(start.x, start.y))
         z.setdefault(rp.end_node, z_of(end.x, end.y))
-    roads = [(rp.start_node, rp.end_node, rise_bound(rp.length, params.terrain)) for rp in layout.roads]
+    if stretches is None:
+        stretches = {
+            rp.index: [(rp.start_node, 0.0, 0.0, 0.0), (rp.end_node, 0.0, rp.length, rp.length)] for rp in layout.roads
+        }
+    pieces: list[tuple[int, float, int, float, float]] = []  # (a, offset a, b, offset b, bound)
+    for rp in layout.roads:
+        st = stretches[rp.index]
+        for (a, oa, _, s0), (b, ob, s1, _) in itertools.pairwise(st):
+            if b < 0 and b not in z:  # a crossing starts where the ground is, on its lower road
+                z[b] = z[rp.start_node] + (z[rp.end_node] - z[rp.start_node]) * s1 / rp.length
+            pieces.append((a, oa, b, ob, rise_bound(s1 - s0, params.terrain)))
+    crossings = any(n < 0 for n in z)
     for _ in range(ITERATIONS):
         moved = False
-        for a, b, bound in roads:
-            d = z[b] - z[a]
+        for a, oa, b, ob, bound in pieces:
+            d = (z[b] + ob) - (z[a] + oa)
             if abs(d) > bound:
                 half = math.copysign((abs(d) - bound) / 2.0, d)
                 z[a] += half
                 z[b] -= half
                 moved = True
         if not moved:
-            break
+            return z
+    if crossings:  # level ground fits every piece: stage 3 kept only overpasses whose ramps climb RISE in time
+        mean = sum(h for n, h in z.items() if n >= 0) / sum(1 for n in z if n >= 0)
+        return dict.fromkeys(z, mean)
     # what the iterations left (a tight cycle of short roads): scale every height toward the mean until all fit
-    ratio = min((bound / abs(z[b] - z[a]) for a, b, bound in roads if z[b] != z[a]), default=1.0)
+    ratio = min((bound / abs(z[b] - z[a]) for a, _, b, _, bound in pieces if z[b] != z[a]), default=1.0)
     if ratio < 1.0:
         mean = sum(z.values()) / len(z)
         z = {n: mean + (h - mean) * ratio * (1.0 - 1e-9) for n, h in z.items()}
     return z
 
 
+def _level(x: float, y: float) -> float:
+    """The ground of flat terrain (overpasses only)."""
+    return 0.0
+
+
+def _road_profile(stretches: list[Stretch], z: dict[int, float], length: float) -> tuple[Cubic, ...]:
+    """Cubic pieces between the stretches, level along each crossing."""
+    if len(stretches) == 2:
+        (a, _, _, _), (b, _, _, _) = stretches
+        return profile(z[a], z[b], length)
+    out: list[Cubic] = []
+    for (a, oa, _, s0), (b, ob, s1, _) in itertools.pairwise(stretches):
+        (piece,) = profile(z[a] + oa, z[b] + ob, s1 - s0)
+        out.append(dataclasses.replace(piece, s=s0))
+        if b < 0:
+            out.append(Cubic(s1, z[b] + ob))
+    return tuple(out)
+
+
 def add_terrain(doc: Document, layout: Layout, params: Params, seed: int) -> Document:
-    """``doc`` with elevation profiles: roads between their nodes' heights, junction roads flat at theirs."""
-    z = node_heights(layout, params, seed)
+    """``doc`` with elevation profiles: roads between their nodes' heights (over or under their overpasses),
+    junction roads flat at theirs."""
+    stretches = _stretches(layout, params)
+    z = node_heights(layout, params, seed, stretches)
     by_id = {str(rp.index + 1): rp for rp in layout.roads}
     junction_z = {j.id: z[jp.node] for j, jp in zip(doc.junctions, layout.junctions)}
     roads: list[Road] = []
     for road in doc.roads:
         rp = by_id.get(road.id) if road.junction == "-1" else None
         if rp is not None:
-            elevation = profile(z[rp.start_node], z[rp.end_node], road.length)
+            elevation = _road_profile(stretches[rp.index], z, road.length)
         else:
             elevation = (Cubic(0.0, junction_z[road.junction]),)
         roads.append(dataclasses.replace(road, elevation=elevation))

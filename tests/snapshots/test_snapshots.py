@@ -165,6 +165,27 @@ def test_generator_seeds_match_their_golden_snapshots(name, xodr_snapshot):
     xodr_snapshot(data, snapshot=HERE / "generator" / f"{name}.json")
 
 
+#: name -> (Params keywords, seed, control-line file in examples/) of golden maps drawn from control lines
+GENERATOR_GOLDEN_LINES = {
+    # issue 16: the bypass passes over the approach road (an overpass, no junction), hilly, signals and sidewalks
+    "scenario_overpass_hilly_seed1": (
+        {"profile": "scenario", "terrain": "hilly", "overpass_probability": 1.0},
+        1,
+        "overpass.json",
+    ),
+}
+
+
+@pytest.mark.parametrize("name", sorted(GENERATOR_GOLDEN_LINES))
+def test_generator_control_line_maps_match_their_golden_snapshots(name, xodr_snapshot):
+    kwargs, seed, lines = GENERATOR_GOLDEN_LINES[name]
+    params = ja.Params.create(**kwargs)
+    result = ja.generate_layout(params, seed, ja.controllines.load(HERE.parent.parent / "examples" / lines))
+    assert len(result.layout.overpasses) == 1  # the case is there for its overpass
+    data = ja.to_bytes(result.document, params.version)
+    xodr_snapshot(data, snapshot=HERE / "generator" / f"{name}.json")
+
+
 @pytest.mark.parametrize("seed", [1, 7, 42])
 def test_generator_seeds_give_the_same_snapshot_twice(seed):
     params = ja.Params.create(width=250, height=250)

@@ -35,6 +35,11 @@ if TYPE_CHECKING:
     from xodrcheck.footprint import Overlap, OverlapIndex
 
 
+#: Height (m) between two overlapping surfaces from which the message treats the upper one as a bridge lacking
+#: clearance rather than two roads meeting at one height.
+BRIDGE_HEIGHT = 1.0
+
+
 def _overlap_index(ctx: Context) -> OverlapIndex:
     """The file's :class:`~xodrcheck.footprint.OverlapIndex` (shapely loads here, when an overlap rule runs)."""
     from xodrcheck.footprint import overlap_index
@@ -103,9 +108,12 @@ def _message(
             else f"both are legs of junction {junction}, not linked to each other: only roads of one junction may "
             "overlap"
         )
+    clearance = ctx.tolerances.clearance
+    # a road passing over the other (more than a step apart): say how much height the bridge lacks
+    short = f": {clearance - o.dz:.2f} m short of it as a bridge" if o.dz >= BRIDGE_HEIGHT else ""
     return (
         f"{what}road {roads[0]} and road {roads[1]} overlap by {area:.1f} m2 in plan view (lanes {shown}) with "
-        f"{o.dz:.2f} m between their surfaces (clearance {ctx.tolerances.clearance:g} m), around "
+        f"{o.dz:.2f} m between their surfaces (clearance {clearance:g} m{short}), around "
         f"({o.x:.2f}, {o.y:.2f}); {why}"
     )
 

@@ -40,3 +40,13 @@ def test_two_legs_of_one_junction_overlapping():
     (f,) = findings(path, RULE)
     assert f.road == "1" and "road 1 and road 3 overlap by 38.5 m2" in f.message  # 7 m x 5.5 m
     assert "both are legs of junction 100" in f.message
+
+
+def test_a_bridge_three_metres_above_lacks_clearance():
+    """pass.xodr's bridge lowered to 3 m: still an overlap, and the message says how much height is missing."""
+    path = fixture(RULE, "fail_low_bridge.xodr")
+    (f,) = findings(path, RULE)
+    assert f.road == "1" and "with 3.00 m between their surfaces" in f.message
+    assert "(clearance 4.5 m: 1.50 m short of it as a bridge)" in f.message
+    (at_grade,) = findings(fixture(RULE, "fail.xodr"), RULE)
+    assert "short of it" not in at_grade.message  # roads crossing at one height: no bridge to speak of

@@ -1,0 +1,159 @@
+"""Overpasses (issue 16): a crossing of control lines kept as an overpass instead of a junction, measured from the
+written file with xodrcheck's reader and geometry: clearance over the crossing, grades and vertical curves within the
+terrain's limits, z continuous at every link, no finding; a deck lowered to 3 m is an O001 error."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+import junctionart as ja
+from junctionart import controllines
+from junctionart.params import Params, Terrain
+from junctionart.scenario import terrain
+from junctionart.scenario.overpass import RAMP_LIMITS, RISE
+from xodrcheck.check import check
+from xodrcheck.elevation_info import elevation_info
+from xodrcheck.footprint import overlap_index
+from xodrcheck.reader import read
+
+LINES = Path(__file__).resolve().parents[2] / "examples" / "overpass.json"
+CASES = [("flat", 1), ("hilly", 1), ("rolling", 2), ("hilly", 2)]
+
+
+def _generate(terrain_name: str, seed: int, **extra) -> ja.Result:
+    p = Params.create("scenario", terrain=terrain_name, overpass_probability=1.0, **extra)
+    return ja.generate_layout(p, seed, controllines.load(LINES))
+
+
+@pytest.fixture(scope="module")
+def maps(tmp_path_factory) -> list[tuple[str, Path, tuple[str, str]]]:
+    """(terrain, written file, (upper road id, lower road id)) of each case."""
+    folder = tmp_path_factory.mktemp("overpass")
+    out = []
+    for name, seed in CASES:
+        r = _generate(name, seed)
+        assert len(r.layout.overpasses) == 1, r.layout.repairs
+        ((up, low),) = r.layout.overpasses
+        path = ja.write(r.document, folder / f"{name}-{seed}.xodr")
+        out.append((name, path, (str(up + 1), str(low + 1))))
+    return out
+
+
+def _limits(name: str) -> tuple[float, float]:
+    return terrain.LIMITS.get(Terrain(name), RAMP_LIMITS)
+
+
+def test_the_deck_clears_the_lower_road_by_the_rise_measured_from_the_file(maps):
+    """Every plan-view overlap of the two roads' lane surfaces (xodrcheck's footprints, heights from the written
+    elevation and lane heights) has at least 4.5 m between the surfaces; the shared area is the whole crossing."""
+    for _, path, (up, low) in maps:
+        index = overlap_index(read(path).document)
+        lanes = index.surfaces.lanes
+        found = [
+            o
+            for o in index.overlaps(0.5, 100.0)  # every overlap closer than 100 m in height: all of them
+            if {lanes[o.lane_a].road, lanes[o.lane_b].road} == {up, low}
+        ]
+        area = sum(o.area for o in found)
+        assert area > 100.0, path.name  # two roads >= 7 m wide and their sidewalks crossing at >= 40 degrees
+        dz = min(o.dz for o in found)
+        assert dz >= 4.5 and dz >= RISE - 0.2, (path.name, dz)  # 5.5 m less at most a 0.15 m kerb
+
+
+def test_grades_curves_and_links_within_the_limits(maps):
+    """``xodrcheck info``'s figures: max grade within the terrain's limit (the ramps' limit on flat ground), no z
+    step at any link; the written records' vertical curves no sharper than the limit's radius."""
+    for name, path, (up, _) in maps:
+        doc = read(path).document
+        grade, radius = _limits(name)
+        e = elevation_info(doc)
+        assert 0.01 < e.max_grade <= grade + 1e-9 and e.max_link_step < 1e-9 and e.links > 20
+        assert e.max_z - e.min_z >= RISE - 1e-9
+        for road in doc.roads:
+            for rec in road.elevation:
+                for u in np.linspace(0.0, road.length - rec.s, 50):  # curvature 2c + 6du, checked past each end
+                    assert abs(2 * rec.c + 6 * rec.d * u) <= 1.0 / radius + 1e-9, (path.name, road.id)
+        upper = next(r for r in doc.roads if r.id == up)
+        assert len(upper.elevation) == 3  # ramp up, level deck, ramp down
+
+
+def test_overpass_maps_have_no_finding_and_are_schema_valid(maps, schema18):
+    for _, path, _ in maps:
+        assert list(schema18.iter_errors(str(path))) == []
+        report = check(path)
+        assert [(f.code, f.message) for f in report.findings if f.severity.name in ("ERROR", "WARNING")] == []
+
+
+def test_a_deck_only_3_m_above_is_an_o001_error(tmp_path, monkeypatch):
+    monkeypatch.setattr(terrain, "RISE", 3.0)
+    r = _generate("hilly", 1)
+    ((up, low),) = r.layout.overpasses
+    path = ja.write(r.document, tmp_path / "low.xodr")
+    errors = [f for f in check(path).findings if f.code == "O001"]
+    assert errors and all(f.severity.name == "ERROR" for f in errors)
+    assert {errors[0].road} <= {str(up + 1), str(low + 1)}
+    assert (
+        "3.00 m between their surfaces" in errors[0].message and "1.50 m short of it as a bridge" in errors[0].message
+    )
+
+
+def test_without_overpasses_the_crossing_is_a_junction():
+    p = Params.create("scenario", terrain="hilly", overpass_probability=0.0)
+    r = ja.generate_layout(p, 1, controllines.load(LINES))
+    assert r.network.overpasses == () and r.layout.overpasses == ()
+    at = (1225.0, 100.0)  # where the bypass crosses the approach road
+
+    def near(result: ja.Result) -> list[int]:
+        return [j.legs for j in result.layout.junctions if np.hypot(*np.subtract(j.position, at)) < 1.0]
+
+    assert near(r) == [4] and near(_generate("hilly", 1)) == []
+
+
+def test_an_overpass_without_room_for_its_ramps_becomes_a_junction(monkeypatch):
+    """Stage 3 measures the laid roads again; an overpass that does not fit is split into a junction."""
+    from junctionart.intersections import overpasses
+
+    kept = len(_generate("hilly", 1).document.junctions)
+    monkeypatch.setattr(overpasses, "fits", lambda *args: False)
+    r = _generate("hilly", 1)
+    assert r.network.overpasses and r.layout.overpasses == ()
+    assert any("no room for its ramps" in why for why in r.layout.repairs)
+    assert len(r.document.junctions) == kept + 1
+    assert [f.code for f in check_document(r)] == []
+
+
+def check_document(r: ja.Result) -> list:
+    return [f for f in check(ja.to_bytes(r.document)).findings if f.severity.name == "ERROR"]
+
+
+def test_short_roads_keep_their_junction():
+    """A bypass too short for ramps or a level stretch under a deck crosses at a junction, whatever the probability."""
+    data = controllines.load(LINES)
+    short = ja.ControlLines(
+        tuple(
+            ln if ln.id != "bypass" else ln.__class__(ln.id, ((1200.0, 40.0), (1205.0, 160.0)), ln.group, ln.lanes)
+            for ln in data.lines
+        ),
+        data.pairs,
+    )
+    r = ja.generate_layout(Params.create("scenario", terrain="hilly", overpass_probability=1.0), 1, short)
+    assert r.network.overpasses == () and r.layout.overpasses == ()
+
+
+def test_automatic_maps_have_no_crossing_so_the_option_changes_nothing():
+    """Automatic control lines never cross: the scenario profile's overpasses leave those maps byte-identical, and
+    the draw uses its own stream."""
+    for seed in (3, 4):
+        on = Params.create("scenario", width=600, height=600, randomize_lanes=True)
+        off = on.with_(overpass_probability=0.0)
+        assert on.overpass_probability == 0.5
+        assert ja.to_bytes(ja.generate(on, seed)) == ja.to_bytes(ja.generate(off, seed))
+
+
+def test_the_probability_is_validated():
+    with pytest.raises(ja.ParamsError, match="overpass_probability"):
+        Params.create(overpass_probability=1.5)
+    assert Params().overpass_probability == 0.0 and not Params().scenario
