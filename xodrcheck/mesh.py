@@ -271,6 +271,34 @@ class _Part:
         )
 
     @staticmethod
+    def concat(parts: list[_Part]) -> _Part:
+        """The parts one after the other, keeping every section's ranges (:meth:`entry`); the parts' arrays are
+        dropped as they are copied, so the copy costs one array's size at a time."""
+        if len(parts) == 1:
+            return parts[0]
+        vertices = np.cumsum([0] + [len(p.vertices) for p in parts])
+        faces = np.cumsum([0] + [len(p.faces) for p in parts])
+        strips = np.cumsum([0] + [len(p.sizes) for p in parts])
+        out = _Part(
+            np.concatenate([p.vertices for p in parts]),
+            np.zeros((0, 3), dtype=np.int64),
+            np.zeros(0),
+            np.concatenate([p.sizes for p in parts]).astype(np.int64),
+            [k for p in parts for k in p.keys],
+            [t for p in parts for t in p.types],
+            np.concatenate([[0]] + [p.strip_at[1:] + strips[i] for i, p in enumerate(parts)]).astype(np.int64),
+            np.concatenate([[0]] + [p.vertex_at[1:] + vertices[i] for i, p in enumerate(parts)]).astype(np.int64),
+            np.concatenate([[0]] + [p.face_at[1:] + faces[i] for i, p in enumerate(parts)]).astype(np.int64),
+        )
+        for p in parts:
+            p.vertices = out.faces
+        out.faces = np.concatenate([p.faces + vertices[i] for i, p in enumerate(parts)]).astype(np.int64)
+        for p in parts:
+            p.faces = out.face_s
+        out.face_s = np.concatenate([p.face_s for p in parts])
+        return out
+
+    @staticmethod
     def join(parts: list[_Part]) -> _Part:
         shift = np.concatenate([[0], np.cumsum([len(p.vertices) for p in parts])]).astype(np.int64)
         return _Part(
@@ -316,9 +344,15 @@ def _one(t: _Section, chord: float, max_step: float, bound: _Bound | None = None
     return _strips([t], [ids], rows.reshape(-1, 3), np.array([0]), [s], np.array([0]))
 
 
+#: Border-line points (samples times lines) of the sections meshed in one :mod:`xodrcheck.roadpass` call: the
+#: temporaries of a call scale with it (a 10 km map's sections at once peaked about 900 MB over the mesh).
+_MESH_BATCH = 1 << 18
+
+
 def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound | None = None) -> _Part | None:
-    """The sections of ``todo`` (each covered by :mod:`xodrcheck.roadpass`) in one pass; ``None`` when the pass
-    declines (damaged numbers)."""
+    """The sections of ``todo`` (each covered by :mod:`xodrcheck.roadpass`) sampled in one pass and meshed in
+    batches of consecutive sections (the same numbers: roadpass computes each section on its own); ``None`` when a
+    pass declines (damaged numbers), as one pass over all of them would."""
     from xodrcheck import roadpass
 
     if not todo:
@@ -327,6 +361,36 @@ def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound
     samples = roadpass.sample_sections(entries, chord, max_step, Tolerances().max_samples_per_section)
     if samples is None or not all(np.isfinite(s).all() for s in samples):
         return None
+    counted = bound.total if bound is not None else 0
+    parts = []
+    for lo, hi in _batches([len(s) * (len(t.pairs) + 1) for t, s in zip(todo, samples)], _MESH_BATCH):
+        part = _batch(todo[lo:hi], samples[lo:hi], bound)
+        if part is None:
+            if bound is not None:
+                bound.total = counted  # the per-section code counts these sections again
+            return None
+        parts.append(part)
+    return _Part.concat(parts)
+
+
+def _batches(sizes: list[int], limit: int) -> list[tuple[int, int]]:
+    """Consecutive ranges ``[lo, hi)`` of ``sizes`` whose sums stay within ``limit`` (a range holds at least one)."""
+    out, lo, total = [], 0, 0
+    for i, n in enumerate(sizes):
+        if i > lo and total + n > limit:
+            out.append((lo, i))
+            lo, total = i, 0
+        total += n
+    if lo < len(sizes):
+        out.append((lo, len(sizes)))
+    return out
+
+
+def _batch(todo: list[_Section], samples: list[np.ndarray], bound: _Bound | None) -> _Part | None:
+    """One batch of :func:`_together` (its sections sampled), meshed from one roadpass call."""
+    from xodrcheck import roadpass
+
+    entries = [(t.rg, t.index) for t in todo]
     keep = [k for k, s in enumerate(samples) if len(s) > 1]  # fewer than two knots: nothing to mesh
     borders = roadpass.border_lines([entries[k] for k in keep], [samples[k] for k in keep])
     if borders is None:
@@ -340,6 +404,7 @@ def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound
     base = np.zeros(len(todo), dtype=np.int64)
     for kept, k in enumerate(keep):
         ids[k], base[k] = borders.ids[kept], borders.base[kept]
+    del borders
     if bound is not None:
         bound.add(sum(2 * len(s) * len(t.pairs) for t, s, fine in zip(todo, samples, usable) if fine))
     offsets = np.concatenate(([0], np.cumsum([len(s) for s in samples]))).astype(np.int64)

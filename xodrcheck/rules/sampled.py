@@ -13,6 +13,7 @@ import weakref
 
 import numpy as np
 
+from xodrcheck.budget import ByteBudget, array_bytes
 from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Severity
@@ -32,14 +33,16 @@ def usable(ctx: Context, road: Road) -> RoadGeometry | None:
 
 
 def section_samples(ctx: Context, road: Road, section_index: int) -> np.ndarray:
-    """Sorted ``s`` covering lane section ``section_index``, cached for the file.
+    """Sorted ``s`` covering lane section ``section_index`` (the ``s`` of :func:`section_lines`, without evaluating
+    the lines).
 
     Every knot of the section (:func:`xodrcheck.sampling.knots`: record starts, plan-view joints, section ends) and
     even steps between them no longer than ``sqrt(8 * chord * min_radius)`` (and ``max_step``): a polyline through
     them strays at most ``chord`` from any line curving no tighter than the ``min_radius`` bound (tighter curves are
     reported by the curvature rules). The section's end is taken just before it (:func:`left_of`).
     """
-    return section_lines(ctx, road, section_index).s
+    found = _lines_of(ctx).grid(road.id, section_index)
+    return found if found is not None else _grid(ctx, ctx.road_geometry(road), section_index)
 
 
 @dataclass(frozen=True)
@@ -53,7 +56,12 @@ class SectionLines:
     borders: dict[int, LanePoints]
 
 
-_LINES: weakref.WeakKeyDictionary[Context, dict[tuple[str, int], SectionLines]] = weakref.WeakKeyDictionary()
+_LINES: weakref.WeakKeyDictionary[Context, _SectionCache] = weakref.WeakKeyDictionary()
+
+#: Bytes of :class:`SectionLines` kept per file (:class:`~xodrcheck.budget.ByteBudget`): a small map's lines are
+#: evaluated once for all the rules; a big map's are evaluated again, batch by batch, by each rule that reads them
+#: (kept whole, a 10 km map's took 490 MB).
+LINES_BUDGET = 96 << 20
 
 
 def grid_step(tol: Tolerances) -> float:
@@ -77,51 +85,128 @@ def _grid(ctx: Context, geometry: RoadGeometry, section_index: int) -> np.ndarra
 
 
 def section_lines(ctx: Context, road: Road, section_index: int) -> SectionLines:
-    """The lane section's lines at its samples (one evaluation per section for all the geometric rules)."""
-    cache = _LINES.get(ctx)
-    if cache is None:
-        cache = _LINES[ctx] = _all_sections(ctx)
-    key = (road.id, section_index)
-    found = cache.get(key)
+    """The lane section's lines at its samples (one evaluation per section for all the geometric rules, while they
+    fit in :data:`LINES_BUDGET`)."""
+    return _lines_of(ctx).lines(ctx, road, section_index)
+
+
+def _lines_of(ctx: Context) -> _SectionCache:
+    found = _LINES.get(ctx)
     if found is None:
-        geometry = ctx.road_geometry(road)
-        s = _grid(ctx, geometry, section_index)
-        found = SectionLines(
-            s,
-            geometry.borders(section_index, s),
-            geometry.reference(s).curvature,
-            geometry.border_curves(section_index, s),
-        )
-        cache[key] = found
+        found = _LINES[ctx] = _SectionCache(ctx)
     return found
 
 
-def _all_sections(ctx: Context) -> dict[tuple[str, int], SectionLines]:
-    """:class:`SectionLines` of every lane section :mod:`xodrcheck.roadpass` covers, evaluated together (the same
-    numbers as one section at a time, with a fraction of the calls); the rest are evaluated when asked for."""
-    from xodrcheck import roadpass
+def _lines_size(lines: SectionLines) -> int:
+    """Bytes of a :class:`SectionLines`, about: ``s``, the curvature, and per lane ``t`` and six border arrays."""
+    return array_bytes(2 + 7 * len(lines.t), lines.s.size)
 
-    entries, keys, grids = [], [], []
-    for road in ctx.document.roads:
-        geometry = usable(ctx, road)
-        if geometry is None:
-            continue
-        for index in range(len(road.lane_sections)):
-            if roadpass.covered(geometry, index):
-                s = _grid(ctx, geometry, index)
-                if np.isfinite(s).all():
-                    entries.append((geometry, index))
-                    keys.append((road.id, index))
-                    grids.append(s)
-    out: dict[tuple[str, int], SectionLines] = {}
-    for lo, hi in _batches([len(s) for s in grids], _BATCH_SAMPLES):
-        _evaluate_batch(entries[lo:hi], keys[lo:hi], grids[lo:hi], out)
-    return out
+
+class _SectionCache:
+    """The sampled lines of a file's lane sections, evaluated in batches of consecutive sections (document order)
+    and kept within :data:`LINES_BUDGET`.
+
+    The sections :mod:`xodrcheck.roadpass` covers are listed once with their samples (a few bytes per sample). A
+    section asked for and not kept is evaluated with the sections after it: a batch that grows while the rules read
+    on in document order (up to ``_BATCH_SAMPLES``) and starts small again when they jump. A file whose lines fit
+    the budget is evaluated in full batches, once. Sections roadpass leaves out are evaluated one at a time.
+    """
+
+    __slots__ = ("_budget", "_entries", "_first", "_grids", "_kept", "_keys", "_next", "_position", "_size")
+
+    def __init__(self, ctx: Context) -> None:
+        from xodrcheck import roadpass
+
+        self._entries: list[tuple[RoadGeometry, int]] = []
+        self._keys: list[tuple[str, int]] = []
+        self._grids: list[np.ndarray] = []
+        estimate = 0
+        for road in ctx.document.roads:
+            geometry = usable(ctx, road)
+            if geometry is None:
+                continue
+            for index in range(len(road.lane_sections)):
+                if roadpass.covered(geometry, index):
+                    s = _grid(ctx, geometry, index)
+                    if np.isfinite(s).all():
+                        self._entries.append((geometry, index))
+                        self._keys.append((road.id, index))
+                        self._grids.append(s)
+                        lanes = 1 + sum(len(side.lanes) for side in geometry.side_lanes(index))
+                        estimate += array_bytes(2 + 7 * lanes, s.size)
+        self._position = {key: i for i, key in enumerate(self._keys)}
+        self._kept: dict[tuple[str, int], SectionLines] = {}
+        self._budget = ByteBudget(LINES_BUDGET)
+        #: Samples of a batch started away from where the last one ended: all at once when everything fits.
+        self._first = _BATCH_SAMPLES if estimate <= LINES_BUDGET else _FIRST_BATCH_SAMPLES
+        self._next = -1
+        self._size = self._first
+
+    def grid(self, road_id: str, section_index: int) -> np.ndarray | None:
+        """The samples of a listed section (``None`` for the others)."""
+        position = self._position.get((road_id, section_index))
+        return None if position is None else self._grids[position]
+
+    def lines(self, ctx: Context, road: Road, section_index: int) -> SectionLines:
+        key = (road.id, section_index)
+        found = self._kept.get(key)
+        if found is not None:
+            self._budget.touch(self._kept, key)
+            return found
+        position = self._position.get(key)
+        if position is not None:
+            found = self._evaluate_from(position).get(key)
+        if found is None:
+            geometry = ctx.road_geometry(road)
+            s = _grid(ctx, geometry, section_index)
+            found = SectionLines(
+                s,
+                geometry.borders(section_index, s),
+                geometry.reference(s).curvature,
+                geometry.border_curves(section_index, s),
+            )
+            self._keep(key, found)
+        return found
+
+    def evaluate_all(self) -> dict[tuple[str, int], SectionLines]:
+        """Every listed section's lines, evaluated in full batches (not kept)."""
+        out: dict[tuple[str, int], SectionLines] = {}
+        for lo, hi in _batches([len(s) for s in self._grids], _BATCH_SAMPLES):
+            _evaluate_batch(self._entries[lo:hi], self._keys[lo:hi], self._grids[lo:hi], out)
+        return out
+
+    def _keep(self, key: tuple[str, int], lines: SectionLines) -> None:
+        self._kept[key] = lines
+        self._budget.add(self._kept, key, _lines_size(lines))
+
+    def _evaluate_from(self, position: int) -> dict[tuple[str, int], SectionLines]:
+        """Evaluate the batch of listed sections starting at ``position`` and keep it (returned whole: the budget
+        may drop its first sections while keeping its last)."""
+        size = min(2 * self._size, _BATCH_SAMPLES) if position == self._next else self._first
+        end, total = position, 0
+        while end < len(self._grids) and (end == position or total + len(self._grids[end]) <= size):
+            total += len(self._grids[end])
+            end += 1
+        out: dict[tuple[str, int], SectionLines] = {}
+        _evaluate_batch(self._entries[position:end], self._keys[position:end], self._grids[position:end], out)
+        for key, lines in out.items():
+            self._keep(key, lines)
+        self._next, self._size = end, size
+        return out
+
+
+def _all_sections(ctx: Context) -> dict[tuple[str, int], SectionLines]:
+    """:class:`SectionLines` of every lane section :mod:`xodrcheck.roadpass` covers, evaluated together in batches
+    (the same numbers as one section at a time, with a fraction of the calls); the rest are evaluated when asked for."""
+    return _SectionCache(ctx).evaluate_all()
 
 
 #: Samples evaluated together by :func:`_all_sections` (the temporaries of one pass scale with it: a 10 km map's
 #: sections at once took about 1 GB more than the results; batches keep that to tens of MB at the same speed).
 _BATCH_SAMPLES = 1 << 17
+#: Samples of the first batch a big file's sections are evaluated in where a rule starts reading (it doubles while
+#: the rule reads on in document order).
+_FIRST_BATCH_SAMPLES = 1 << 12
 
 
 def _batches(counts: list[int], limit: int) -> list[tuple[int, int]]:

@@ -1,0 +1,123 @@
+"""The geometric rules' shared caches stay within their byte budgets on a map bigger than them, and the findings are
+those of an unbounded run (xodrcheck.budget, xodrcheck.lanes.EVALUATION_BUDGET, xodrcheck.rules.sampled)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from xodrcheck import lanes
+from xodrcheck.budget import ByteBudget
+from xodrcheck.check import Selection, run_rules
+from xodrcheck.config import Config
+from xodrcheck.reader import read
+from xodrcheck.rules import sampled
+from xodrcheck.rules.context import Context
+
+#: The modules whose rules read the shared section lines, road ends and lane evaluations.
+_MODULES = ("curvature", "link", "road_attributes", "junction_shapes", "junction_geometry", "junction_direct")
+
+
+def _codes() -> tuple[str, ...]:
+    rules = Selection().rules.values()
+    return tuple(r.code for r in rules if r.check is not None and r.check.__module__.rsplit(".", 1)[-1] in _MODULES)
+
+
+def _check(path: Path) -> tuple[list, Context]:
+    document = read(path).document
+    ctx = Context(document, Config(), path=str(path), data=None)
+    with np.errstate(all="ignore"):
+        findings, run = run_rules(ctx, Selection(select=_codes()))
+    assert len(run) > 8
+    return findings, ctx
+
+
+def _largest_total(monkeypatch: pytest.MonkeyPatch) -> list[int]:
+    """Record the largest total of every :class:`ByteBudget` after each entry it counts."""
+    seen = [0]
+    add = ByteBudget.add
+
+    def counted(self: ByteBudget, cache, key, size: int) -> None:
+        add(self, cache, key, size)
+        if self.limit < 1 << 30:
+            seen[0] = max(seen[0], self.total)
+
+    monkeypatch.setattr(ByteBudget, "add", counted)
+    return seen
+
+
+@pytest.mark.corpus
+def test_section_lines_and_evaluations_stay_within_their_budgets_with_unchanged_findings(
+    corpus_dir: Path, monkeypatch: pytest.MonkeyPatch
+):
+    path = corpus_dir / "carla-towns/OpenDrive/Town07.xodr"
+    monkeypatch.setattr(sampled, "LINES_BUDGET", 1 << 40)
+    monkeypatch.setattr(lanes, "EVALUATION_BUDGET", 1 << 40)
+    whole, ctx = _check(path)
+    assert len(sampled._LINES[ctx]._kept) > 700  # the budget holds every section: evaluated once
+
+    small = 1 << 20
+    monkeypatch.setattr(sampled, "LINES_BUDGET", small)
+    monkeypatch.setattr(lanes, "EVALUATION_BUDGET", small)
+    largest = _largest_total(monkeypatch)
+    bounded, ctx = _check(path)
+    assert bounded == whole and len(whole) > 0
+    cache = sampled._LINES[ctx]
+    assert 0 < len(cache._kept) < 700 and cache._budget.total <= small
+    evaluations = lanes.geometry_of(ctx.document).budget
+    kept = sum(len(g._evaluations) for g in lanes.geometry_of(ctx.document)._built.values())
+    assert kept == len(evaluations) > 0 and evaluations.total <= small
+    assert 0 < largest[0] <= small + (1 << 19)  # a newest entry may pass the budget by its own size
+
+
+def test_a_budget_drops_the_least_recently_used_entries_of_every_cache():
+    budget = ByteBudget(100)
+    a: dict[str, int] = {}
+    b: dict[str, int] = {}
+    for key, cache in (("1", a), ("2", b), ("3", a)):
+        cache[key] = 0
+        budget.add(cache, key, 40)
+    assert a == {"3": 0} and b == {"2": 0} and budget.total == 80
+    budget.touch(b, "2")
+    a["4"] = 0
+    budget.add(a, "4", 40)
+    assert b == {"2": 0} and a == {"4": 0} and budget.total == 80
+    budget.discard(a, "4")
+    del a["4"]
+    assert len(budget) == 1 and budget.total == 40
+    big: dict[str, int] = {"x": 0}
+    budget.add(big, "x", 500)  # the newest entry stays, alone, even over the limit
+    assert big == {"x": 0} and b == {} and len(budget) == 1
+
+
+@pytest.mark.corpus
+@pytest.mark.parametrize(
+    "name", ["carla-towns/OpenDrive/Town07.xodr", "esmini/resources/xodr/multi_intersections.xodr"]
+)
+def test_lane_meshes_built_in_batches_are_the_one_pass_mesh(
+    corpus_dir: Path, monkeypatch: pytest.MonkeyPatch, name: str
+):
+    """The lane meshes of a big map are built in batches of border points (the temporaries scale with a batch, not
+    the map); a map with superelevation mixes them with sections meshed one by one."""
+    from xodrcheck import mesh, roadpass
+
+    document = read(corpus_dir / name).document
+    monkeypatch.setattr(mesh, "_MESH_BATCH", 1 << 40)
+    whole = mesh.build_surfaces(document)
+    calls: list[tuple[int, int]] = []
+    border_lines = roadpass.border_lines
+
+    def counted(entries, samples):
+        lines = [1 + sum(len(side.lanes) for side in rg.side_lanes(i)) for rg, i in entries]
+        calls.append((sum(len(s) * n for s, n in zip(samples, lines)), len(entries)))
+        return border_lines(entries, samples)
+
+    monkeypatch.setattr(roadpass, "border_lines", counted)
+    monkeypatch.setattr(mesh, "_MESH_BATCH", 2000)
+    batched = mesh.build_surfaces(document)
+    assert len(calls) > 3 and all(points <= 2000 or sections == 1 for points, sections in calls)
+    assert whole.lanes == batched.lanes and whole.lane_types == batched.lane_types and len(whole.lanes) > 20
+    for field in ("vertices", "faces", "face_lane", "face_s", "lane_vertices", "lane_faces"):
+        assert np.array_equal(getattr(whole, field), getattr(batched, field), equal_nan=True), field
