@@ -143,9 +143,12 @@ def _warm(paths: Sequence[str]) -> None:
             versions.add((int(match.group(1)), int(match.group(2))))
     for version in sorted(versions & set(schema.SCHEMA_FOLDERS)):
         try:
-            schema.compiled(version)
-            if version in schema.XSD11:
-                schema_fast.derived(*schema.SCHEMA_FOLDERS[version])
+            if version in schema.XSD11:  # the fast verdict; xmlschema's only for files it does not show valid
+                folder, main = schema.SCHEMA_FOLDERS[version]
+                schema_fast.derived(folder, main)
+                schema_fast.plan(folder)
+            else:
+                schema.compiled(version)
         except Exception:
             continue
 

@@ -4,8 +4,8 @@ Versions 1.1 to 1.7 use XSD 1.0 and compile in lxml in milliseconds. 1.8 and 1.9
 ``xs:alternative``), which lxml cannot compile: xmlschema's ``XMLSchema11`` validator is used, and since building it
 takes about half a second, the compiled schema is cached per version. xmlschema validates about 1 MB/s, so a file is
 first given a fast verdict (:mod:`xodrcheck.schema_fast`: lxml on the XSD 1.0 part, with the alternatives made
-explicit and the assertions evaluated one by one); only a file not shown valid that way goes through xmlschema,
-which reports its errors.
+explicit and the assertions evaluated one by one, from the schema's plan, without importing xmlschema); only a file
+not shown valid that way goes through xmlschema, which reports its errors.
 
 Which schema a version gets (:data:`SCHEMA_FOLDERS`): the header has only ``revMajor`` and ``revMinor`` (its
 ``version`` attribute is the map's own version, not the standard's), so a patch release cannot be told apart from its
@@ -134,12 +134,11 @@ def compiled(version: tuple[int, int]):
 
 def validate(tree, version: tuple[int, int]) -> Iterator[SchemaError]:
     """Validate an lxml tree against the schema of ``version``, yielding each error with its source line."""
-    schema = compiled(version)
     if version in XSD11:
         folder, main = SCHEMA_FOLDERS[version]
-        if schema_fast.is_valid(tree, schema, folder, main):
+        if schema_fast.is_valid(tree, folder, main):
             return  # shown valid by lxml on the XSD 1.0 part plus the alternatives and assertions (schema_fast)
-        for err in schema.iter_errors(tree):
+        for err in compiled(version).iter_errors(tree):
             line = getattr(err, "sourceline", None) or 0
             reason = err.reason or str(err.message)
             test = getattr(err.validator, "path", None) if type(err.validator).__name__ == "XsdAssert" else None
@@ -147,6 +146,7 @@ def validate(tree, version: tuple[int, int]) -> Iterator[SchemaError]:
                 reason = f"{reason}: {' '.join(str(test).split())}"
             yield SchemaError(int(line), f"{_xpath_hint(err)}{reason}")
         return
+    schema = compiled(version)
     schema.validate(tree)
     for entry in schema.error_log:
         yield SchemaError(entry.line or 0, entry.message)

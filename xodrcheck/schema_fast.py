@@ -1,5 +1,5 @@
-"""A fast "valid" verdict for XSD 1.1 schemas (OpenDRIVE 1.8), so that a valid file need not go through a pure-Python
-XSD 1.1 validator (about 1 MB/s) to be found valid.
+"""A fast "valid" verdict for XSD 1.1 schemas (OpenDRIVE 1.8, 1.9), so that a valid file need not go through a
+pure-Python XSD 1.1 validator (about 1 MB/s, and about half a second to import and load) to be found valid.
 
 OpenDRIVE 1.8 needs XSD 1.1 for two things only: type alternatives (``xs:alternative``: a ``junction`` is common,
 direct, virtual or crossing by its ``@type``) and assertions (``xs:assert``: 21 co-occurrence tests). Everything else
@@ -8,27 +8,34 @@ times the file's size, and a 50 MB map's copy alone cost gigabytes):
 
 1. every element whose declaration has alternatives gets the type they select as an explicit ``xsi:type`` (XSD 1.1
    requires alternative types to derive from the declared type, so XSD 1.0 accepts exactly that choice), and every
-   assertion of every element's type is evaluated with elementpath on the element as a fragment, as xmlschema does,
-   but untyped (OpenDRIVE's assertions test existence, counts and string or numeric comparisons, where typing does
-   not change the result; one that cannot be evaluated counts as failed);
+   assertion of every element's type is evaluated on the element as the root of a fragment, as xmlschema does, but
+   untyped (OpenDRIVE's assertions test existence, counts and string or numeric comparisons, where typing does not
+   change the result; one that cannot be evaluated counts as failed);
 2. the document is validated by lxml against a *derived* XSD 1.0 schema: the shipped files with their assertions and
    alternatives removed (identity constraints, which reach into junctions, keep working);
 3. the ``xsi:type`` attributes (and the namespace declarations they brought) are removed again, whatever happened,
    so the caller's tree is as it was.
 
-The declarations and types come from the compiled xmlschema schema, walked along the instance, so nothing here knows
-OpenDRIVE. :func:`is_valid` only ever says "valid" or "don't know": when it says False (or anything goes wrong, or
-the file already uses ``xsi:`` attributes), :mod:`xodrcheck.schema` runs the full XSD 1.1 validator, which gives the
-errors with their lines. Both are compared on the corpus, generated maps and damaged documents in
-``tests/xodrcheck/test_schema_fast.py``.
+The declarations, types and tests come from the schema's plan (:mod:`xodrcheck.schema_plan`: written from xmlschema's
+compiled schema, shipped beside the schema files, tests translated to XPath 1.0), walked along the instance, so
+nothing here knows OpenDRIVE and neither xmlschema nor elementpath is imported. :func:`is_valid` only ever says
+"valid" or "don't know": when it says False (or anything goes wrong, a test is not translated, or the file already
+uses ``xsi:`` attributes), :mod:`xodrcheck.schema` runs the full XSD 1.1 validator, which gives the errors with their
+lines. Both are compared on the corpus, generated maps and damaged documents in ``tests/xodrcheck/test_schema_fast.py``.
 """
 
 from __future__ import annotations
 
+import json
+import operator
+import re
 from functools import cache
 from importlib import resources
+from typing import Any, NamedTuple
 
 from lxml import etree
+
+from xodrcheck.schema_plan import EXTENSIONS, FORMAT, PLAN_FILE
 
 XS = "http://www.w3.org/2001/XMLSchema"
 XSI = "http://www.w3.org/2001/XMLSchema-instance"
@@ -64,67 +71,136 @@ def derived(folder_name: str, main: str) -> etree.XMLSchema:
     return etree.XMLSchema(etree.fromstring(texts[main], parser, base_url=main))
 
 
-def _children(xsd_type, known: dict) -> dict[str, object]:
-    """Local name -> element declaration of the children ``xsd_type``'s content model declares (``known``: the
-    answers so far, by the type's id, each kept with its type so that the id stays that type's)."""
-    entry = known.get(id(xsd_type))
-    if entry is None:
-        found: dict[str, object] = {}
-        content = getattr(xsd_type, "content", None)
-        if content is not None and hasattr(content, "iter_elements"):
-            for decl in content.iter_elements():
-                name = getattr(decl, "local_name", None)
-                if name and hasattr(decl, "type"):
-                    found.setdefault(name, decl)
-        entry = known[id(xsd_type)] = (xsd_type, found)
-    return entry[1]
+class _Type(NamedTuple):
+    name: str | None
+    #: Compiled assertions; ``None``: an assertion the plan could not translate.
+    assertions: tuple[etree.XPath | None, ...]
+    #: Local name -> declaration number of the children the content model declares.
+    children: dict[str, int]
 
 
-def _selected_type(decl, elem):
+class _Decl(NamedTuple):
+    type: int
+    #: (compiled test, is the default one, type number); a test of ``None`` that is not the default: not translated.
+    alternatives: tuple[tuple[etree.XPath | None, bool, int], ...]
+
+
+class _Plan(NamedTuple):
+    top: dict[str, int]
+    decls: list[_Decl]
+    types: list[_Type]
+
+
+class _NotTranslated(Exception):
+    """A type alternative's test that the plan has no XPath 1.0 translation for."""
+
+
+_DECIMAL = re.compile(r"[+-]?(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)(?:[eE][+-]?[0-9]+)?\Z")
+_OPERATORS = {"=": operator.eq, "!=": operator.ne, "<": operator.lt, ">": operator.gt, "<=": operator.le}
+_OPERATORS[">="] = operator.ge
+
+
+def _strings(values: Any) -> list[str]:
+    if not isinstance(values, list) or not all(isinstance(v, str) for v in values):
+        raise TypeError("an attribute node-set was expected")
+    return [str(v) for v in values]
+
+
+def compare(_context: Any, values: Any, op: str, number: float) -> bool:
+    """XPath extension ``x:compare(@a, op, n)``: XPath 2.0's untyped general comparison of attribute values with a
+    number (true when one value compares true), where a value that is not a plain decimal number is an error (XPath
+    1.0 would compare it as NaN; XPath 2.0 fails to cast it or reads more forms than this accepts)."""
+    numbers = []
+    for value in _strings(values):
+        if not _DECIMAL.match(value):
+            raise ValueError(f"not a plain number: {value!r}")
+        numbers.append(float(value))
+    test = _OPERATORS[op]
+    return any(test(x, number) for x in numbers)
+
+
+def count_distinct(_context: Any, values: Any) -> int:
+    """XPath extension ``x:count-distinct(@a)``: ``count(distinct-values(@a))`` of untyped attribute values, which
+    are compared as strings."""
+    return len(set(_strings(values)))
+
+
+def _compiled(text: str | None) -> etree.XPath | None:
+    if text is None:
+        return None
+    functions = {(EXTENSIONS, "compare"): compare, (EXTENSIONS, "count-distinct"): count_distinct}
+    return etree.XPath(text, namespaces={"x": EXTENSIONS}, extensions=functions)
+
+
+@cache
+def plan(folder_name: str) -> _Plan:
+    """The plan of the schema in ``folder_name`` (:mod:`xodrcheck.schema_plan`), its tests compiled by lxml."""
+    source = resources.files("xodrcheck.schemas") / folder_name / PLAN_FILE
+    data = json.loads(source.read_bytes())
+    if data.get("format") != FORMAT:
+        raise ValueError(f"{folder_name}/{PLAN_FILE}: format {data.get('format')}, expected {FORMAT}")
+    decls = [
+        _Decl(d["type"], tuple((_compiled(a["xpath"]), a["test"] is None, a["type"]) for a in d["alternatives"]))
+        for d in data["decls"]
+    ]
+    types = [
+        _Type(t["name"], tuple(_compiled(a["xpath"]) for a in t["assertions"]), dict(t["children"]))
+        for t in data["types"]
+    ]
+    return _Plan(dict(data["top"]), decls, types)
+
+
+def _selected_type(decl: _Decl, elem: etree._Element) -> int:
     """The type ``decl``'s alternatives select for ``elem`` (the first whose test holds, else the default one)."""
-    for alt in decl.alternatives:
-        if alt.token is None or alt.test(elem):
-            return alt.type
+    for test, default, xsd_type in decl.alternatives:
+        if default:
+            return xsd_type
+        if test is None:
+            raise _NotTranslated
+        if test(elem):
+            return xsd_type
     return decl.type
 
 
-def is_valid(tree, xsd11_schema, folder_name: str, main: str) -> bool:
-    """True when ``tree`` is certainly valid against ``xsd11_schema`` (the compiled xmlschema XSD 1.1 schema of the
-    files ``folder_name``/``main``); False means "not shown valid here": validate it fully. ``tree`` is typed in
-    place for the check and restored before this returns."""
+def is_valid(tree: etree._ElementTree, folder_name: str, main: str) -> bool:
+    """True when ``tree`` is certainly valid against the XSD 1.1 schema of the files ``folder_name``/``main``; False
+    means "not shown valid here": validate it fully. ``tree`` is typed in place for the check and restored before
+    this returns."""
     typed: list[tuple[etree._Element, list[str] | None]] = []
     try:
         schema10 = derived(folder_name, main)
+        schema_plan = plan(folder_name)
         root = tree.getroot()
         if root.xpath("boolean(//@*[namespace-uri() = $ns])", ns=XSI):
             return False  # xsi:type and friends: their interplay with alternatives is the full validator's job
-        top = xsd11_schema.elements.get(etree.QName(root).localname)
+        top = schema_plan.top.get(etree.QName(root).localname)
         if top is None:
             return False
-        return _typed_and_asserted(root, top, typed) and bool(schema10.validate(tree))
+        return _typed_and_asserted(root, top, schema_plan, typed) and bool(schema10.validate(tree))
     except Exception:
         return False
     finally:
         _untype(typed)
 
 
-def _typed_and_asserted(root, top, typed: list) -> bool:
+def _typed_and_asserted(root: etree._Element, top: int, schema_plan: _Plan, typed: list) -> bool:
     """Walk the instance along its declarations: False at the first assertion that fails; every element with
     alternatives gets its selected type as ``xsi:type`` (recorded in ``typed`` with, when the element had no
     ``xsi`` namespace in scope, the prefixes it had, for :func:`_untype`)."""
-    kids: dict = {}
+    decls, types = schema_plan.decls, schema_plan.types
     stack = [(root, top)]
     while stack:
-        elem, decl = stack.pop()
-        xsd_type = _selected_type(decl, elem) if decl.alternatives else decl.type
-        for assertion in getattr(xsd_type, "assertions", ()):
+        elem, number = stack.pop()
+        decl = decls[number]
+        xsd_type = types[_selected_type(decl, elem) if decl.alternatives else decl.type]
+        for assertion in xsd_type.assertions:
             if not _holds(assertion, elem):
                 return False
         if decl.alternatives:  # after the tests and assertions that read the element
             prefixes = elem.nsmap
             typed.append((elem, None if XSI in prefixes.values() else [p for p in prefixes if p]))
-            elem.set(f"{{{XSI}}}type", xsd_type.name)
-        declared = _children(xsd_type, kids)
+            elem.set(f"{{{XSI}}}type", xsd_type.name)  # None (an anonymous type) raises: "don't know"
+        declared = xsd_type.children
         for child in elem:
             if isinstance(child.tag, str):  # not comments or processing instructions
                 sub = declared.get(etree.QName(child).localname)
@@ -142,13 +218,11 @@ def _untype(typed: list) -> None:
             etree.cleanup_namespaces(elem, keep_ns_prefixes=kept)
 
 
-def _holds(assertion, elem) -> bool:
-    from elementpath import XPathContext
-
-    token = getattr(assertion, "token", None)
-    if token is None:
+def _holds(assertion: etree.XPath | None, elem: etree._Element) -> bool:
+    """Whether a compiled assertion holds on ``elem`` (one not translated, or that raises, does not)."""
+    if assertion is None:
         return False
     try:
-        return bool(token.evaluate(XPathContext(root=elem, fragment=True)))
+        return bool(assertion(elem))
     except Exception:
         return False

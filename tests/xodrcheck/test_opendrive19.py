@@ -138,7 +138,7 @@ def test_each_test_document_validates_on_the_fast_path_and_checks_clean(path):
     tree = etree.parse(str(path))
     folder, main = schema.SCHEMA_FOLDERS[V19]
     assert [e.reason for e in schema.compiled(V19).iter_errors(tree)] == []
-    assert schema_fast.is_valid(tree, schema.compiled(V19), folder, main)
+    assert schema_fast.is_valid(tree, folder, main)
     # Both documents route their two roads through a junction, to carry 1.9's junction attributes (laneLink
     # fromLayer/toLayer, the junction's own elements) on the smallest map; J019 junction-unneeded rightly says such a
     # junction is not needed (junctions.common.when_to_use / not_only_two), and nothing else may be found.

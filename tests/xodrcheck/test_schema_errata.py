@@ -32,7 +32,7 @@ def _corrected(minor: int, data: bytes) -> tuple[list[str], bool]:
     folder, main = schema.SCHEMA_FOLDERS[version]
     tree = D.tree(data)
     full = [str(e.reason or e.message) for e in schema.compiled(version).iter_errors(tree)]
-    return full, schema_fast.is_valid(tree, schema.compiled(version), folder, main)
+    return full, schema_fast.is_valid(tree, folder, main)
 
 
 @pytest.mark.parametrize("release", sorted(schema_errata.CORRECTED))

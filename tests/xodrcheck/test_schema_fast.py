@@ -35,7 +35,7 @@ def _version_of(tree) -> tuple[int, int]:
 def _fast(tree, version=None) -> bool:
     version = version or _version_of(tree)
     folder, main = schema.SCHEMA_FOLDERS[version]
-    return schema_fast.is_valid(tree, schema.compiled(version), folder, main)
+    return schema_fast.is_valid(tree, folder, main)
 
 
 def _full(tree, version=None) -> list[str]:
@@ -252,7 +252,7 @@ def test_the_fast_path_validates_the_tree_in_place_and_restores_it(version, verd
     folder, main = schema.SCHEMA_FOLDERS[version]
     recording = _Recording(schema_fast.derived(folder, main))
     monkeypatch.setattr(schema_fast, "derived", lambda *_: recording)
-    assert schema_fast.is_valid(tree, schema.compiled(version), folder, main) is (verdict == "valid")
+    assert schema_fast.is_valid(tree, folder, main) is (verdict == "valid")
     assert [t is tree for t in recording.seen] == [True]
     assert recording.typed[0] is not None  # the junction carried its selected type while validated
     assert etree.tostring(tree) == before
