@@ -130,7 +130,7 @@ class _Evaluation:
 
 #: Bytes of lane evaluations the roads of one document keep cached together (:class:`~xodrcheck.budget.ByteBudget`;
 #: each road also keeps at most its last few): a 10 km map's roads kept 466 MB after the curvature rules without it.
-EVALUATION_BUDGET = 64 << 20
+EVALUATION_BUDGET = 32 << 20
 
 
 def _evaluation_size(evaluation: _Evaluation) -> int:

@@ -56,7 +56,7 @@ def test_section_lines_and_evaluations_stay_within_their_budgets_with_unchanged_
     monkeypatch.setattr(sampled, "LINES_BUDGET", 1 << 40)
     monkeypatch.setattr(lanes, "EVALUATION_BUDGET", 1 << 40)
     whole, ctx = _check(path)
-    assert len(sampled._LINES[ctx]._kept) > 700  # the budget holds every section: evaluated once
+    assert sampled._LINES[ctx].kept > 700  # the budget holds every section: evaluated once
 
     small = 1 << 20
     monkeypatch.setattr(sampled, "LINES_BUDGET", small)
@@ -65,7 +65,7 @@ def test_section_lines_and_evaluations_stay_within_their_budgets_with_unchanged_
     bounded, ctx = _check(path)
     assert bounded == whole and len(whole) > 0
     cache = sampled._LINES[ctx]
-    assert 0 < len(cache._kept) < 700 and cache._budget.total <= small
+    assert 0 < cache.kept < 700 and cache.kept_bytes <= small
     evaluations = lanes.geometry_of(ctx.document).budget
     kept = sum(len(g._evaluations) for g in lanes.geometry_of(ctx.document)._built.values())
     assert kept == len(evaluations) > 0 and evaluations.total <= small

@@ -58,10 +58,10 @@ class SectionLines:
 
 _LINES: weakref.WeakKeyDictionary[Context, _SectionCache] = weakref.WeakKeyDictionary()
 
-#: Bytes of :class:`SectionLines` kept per file (:class:`~xodrcheck.budget.ByteBudget`): a small map's lines are
-#: evaluated once for all the rules; a big map's are evaluated again, batch by batch, by each rule that reads them
+#: Bytes of :class:`SectionLines` kept per file (:class:`_SectionCache`): a small map's lines are evaluated once for
+#: all the rules; of a big map's, each rule that reads them evaluates again, batch by batch, those that do not fit
 #: (kept whole, a 10 km map's took 490 MB).
-LINES_BUDGET = 96 << 20
+LINES_BUDGET = 192 << 20
 
 
 def grid_step(tol: Tolerances) -> float:
@@ -107,12 +107,28 @@ class _SectionCache:
     and kept within :data:`LINES_BUDGET`.
 
     The sections :mod:`xodrcheck.roadpass` covers are listed once with their samples (a few bytes per sample). A
-    section asked for and not kept is evaluated with the sections after it: a batch that grows while the rules read
-    on in document order (up to ``_BATCH_SAMPLES``) and starts small again when they jump. A file whose lines fit
-    the budget is evaluated in full batches, once. Sections roadpass leaves out are evaluated one at a time.
+    file whose lines fit the budget is evaluated in full batches, once, and kept whole. In a bigger file the lines
+    first evaluated stay (three quarters of the budget: every rule that reads the file from its start finds them),
+    and the rest pass through a window (the last quarter, least recently used dropped first): a section asked for and
+    not kept is evaluated with the sections after it, in a batch that grows while the rule reads on in document order
+    and starts small again where it jumps. Sections roadpass leaves out are evaluated one at a time.
     """
 
-    __slots__ = ("_budget", "_entries", "_first", "_grids", "_kept", "_keys", "_next", "_position", "_size")
+    __slots__ = (
+        "_bytes",
+        "_entries",
+        "_first",
+        "_grids",
+        "_keys",
+        "_next",
+        "_position",
+        "_resident",
+        "_resident_bytes",
+        "_resident_limit",
+        "_size",
+        "_window",
+        "_window_budget",
+    )
 
     def __init__(self, ctx: Context) -> None:
         from xodrcheck import roadpass
@@ -120,7 +136,7 @@ class _SectionCache:
         self._entries: list[tuple[RoadGeometry, int]] = []
         self._keys: list[tuple[str, int]] = []
         self._grids: list[np.ndarray] = []
-        estimate = 0
+        self._bytes: list[int] = []
         for road in ctx.document.roads:
             geometry = usable(ctx, road)
             if geometry is None:
@@ -133,14 +149,28 @@ class _SectionCache:
                         self._keys.append((road.id, index))
                         self._grids.append(s)
                         lanes = 1 + sum(len(side.lanes) for side in geometry.side_lanes(index))
-                        estimate += array_bytes(2 + 7 * lanes, s.size)
+                        self._bytes.append(array_bytes(2 + 7 * lanes, s.size))
         self._position = {key: i for i, key in enumerate(self._keys)}
-        self._kept: dict[tuple[str, int], SectionLines] = {}
-        self._budget = ByteBudget(LINES_BUDGET)
+        fits = sum(self._bytes) <= LINES_BUDGET
+        self._resident: dict[tuple[str, int], SectionLines] = {}
+        self._resident_bytes = 0
+        self._resident_limit = LINES_BUDGET if fits else LINES_BUDGET - LINES_BUDGET // 4
+        self._window: dict[tuple[str, int], SectionLines] = {}
+        self._window_budget = ByteBudget(LINES_BUDGET - self._resident_limit)
         #: Samples of a batch started away from where the last one ended: all at once when everything fits.
-        self._first = _BATCH_SAMPLES if estimate <= LINES_BUDGET else _FIRST_BATCH_SAMPLES
+        self._first = _BATCH_SAMPLES if fits else _FIRST_BATCH_SAMPLES
         self._next = -1
         self._size = self._first
+
+    @property
+    def kept(self) -> int:
+        """How many sections' lines are kept."""
+        return len(self._resident) + len(self._window)
+
+    @property
+    def kept_bytes(self) -> int:
+        """Estimated bytes of the lines kept."""
+        return self._resident_bytes + self._window_budget.total
 
     def grid(self, road_id: str, section_index: int) -> np.ndarray | None:
         """The samples of a listed section (``None`` for the others)."""
@@ -149,9 +179,12 @@ class _SectionCache:
 
     def lines(self, ctx: Context, road: Road, section_index: int) -> SectionLines:
         key = (road.id, section_index)
-        found = self._kept.get(key)
+        found = self._resident.get(key)
         if found is not None:
-            self._budget.touch(self._kept, key)
+            return found
+        found = self._window.get(key)
+        if found is not None:
+            self._window_budget.touch(self._window, key)
             return found
         position = self._position.get(key)
         if position is not None:
@@ -176,16 +209,25 @@ class _SectionCache:
         return out
 
     def _keep(self, key: tuple[str, int], lines: SectionLines) -> None:
-        self._kept[key] = lines
-        self._budget.add(self._kept, key, _lines_size(lines))
+        size = _lines_size(lines)
+        if self._resident_bytes + size <= self._resident_limit:
+            self._resident[key] = lines
+            self._resident_bytes += size
+        else:
+            self._window[key] = lines
+            self._window_budget.add(self._window, key, size)
 
     def _evaluate_from(self, position: int) -> dict[tuple[str, int], SectionLines]:
-        """Evaluate the batch of listed sections starting at ``position`` and keep it (returned whole: the budget
-        may drop its first sections while keeping its last)."""
+        """Evaluate the batch of listed sections starting at ``position`` and keep it (returned whole: the window
+        may drop its first sections while keeping its last). A batch takes at most half the window."""
         size = min(2 * self._size, _BATCH_SAMPLES) if position == self._next else self._first
-        end, total = position, 0
-        while end < len(self._grids) and (end == position or total + len(self._grids[end]) <= size):
+        room = max(self._window_budget.limit // 2, 1)
+        end, total, weight = position, 0, 0
+        while end < len(self._grids) and (
+            end == position or (total + len(self._grids[end]) <= size and weight + self._bytes[end] <= room)
+        ):
             total += len(self._grids[end])
+            weight += self._bytes[end]
             end += 1
         out: dict[tuple[str, int], SectionLines] = {}
         _evaluate_batch(self._entries[position:end], self._keys[position:end], self._grids[position:end], out)
