@@ -197,6 +197,18 @@ class RoadObject:
 
 
 @dataclass(frozen=True)
+class Bridge:
+    """A ``<bridge>`` record: the stretch ``s`` .. ``s + length`` of its road leads over a bridge (an overpass's
+    deck)."""
+
+    id: str
+    s: float
+    length: float
+    name: str
+    type: str = "concrete"  #: concrete, steel, brick or wood (the schemas' e_bridgeType)
+
+
+@dataclass(frozen=True)
 class Road:
     """A road as written: plan view, lane sections, links, profiles, objects and signals."""
 
@@ -215,6 +227,7 @@ class Road:
     elevation: tuple[Cubic, ...] = ()  #: ``s`` absolute; empty: flat at height 0
     objects: tuple[RoadObject, ...] = ()
     signals: tuple[Signal, ...] = ()
+    bridges: tuple[Bridge, ...] = ()
 
 
 @dataclass(frozen=True)

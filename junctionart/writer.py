@@ -199,10 +199,12 @@ def _road(out: _Out, road: Road, version: str = "1.8") -> None:
     for sec in road.sections:
         _section(add, sec)
     add("    </lanes>")
-    if road.objects:
+    if road.objects or road.bridges:
         add("    <objects>")
         for obj in road.objects:
             _object(add, obj, version)
+        for b in road.bridges:  # after the objects: the schemas' order (object*, objectReference*, tunnel*, bridge*)
+            add(f'      <bridge s="{fmt(b.s)}" length="{fmt(b.length)}" name="{b.name}" id="{b.id}" type="{b.type}"/>')
         add("    </objects>")
     if road.signals:
         add("    <signals>")

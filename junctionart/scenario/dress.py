@@ -21,7 +21,7 @@ def dress(doc: Document, layout: Layout, params: Params, seed: int) -> Document:
     if params.terrain is not Terrain.FLAT or layout.overpasses:
         from .terrain import add_terrain
 
-        doc = add_terrain(doc, layout, params, seed)
+        doc = add_terrain(doc, layout, params, seed, ids)
     if params.junction_control is not JunctionControl.NONE:
         from .signals import add_signals
 

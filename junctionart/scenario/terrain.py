@@ -20,8 +20,9 @@ import numpy as np
 
 from ..curves import end_pose
 from ..intersections.model import Layout
-from ..opendrive import Cubic, Document, Road
+from ..opendrive import Bridge, Cubic, Document, Road
 from ..params import Params, Terrain
+from .ids import Ids
 from .overpass import RAMP_LIMITS, RISE, Crossing, crossing, half_width
 
 #: (maximum grade, smallest vertical-curve radius in m) per terrain: 5 % and 1500 m rolling, 8 % and 600 m hilly,
@@ -160,10 +161,24 @@ def _road_profile(stretches: list[Stretch], z: dict[int, float], length: float) 
     return tuple(out)
 
 
-def add_terrain(doc: Document, layout: Layout, params: Params, seed: int) -> Document:
-    """``doc`` with elevation profiles: roads between their nodes' heights (over or under their overpasses),
-    junction roads flat at theirs."""
+def _bridges(stretches: dict[int, list[Stretch]], ids: Ids | None) -> dict[int, tuple[Bridge, ...]]:
+    """A ``<bridge>`` along each overpass deck (the upper road's level stretch), named after the road below."""
+    lower = {v: road for road, st in stretches.items() for v, off, _, _ in st if v < 0 and off == 0.0}
+    out: dict[int, tuple[Bridge, ...]] = {}
+    for road, st in stretches.items():
+        decks = [(v, s0, s1) for v, off, s0, s1 in st if v < 0 and off > 0.0]
+        out[road] = tuple(
+            Bridge(ids.next() if ids else f"bridge{-v}", s0, s1 - s0, f"overpass over road {lower[v] + 1}")
+            for v, s0, s1 in decks
+        )
+    return out
+
+
+def add_terrain(doc: Document, layout: Layout, params: Params, seed: int, ids: Ids | None = None) -> Document:
+    """``doc`` with elevation profiles: roads between their nodes' heights (over or under their overpasses, a
+    ``<bridge>`` along each deck), junction roads flat at theirs."""
     stretches = _stretches(layout, params)
+    bridges = _bridges(stretches, ids) if layout.overpasses else {}
     z = node_heights(layout, params, seed, stretches)
     by_id = {str(rp.index + 1): rp for rp in layout.roads}
     junction_z = {j.id: z[jp.node] for j, jp in zip(doc.junctions, layout.junctions)}
@@ -172,6 +187,8 @@ def add_terrain(doc: Document, layout: Layout, params: Params, seed: int) -> Doc
         rp = by_id.get(road.id) if road.junction == "-1" else None
         if rp is not None:
             elevation = _road_profile(stretches[rp.index], z, road.length)
+            if bridges.get(rp.index):
+                road = dataclasses.replace(road, bridges=bridges[rp.index])
         else:
             elevation = (Cubic(0.0, junction_z[road.junction]),)
         roads.append(dataclasses.replace(road, elevation=elevation))

@@ -8,6 +8,9 @@ at every junction, every fifth left-hand traffic, every seventh rural), generate
 * SUMO ``netconvert``: exit 0 and one ``tlLogic`` per junction that has ``<controller>`` references;
 * CARLA's parser: ``Map.get_all_landmarks()`` lists every signal (each traffic light among them) and its waypoints
   follow the elevation (their heights span the map's z range read by xodrcheck).
+
+Two more maps carry an overpass (``examples/overpass.json``: the bypass over the approach road, hilly and flat,
+traffic lights at every junction): the same checks hold for them, and CARLA's waypoints reach the deck.
 """
 
 from __future__ import annotations
@@ -19,6 +22,7 @@ import pytest
 from lxml import etree
 
 import junctionart as ja
+from junctionart import controllines
 from junctionart.params import Params
 from tests.interop.asam_harness import AsamRun
 from tests.interop.tools import asam_problems, carla, run_netconvert, start_asam, xodrcheck_errors
@@ -29,6 +33,9 @@ from xodrcheck.reader import read
 pytestmark = pytest.mark.slow  # part of the full suite (CI); left out by -m "not slow"
 
 COUNT = 50
+#: (terrain, seed) of the maps with an overpass, drawn from examples/overpass.json after the COUNT seeds
+OVERPASSES = (("hilly", 1), ("flat", 2))
+EXAMPLES = Path(__file__).resolve().parents[2] / "examples"
 
 
 @dataclass(frozen=True)
@@ -57,6 +64,25 @@ def scenes(tmp_path_factory) -> list[Scene]:
             roadside="rural" if k % 7 == 6 else "urban",
         )
         out.append(Scene(ja.write(ja.generate(p, seed), folder / f"scene-{seed}.xodr"), seed))
+    out += overpass_scenes(folder)
+    return out
+
+
+def overpass_scenes(folder: Path) -> list[Scene]:
+    """The :data:`OVERPASSES` maps, each checked to hold its overpass."""
+    lines = controllines.load(EXAMPLES / "overpass.json")
+    out = []
+    for terrain, seed in OVERPASSES:
+        p = Params.create(
+            "scenario",
+            terrain=terrain,
+            overpass_probability=1.0,
+            junction_control="traffic-lights",
+            randomize_lanes=True,
+        )
+        result = ja.generate_layout(p, seed, lines)
+        assert len(result.layout.overpasses) == 1, f"{terrain} seed {seed}: no overpass ({result.layout.repairs})"
+        out.append(Scene(ja.write(result.document, folder / f"overpass-{terrain}-{seed}.xodr"), seed))
     return out
 
 
@@ -73,7 +99,7 @@ def test_plan_has_signals_sidewalks_and_hills(scenes, asam_run):
         lit += sum(j.find("controller") is not None for j in root.iter("junction"))
         lights += len(root.findall(".//signal[@type='1000001']"))
         sidewalks += len(root.findall(".//lane[@type='sidewalk']"))
-    assert len(scenes) == COUNT and lit > 100 and lights > 500 and sidewalks > 1000
+    assert len(scenes) == COUNT + len(OVERPASSES) and lit > 100 and lights > 500 and sidewalks > 1000
 
 
 def test_xodrcheck_finds_no_error(scenes):
@@ -96,7 +122,7 @@ def test_sumo_builds_a_traffic_light_program_for_every_signalised_junction(scene
 
 def test_carla_lists_the_signals_as_landmarks_and_follows_the_elevation(scenes):
     bad = []
-    for s in scenes[:: max(1, COUNT // 12)]:
+    for s in scenes[: COUNT : max(1, COUNT // 12)] + scenes[COUNT:]:
         result = carla(s.path, distance=5.0)
         signals = {(el.get("id"), el.get("type")) for el in s.root.iter("signal")}
         marks = {(m[0], m[1]) for m in result.landmarks}

@@ -8,6 +8,7 @@ from pathlib import Path
 
 import numpy as np
 import pytest
+from lxml import etree
 
 import junctionart as ja
 from junctionart import controllines
@@ -85,6 +86,32 @@ def test_overpass_maps_have_no_finding_and_are_schema_valid(maps, schema18):
         assert list(schema18.iter_errors(str(path))) == []
         report = check(path)
         assert [(f.code, f.message) for f in report.findings if f.severity.name in ("ERROR", "WARNING")] == []
+
+
+def test_a_bridge_record_spans_the_deck(maps):
+    """The upper road carries one ``<bridge>`` over its level stretch, which holds the crossing: z is constant along
+    it and at least the rise above the lower road's surface at the crossing."""
+    for _, path, (up, low) in maps:
+        root = etree.parse(str(path)).getroot()
+        bridges = root.findall(".//road/objects/bridge")
+        assert len(bridges) == 1 and bridges[0].getparent().getparent().get("id") == up
+        b = bridges[0]
+        assert b.get("type") == "concrete" and b.get("name") == f"overpass over road {low}"
+        s0, length = float(b.get("s")), float(b.get("length"))
+        road = next(r for r in read(path).document.roads if r.id == up)
+        deck = [e for e in road.elevation if abs(e.s - s0) < 1e-9]
+        assert len(deck) == 1 and (deck[0].b, deck[0].c, deck[0].d) == (0.0, 0.0, 0.0) and length > 10.0
+
+
+@pytest.mark.parametrize("version", ["1.7", "1.9"])
+def test_other_versions_are_schema_valid_with_the_bridge(version, schema17, schema19):
+    r = _generate("hilly", 1, version=version)
+    data = ja.to_bytes(r.document, version)
+    assert b"<bridge " in data
+    if version == "1.7":
+        assert schema17.validate(etree.fromstring(data))
+    else:
+        assert list(schema19.iter_errors(etree.fromstring(data))) == []
 
 
 def test_a_deck_only_3_m_above_is_an_o001_error(tmp_path, monkeypatch):
