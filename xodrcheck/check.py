@@ -249,13 +249,13 @@ def check(
     """
     import numpy as np  # here, not at the top: importing xodrcheck stays light
 
-    from xodrcheck.reader import read
+    from xodrcheck.reader import read_keeping_tree
 
     config = config or Config()
     selection = Selection(tuple(select) or config.select, tuple(ignore) or config.ignore)
     started = time.monotonic()
-    result = read(source, max_bytes=config.tolerances.max_file_bytes)
-    memory.release()  # the reader's parse tree is gone: its pages go back to the system before the rules start
+    # one parse: the reader's tree is the XML rules' tree (when the file is well-formed), dropped after them
+    result, tree = read_keeping_tree(source, max_bytes=config.tolerances.max_file_bytes)
     data = _raw(source if isinstance(source, bytes) else _read_bytes(result.path), config.tolerances.max_file_bytes)
     findings = [f for f in result.findings if selection.wants_finding(f)]
     run = [
@@ -274,7 +274,9 @@ def check(
                 path=result.path,
                 data=data,
                 deadline=_deadline(started, config.tolerances.time_budget),
+                tree=tree,
             )
+            del tree  # the context holds it until the XML rules have run
             version = _version_text(ctx.version)
             more, ran = run_rules(ctx, selection)
             findings.extend(f for f in more if selection.wants_finding(f) or f.code in _ENGINE_CODES)

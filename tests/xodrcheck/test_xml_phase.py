@@ -76,3 +76,44 @@ def test_only_rules_declared_xml_read_the_tree(path: Path):
                     pytest.fail(f"rule {rule.code} reads the XML tree without declaring xml=True")
                 except Exception:
                     pass  # a crash of its own is another test's business (the runner reports it as X900)
+
+
+def _findings(report) -> list[str]:
+    return [repr(f) for f in report.findings]
+
+
+def test_check_parses_a_well_formed_file_once(monkeypatch):
+    """The reader's tree is the XML rules' tree: the context never parses again, and the findings are those of a
+    check whose context parses the file itself."""
+    import importlib
+
+    from xodrcheck.check import check
+
+    reader = importlib.import_module("xodrcheck.reader")
+
+    path = corpus_root() / MAP
+    parses: list[int] = []
+    own_parse = Context._parse
+    monkeypatch.setattr(Context, "_parse", lambda self: parses.append(1) or own_parse(self))
+    with np.errstate(all="ignore"):
+        once = check(path)
+    assert parses == [] and once.complete
+    own_read = reader.read_keeping_tree
+    monkeypatch.setattr(reader, "read_keeping_tree", lambda *a, **k: (own_read(*a, **k)[0], None))
+    with np.errstate(all="ignore"):
+        twice = check(path)
+    assert parses == [1] and _findings(once) == _findings(twice)
+
+
+def test_a_namespaced_or_broken_file_gets_a_tree_of_its_own():
+    """The reader strips a default namespace and recovers what it can from bad XML; the rules' tree is neither."""
+    from xodrcheck.reader import read_keeping_tree
+
+    data = (FIXTURES / "link-not-reciprocal" / "pass_junction.xodr").read_bytes()
+    result, tree = read_keeping_tree(data)
+    assert result.document is not None and tree is not None and tree.getroot().tag == "OpenDRIVE"
+    spaced = data.replace(b"<OpenDRIVE", b'<OpenDRIVE xmlns="http://www.opendrive.org"', 1)
+    result, tree = read_keeping_tree(spaced)
+    assert result.document is not None and tree is None
+    result, tree = read_keeping_tree(data[: len(data) // 2])
+    assert result.document is not None and tree is None

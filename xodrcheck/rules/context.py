@@ -94,6 +94,8 @@ class Context:
         path: str | None = None,
         data: bytes | None = None,
         deadline: float | None = None,
+        *,
+        tree: etree._ElementTree | None = None,
     ) -> None:
         self.document = document
         self.config = config or Config()
@@ -107,6 +109,8 @@ class Context:
         self._positions: dict[tuple, tuple[float, float, float] | None] = {}
         self._views: dict[str, Any] = {}
         self._released = False
+        if tree is not None:  # the reader's tree of these bytes (:func:`xodrcheck.reader.read_keeping_tree`)
+            self.__dict__["_tree"] = tree
 
     # ---------------------------------------------------------------------------------------------------- basics
     @property
@@ -134,7 +138,8 @@ class Context:
     def tree(self) -> etree._ElementTree | None:
         """The file parsed safely with the reader's parser (:func:`xodrcheck.reader.parse`: no entities, no network, a
         prefix before the XML declaration and a DOCTYPE blanked out, source lines unchanged), namespaces kept for
-        schema validation, parsed on first use. ``None`` when the file is not well-formed (the reader reports why).
+        schema validation, parsed on first use unless the caller passed the reader's tree of the same bytes. ``None``
+        when the file is not well-formed (the reader reports why).
         Only rules declared with ``xml=True`` read it: after them the runner drops it (:meth:`release_tree`), and
         reading it then raises :class:`TreeReleased`.
         """
