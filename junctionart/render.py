@@ -3,6 +3,8 @@ and lane geometry (not the generator's model).
 
 Lanes are filled by type (driving grey, median green, sidewalk and shoulder lighter, others tan); lanes of connecting
 roads inside junctions are drawn in a light orange so junctions stand out; reference lines are thin dark lines.
+On a map whose heights vary, lanes and reference lines are drawn in pieces of :data:`PIECE` samples (about 50 m),
+lowest first, so that an overpass's deck covers the road below it.
 """
 
 from __future__ import annotations
@@ -32,6 +34,13 @@ COLOURS = {
 JUNCTION_COLOUR = "#f0a04b"
 OTHER_COLOUR = "#c8b48a"
 REFERENCE_COLOUR = "#f5d76e"
+#: Samples (2 m apart) per piece of a lane drawn by height on a map whose heights vary.
+PIECE = 25
+#: Half-width (m) of a reference line drawn as a strip among the lanes on such a map.
+REFERENCE_HALF = 0.2
+#: Height (m) a reference-line strip is drawn as if lifted, so that it stays above its own road's neighbouring pieces
+#: (well below an overpass's 5.5 m).
+REFERENCE_LIFT = 1.0
 
 
 def _legend_entries(used: list[str]) -> list[tuple[str, str]]:
@@ -61,6 +70,19 @@ class Rendered(NamedTuple):
     format: str
     roads: int
     junctions: int
+
+
+def _heights_vary(doc) -> bool:
+    """Whether any road of ``doc`` leaves height 0 (then lanes are drawn by height)."""
+    return any(e.a != 0.0 or e.b != 0.0 or e.c != 0.0 or e.d != 0.0 for road in doc.roads for e in road.elevation)
+
+
+def _pieces(n: int, layered: bool) -> list[tuple[int, int]]:
+    """Index ranges [lo, hi) of ``n`` samples: the whole when not ``layered``, else pieces of :data:`PIECE` samples
+    sharing their end samples."""
+    if not layered:
+        return [(0, n)]
+    return [(lo, min(lo + PIECE + 1, n)) for lo in range(0, n - 1, PIECE)]
 
 
 def image_format(output: str | Path) -> str:
@@ -102,7 +124,10 @@ def render(
     geos = geometry_of(doc)
     polys: list[np.ndarray] = []
     colours: list[str] = []
+    heights: list[float] = []
     refs: list[np.ndarray] = []
+    layered = _heights_vary(doc)
+    drawn_refs = False
     for road in doc.roads:
         try:
             geo = geos[road.id]
@@ -112,28 +137,55 @@ def render(
                 if s1 - s0 <= 1e-9:
                     continue
                 s = np.linspace(s0, s1, max(2, min(400, int((s1 - s0) / 2.0) + 2)))
+                z = geo.elevation(s)
                 for lane in (*sec.left, *sec.right):
                     inner = geo.lane_points(idx, lane.id, s, where="inner")
                     outer = geo.lane_points(idx, lane.id, s, where="outer")
-                    ring = np.column_stack(
-                        [np.concatenate([inner.x, outer.x[::-1]]), np.concatenate([inner.y, outer.y[::-1]])]
-                    )
-                    if not np.all(np.isfinite(ring)):
-                        continue
-                    polys.append(ring)
-                    colours.append(JUNCTION_COLOUR if in_junction else COLOURS.get(lane.type.value, OTHER_COLOUR))
+                    colour = JUNCTION_COLOUR if in_junction else COLOURS.get(lane.type.value, OTHER_COLOUR)
+                    for lo, hi in _pieces(len(s), layered):
+                        ring = np.column_stack(
+                            [
+                                np.concatenate([inner.x[lo:hi], outer.x[lo:hi][::-1]]),
+                                np.concatenate([inner.y[lo:hi], outer.y[lo:hi][::-1]]),
+                            ]
+                        )
+                        if not np.all(np.isfinite(ring)):
+                            continue
+                        polys.append(ring)
+                        colours.append(colour)
+                        heights.append(float(z[lo:hi].mean()))
             s = np.linspace(0.0, road.length, max(2, min(400, int(road.length / 2.0) + 2)))
             pose = geo.reference(s)
-            if not in_junction:
+            if not in_junction and not layered:
                 refs.append(np.column_stack([pose.x, pose.y]))
+            elif not in_junction:  # a strip among the lanes, above the road's own pieces
+                z = geo.elevation(s)
+                nx, ny = -np.sin(pose.hdg) * REFERENCE_HALF, np.cos(pose.hdg) * REFERENCE_HALF
+                for lo, hi in _pieces(len(s), layered):
+                    xs, ys = pose.x[lo:hi], pose.y[lo:hi]
+                    ring = np.column_stack(
+                        [
+                            np.concatenate([xs + nx[lo:hi], (xs - nx[lo:hi])[::-1]]),
+                            np.concatenate([ys + ny[lo:hi], (ys - ny[lo:hi])[::-1]]),
+                        ]
+                    )
+                    polys.append(ring)
+                    colours.append(REFERENCE_COLOUR)
+                    heights.append(float(z[lo:hi].mean()) + REFERENCE_LIFT)
+                drawn_refs = True
         except (ArithmeticError, ValueError, KeyError, IndexError, TypeError):  # a road the geometry cannot
             # evaluate is left out of the picture, never fatal
             continue
     fig, ax = plt.subplots(figsize=(size, size))
     legend: list[Patch | Line2D] = [Patch(color=c, label=name) for name, c in _legend_entries(colours)]
-    if refs:
+    if refs or drawn_refs:
         legend.append(Line2D([], [], color=REFERENCE_COLOUR, linewidth=1.5, label="reference line"))
-    ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors="none", alpha=0.95))
+    if layered:  # lowest first; each piece edged in its own colour so that no seam shows between pieces
+        order = np.argsort(np.asarray(heights), kind="stable")
+        polys, colours = [polys[k] for k in order], [colours[k] for k in order]
+        ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors=colours, linewidths=0.3))
+    else:
+        ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors="none", alpha=0.95))
     ax.add_collection(LineCollection(refs, colors=REFERENCE_COLOUR, linewidths=0.4))
     pts = np.concatenate(polys) if polys else np.zeros((1, 2))
     pad = 10.0

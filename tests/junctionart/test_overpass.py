@@ -4,6 +4,7 @@ terrain's limits, z continuous at every link, no finding; a deck lowered to 3 m 
 
 from __future__ import annotations
 
+import itertools
 from pathlib import Path
 
 import numpy as np
@@ -184,3 +185,18 @@ def test_the_probability_is_validated():
     with pytest.raises(ja.ParamsError, match="overpass_probability"):
         Params.create(overpass_probability=1.5)
     assert Params().overpass_probability == 0.0 and not Params().scenario
+
+
+def test_render_draws_pieces_by_height_only_where_heights_vary(maps, tmp_path):
+    """A map whose heights vary is drawn in pieces, lowest first (the deck over the road below); a flat map whole,
+    as before."""
+    from junctionart.render import PIECE, _heights_vary, _pieces, render
+
+    assert _pieces(200, False) == [(0, 200)]
+    pieces = _pieces(200, True)
+    assert pieces[0][0] == 0 and pieces[-1][1] == 200 and all(b[0] == a[1] - 1 for a, b in itertools.pairwise(pieces))
+    assert max(hi - lo for lo, hi in pieces) == PIECE + 1
+    flat = read(ja.to_bytes(ja.generate(Params(), 1))).document
+    assert not _heights_vary(flat) and _heights_vary(read(maps[0][1]).document)  # maps[0]: flat ground, a deck
+    out = render(maps[0][1], tmp_path / "overpass.png")
+    assert out.roads > 10 and (tmp_path / "overpass.png").stat().st_size > 10_000
