@@ -32,6 +32,26 @@ _HEIGHT_POINTS = 24
 _PAIR_BLOCK = 4096
 
 
+#: Mesh vertices whose lane outlines are made polygons at a time (the temporaries scale with it: a 10 km map's
+#: outlines at once peaked about 450 MB over the mesh).
+_OUTLINE_BLOCK = 1 << 18
+
+
+def _outlines(surfaces: LaneSurfaces) -> np.ndarray:
+    """One plan-view polygon per lane strip (its outline; possibly not valid), built in blocks of lanes."""
+    polygons = np.empty(len(surfaces), dtype=object)
+    xy = surfaces.vertices[:, :2]
+    starts = surfaces.lane_vertices
+    first = 0
+    while first < len(surfaces):
+        last = int(np.searchsorted(starts, starts[first] + _OUTLINE_BLOCK, side="right")) - 1
+        last = min(max(last, first + 1), len(surfaces))
+        order, owner = surfaces.outline_order(first, last)
+        polygons[first:last] = shapely.polygons(shapely.linearrings(xy[order], indices=owner))
+        first = last
+    return polygons
+
+
 class Footprints:
     """Lane footprints of one document with a spatial index (build with :func:`footprints_of`)."""
 
@@ -39,13 +59,7 @@ class Footprints:
         self.surfaces = surfaces
         self._out_of_time = out_of_time
         self._near: np.ndarray | None = None
-        order, owner = surfaces.outline_order()
-        xy = surfaces.vertices[:, :2]
-        if len(surfaces):
-            rings = shapely.linearrings(xy[order], indices=owner)
-            polygons = shapely.polygons(rings)
-        else:
-            polygons = np.empty(0, dtype=object)
+        polygons = _outlines(surfaces)
         invalid = np.flatnonzero(~shapely.is_valid(polygons))
         for i in invalid:
             polygons[i] = self._triangle_union(int(i))

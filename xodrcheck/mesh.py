@@ -87,14 +87,16 @@ class LaneSurfaces:
         half = (stop - start) // 2
         return self.vertices[start : start + half], self.vertices[start + half : stop]
 
-    def outline_order(self) -> tuple[np.ndarray, np.ndarray]:
-        """Vertex indices of every lane's plan-view outline (inner row forward, outer row backward), concatenated,
-        and the lane index of each: ready for ``shapely.linearrings(xy[order], indices=owner)``."""
-        counts = np.diff(self.lane_vertices)
-        owner = np.repeat(np.arange(len(self.lanes)), counts)
-        j = np.arange(owner.size) - np.repeat(self.lane_vertices[:-1], counts)
+    def outline_order(self, first: int = 0, last: int | None = None) -> tuple[np.ndarray, np.ndarray]:
+        """Vertex indices of the plan-view outline of every lane from ``first`` to before ``last`` (default: all;
+        inner row forward, outer row backward), concatenated, and the lane index of each counted from ``first``:
+        ready for ``shapely.linearrings(xy[order], indices=owner)``."""
+        starts = self.lane_vertices[first : (len(self.lanes) if last is None else last) + 1]
+        counts = np.diff(starts)
+        owner = np.repeat(np.arange(len(counts)), counts)
+        j = np.arange(owner.size) - np.repeat(starts[:-1] - starts[0], counts)
         half = np.repeat(counts // 2, counts)
-        base = np.repeat(self.lane_vertices[:-1], counts)
+        base = np.repeat(starts[:-1], counts)
         order = np.where(j < half, base + j, base + 3 * half - 1 - j)
         return order, owner
 

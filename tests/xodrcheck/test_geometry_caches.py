@@ -121,3 +121,28 @@ def test_lane_meshes_built_in_batches_are_the_one_pass_mesh(
     assert whole.lanes == batched.lanes and whole.lane_types == batched.lane_types and len(whole.lanes) > 20
     for field in ("vertices", "faces", "face_lane", "face_s", "lane_vertices", "lane_faces"):
         assert np.array_equal(getattr(whole, field), getattr(batched, field), equal_nan=True), field
+
+
+@pytest.mark.corpus
+def test_lane_outlines_made_in_blocks_are_the_outlines_made_at_once(corpus_dir: Path, monkeypatch: pytest.MonkeyPatch):
+    """The footprints' polygons of a big map are made a block of lanes at a time (bounded temporaries)."""
+    import shapely
+
+    from xodrcheck import footprint, mesh
+
+    surfaces = mesh.surfaces_of(read(corpus_dir / "carla-towns/OpenDrive/Town07.xodr").document)
+    order, owner = surfaces.outline_order()
+    whole = shapely.polygons(shapely.linearrings(surfaces.vertices[order, :2], indices=owner))
+    blocks: list[int] = []
+    polygons = shapely.polygons
+
+    def counted(rings):
+        blocks.append(int(shapely.get_num_coordinates(rings).sum()))
+        return polygons(rings)
+
+    monkeypatch.setattr(footprint, "_OUTLINE_BLOCK", 1000)
+    monkeypatch.setattr(shapely, "polygons", counted)
+    made = footprint._outlines(surfaces)
+    assert len(blocks) > 10 and max(blocks) <= 1000 + max(np.diff(surfaces.lane_vertices)) + len(surfaces)
+    assert len(made) == len(whole) > 700
+    assert all(np.array_equal(shapely.get_coordinates(a), shapely.get_coordinates(b)) for a, b in zip(made, whole))
