@@ -6,20 +6,21 @@ returns the generator's own document model; ``write(document, path, version)`` w
 
 from __future__ import annotations
 
+import importlib
 from collections.abc import Callable
 from pathlib import Path
-
-import numpy as np
+from typing import TYPE_CHECKING, Any
 
 from xodrcheck.classcache import dataclass
 
-from . import cleanup, controllines, intersections, lanes, network
-from .controllines import ControlLines
 from .errors import InputError, JunctionArtError, ParamsError
-from .opendrive import Document
-from .params import Params
-from .writer import to_bytes
-from .writer import write as _write
+
+if TYPE_CHECKING:
+    from . import intersections, lanes, network
+    from .controllines import ControlLines
+    from .opendrive import Document
+    from .params import Params
+    from .writer import to_bytes
 
 __all__ = [
     "STAGES",
@@ -35,6 +36,37 @@ __all__ = [
     "to_bytes",
     "write",
 ]
+
+#: Public names that load their module on first use (PEP 562), so ``junctionart --help`` and the command line's
+#: argument parsing import no stage of the generator (nor numpy).
+_LAZY = {
+    "ControlLines": "controllines",
+    "Document": "opendrive",
+    "Params": "params",
+    "to_bytes": "writer",
+}
+#: The stage modules (any submodule is an attribute of the package on first use: ``junctionart.network``, ...).
+_STAGE_MODULES = frozenset({"cleanup", "controllines", "intersections", "lanes", "network"})
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        value = getattr(importlib.import_module(f"{__name__}.{_LAZY[name]}"), name)
+    elif name.startswith("__"):
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    else:  # a submodule, as when the package imported every stage itself
+        try:
+            value = importlib.import_module(f"{__name__}.{name}")
+        except ModuleNotFoundError as exc:
+            if exc.name != f"{__name__}.{name}":
+                raise
+            raise AttributeError(f"module {__name__!r} has no attribute {name!r}") from None
+    globals()[name] = value
+    return value
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY) | _STAGE_MODULES)
 
 
 @dataclass(frozen=True)
@@ -62,6 +94,11 @@ def generate_layout(
 
     ``on_stage`` (for progress bars) is called with each name of :data:`STAGES` as that stage starts.
     """
+    import numpy as np
+
+    from . import cleanup, controllines, intersections, lanes, network
+    from .params import Params
+
     params = params if params is not None else Params()
     if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
         raise ParamsError(f"seed={seed!r}: must be a non-negative integer")
@@ -91,4 +128,6 @@ def generate(params: Params | None = None, seed: int = 0, control_lines: Control
 
 def write(document: Document, path: str | Path, version: str = "1.8") -> Path:
     """Write ``document`` as OpenDRIVE ``version`` ("1.8", "1.9" or "1.7") to ``path``, atomically."""
+    from .writer import write as _write
+
     return _write(document, path, version)

@@ -117,6 +117,11 @@ def test_plain_check_loads_no_slow_module_it_does_not_use(tmp_path: Path, plain:
     # np.unique imports numpy.ma to ask whether its array is masked (the geometry uses xodrcheck.arrays.unique);
     # ctypes.util (and its subprocess) only found the C library for malloc_trim; no configuration file: no TOML parser
     assert {"numpy.ma", "ctypes.util", "subprocess", "tomllib", "tomli"}.isdisjoint(names)
+    # the package's data files are read from its folder (no importlib.resources readers, no zipfile), the XSD 1.1
+    # fast path and its plan only for 1.8/1.9 files, tempfile only to write an output file
+    lazy = {"zipfile", "importlib.readers", "tempfile", "xodrcheck.schema_fast", "xodrcheck.schema_plan"}
+    assert lazy & names == set()
+    assert "xodrcheck.schema" in names and "xodrcheck.standard" in names
 
 
 def test_check_without_overlap_rules_loads_no_shapely(tmp_path: Path, plain: Path) -> None:
@@ -160,3 +165,15 @@ def test_command_table_matches_the_modules() -> None:
         module = command_module(name)
         assert (name, help_text) == (module.NAME, module.HELP)
     assert tuple(COMMANDS) == xodrcheck.cli.SUBCOMMANDS
+
+
+def test_junctionart_help_loads_no_stage_of_the_generator(tmp_path: Path) -> None:
+    names = modules(tmp_path, "junctionart.cli", "junctionart", "--help")
+    assert {m for m in names if m.split(".")[0] == "junctionart"} <= {
+        "junctionart",
+        "junctionart.cli",
+        "junctionart.errors",
+        "junctionart.params",
+    }
+    assert "junctionart.cli" in names
+    assert {m.split(".")[0] for m in names} & set(WATCHED) <= {"junctionart", "xodrcheck"}

@@ -15,7 +15,6 @@ from __future__ import annotations
 import errno
 import os
 import signal
-import tempfile
 import threading
 from collections.abc import Iterator
 from contextlib import contextmanager
@@ -103,6 +102,8 @@ def atomic_file(path: str | os.PathLike[str], mode: str = "w") -> Iterator[IO[An
     target = check_target(path)
     folder = _folder(target)
     try:
+        import tempfile  # here: a check that writes no file does not load it (nor random, shutil)
+
         fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=folder)
     except OSError as exc:
         raise OutputError(f"cannot write {path}: cannot create a file in folder {folder} ({_cause(exc)})") from None

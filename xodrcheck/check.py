@@ -13,7 +13,6 @@ opened at all) and :class:`~xodrcheck.config.ConfigError` (a selector names no r
 from __future__ import annotations
 
 import dataclasses
-import gzip
 import io
 import re
 import time
@@ -314,6 +313,8 @@ def _raw(data: bytes | None, limit: int) -> bytes | None:
     if data is None or not data.startswith(b"\x1f\x8b"):
         return data
     try:
+        import gzip  # here: only compressed files need it
+
         with gzip.GzipFile(fileobj=io.BytesIO(data)) as stream:
             out = stream.read(limit + 1)
     except (OSError, EOFError, zlib.error):

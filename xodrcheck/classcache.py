@@ -111,6 +111,17 @@ class _Cache:
 _CACHE = _Cache()
 
 
+def compiled(source: str, module: str) -> CodeType:
+    """``compile(source, "<string>", "exec")`` (no inherited flags), from the cache file of ``module``: for other
+    generated code made at import, as :mod:`xodrcheck.reader.construct`'s constructors."""
+    with _CACHE.lock:
+        outer, _CACHE.module = _CACHE.module, module
+        try:
+            return _CACHE.code(source)
+        finally:
+            _CACHE.module = outer
+
+
 def _exec(source: Any, globals: Any = None, locals: Any = None, /) -> None:
     """:func:`exec` for the dataclasses module: its generated sources are compiled once, then taken from the cache."""
     if isinstance(source, str):

@@ -24,10 +24,9 @@ import sys
 import threading
 from collections.abc import Iterator
 from functools import cache
-from importlib import resources
 from pathlib import Path
 
-from xodrcheck import schema_fast, usercache
+from xodrcheck import packagedata, usercache
 from xodrcheck.classcache import dataclass
 
 #: (revMajor, revMinor) -> (folder under the package data ``xodrcheck.schemas``, main file).
@@ -67,19 +66,27 @@ def schema_name(version: tuple[int, int]) -> str | None:
 
 def _schema_file(version: tuple[int, int]):
     folder, main = SCHEMA_FOLDERS[version]
-    return resources.files("xodrcheck.schemas") / folder / main
+    return packagedata.folder("xodrcheck.schemas") / folder / main
 
 
 @cache
 def _compiled(version: tuple[int, int]):
     source = _schema_file(version)
-    with resources.as_file(source) as path:
-        if version in XSD11:
-            return _xsd11(version, path)
-        from lxml import etree
+    if isinstance(source, Path):
+        return _build(version, source)
+    from importlib import resources
 
-        parser = etree.XMLParser(resolve_entities=False, no_network=True)
-        return etree.XMLSchema(etree.parse(str(path), parser))
+    with resources.as_file(source) as path:
+        return _build(version, path)
+
+
+def _build(version: tuple[int, int], path: Path):
+    if version in XSD11:
+        return _xsd11(version, path)
+    from lxml import etree
+
+    parser = etree.XMLParser(resolve_entities=False, no_network=True)
+    return etree.XMLSchema(etree.parse(str(path), parser))
 
 
 def _xsd11(version: tuple[int, int], path: Path):
@@ -135,6 +142,8 @@ def compiled(version: tuple[int, int]):
 def validate(tree, version: tuple[int, int]) -> Iterator[SchemaError]:
     """Validate an lxml tree against the schema of ``version``, yielding each error with its source line."""
     if version in XSD11:
+        from xodrcheck import schema_fast
+
         folder, main = SCHEMA_FOLDERS[version]
         if schema_fast.is_valid(tree, folder, main):
             return  # shown valid by lxml on the XSD 1.0 part plus the alternatives and assertions (schema_fast)

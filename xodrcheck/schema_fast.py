@@ -30,11 +30,11 @@ import json
 import operator
 import re
 from functools import cache
-from importlib import resources
 from typing import Any, NamedTuple
 
 from lxml import etree
 
+from xodrcheck import packagedata
 from xodrcheck.schema_plan import EXTENSIONS, FORMAT, PLAN_FILE
 
 XS = "http://www.w3.org/2001/XMLSchema"
@@ -59,7 +59,7 @@ class _Files(etree.Resolver):
 def derived(folder_name: str, main: str) -> etree.XMLSchema:
     """The XSD 1.0 schema derived from the files of ``folder_name``: no assertions, no alternatives."""
     texts = {}
-    for entry in sorted(resources.files("xodrcheck.schemas").joinpath(folder_name).iterdir(), key=lambda e: e.name):
+    for entry in sorted((packagedata.folder("xodrcheck.schemas") / folder_name).iterdir(), key=lambda e: e.name):
         if not entry.name.endswith(".xsd"):
             continue
         root = etree.fromstring(entry.read_bytes(), etree.XMLParser(resolve_entities=False, no_network=True))
@@ -135,7 +135,7 @@ def _compiled(text: str | None) -> etree.XPath | None:
 @cache
 def plan(folder_name: str) -> _Plan:
     """The plan of the schema in ``folder_name`` (:mod:`xodrcheck.schema_plan`), its tests compiled by lxml."""
-    source = resources.files("xodrcheck.schemas") / folder_name / PLAN_FILE
+    source = packagedata.folder("xodrcheck.schemas") / folder_name / PLAN_FILE
     data = json.loads(source.read_bytes())
     if data.get("format") != FORMAT:
         raise ValueError(f"{folder_name}/{PLAN_FILE}: format {data.get('format')}, expected {FORMAT}")

@@ -227,3 +227,16 @@ def _is_dataclass(decorator: ast.expr) -> bool:
     return (isinstance(target, ast.Name) and target.id == "dataclass") or (
         isinstance(target, ast.Attribute) and target.attr == "dataclass"
     )
+
+
+def test_other_generated_code_compiles_as_exec_would_and_is_recorded():
+    from xodrcheck.classcache import compiled
+
+    source = "def make(a, b=1):\n    return (a, b)\n"
+    code = compiled(source, "tests.generated")
+    assert code == compile(source, "<string>", "exec", dont_inherit=True)
+    assert compiled(source, "tests.generated") == code
+    assert classcache._CACHE.used["tests.generated"][source] == code  # saved with that module's file at exit
+    namespace: dict = {}
+    exec(code, namespace)
+    assert namespace["make"](3) == (3, 1)

@@ -10,7 +10,6 @@ Gzip-compressed files (``.xodrz``, the standard's compressed form) are decompres
 
 from __future__ import annotations
 
-import gzip
 import io
 import os
 import stat
@@ -92,6 +91,8 @@ def _load(path: str, limit: int) -> bytes:
 
 def _gunzip(data: bytes, limit: int, findings: list[Finding], path: str | None) -> bytes | None:
     try:
+        import gzip  # here: only compressed files need it
+
         with gzip.GzipFile(fileobj=io.BytesIO(data)) as stream:
             out = stream.read(limit + 1)
     except (OSError, EOFError, zlib.error) as exc:

@@ -14,6 +14,7 @@ from collections.abc import Callable
 from typing import TypeVar, cast
 
 from xodrcheck import model
+from xodrcheck.classcache import compiled
 
 T = TypeVar("T")
 
@@ -38,7 +39,7 @@ def constructor(cls: type[T]) -> Callable[..., T]:
         namespace[f"_set_{f.name}"] = getattr(cls, f.name).__set__
     body = "".join(f"    _set_{f.name}(obj, {f.name})\n" for f in fields)
     source = f"def make({', '.join(params)}):\n    obj = _new(_cls)\n{body}    return obj\n"
-    exec(source, namespace)
+    exec(compiled(source, __name__), namespace)  # the byte code from the dataclasses' cache (classcache)
     make = cast("Callable[..., T]", namespace["make"])  # the function exec just defined
     make.__name__ = make.__qualname__ = cls.__name__
     make.__doc__ = f"Build a {cls.__name__} (same parameters as the class)."

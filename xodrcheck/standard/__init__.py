@@ -19,8 +19,8 @@ from __future__ import annotations
 import fnmatch
 import functools
 import re
-from importlib import resources
 
+from xodrcheck import packagedata
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Severity
 
@@ -63,7 +63,7 @@ class AnnexRule:
 @functools.cache
 def annex_rules() -> dict[str, AnnexRule]:
     """Every Annex F rule by UID, in the annex's order."""
-    text = resources.files(__package__).joinpath("annex_f.tsv").read_text(encoding="utf-8")
+    text = (packagedata.folder(__name__) / "annex_f.tsv").read_text(encoding="utf-8")
     out: dict[str, AnnexRule] = {}
     for row in text.splitlines():
         if row and not row.startswith("#"):
