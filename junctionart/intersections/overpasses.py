@@ -2,7 +2,8 @@
 
 The two roads of an overpass may overlap in plan view (the deck's clearance separates them). Once the roads are laid,
 each overpass is measured again: where the reference lines cross, whether the upper road has room for both ramps and
-the lower road for its level stretch. One that does not fit becomes a junction (the upper edge is split where it
+the lower road for its level stretch, and whether neither road already holds another overpass (two roads of one
+chain of edges could). One that does not fit becomes a junction (the upper edge is split where it
 crosses the lower one); the next pass lays the new intersection.
 """
 
@@ -36,13 +37,15 @@ def fit_overpasses(view: Survey, roads: list[Road], params: Params) -> tuple[tup
     """(upper, lower) road indexes of the overpasses that fit; the others become junctions (``view.state`` dirty)."""
     st = view.state
     out = []
+    used: set[int] = set()  # one overpass per road: its stretches then never overlap another's
     for pair, up, low in _chains(view):
         ru, rl = roads[up], roads[low]
-        c = crossing(ru.geometry, rl.geometry) if up != low else None
+        c = crossing(ru.geometry, rl.geometry) if up != low and not {up, low} & used else None
         length_up = ru.geometry[-1].s + ru.geometry[-1].length
         length_low = rl.geometry[-1].s + rl.geometry[-1].length
         if c is not None and fits(length_up, length_low, c, _half(ru, params), _half(rl, params), params):
             out.append((up, low))
+            used.update((up, low))
         elif not st.touched(view.chains[up].nodes + view.chains[low].nodes):
             st.at_grade(
                 pair,

@@ -131,15 +131,27 @@ def node_heights(layout: Layout, params: Params, seed: int, stretches: dict[int,
                 moved = True
         if not moved:
             return z
-    if crossings:  # level ground fits every piece: stage 3 kept only overpasses whose ramps climb RISE in time
-        mean = sum(h for n, h in z.items() if n >= 0) / sum(1 for n in z if n >= 0)
-        return dict.fromkeys(z, mean)
+    if crossings:
+        return _scaled(z, pieces)
     # what the iterations left (a tight cycle of short roads): scale every height toward the mean until all fit
     ratio = min((bound / abs(z[b] - z[a]) for a, _, b, _, bound in pieces if z[b] != z[a]), default=1.0)
     if ratio < 1.0:
         mean = sum(z.values()) / len(z)
         z = {n: mean + (h - mean) * ratio * (1.0 - 1e-9) for n, h in z.items()}
     return z
+
+
+def _scaled(z: dict[int, float], pieces: list[tuple[int, float, int, float, float]]) -> dict[int, float]:
+    """What the iterations left with overpasses: every height scaled toward the mean by the largest ratio r that fits
+    every piece. A piece's rise at r is ``r (z_b - z_a) + (o_b - o_a)``: at r = 0 only the offsets are left, which stage
+    3 made fit (a ramp climbs RISE in time), so each piece fits on an interval of r from 0 up."""
+    ratio = 1.0
+    for a, oa, b, ob, bound in pieces:
+        d, o = z[b] - z[a], ob - oa
+        if d != 0.0:
+            ratio = min(ratio, max(0.0, (math.copysign(bound, d) - o) / d))
+    mean = sum(z.values()) / len(z)
+    return {n: mean + (h - mean) * ratio * (1.0 - 1e-9) for n, h in z.items()}
 
 
 def _level(x: float, y: float) -> float:

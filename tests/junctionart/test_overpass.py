@@ -200,3 +200,28 @@ def test_render_draws_pieces_by_height_only_where_heights_vary(maps, tmp_path):
     assert not _heights_vary(flat) and _heights_vary(read(maps[0][1]).document)  # maps[0]: flat ground, a deck
     out = render(maps[0][1], tmp_path / "overpass.png")
     assert out.roads > 10 and (tmp_path / "overpass.png").stat().st_size > 10_000
+
+
+def test_xodrcheck_info_reports_the_grade_and_link_steps_within_the_limits(maps, capsys):
+    """The acceptance figures as ``xodrcheck info`` prints them for the overpass maps."""
+    import re
+
+    from xodrcheck.cli import main
+
+    for name, path, _ in maps:
+        assert main(["info", str(path)]) == 0
+        line = next(x for x in capsys.readouterr().out.splitlines() if x.strip().startswith("elevation"))
+        grade, step = re.search(r"max grade ([\d.]+) %, largest z step at a road link ([\d.e+-]+) m", line).groups()
+        assert 0.0 < float(grade) <= 100 * _limits(name)[0] + 1e-6 and float(step) < 1e-9, line
+
+
+def test_heights_the_iterations_leave_are_scaled_until_every_piece_fits():
+    """Fallback of the terrain step with overpasses: heights scaled toward their mean by the largest ratio at which
+    every piece (a ramp climbing the rise included) fits its bound, keeping what relief it can."""
+    z = {0: 0.0, 1: 40.0, 2: 12.0, -1: 20.0}
+    pieces = [(0, 0.0, -1, RISE, 8.0), (-1, RISE, 1, 0.0, 8.0), (0, 0.0, 2, 0.0, 6.0), (2, 0.0, 1, 0.0, 30.0)]
+    out = terrain._scaled(z, pieces)
+    rises = [abs(out[b] + ob - out[a] - oa) for a, oa, b, ob, _ in pieces]
+    assert all(r <= bound + 1e-9 for r, (*_, bound) in zip(rises, pieces))
+    assert max(rises) > RISE and out[1] - out[0] > 1.0  # not flattened: the tightest piece binds
+    assert any(abs(r - bound) < 1e-6 for r, (*_, bound) in zip(rises, pieces))
