@@ -66,6 +66,9 @@ def test_section_lines_and_evaluations_stay_within_their_budgets_with_unchanged_
     assert bounded == whole and len(whole) > 0
     cache = sampled._LINES[ctx]
     assert 0 < cache.kept < 700 and cache.kept_bytes <= small
+    kept = [*cache._resident.values(), *cache._window.values()]
+    # each kept section owns its arrays: a view would keep its whole batch alive, past the budget's count
+    assert all(p.x.base is None and p.speed.base is None for lines in kept for p in lines.borders.values())
     evaluations = lanes.geometry_of(ctx.document).budget
     kept = sum(len(g._evaluations) for g in lanes.geometry_of(ctx.document)._built.values())
     assert kept == len(evaluations) > 0 and evaluations.total <= small

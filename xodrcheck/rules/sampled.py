@@ -219,9 +219,10 @@ class _SectionCache:
 
     def _evaluate_from(self, position: int) -> dict[tuple[str, int], SectionLines]:
         """Evaluate the batch of listed sections starting at ``position`` and keep it (returned whole: the window
-        may drop its first sections while keeping its last). A batch takes at most half the window."""
+        may drop its first sections while keeping its last). A batch takes at most a quarter of the window (the
+        temporaries of its evaluation are several times its size)."""
         size = min(2 * self._size, _BATCH_SAMPLES) if position == self._next else self._first
-        room = max(self._window_budget.limit // 2, 1)
+        room = max(self._window_budget.limit // 4, 1)
         end, total, weight = position, 0, 0
         while end < len(self._grids) and (
             end == position or (total + len(self._grids[end]) <= size and weight + self._bytes[end] <= room)
@@ -231,10 +232,22 @@ class _SectionCache:
             end += 1
         out: dict[tuple[str, int], SectionLines] = {}
         _evaluate_batch(self._entries[position:end], self._keys[position:end], self._grids[position:end], out)
+        if self._first != _BATCH_SAMPLES:  # a big file: each section's own arrays, not views keeping the batch alive
+            out = {key: _copied(lines) for key, lines in out.items()}
         for key, lines in out.items():
             self._keep(key, lines)
         self._next, self._size = end, size
         return out
+
+
+def _copied(lines: SectionLines) -> SectionLines:
+    """``lines`` with arrays of its own (a batch's sections are views of the batch's arrays)."""
+    borders = {
+        lane_id: LanePoints(*(np.array(getattr(p, name)) for name in ("x", "y", "z", "hdg", "curvature", "speed")))
+        for lane_id, p in lines.borders.items()
+    }
+    t = {lane_id: np.array(v) for lane_id, v in lines.t.items()}
+    return SectionLines(lines.s, t, np.array(lines.curvature), borders)
 
 
 def _all_sections(ctx: Context) -> dict[tuple[str, int], SectionLines]:
