@@ -182,14 +182,19 @@ def road_overlap(ctx: Context):
 
     The lane surfaces of the two roads (a drivable lane on at least one side) share more than
     ``Tolerances.overlap_area`` m2 where they are closer in height than ``Tolerances.clearance``: a car could drive
-    from one road onto the other where no link says so. Roads crossing need a junction; a bridge needs clearance.
-    Two legs of one junction are compared too. Annex F ``road.no_overlap_outside_junction``.
+    from one road onto the other where no link says so. Roads crossing need a junction; a bridge needs clearance (a
+    surface :data:`BRIDGE_HEIGHT` m or more above the other counts as a bridge, and the message says how much height
+    it lacks). Two legs of one junction are compared too. Annex F ``road.no_overlap_outside_junction``.
 
     Passes (road 2 crosses road 1 six metres above it)::
 
         <road id="1" junction="-1"> ... <geometry x="-50" y="0" hdg="0" length="100"><line/></geometry> ...
         <road id="2" junction="-1"> ... <geometry x="0" y="-50" hdg="1.5708" length="100"><line/></geometry> ...
           <elevationProfile><elevation s="0" a="6" b="0" c="0" d="0"/></elevationProfile>
+
+    Fails (road 2 a bridge only 3 m above road 1: "1.50 m short of it as a bridge")::
+
+        <road id="2" junction="-1"> ... <elevationProfile><elevation s="0" a="3" b="0" c="0" d="0"/></elevationProfile>
 
     Fails (the same roads at one height, no junction)::
 
