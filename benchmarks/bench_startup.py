@@ -2,13 +2,13 @@
 
     python benchmarks/bench_startup.py [--repeats 7]
 
-Times ``xodrcheck --help``, ``xodrcheck check`` of a 2 kB file without spirals, ``junctionart generate`` of a 1 km
-map and ``python -c pass``, each as a new process (minimum and median of the repeats, wall clock, and the median CPU
-of the child). Targets (issue 14, on a quiet machine): help <= 0.15 s, check <= 0.25 s, generate <= 0.3 s. On a busy
-machine wall times grow with the load; the minimum, the child CPU time and the ratio to the bare interpreter,
-measured in the same run, say more. Byte code is compiled first (``compileall``), as an installed package has it,
-and the children run as on a user's machine: without ``PYTHONDONTWRITEBYTECODE``, so the first (warm-up) run fills
-the dataclass byte-code cache (:mod:`xodrcheck.classcache`, here in a temporary folder); the check is also timed
+Times ``xodrcheck --help``, ``xodrcheck check`` of a 2 kB file without spirals, ``junctionart --help``, ``junctionart
+generate`` of a 1 km map and ``python -c pass``, each as a new process (minimum and median of the repeats, wall clock,
+and the median CPU of the child). Targets (issue 14, on a quiet machine): help <= 0.15 s, check <= 0.25 s, generate <=
+0.3 s. On a busy machine wall times grow with the load; the minimum, the child CPU time and the ratio to the bare
+interpreter, measured in the same run, say more. Byte code is compiled first (``compileall``), as an installed package
+has it, and the children run as on a user's machine: without ``PYTHONDONTWRITEBYTECODE``, so the first (warm-up) run
+fills the dataclass byte-code cache (:mod:`xodrcheck.classcache`, here in a temporary folder); the check is also timed
 without that cache (``XODRCHECK_CACHE_DIR=""``: every dataclass compiles its methods, as on a first start).
 """
 
@@ -77,6 +77,7 @@ def main() -> None:
             "python -c pass": [sys.executable, "-c", "pass"],
             "xodrcheck --help": [str(BIN / "xodrcheck"), "--help"],
             "xodrcheck check (2 kB)": [str(BIN / "xodrcheck"), "check", str(plain)],
+            "junctionart --help": [str(BIN / "junctionart"), "--help"],
             "junctionart generate 1 km": [
                 str(BIN / "junctionart"),
                 "generate",

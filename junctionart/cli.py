@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import argparse
 import enum
-import json
 import sys
 import time
 from collections.abc import Callable, Sequence
@@ -209,6 +208,8 @@ def _params(args: argparse.Namespace):
     if args.version is not None:
         values["version"] = args.version
     if args.transitions is not None:
+        import json  # here: only --transitions reads JSON
+
         text = args.transitions
         try:
             if text.startswith("@"):
