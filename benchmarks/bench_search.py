@@ -2,7 +2,7 @@
 (issue 13).
 
     python benchmarks/bench_search.py --evaluations 5000 -j 2 -o /tmp/bench_search   # the issue's budget, idle machine
-    nice -n 10 python benchmarks/bench_search.py --evaluations 480 --random-cap 300   # what fits a busy 2-core hour
+    nice -n 10 python benchmarks/bench_search.py --evaluations 480 -j 2 --random-cap 300   # ~20 min, busy 2 cores
 
 Two samplers fill the same archive, ``junctionart search``'s default grid (legs x min_angle x area, 5 x 12 x 15 = 900
 cells; feasible = 0 error-level xodrcheck findings; objective = compactness):
@@ -23,8 +23,12 @@ measured for both from the start of each sampler: the search keeps iterating pas
 evaluated that many (or ``--target-budget`` maps); random generation keeps generating maps until it has that many or
 ``--random-cap`` seconds have passed, and is then extrapolated from its measured 7-leg rate (the time so far x target
 / hits; with no hit, a lower bound from the rule of three, 3 / intersections as the 95 % upper bound of the rate).
+7-leg intersections are so rare (9 in ``era``'s 20,000, on 2 km maps) that a cap of minutes sees none or one, so the
+benchmark also prints random generation's time at ``era``'s rate and this run's seconds per intersection.
 Times are wall clock of one process per sampler on this machine (absolute, noisy when it is shared); cells and
-QD-scores are exact counts of the run. Everything runs in this process with ``-j 1`` (one worker; the default).
+QD-scores are exact counts of the run. ``-j N`` gives both samplers N worker processes (the search evaluates its
+batches on them, random generation makes N maps at a time and takes their results in seed order, so its sample is
+the same as with one); ``-j 1`` (the default) runs everything in this process.
 """
 
 from __future__ import annotations
@@ -33,6 +37,7 @@ import argparse
 import json
 import sys
 import time
+from collections.abc import Iterator
 from pathlib import Path
 from typing import Any
 
@@ -42,11 +47,14 @@ REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
 from junctionart.search.engine import Settings  # noqa: E402
+from junctionart.search.genome import DIM  # noqa: E402
 from junctionart.search.measure import DEFAULT_DESCRIPTORS, METRICS, Evaluation, evaluate, objective  # noqa: E402
 
 GRID: tuple[tuple[str, int], ...] = tuple((name, METRICS[name][2]) for name in DEFAULT_DESCRIPTORS)
 FLAT = (("legs", 5), ("min_angle", 12))
 SEVEN = 7
+#: 7-leg intersections in ``junctionart era``'s two runs of 10,000 (docs/era/report.md: two-lane 2, random-lane 7).
+ERA_SEVENS, ERA_INTERSECTIONS = 9, 20_000
 
 
 def _archive(grid: tuple[tuple[str, int], ...]) -> Any:
@@ -179,16 +187,26 @@ def run_random(n: int, args: argparse.Namespace) -> dict[str, Any]:
     """The random arm: era maps until ``n`` intersections are measured and the 7-leg target or the cap is reached."""
     from tqdm import tqdm
 
+    from junctionart import era
+
     clock = Clock(args.target)
     sample: list[dict[str, float]] = []  # the first n intersections, NaN rows for infeasible ones
     measured = maps = 0
     coverage_seconds = None
     bar = tqdm(total=n, unit="intersection", desc="random generation")
+    executor = era._Local(args.jobs) if args.jobs > 1 else None
+    maps_in_seed_order: Iterator[tuple[list[dict[str, float]], list[str], bool]] = iter(())
     seed = 0
     while coverage_seconds is None or (clock.reached is None and clock.elapsed() < args.random_cap):
-        rows, keys, ok = era_map(seed)
+        result = next(maps_in_seed_order, None)
+        if result is None:  # the next block of seeds, one per worker, results in seed order
+            block = [(s,) for s in range(seed, seed + args.jobs)]
+            seed += args.jobs
+            done = executor.map_ordered(era_map, block) if executor is not None else [era_map(*b) for b in block]
+            maps_in_seed_order = iter(done)
+            continue
+        rows, keys, ok = result
         maps += 1
-        seed += 1
         for row, key in zip(rows, keys):
             measured += 1
             feasible = ok and _feasible(row)
@@ -206,6 +224,8 @@ def run_random(n: int, args: argparse.Namespace) -> dict[str, Any]:
             bar.update(1)
             bar.set_postfix(sevens=len(clock.sevens), intersections=measured, refresh=False)
     bar.close()
+    if executor is not None:
+        executor.close()
     return {
         "rows": [r for r in sample if _feasible(r)],
         "seconds": coverage_seconds,
@@ -224,6 +244,16 @@ def _time_to_target(arm: dict[str, Any], target: int) -> tuple[float, str]:
         return elapsed * target / hits, f"extrapolated from {hits} hits in {elapsed:.0f} s"
     count = arm.get("measured", arm.get("total", 0))
     return elapsed * target / 3, f"lower bound: no hit in {count} in {elapsed:.0f} s (rule of three)"
+
+
+def _era_rate_estimate(arm: dict[str, Any], target: int) -> tuple[float, str]:
+    """Random generation's time to ``target`` 7-leg intersections at the rate of ``junctionart era``'s run of 10,000
+    intersections per run (:data:`ERA_SEVENS` in :data:`ERA_INTERSECTIONS`, two-lane and random-lane together, as
+    this arm alternates them) and this run's measured seconds per intersection: firmer than the arm's own few hits."""
+    clock: Clock = arm["clock"]
+    per = clock.elapsed() / max(arm["measured"], 1)
+    seconds = per * ERA_INTERSECTIONS / ERA_SEVENS * target
+    return seconds, f"{per:.3f} s per intersection x {ERA_INTERSECTIONS:,} / {ERA_SEVENS} intersections per 7-leg one"
 
 
 def figure(path: Path, panels: list[tuple[str, Any]]) -> None:
@@ -294,7 +324,7 @@ def main() -> int:
             ap.error("--descriptors: legs must come first (the figure has a column per leg count)")
     args.output.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
-    evaluate(list(np.full(38, 0.5)))  # imports and caches, outside every timing
+    evaluate(list(np.full(DIM, 0.5)))  # imports and caches, outside every timing
     print(f"warm-up {time.perf_counter() - t0:.0f} s", file=sys.stderr)
 
     qd = run_search(args.output / "qd", args.evaluations, args)
@@ -332,6 +362,10 @@ def main() -> int:
     out["seven_search"]["maps"] = qd["clock"].reached_at or qd["total"]
     out["seven_random"].update(intersections=rand["measured"], maps=rand["maps"])
     print(f"time ratio random / search: {times['random'] / times['search']:.0f}x")
+    seconds, how = _era_rate_estimate(rand, args.target)
+    out["seven_random"]["era_rate"] = {"seconds": seconds, "how": how}
+    print(f"{args.target} distinct valid 7-leg intersections, random at era's rate: {seconds:.0f} s ({how})")
+    print(f"time ratio random (era's rate) / search: {seconds / times['search']:.0f}x")
     (args.output / "bench_search.json").write_text(json.dumps(out, indent=1), encoding="utf-8")
     rows_out = {"search": qd["rows"], "random": rand["rows"]}  # every feasible evaluated row: other grids post hoc
     (args.output / "rows.json").write_text(json.dumps(rows_out), encoding="utf-8")

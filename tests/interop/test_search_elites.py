@@ -23,7 +23,7 @@ def elites(tmp_path_factory):
         rows = list(csv.DictReader(stream))
     assert len(rows) >= ELITES
     chosen = [rows[k * len(rows) // ELITES] for k in range(ELITES)]  # spread over the archive (rows go by cell)
-    assert {int(float(r["legs"])) for r in chosen} >= {3, 4, 5, 6}  # not one kind of junction
+    assert len({int(float(r["legs"])) for r in chosen}) >= 4  # not one kind of junction: 4 of the 5 leg counts
     return [folder / r["file"] for r in chosen]
 
 

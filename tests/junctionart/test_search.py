@@ -17,7 +17,7 @@ import numpy as np
 import pytest
 
 from junctionart.cli import main
-from junctionart.search.genome import DIM, decode, random_genomes
+from junctionart.search.genome import DIM, HEAD, decode, random_genomes
 from junctionart.search.measure import METRICS, NAMES, measure_document
 from junctionart.search.predicate import Predicate
 from xodrcheck.check import check
@@ -108,6 +108,22 @@ def test_decoded_genomes_are_valid_descriptions():
         headings = sorted(leg.heading for leg in spec.legs)
         assert headings[0] == 0 and min(np.diff([*headings, 360.0])) >= 3.0
     assert {len(decode(x).legs) for x in random_genomes(rng, 200)} == {3, 4, 5, 6, 7}
+
+
+def test_the_width_and_evenness_genes_move_every_leg_at_once():
+    rng = np.random.default_rng(1)
+    x = rng.random(DIM)
+    x[0] = 0.99  # 7 legs
+    x[4] = 1.0  # evenness: the legs 360 / 7 degrees apart whatever their gap genes
+    assert [leg.heading for leg in decode(x).legs] == pytest.approx([k * 360 / 7 for k in range(7)])
+    x[4] = 0.0
+    assert min(np.diff([leg.heading for leg in decode(x).legs])) < 360 / 7 - 5
+    x[3] = 0.0  # width 0: one lane each way unless a leg's own gene is above 2/3
+    x[HEAD:] = np.minimum(x[HEAD:], 0.6)
+    assert {(leg.lanes_in, leg.lanes_out) for leg in decode(x).legs} == {(1, 1)}
+    x[3] = 1.0  # width 1: three lanes each way once a leg's own gene is at 1/3 or more
+    x[HEAD:] = np.maximum(x[HEAD:], 0.4)
+    assert {(leg.lanes_in, leg.lanes_out) for leg in decode(x).legs} == {(3, 3)}
 
 
 @pytest.mark.parametrize(
