@@ -349,20 +349,28 @@ def _one(t: _Section, chord: float, max_step: float, bound: _Bound | None = None
 #: Border-line points (samples times lines) of the sections meshed in one :mod:`xodrcheck.roadpass` call: the
 #: temporaries of a call scale with it (a 10 km map's sections at once peaked about 900 MB over the mesh).
 _MESH_BATCH = 1 << 18
+#: Sections sampled in one :func:`xodrcheck.roadpass.sample_sections` call (its temporaries scale with them: a 10 km
+#: map's 31,352 sections at once peaked 971 MB for 7 MB of samples).
+_SAMPLE_SECTIONS = 1 << 10
 
 
 def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound | None = None) -> _Part | None:
-    """The sections of ``todo`` (each covered by :mod:`xodrcheck.roadpass`) sampled in one pass and meshed in
-    batches of consecutive sections (the same numbers: roadpass computes each section on its own); ``None`` when a
+    """The sections of ``todo`` (each covered by :mod:`xodrcheck.roadpass`) sampled and meshed in batches of
+    consecutive sections (the same numbers: roadpass computes each section on its own); ``None`` when a
     pass declines (damaged numbers), as one pass over all of them would."""
     from xodrcheck import roadpass
 
     if not todo:
         return _Part.empty()
     entries = [(t.rg, t.index) for t in todo]
-    samples = roadpass.sample_sections(entries, chord, max_step, Tolerances().max_samples_per_section)
-    if samples is None or not all(np.isfinite(s).all() for s in samples):
-        return None
+    samples: list[np.ndarray] = []
+    for lo in range(0, len(entries), _SAMPLE_SECTIONS):
+        found = roadpass.sample_sections(
+            entries[lo : lo + _SAMPLE_SECTIONS], chord, max_step, Tolerances().max_samples_per_section
+        )
+        if found is None or not all(np.isfinite(s).all() for s in found):
+            return None
+        samples.extend(found)
     counted = bound.total if bound is not None else 0
     parts = []
     for lo, hi in _batches([len(s) * (len(t.pairs) + 1) for t, s in zip(todo, samples)], _MESH_BATCH):

@@ -117,10 +117,20 @@ def test_lane_meshes_built_in_batches_are_the_one_pass_mesh(
         calls.append((sum(len(s) * n for s, n in zip(samples, lines)), len(entries)))
         return border_lines(entries, samples)
 
+    sampled_sections: list[int] = []
+    sample_sections = roadpass.sample_sections
+
+    def sampling(entries, *args):
+        sampled_sections.append(len(entries))
+        return sample_sections(entries, *args)
+
     monkeypatch.setattr(roadpass, "border_lines", counted)
+    monkeypatch.setattr(roadpass, "sample_sections", sampling)
     monkeypatch.setattr(mesh, "_MESH_BATCH", 2000)
+    monkeypatch.setattr(mesh, "_SAMPLE_SECTIONS", 5)
     batched = mesh.build_surfaces(document)
     assert len(calls) > 3 and all(points <= 2000 or sections == 1 for points, sections in calls)
+    assert len(sampled_sections) > 3 and max(sampled_sections) <= 5
     assert whole.lanes == batched.lanes and whole.lane_types == batched.lane_types and len(whole.lanes) > 20
     for field in ("vertices", "faces", "face_lane", "face_s", "lane_vertices", "lane_faces"):
         assert np.array_equal(getattr(whole, field), getattr(batched, field), equal_nan=True), field
