@@ -7,6 +7,7 @@ drivable as drawn, so stage 3 removes a road instead (one the map can lose, wher
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from enum import Enum
 
 import numpy as np
@@ -119,32 +120,62 @@ def overlaps(
 
     Roads are their reference lines buffered by their wider side; a junction is the convex hull of its legs' end
     cross-sections together with the body of each of its connection lanes (``connections``: their reference lines,
-    the lane lying on the traffic side), since a wide turn can leave the hull. Roads sharing an end node, and a
-    junction with its own legs, may touch, and so may the two roads of an overpass (``decks``: pairs of chains).
+    the lane lying on the traffic side), since a wide turn can leave the hull. A junction with its own legs may
+    touch, and so may the two roads of an overpass (``decks``: pairs of chains). Two legs of one junction (roads
+    sharing an end node) meet only at its edge: they are compared by their bodies, each side as wide as its lanes
+    (:func:`_leg_body`), which must not share area anywhere (a leg bent back along its neighbour does).
     """
-    shapes = _road_shapes(roads, p)
+    lines = [_reference_line(road) for road in roads]
+    shapes = _road_shapes(roads, lines, p)
     owners = [(Part.ROAD, c) for c in range(len(roads))]
     for node, j in junctions.items():
         for shape in _junction_shapes(roads, j, connections.get(node, []), p):
             shapes.append(shape)
             owners.append((Part.JUNCTION, node))
-    return _overlapping(chs, np.array(shapes, dtype=object), owners, decks)
+    bodies: dict[int, shapely.Geometry] = {}
+
+    def body(c: int) -> shapely.Geometry:
+        if c not in bodies:
+            bodies[c] = _leg_body(roads[c], lines[c], p)
+        return bodies[c]
+
+    return _overlapping(chs, np.array(shapes, dtype=object), owners, decks, body)
 
 
-def _road_shapes(roads: list[Road], p: Params) -> list:
+def _reference_line(road: Road) -> np.ndarray:
+    """Points along the road's reference line, about every 5 m (each geometry's ends included)."""
+    return np.concatenate([sample(e, max(2, int(e.length / 5.0) + 2)) for e in road.geometry])
+
+
+def _road_shapes(roads: list[Road], lines: list[np.ndarray], p: Params) -> list:
     """Each road's reference line buffered by its wider side."""
     if not roads:
         return []
     w, mw, rs = p.lane_width, p.median_width, roadside_width(p)
-    halves, lines = [], []
+    halves = []
     for road in roads:
         cfg = road.spec.lanes
         halves.append(max(side_width(cfg.forward, cfg.median, w, mw), side_width(cfg.backward, cfg.median, w, mw)) + rs)
-        lines.append(np.concatenate([sample(e, max(2, int(e.length / 5.0) + 2)) for e in road.geometry]))
     indices = np.repeat(np.arange(len(lines)), [len(x) for x in lines])
     return list(
         shapely.buffer(shapely.linestrings(np.concatenate(lines), indices=indices), np.array(halves), cap_style="flat")
     )
+
+
+def _leg_body(road: Road, line: np.ndarray, p: Params) -> shapely.Geometry:
+    """The road's plan-view body with each side as wide as it gets (its widest lane count, in the middle or at
+    either end, plus the roadside lanes), :data:`INSET` inside both borders: the two sides of the reference line
+    ``line`` buffered apart, so that a narrow side is not drawn as wide as the other."""
+    spec, w, mw, rs = road.spec, p.lane_width, p.median_width, roadside_width(p)
+    forward = max(spec.lanes.forward, spec.start.forward, spec.end.forward)
+    backward = max(spec.lanes.backward, spec.start.backward, spec.end.backward)
+    left, right = (backward, forward) if p.traffic_rule is TrafficRule.RHT else (forward, backward)
+    ref = shapely.LineString(line)
+    sides = [
+        shapely.buffer(ref, side_width(left, spec.lanes.median, w, mw) + rs - INSET, single_sided=True),
+        shapely.buffer(ref, -(side_width(right, False, w, mw) + rs - INSET), single_sided=True),
+    ]
+    return shapely.union_all(sides)
 
 
 def _junction_shapes(roads: list[Road], j: Junction, connections: list[Geometry], p: Params) -> list:
@@ -166,10 +197,14 @@ def _junction_shapes(roads: list[Road], j: Junction, connections: list[Geometry]
 
 
 def _overlapping(
-    chs: list[Chain], shapes: np.ndarray, owners: list[tuple[Part, int]], decks: frozenset[frozenset[int]]
+    chs: list[Chain],
+    shapes: np.ndarray,
+    owners: list[tuple[Part, int]],
+    decks: frozenset[frozenset[int]],
+    body: Callable[[int], shapely.Geometry],
 ) -> list[list[int]]:
     """The removal candidates of every pair of shapes sharing area (at least 0.01 m2) where the map does not connect
-    their owners."""
+    their owners; two legs of one junction by their bodies (``body`` of a chain)."""
     left_i, right_i = shapely.STRtree(shapes).query(shapes)  # bounding boxes first
     # the hull and lanes of one junction overlap each other by design: drop those pairs before the exact test
     junction_of = np.array([a if kind is Part.JUNCTION else -1 for kind, a in owners])
@@ -178,9 +213,15 @@ def _overlapping(
     hit = shapely.intersects(shapes[left_i], shapes[right_i])
     found = []
     for i, j in sorted(zip(left_i[hit].tolist(), right_i[hit].tolist())):
+        (ka, x), (kb, y) = owners[i], owners[j]
         cands = _candidates(chs, owners[i], owners[j])
-        if cands is not None and owners[i][0] is owners[j][0] is Part.ROAD and frozenset(cands) in decks:
-            continue
+        if ka is kb is Part.ROAD:
+            if frozenset((x, y)) in decks:
+                continue
+            if cands is None:  # legs of one junction: their bodies, not the symmetric buffers, count
+                if body(x).intersection(body(y)).area >= 0.01:
+                    found.append([x, y])
+                continue
         if cands is not None and shapes[i].intersection(shapes[j]).area >= 0.01:
             found.append(cands)
     return found
@@ -189,7 +230,7 @@ def _overlapping(
 def _candidates(chs: list[Chain], a: tuple[Part, int], b: tuple[Part, int]) -> list[int] | None:
     """The roads whose removal separates two owners, or None where the map connects them (they may touch)."""
     (ka, x), (kb, y) = a, b
-    if ka is Part.ROAD and kb is Part.ROAD:
+    if ka is Part.ROAD and kb is Part.ROAD:  # sharing an end node: legs of one junction, compared by their bodies
         return None if {chs[x].start, chs[x].end} & {chs[y].start, chs[y].end} else [x, y]
     if ka is Part.JUNCTION and kb is Part.JUNCTION:
         return [c for c, ch in enumerate(chs) if {ch.start, ch.end} & {x, y}]
