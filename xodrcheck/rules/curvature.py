@@ -29,7 +29,7 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Road
 from xodrcheck.rules.context import Context, placed_lane_ids
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import section_lines, section_samples, usable
+from xodrcheck.rules.sampled import lines_in_order, section_samples, usable
 
 
 def _sections(ctx: Context):
@@ -112,11 +112,11 @@ def reference_radius_too_small(ctx: Context):
         <geometry ... length="1"><arc curvature="2"/></geometry>
     """
     bound = 1.0 / ctx.tolerances.min_radius if ctx.tolerances.min_radius > 0 else math.inf
-    for road, index, _geometry, s in _sections(ctx):
+    for road, index, _geometry, lines in lines_in_order(ctx):
         section = road.lane_sections[index]
-        if not any((lane := section.lane(i)) is not None and lane.drivable for i in (1, -1)):
+        if not len(lines.s) or not any((lane := section.lane(i)) is not None and lane.drivable for i in (1, -1)):
             continue
-        points = section_lines(ctx, road, index).borders[0]
+        s, points = lines.s, lines.borders[0]
         i = _tightest(np.where(points.speed > 0, points.curvature, 0.0), bound)
         if i is None:
             continue
@@ -144,9 +144,8 @@ def border_folds(ctx: Context):
 
         <geometry ... length="3"><arc curvature="0.5"/></geometry>
     """
-    for road, index, _geometry, s in _sections(ctx):
-        lines = section_lines(ctx, road, index)
-        k = lines.curvature
+    for road, index, _geometry, lines in lines_in_order(ctx):
+        s, k = lines.s, lines.curvature
         for lane_id, t in lines.t.items():
             fold = np.nan_to_num(t * k, nan=0.0)
             i = int(np.argmax(fold))

@@ -124,6 +124,9 @@ def _in_junction(ctx: Context, road_id: str) -> bool:
 
 
 def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: str) -> Iterator:
+    from xodrcheck.rules.sampled import release_lines
+
+    release_lines(ctx)  # the rules after these read no section lines or road ends: room for the lane meshes
     surfaces = _overlap_index(ctx).surfaces
     for roads, pair in sorted(_pairs(ctx, drivable).items()):
         members = [_in_junction(ctx, r) for r in roads]

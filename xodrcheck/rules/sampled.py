@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import weakref
+from collections.abc import Iterator
 
 import numpy as np
 
@@ -90,6 +91,40 @@ def section_lines(ctx: Context, road: Road, section_index: int) -> SectionLines:
     return _lines_of(ctx).lines(ctx, road, section_index)
 
 
+def lines_in_order(ctx: Context) -> Iterator[tuple[Road, int, RoadGeometry, SectionLines]]:
+    """(road, section index, geometry, lines) of every usable road's lane sections, in document order: for a rule that
+    reads each section once. The lines :func:`section_lines` keeps are read from its cache; the others are evaluated
+    in batches of consecutive sections as the reading goes and not kept (the same numbers: a batch evaluates each
+    section as alone), so a big file's lines that do not fit :data:`LINES_BUDGET` cost one evaluation per rule."""
+    cache = _lines_of(ctx)
+    pending: dict[tuple[str, int], SectionLines] = {}
+    for road in ctx.document.roads:
+        geometry = usable(ctx, road)
+        if geometry is None:
+            continue
+        for index in range(len(road.lane_sections)):
+            key = (road.id, index)
+            found = cache.kept_lines(key)
+            if found is None:
+                found = pending.pop(key, None)
+            if found is None and not cache.fits:
+                position = cache.position(key)
+                if position is not None:
+                    pending = cache.passing(position)
+                    found = pending.pop(key, None)
+            if found is None:
+                found = cache.lines(ctx, road, index)
+            yield road, index, geometry, found
+
+
+def release_lines(ctx: Context) -> None:
+    """Drop the file's cached section lines (:func:`section_lines`), road ends (:func:`road_end`) and reference ends
+    (:func:`reference_end`) once no rule to come reads them (the overlap rules, run last among the geometric rules,
+    call it before building their meshes). A later call builds them again: the findings do not change."""
+    for cache in (_LINES, _ENDS, _REFERENCE):
+        cache.pop(ctx, None)
+
+
 def _lines_of(ctx: Context) -> _SectionCache:
     found = _LINES.get(ctx)
     if found is None:
@@ -168,6 +203,33 @@ class _SectionCache:
         return len(self._resident) + len(self._window)
 
     @property
+    def fits(self) -> bool:
+        """Whether every listed section's lines fit :data:`LINES_BUDGET` (then all are kept)."""
+        return self._first == _BATCH_SAMPLES
+
+    def position(self, key: tuple[str, int]) -> int | None:
+        """The place of a listed section in document order (``None`` for the others)."""
+        return self._position.get(key)
+
+    def kept_lines(self, key: tuple[str, int]) -> SectionLines | None:
+        """A section's lines if they are kept (the window's not touched)."""
+        found = self._resident.get(key)
+        return found if found is not None else self._window.get(key)
+
+    def passing(self, position: int) -> dict[tuple[str, int], SectionLines]:
+        """The lines of the listed sections from ``position`` on, up to the next kept one, in one batch of at most
+        :data:`_PASSING_BYTES` (at least one section), evaluated and not kept."""
+        end, weight = position, 0
+        while end < len(self._grids) and (end == position or weight + self._bytes[end] <= _PASSING_BYTES):
+            if end > position and self.kept_lines(self._keys[end]) is not None:
+                break
+            weight += self._bytes[end]
+            end += 1
+        out: dict[tuple[str, int], SectionLines] = {}
+        _evaluate_batch(self._entries[position:end], self._keys[position:end], self._grids[position:end], out)
+        return out
+
+    @property
     def kept_bytes(self) -> int:
         """Estimated bytes of the lines kept."""
         return self._resident_bytes + self._window_budget.total
@@ -232,7 +294,7 @@ class _SectionCache:
             end += 1
         out: dict[tuple[str, int], SectionLines] = {}
         _evaluate_batch(self._entries[position:end], self._keys[position:end], self._grids[position:end], out)
-        if self._first != _BATCH_SAMPLES:  # a big file: each section's own arrays, not views keeping the batch alive
+        if not self.fits:  # a big file: each section's own arrays, not views keeping the batch alive
             out = {key: _copied(lines) for key, lines in out.items()}
         for key, lines in out.items():
             self._keep(key, lines)
@@ -259,6 +321,9 @@ def _all_sections(ctx: Context) -> dict[tuple[str, int], SectionLines]:
 #: Samples evaluated together by :func:`_all_sections` (the temporaries of one pass scale with it: a 10 km map's
 #: sections at once took about 1 GB more than the results; batches keep that to tens of MB at the same speed).
 _BATCH_SAMPLES = 1 << 17
+#: Estimated bytes of the lines :func:`lines_in_order` evaluates together and drops once read (the temporaries of a
+#: batch are a few times its size).
+_PASSING_BYTES = 12 << 20
 #: Samples of the first batch a big file's sections are evaluated in where a rule starts reading (it doubles while
 #: the rule reads on in document order).
 _FIRST_BATCH_SAMPLES = 1 << 12
