@@ -23,6 +23,7 @@ from pathlib import Path
 from xodrcheck import memory
 from xodrcheck.classcache import dataclass
 from xodrcheck.config import Config, ConfigError
+from xodrcheck.filebytes import FileBytes
 from xodrcheck.findings import Finding, OutOfTime, Severity
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.context import Context
@@ -255,7 +256,7 @@ def check(
     started = time.monotonic()
     # one parse: the reader's tree is the XML rules' tree (when the file is well-formed), dropped after them
     result, tree = read_keeping_tree(source, max_bytes=config.tolerances.max_file_bytes)
-    data = _raw(source if isinstance(source, bytes) else _read_bytes(result.path), config.tolerances.max_file_bytes)
+    data = _data(source, result.path, shared=tree is not None, limit=config.tolerances.max_file_bytes)
     findings = [f for f in result.findings if selection.wants_finding(f)]
     run = [
         r.code
@@ -306,6 +307,25 @@ def _by_version(findings: Iterable[Finding], document, rules: dict[str, Rule]) -
 def _deadline(started: float, budget: float) -> float | None:
     """The monotonic time past which rules stop; ``None`` (no bound) for a budget of 0, the default."""
     return started + budget if budget > 0 else None
+
+
+def _data(source: str | Path | bytes, path: str | None, *, shared: bool, limit: int) -> bytes | FileBytes | None:
+    """The rules' :attr:`Context.data`: the bytes given, or the file's. With the reader's tree shared (the rules parse
+    nothing), a file not compressed is searched on disk instead of held (:class:`FileBytes`: 51 MB less on a 10 km
+    map)."""
+    if isinstance(source, bytes):
+        return _raw(source, limit)
+    if shared and path is not None and not _gzipped(path):
+        return FileBytes(path)
+    return _raw(_read_bytes(path), limit)
+
+
+def _gzipped(path: str) -> bool:
+    try:
+        with open(path, "rb") as stream:
+            return stream.read(2) == b"\x1f\x8b"
+    except OSError:
+        return True  # not readable now: _read_bytes gives None as before
 
 
 def _raw(data: bytes | None, limit: int) -> bytes | None:

@@ -33,6 +33,7 @@ from xodrcheck.model import (
 if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree
 
+    from xodrcheck.filebytes import FileBytes
     from xodrcheck.lanes import RoadGeometry
     from xodrcheck.objects import RoadObject, RoadObjects
     from xodrcheck.signals import Signals
@@ -92,7 +93,7 @@ class Context:
         document: Document,
         config: Config | None = None,
         path: str | None = None,
-        data: bytes | None = None,
+        data: bytes | FileBytes | None = None,
         deadline: float | None = None,
         *,
         tree: etree._ElementTree | None = None,
@@ -100,7 +101,8 @@ class Context:
         self.document = document
         self.config = config or Config()
         self.path = path
-        #: The file's raw bytes (``None`` when the document was built in memory).
+        #: The file's raw bytes (``None`` when the document was built in memory), or, when the caller passed the
+        #: reader's tree, the file searched on disk (:class:`~xodrcheck.filebytes.FileBytes`: ``b"..." in ctx.data``).
         self.data = data
         #: ``time.monotonic()`` value after which expensive rules should stop (``None``: no limit).
         self.deadline = deadline
@@ -159,7 +161,8 @@ class Context:
 
         from xodrcheck.reader import parse
 
-        root, _ = parse(self.data, recover=False, strip_namespaces=False)
+        data = self.data if isinstance(self.data, bytes) else bytes(self.data)
+        root, _ = parse(data, recover=False, strip_namespaces=False)
         return None if root is None else etree.ElementTree(root)
 
     def xml_view(self, key: str, build: Callable[[], _T]) -> _T:
