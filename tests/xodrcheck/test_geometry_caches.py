@@ -12,6 +12,7 @@ from xodrcheck import lanes
 from xodrcheck.budget import ByteBudget
 from xodrcheck.check import Selection, run_rules
 from xodrcheck.config import Config
+from xodrcheck.model import ContactPoint
 from xodrcheck.reader import read
 from xodrcheck.rules import sampled
 from xodrcheck.rules.context import Context
@@ -159,3 +160,31 @@ def test_lane_outlines_made_in_blocks_are_the_outlines_made_at_once(corpus_dir: 
     assert len(blocks) > 10 and max(blocks) <= 1000 + max(np.diff(surfaces.lane_vertices)) + len(surfaces)
     assert len(made) == len(whole) > 700
     assert all(np.array_equal(shapely.get_coordinates(a), shapely.get_coordinates(b)) for a, b in zip(made, whole))
+
+
+@pytest.mark.corpus
+def test_lines_read_in_order_are_those_of_the_cache_and_released_before_the_meshes(
+    corpus_dir: Path, monkeypatch: pytest.MonkeyPatch
+):
+    path = corpus_dir / "carla-towns/OpenDrive/Town01.xodr"
+    ctx = Context(read(path).document, Config(), path=str(path), data=None)
+    monkeypatch.setattr(sampled, "LINES_BUDGET", 1 << 18)  # most sections do not fit: they pass in batches
+    monkeypatch.setattr(sampled, "_PASSING_BYTES", 1 << 16)
+    with np.errstate(all="ignore"):
+        first = ctx.document.roads[0]
+        kept = sampled.section_lines(ctx, first, 0)  # a rule before kept some lines; the rest pass in batches
+        streamed = [(road.id, index, lines) for road, index, _, lines in sampled.lines_in_order(ctx)]
+        cache = sampled._LINES[ctx]
+        assert not cache.fits and 0 < cache.kept < len(streamed) and cache.kept_bytes <= sampled.LINES_BUDGET
+        assert any(lines is kept for _, _, lines in streamed)
+        assert len(streamed) == sum(len(r.lane_sections) for r in ctx.document.roads if sampled.usable(ctx, r))
+        for road_id, index, lines in streamed:
+            alone = sampled.section_lines(ctx, ctx.document.road_by_id[road_id], index)
+            assert np.array_equal(lines.s, alone.s) and lines.t.keys() == alone.t.keys()
+            assert np.array_equal(lines.curvature, alone.curvature, equal_nan=True)
+            for lane_id, p in lines.borders.items():
+                assert np.array_equal(p.x, alone.borders[lane_id].x, equal_nan=True)
+                assert np.array_equal(p.hdg, alone.borders[lane_id].hdg, equal_nan=True)
+        sampled.road_end(ctx, first, ContactPoint.START)
+        sampled.release_lines(ctx)
+    assert ctx not in sampled._LINES and ctx not in sampled._ENDS
