@@ -35,6 +35,7 @@ from typing import Any, NamedTuple
 from lxml import etree
 
 from xodrcheck import packagedata
+from xodrcheck.findings import XodrError
 from xodrcheck.schema_plan import EXTENSIONS, FORMAT, PLAN_FILE
 
 XS = "http://www.w3.org/2001/XMLSchema"
@@ -91,7 +92,7 @@ class _Plan(NamedTuple):
     types: list[_Type]
 
 
-class _NotTranslated(Exception):
+class _NotTranslated(XodrError):
     """A type alternative's test that the plan has no XPath 1.0 translation for."""
 
 

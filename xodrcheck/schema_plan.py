@@ -26,6 +26,8 @@ import json
 import re
 from typing import Any
 
+from xodrcheck.findings import XodrError
+
 #: Namespace of the extension functions the translated expressions call (prefix ``x``).
 EXTENSIONS = "urn:xodrcheck:schema-fast"
 #: The plan's file name in each XSD 1.1 schema folder.
@@ -42,7 +44,7 @@ _SWAPPED = {"=": "=", "!=": "!=", "<": ">", ">": "<", "<=": ">=", ">=": "<="}
 _NODES = ("elements", "attributes", "empty")
 
 
-class Untranslatable(Exception):
+class Untranslatable(XodrError):
     """The expression is outside the subset :func:`translate` maps exactly."""
 
 

@@ -29,7 +29,7 @@ from xodrcheck.rules import xml as R
 if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree
 
-__all__ = ["KNOWN_VERSIONS", "ReadResult", "parse", "read"]
+__all__ = ["KNOWN_VERSIONS", "ReadResult", "parse", "read", "read_keeping_tree"]
 
 _GZIP_MAGIC = b"\x1f\x8b"
 #: Reader findings after which the file counts as not read whole (see :meth:`ReadResult.not_whole`).

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any, TypeVar
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.config import Config, Tolerances
-from xodrcheck.findings import Finding
+from xodrcheck.findings import Finding, XodrError
 from xodrcheck.model import (
     Connection,
     ContactPoint,
@@ -42,7 +42,7 @@ if TYPE_CHECKING:  # pragma: no cover
 _T = TypeVar("_T")
 
 
-class TreeReleased(RuntimeError):
+class TreeReleased(XodrError, RuntimeError):
     """A rule read the XML tree (:attr:`Context.tree` or a view of it) after the runner dropped it: the rule does not
     declare ``xml=True`` (an internal error of xodrcheck, reported as ``X900 rule-crashed``)."""
 
