@@ -60,9 +60,10 @@ class SectionLines:
 _LINES: weakref.WeakKeyDictionary[Context, _SectionCache] = weakref.WeakKeyDictionary()
 
 #: Bytes of :class:`SectionLines` kept per file (:class:`_SectionCache`): a small map's lines are evaluated once for
-#: all the rules; of a big map's, each rule that reads them evaluates again, batch by batch, those that do not fit
-#: (kept whole, a 10 km map's took 490 MB).
-LINES_BUDGET = 192 << 20
+#: all the rules (every corpus file fits, CARLA's Town05 included); of a big map's, each rule that reads them
+#: evaluates again, batch by batch, those that do not fit (kept whole, a 10 km map's took 490 MB). 64 MB: the 10 km
+#: generated map's whole check peaks at 995 MiB (1061 with 192 MB), 228 s CPU.
+LINES_BUDGET = 64 << 20
 
 
 def grid_step(tol: Tolerances) -> float:
