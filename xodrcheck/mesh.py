@@ -20,6 +20,7 @@ from functools import cached_property
 
 import numpy as np
 
+from xodrcheck.arrays import batches, ranges
 from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import XodrError
@@ -106,8 +107,8 @@ class LaneSurfaces:
         chosen = np.flatnonzero(keep)
         v_counts = np.diff(self.lane_vertices)[chosen]
         f_counts = np.diff(self.lane_faces)[chosen]
-        v_take = _ranges(self.lane_vertices[chosen], v_counts)
-        f_take = _ranges(self.lane_faces[chosen], f_counts)
+        v_take = ranges(self.lane_vertices[chosen], v_counts)
+        f_take = ranges(self.lane_faces[chosen], f_counts)
         new_vertex = np.full(len(self.vertices), -1, dtype=np.int64)
         new_vertex[v_take] = np.arange(v_take.size)
         new_lane = np.full(len(self.lanes), -1, dtype=np.int64)
@@ -128,13 +129,6 @@ class LaneSurfaces:
         import trimesh
 
         return trimesh.Trimesh(vertices=self.vertices, faces=self.faces, process=False, validate=False)
-
-
-def _ranges(starts: np.ndarray, counts: np.ndarray) -> np.ndarray:
-    """Concatenated ``arange(start, start + count)`` for each pair."""
-    counts = np.asarray(counts, dtype=np.int64)
-    offsets = np.repeat(np.asarray(starts, dtype=np.int64) - np.cumsum(counts) + counts, counts)
-    return offsets + np.arange(counts.sum(), dtype=np.int64)
 
 
 def _strip_faces(lane_count: int, n: int, left: np.ndarray) -> np.ndarray:
@@ -373,7 +367,7 @@ def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound
         samples.extend(found)
     counted = bound.total if bound is not None else 0
     parts = []
-    for lo, hi in _batches([len(s) * (len(t.pairs) + 1) for t, s in zip(todo, samples)], _MESH_BATCH):
+    for lo, hi in batches([len(s) * (len(t.pairs) + 1) for t, s in zip(todo, samples)], _MESH_BATCH):
         part = _batch(todo[lo:hi], samples[lo:hi], bound)
         if part is None:
             if bound is not None:
@@ -381,19 +375,6 @@ def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound
             return None
         parts.append(part)
     return _Part.concat(parts)
-
-
-def _batches(sizes: list[int], limit: int) -> list[tuple[int, int]]:
-    """Consecutive ranges ``[lo, hi)`` of ``sizes`` whose sums stay within ``limit`` (a range holds at least one)."""
-    out, lo, total = [], 0, 0
-    for i, n in enumerate(sizes):
-        if i > lo and total + n > limit:
-            out.append((lo, i))
-            lo, total = i, 0
-        total += n
-    if lo < len(sizes):
-        out.append((lo, len(sizes)))
-    return out
 
 
 def _batch(todo: list[_Section], samples: list[np.ndarray], bound: _Bound | None) -> _Part | None:
@@ -452,10 +433,10 @@ def _strips(
     counts = np.array(sizes, dtype=np.int64)
     rows = np.empty(2 * len(counts), dtype=np.int64)
     rows[0::2], rows[1::2] = inner_at, outer_at
-    vertices = xyz[_ranges(rows, np.repeat(counts, 2))]
+    vertices = xyz[ranges(rows, np.repeat(counts, 2))]
     first_vertex = np.concatenate([[0], np.cumsum(2 * counts)[:-1]]).astype(np.int64)
     steps = counts - 1
-    j = _ranges(np.zeros(len(counts)), steps)
+    j = ranges(np.zeros(len(counts)), steps)
     owner = np.repeat(np.arange(len(counts)), steps)
     inner = first_vertex[owner] + j
     inner_next, outer = inner + 1, inner + counts[owner]

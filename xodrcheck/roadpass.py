@@ -28,6 +28,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from xodrcheck.arrays import ranges
 from xodrcheck.classcache import dataclass
 from xodrcheck.geometry import parampoly3, profile
 from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
@@ -43,15 +44,6 @@ _COUNTED = 32
 
 #: A lane section of a road: (its road's geometry, the section's index).
 Entry = tuple[RoadGeometry, int]
-
-
-def _ranges(starts, counts) -> np.ndarray:
-    """Concatenated ``arange(start, start + count)``."""
-    counts = np.asarray(counts, dtype=np.int64)
-    if counts.size == 0:
-        return np.zeros(0, dtype=np.int64)
-    offsets = np.repeat(np.asarray(starts, dtype=np.int64) - np.cumsum(counts) + counts, counts)
-    return offsets + np.arange(counts.sum(), dtype=np.int64)
 
 
 def covered(rg: RoadGeometry, index: int) -> bool:
@@ -125,7 +117,7 @@ def _pose(entries: Sequence[Entry], s: np.ndarray, offsets: np.ndarray) -> Pose 
                 else:
                     pose.assign(slice(lo, hi), evaluate_element(elements[index[lo]], ds[lo:hi]))
         if curves:
-            at = _ranges([lo for lo, _ in curves], [hi - lo for lo, hi in curves])
+            at = ranges([lo for lo, _ in curves], [hi - lo for lo, hi in curves])
             counts = np.array([hi - lo for lo, hi in curves], dtype=np.int64)
             pose.assign(at, parampoly3.evaluate_runs([elements[index[lo]] for lo, _ in curves], ds[at], counts))
     return pose
@@ -186,8 +178,8 @@ class _Laws:
         if self.single:
             coef = np.array([c for c, _, _, _ in self.single], dtype=float)  # start, a, b, c, d
             sizes = np.array([n for _, _, _, n in self.single], dtype=np.int64)
-            dests = _ranges([d for _, d, _, _ in self.single], sizes)
-            at = _ranges([a for _, _, a, _ in self.single], sizes)
+            dests = ranges([d for _, d, _, _ in self.single], sizes)
+            at = ranges([a for _, _, a, _ in self.single], sizes)
             per = np.repeat(coef, sizes, axis=0)
             jet = profile._cubic_jet(per[:, 1], per[:, 2], per[:, 3], per[:, 4], s[at] - per[:, 0], None)
             for o, j in zip(out, jet):
@@ -212,7 +204,7 @@ class _Laws:
             coef[i, : len(law.starts)] = law.coefficients
         n = np.array([n for _, _, _, n in laws], dtype=np.int64)
         owner = np.repeat(np.arange(len(laws)), n)
-        at = s[_ranges([a for _, _, a, _ in laws], n)]
+        at = s[ranges([a for _, _, a, _ in laws], n)]
         count = np.zeros(len(at), dtype=np.int64)
         for j in range(width):  # one pass per record position: no (points x records) array
             count += at >= starts[owner, j]
@@ -220,7 +212,7 @@ class _Laws:
         record_start = starts[owner, index]
         a, b, c, d = coef[owner, index].T
         jet = profile._cubic_jet(a, b, c, d, at - record_start, count > 0)
-        dest = _ranges([d for _, d, _, _ in laws], n)
+        dest = ranges([d for _, d, _, _ in laws], n)
         for o, j in zip(out, jet):
             o[dest] = j
 
@@ -273,14 +265,14 @@ def _lines(entries: Sequence[Entry], s: np.ndarray, offsets: np.ndarray) -> _Lin
         base += row * n
     rows_a = np.array(rows_per_entry, dtype=np.int64)
     row_sizes = np.repeat(counts, rows_a)
-    sample = np.repeat(np.repeat(offsets[:-1], rows_a), row_sizes) + _ranges(np.zeros(len(row_sizes)), row_sizes)
+    sample = np.repeat(np.repeat(offsets[:-1], rows_a), row_sizes) + ranges(np.zeros(len(row_sizes)), row_sizes)
     law_jets = laws.evaluate(s, base)  # row 0 of each entry: the laneOffset jet; other rows: the lane's law
     outer = tuple(j.copy() for j in law_jets)  # outer border jets, filled outward below
     lateral = tuple(j.copy() for j in law_jets)  # lane 0's line is the laneOffset line itself
     for depth in sorted(steps):  # outward, one lane depth at a time over all entries and sides
         rows = np.array(steps[depth], dtype=np.int64).reshape(-1, 4)
-        out = _ranges(rows[:, 0], rows[:, 2])
-        inn = _ranges(rows[:, 1], rows[:, 2])
+        out = ranges(rows[:, 0], rows[:, 2])
+        inn = ranges(rows[:, 1], rows[:, 2])
         kinds = np.repeat(rows[:, 3], rows[:, 2])
         for values, own_all, lat in zip(outer, law_jets, lateral):
             inner, own = values[inn], own_all[out]
@@ -353,8 +345,8 @@ def _knots(entries: Sequence[Entry]) -> tuple[np.ndarray, np.ndarray]:
         owners.append(len(part))
     values = np.concatenate(parts)
     owner = np.repeat(np.arange(len(entries)), owners)
-    ranges = np.array([rg.section_range(index) for rg, index in entries], dtype=float).reshape(-1, 2)
-    inside = (values >= ranges[owner, 0]) & (values <= ranges[owner, 1])
+    section_ranges = np.array([rg.section_range(index) for rg, index in entries], dtype=float).reshape(-1, 2)
+    inside = (values >= section_ranges[owner, 0]) & (values <= section_ranges[owner, 1])
     values, owner = _by_section_then_value(values[inside], owner[inside])
     zero = (values == 0) & np.signbit(values)
     if zero.any():  # -0.0 beside 0.0: np.unique's choice between them is the per-section code's; ask it

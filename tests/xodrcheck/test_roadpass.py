@@ -13,7 +13,7 @@ from hypothesis import HealthCheck, given, settings
 from junctionart.fuzz.documents import opendrive_documents
 from junctionart.fuzz.mutations import damaged_documents
 from tests.conftest import corpus_root
-from xodrcheck import roadpass
+from xodrcheck import arrays, roadpass
 from xodrcheck.config import Config
 from xodrcheck.lanes import RoadGeometry, geometry_of
 from xodrcheck.mesh import _lane_pairs, _one, _Part, _Section, build_surfaces
@@ -122,7 +122,7 @@ def test_checker_grid_lines_in_batches_are_the_one_pass_numbers(corpus_dir: Path
         return sampled._all_sections(Context(document, Config(), path=str(path), data=None))
 
     whole, batched = lines(1 << 40), lines(1000)
-    assert len(sampled._batches([len(v.s) for v in whole.values()], 1000)) > 5
+    assert len(arrays.batches([len(v.s) for v in whole.values()], 1000)) > 5
     assert whole.keys() == batched.keys() and len(whole) > 700
     for key, one in whole.items():
         other = batched[key]
@@ -135,11 +135,11 @@ def test_checker_grid_lines_in_batches_are_the_one_pass_numbers(corpus_dir: Path
 
 def test_batches_cover_every_count_once_within_the_limit():
     counts = [5, 3, 9, 1, 1, 12, 2]
-    ranges = sampled._batches(counts, 8)
+    ranges = arrays.batches(counts, 8)
     assert [i for lo, hi in ranges for i in range(lo, hi)] == list(range(len(counts)))
     assert all(sum(counts[lo:hi]) <= 8 or hi - lo == 1 for lo, hi in ranges)
     assert ranges == [(0, 2), (2, 3), (3, 5), (5, 6), (6, 7)]
-    assert sampled._batches([], 8) == []
+    assert arrays.batches([], 8) == []
 
 
 def test_superelevation_and_duplicate_lane_ids_are_left_to_the_per_section_code(corpus_dir: Path):

@@ -14,6 +14,7 @@ from collections.abc import Iterator
 
 import numpy as np
 
+from xodrcheck.arrays import batches
 from xodrcheck.budget import ByteBudget, array_bytes
 from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
@@ -267,7 +268,7 @@ class _SectionCache:
     def evaluate_all(self) -> dict[tuple[str, int], SectionLines]:
         """Every listed section's lines, evaluated in full batches (not kept)."""
         out: dict[tuple[str, int], SectionLines] = {}
-        for lo, hi in _batches([len(s) for s in self._grids], _BATCH_SAMPLES):
+        for lo, hi in batches([len(s) for s in self._grids], _BATCH_SAMPLES):
             _evaluate_batch(self._entries[lo:hi], self._keys[lo:hi], self._grids[lo:hi], out)
         return out
 
@@ -328,19 +329,6 @@ _PASSING_BYTES = 12 << 20
 #: Samples of the first batch a big file's sections are evaluated in where a rule starts reading (it doubles while
 #: the rule reads on in document order).
 _FIRST_BATCH_SAMPLES = 1 << 12
-
-
-def _batches(counts: list[int], limit: int) -> list[tuple[int, int]]:
-    """Consecutive ranges ``[lo, hi)`` of ``counts`` whose sums stay within ``limit`` (a range holds at least one)."""
-    out, lo, total = [], 0, 0
-    for i, n in enumerate(counts):
-        if i > lo and total + n > limit:
-            out.append((lo, i))
-            lo, total = i, 0
-        total += n
-    if lo < len(counts):
-        out.append((lo, len(counts)))
-    return out
 
 
 def _evaluate_batch(entries, keys, grids, out: dict[tuple[str, int], SectionLines]) -> None:
