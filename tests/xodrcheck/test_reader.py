@@ -5,6 +5,7 @@ from __future__ import annotations
 import dataclasses
 import gzip
 import inspect
+import os
 
 import pytest
 
@@ -61,6 +62,69 @@ def test_size_limit_is_a_read_error(tmp_path):
     with pytest.raises(ReadError, match="limit"):
         read(data, max_bytes=len(data) - 1)
     assert read(path, max_bytes=len(data)).document is not None
+
+
+def test_a_pipe_is_read_whole_within_the_limit(tmp_path):
+    """Not a regular file: no size to go by, so the reader reads up to the limit (and refuses past it)."""
+    import threading
+
+    data = xodr(road())
+    fifo = tmp_path / "map.fifo"
+    os.mkfifo(fifo)
+
+    def feed() -> None:
+        with open(fifo, "wb") as stream:
+            stream.write(data)
+
+    for limit, ok in ((len(data), True), (len(data) - 1, False)):
+        writer = threading.Thread(target=feed)
+        writer.start()
+        try:
+            if ok:
+                assert read(fifo, max_bytes=limit).document.roads == read(data).document.roads
+            else:
+                with pytest.raises(ReadError, match="limit"):
+                    read(fifo, max_bytes=limit)
+        finally:
+            writer.join()
+
+
+def test_a_file_that_grew_after_its_stat_is_read_whole(tmp_path, monkeypatch):
+    """The reader asks for the stat's size plus one byte; a file longer than its stat said is read on to its end
+    (within the limit), not cut at the stat's size."""
+    import xodrcheck.reader as reader_module
+
+    data = xodr(road())
+    path = tmp_path / "map.xodr"
+    path.write_bytes(data)
+    real_stat = os.stat
+
+    def stale_stat(p, *args, **kwargs):
+        info = real_stat(p, *args, **kwargs)
+        if str(p) != str(path):
+            return info
+        fields = list(info)
+        fields[6] = len(data) // 2  # st_size as it was before the writer finished
+        return os.stat_result(fields)
+
+    monkeypatch.setattr(reader_module.os, "stat", stale_stat)
+    assert reader_module._load(str(path), len(data)) == data
+    with pytest.raises(ReadError, match="limit"):
+        reader_module._load(str(path), len(data) - 1)
+
+
+@pytest.mark.parametrize("enabled", [True, False])
+def test_reading_leaves_the_garbage_collector_as_it_was(enabled):
+    """The reader pauses the cyclic collector while it builds the model, and restores the caller's setting."""
+    import gc
+
+    was = gc.isenabled()
+    try:
+        (gc.enable if enabled else gc.disable)()
+        assert read(xodr(road())).document is not None
+        assert gc.isenabled() is enabled
+    finally:
+        (gc.enable if was else gc.disable)()
 
 
 def test_gzip_compressed_file_is_read(tmp_path):
