@@ -1,6 +1,7 @@
 """Structural test of the lazy imports: which third-party packages a command loads (run in a fresh interpreter, no
-timing). Heavy packages load only on the paths that need them: scipy for spirals, shapely for the overlap and junction
-geometry rules, trimesh for mesh export, matplotlib for figures, tqdm for progress bars on a terminal."""
+timing). Heavy packages load only on the paths that need them: shapely for the overlap and junction geometry rules,
+trimesh for mesh export, matplotlib for figures, tqdm for progress bars on a terminal; scipy never (the checker's
+Fresnel integrals for spirals are its own)."""
 
 from __future__ import annotations
 
@@ -129,11 +130,23 @@ def test_check_without_overlap_rules_loads_no_shapely(tmp_path: Path, plain: Pat
     assert mods == {"xodrcheck", "numpy", "lxml"}
 
 
-def test_scipy_loads_when_a_spiral_is_evaluated(tmp_path: Path, plain: Path) -> None:
+def test_spiral_check_loads_no_scipy(tmp_path: Path, plain: Path) -> None:
+    # the arc becomes a spiral from curvature 0 whose evaluation takes the Fresnel path (our own Fresnel integrals,
+    # xodrcheck.geometry.fresnel: scipy.special cost 0.25-0.3 s per process); the same packages as without spirals
     spiral = tmp_path / "spiral.xodr"
     spiral.write_text(PLAIN.replace('<arc curvature="0.01"/>', '<spiral curvStart="0" curvEnd="0.01"/>'))
-    assert "scipy" in loaded(tmp_path, "xodrcheck.cli", "xodrcheck", "info", str(spiral))
-    assert "scipy" not in loaded(tmp_path, "xodrcheck.cli", "xodrcheck", "info", str(plain))
+    names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(spiral))
+    assert "xodrcheck.geometry.fresnel" in names and "xodrcheck.rules.overlap" in names
+    assert {name.split(".")[0] for name in names} & set(WATCHED) == {"xodrcheck", "numpy", "lxml", "shapely"}
+    assert "scipy" not in loaded(tmp_path, "xodrcheck.cli", "xodrcheck", "info", str(spiral))
+
+
+def test_the_spiral_fixture_takes_the_fresnel_path() -> None:
+    # what makes the test above meaningful: a = 0, b = 0.5 * 0.01 * 10 over the whole element
+    from xodrcheck.geometry import spiral
+
+    b = 0.5 * 0.01 * 10.0
+    assert spiral._EPS * (2.0 / b**0.5) <= spiral._FRESNEL_BUDGET
 
 
 def test_import_xodrcheck_loads_no_third_party_package(tmp_path: Path) -> None:
