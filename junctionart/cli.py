@@ -15,6 +15,8 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, NamedTuple, NoReturn
 
+from xodrcheck.threads import one_blas_thread
+
 from .errors import JunctionArtError, OutputError, ParamsError
 from .params import size_check
 
@@ -383,6 +385,7 @@ class _Parser(argparse.ArgumentParser):
 
 
 def main(argv: Sequence[str] | None = None) -> int:
+    one_blas_thread()  # before numpy loads: the generator's arrays are small (xodrcheck.threads)
     parser = _Parser(prog="junctionart", description="Procedural OpenDRIVE road networks.")
     sub = parser.add_subparsers(dest="command", required=True)
     chosen = _chosen(argv)

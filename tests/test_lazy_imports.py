@@ -6,6 +6,7 @@ Fresnel integrals for spirals are its own)."""
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
 from pathlib import Path
@@ -14,6 +15,7 @@ import pytest
 
 import xodrcheck.cli
 from xodrcheck.cli import COMMANDS, command_module
+from xodrcheck.threads import THREAD_VARIABLES, one_blas_thread
 
 #: Third-party packages whose loading the tests watch.
 WATCHED = (
@@ -102,7 +104,7 @@ def test_help_loads_no_third_party_package(tmp_path: Path) -> None:
 def test_help_loads_no_module_of_the_checker(tmp_path: Path) -> None:
     # the package's __init__ names the engine lazily: no model, configuration, rules or engine for the bare usage
     ours = {m for m in modules(tmp_path, "xodrcheck.cli", "xodrcheck", "--help") if m.split(".")[0] == "xodrcheck"}
-    assert ours == {"xodrcheck", "xodrcheck.cli"}
+    assert ours == {"xodrcheck", "xodrcheck.cli", "xodrcheck.threads"}
 
 
 def test_plain_check_loads_what_the_rules_need(tmp_path: Path, plain: Path) -> None:
@@ -123,6 +125,45 @@ def test_plain_check_loads_no_slow_module_it_does_not_use(tmp_path: Path, plain:
     lazy = {"zipfile", "importlib.readers", "tempfile", "xodrcheck.schema_fast", "xodrcheck.schema_plan"}
     assert lazy & names == set()
     assert "xodrcheck.schema" in names and "xodrcheck.standard" in names
+
+
+#: Modules that read or model junctions, road objects and signals: a file without any does not load them.
+FEATURE_MODULES = {
+    "xodrcheck.junction_elements",
+    "xodrcheck.junction_grid",
+    "xodrcheck.objects.model",
+    "xodrcheck.objects.read",
+    "xodrcheck.objects.shape",
+    "xodrcheck.objects.place",
+    "xodrcheck.signals",
+}
+
+# PLAIN with one of each: a junction, an object and a signal (and their ids' references left dangling: findings
+# do not matter here, only what loads)
+FEATURES = PLAIN.replace(
+    "    </lanes>\n",
+    "    </lanes>\n"
+    '    <objects><object id="5" s="5" t="4" type="pole" zOffset="0" orientation="none"/></objects>\n'
+    '    <signals><signal id="6" s="5" t="-4" dynamic="no" orientation="+" zOffset="0" country="DE" type="206" '
+    'subtype="-1" value="-1"/></signals>\n',
+).replace("</OpenDRIVE>", '  <junction id="9" name="j"/>\n</OpenDRIVE>')
+
+
+def test_plain_check_loads_no_junction_object_or_signal_module(tmp_path: Path, plain: Path) -> None:
+    # the junction, object and signal rules are loaded and run; what they would read loads only for a file that
+    # has junctions, objects or signals (Context.road_objects, rules.context.junction_parts, has_signals)
+    names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(plain))
+    rules = {"xodrcheck.rules.junction_roles", "xodrcheck.rules.junction_entries", "xodrcheck.rules.object_geometry"}
+    assert rules | {"xodrcheck.rules.signal_control", "xodrcheck.rules.junction_shapes"} <= names
+    assert FEATURE_MODULES.isdisjoint(names)
+
+
+def test_check_of_junctions_objects_and_signals_loads_their_modules(tmp_path: Path) -> None:
+    path = tmp_path / "features.xodr"
+    path.write_text(FEATURES)
+    names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(path))
+    assert {"xodrcheck.junction_elements", "xodrcheck.objects.model", "xodrcheck.objects.read"} <= names
+    assert "xodrcheck.signals" in names
 
 
 def test_check_without_overlap_rules_loads_no_shapely(tmp_path: Path, plain: Path) -> None:
@@ -190,3 +231,55 @@ def test_junctionart_help_loads_no_stage_of_the_generator(tmp_path: Path) -> Non
     }
     assert "junctionart.cli" in names
     assert {m.split(".")[0] for m in names} & set(WATCHED) <= {"junctionart", "xodrcheck"}
+
+
+_THREADS_PROBE = """
+import json, os, sys
+from {module} import main
+try:
+    main(sys.argv[2:])
+except SystemExit:
+    pass
+names = ("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS")
+json.dump({{name: os.environ.get(name) for name in names}}, open(sys.argv[1], "w"))
+"""
+
+
+def _thread_variables(tmp_path: Path, module: str, argv: list[str], **env: str) -> dict[str, str | None]:
+    out = tmp_path / "env.json"
+    clean = {k: v for k, v in os.environ.items() if k not in THREAD_VARIABLES}
+    probe = _THREADS_PROBE.format(module=module)
+    command = [sys.executable, "-c", probe, str(out), *argv]
+    subprocess.run(command, cwd=tmp_path, env=clean | env, capture_output=True, timeout=300, check=True)
+    return json.loads(out.read_text())
+
+
+def test_commands_ask_for_one_blas_thread(tmp_path: Path, plain: Path) -> None:
+    one = dict.fromkeys(("OPENBLAS_NUM_THREADS", "OMP_NUM_THREADS", "MKL_NUM_THREADS"), "1")
+    assert _thread_variables(tmp_path, "xodrcheck.cli", ["check", str(plain)]) == one
+    generate = ["generate", "--size", "300x300", "-q", "-o", "m.xodr"]
+    assert _thread_variables(tmp_path, "junctionart.cli", generate) == one
+    # the user's choice stands, whichever variable says it (OpenBLAS reads OMP_NUM_THREADS too)
+    mine = _thread_variables(tmp_path, "xodrcheck.cli", ["check", str(plain)], OMP_NUM_THREADS="2")
+    assert mine == {"OPENBLAS_NUM_THREADS": None, "OMP_NUM_THREADS": "2", "MKL_NUM_THREADS": None}
+
+
+def test_one_blas_thread_only_before_numpy_and_without_a_choice(monkeypatch: pytest.MonkeyPatch) -> None:
+    for name in THREAD_VARIABLES:
+        monkeypatch.delenv(name, raising=False)
+    assert "numpy" in sys.modules  # the test session has it: too late to set anything
+    assert not one_blas_thread() and not set(THREAD_VARIABLES) & set(os.environ)
+    monkeypatch.delitem(sys.modules, "numpy")
+    monkeypatch.setenv("GOTO_NUM_THREADS", "3")
+    assert not one_blas_thread() and "OPENBLAS_NUM_THREADS" not in os.environ
+    monkeypatch.delenv("GOTO_NUM_THREADS")
+    assert one_blas_thread() and os.environ["OPENBLAS_NUM_THREADS"] == "1"  # monkeypatch restores the environment
+    for name in THREAD_VARIABLES:
+        monkeypatch.delenv(name, raising=False)
+
+
+def test_import_xodrcheck_sets_no_thread_variable(tmp_path: Path) -> None:
+    code = "import os, xodrcheck, xodrcheck.check; print(sorted(k for k in os.environ if k.endswith('_NUM_THREADS')))"
+    clean = {k: v for k, v in os.environ.items() if k not in THREAD_VARIABLES}
+    done = subprocess.run([sys.executable, "-c", code], env=clean, capture_output=True, text=True, check=True)
+    assert done.stdout.strip() == "[]"

@@ -14,6 +14,8 @@ import importlib
 import sys
 from types import ModuleType
 
+from xodrcheck.threads import one_blas_thread
+
 #: Subcommands in the order ``--help`` lists them, with their one-line help (each module's ``HELP``; a test keeps them
 #: equal). The table lets ``xodrcheck --help`` and ``xodrcheck COMMAND`` import no subcommand module but the one used.
 COMMANDS = {
@@ -67,6 +69,7 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
 
 
 def main(argv: list[str] | None = None) -> int:
+    one_blas_thread()  # before numpy loads: the command's arrays are small (xodrcheck.threads)
     parser = build_parser(only=_chosen(argv) or "")
     args = parser.parse_args(argv)
     from xodrcheck.atomic import EXIT_INTERRUPTED, EXIT_TERMINATED, Terminated, signals_raise

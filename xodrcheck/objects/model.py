@@ -10,13 +10,14 @@ from __future__ import annotations
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.model import Arc, Cubic, LaneLayer, Line, ParamPoly3
+from xodrcheck.objects.kinds import CORNER_LOCAL as CORNER_LOCAL  # the element names, named here as before
+from xodrcheck.objects.kinds import CORNER_ROAD as CORNER_ROAD
+from xodrcheck.objects.kinds import CURVE_LOCAL as CURVE_LOCAL
+from xodrcheck.objects.kinds import VERTEX_LOCAL
+from xodrcheck.objects.kinds import VERTEX_ROAD as VERTEX_ROAD
 
 #: The shapes a ``<curveLocal>`` may have, as plan-view elements starting at ``s = 0``.
 CurveShape = Line | Arc | ParamPoly3
-
-#: Element names of outline points, in the order :attr:`Outline.kind` reports them.
-CORNER_ROAD, CORNER_LOCAL, CURVE_LOCAL = "cornerRoad", "cornerLocal", "curveLocal"
-VERTEX_ROAD, VERTEX_LOCAL = "vertexRoad", "vertexLocal"
 
 
 @dataclass(frozen=True, slots=True)

@@ -9,7 +9,7 @@ from __future__ import annotations
 import dataclasses
 import math
 import time
-from collections.abc import Callable, Mapping
+from collections.abc import Callable, Iterator, Mapping
 from functools import cached_property
 from typing import TYPE_CHECKING, Any, TypeVar
 
@@ -34,6 +34,7 @@ if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree
 
     from xodrcheck.filebytes import FileBytes
+    from xodrcheck.junction_elements import JunctionParts
     from xodrcheck.lanes import RoadGeometry
     from xodrcheck.objects import RoadObject, RoadObjects
     from xodrcheck.signals import Signals
@@ -187,10 +188,12 @@ class Context:
         """Road id -> everything in the road's ``<objects>`` as typed data (:mod:`xodrcheck.objects`: objects with
         outlines, skeletons, markings, borders, repeats, surfaces; object references, tunnels, bridges), built from
         :attr:`tree` once per file; empty when the file is not well-formed."""
+        tree = self.tree
+        if tree is None or not any(next(r.iterchildren("{*}objects"), None) is not None for r in _roads(tree)):
+            return {}  # no <objects> (what read_road_objects gives): xodrcheck.objects' dataclasses are not loaded
         from xodrcheck.objects import read_road_objects
 
-        tree = self.tree
-        return {} if tree is None else read_road_objects(tree.getroot(), self.version)
+        return read_road_objects(tree.getroot(), self.version)
 
     @cached_property
     def objects(self) -> Mapping[str, tuple[RoadObject, ...]]:
@@ -471,3 +474,19 @@ def placed_lane_ids(geometry: RoadGeometry, section_index: int) -> frozenset[int
     """Ids of the lanes the geometry places in a lane section: positive ids in ``<left>``, negative in ``<right>``
     (a lane filed on the wrong side has no border to evaluate), ``singleSide`` sections resolved."""
     return frozenset(lane.id for side in geometry.side_lanes(section_index) for lane in side.lanes)
+
+
+def junction_parts(ctx: Context) -> tuple[JunctionParts, ...]:
+    """:func:`xodrcheck.junction_elements.junction_parts`: the file's junctions, built once per context; that module
+    (and its dataclasses) loads only for a file with a ``<junction>`` element."""
+    tree = ctx.tree
+    if tree is None or next(tree.getroot().iterchildren("{*}junction"), None) is None:
+        return ()  # what junction_elements.read_junctions gives for such a tree
+    from xodrcheck.junction_elements import junction_parts as parts
+
+    return parts(ctx)
+
+
+def _roads(tree: etree._ElementTree) -> Iterator[etree._Element]:
+    """The ``<road>`` elements of the file, whatever their namespace."""
+    return tree.getroot().iterchildren("{*}road")

@@ -10,24 +10,20 @@ rules'), and only for common junctions (a boundary elsewhere is ``J012``'s). Gap
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
-from xodrcheck.junction_elements import JunctionParts, junction_parts
 from xodrcheck.model import ElementType, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context
-from xodrcheck.rules.junction_shapes import (
-    Piece,
-    boundary_pieces,
-    gaps,
-    grid_area,
-    reference_line,
-    ring,
-    signed_area,
-)
+from xodrcheck.rules.context import Context, junction_parts
+from xodrcheck.rules.junction_shapes import boundary_pieces, gaps, grid_area, reference_line, ring, signed_area
 from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:
+    from xodrcheck.junction_elements import JunctionParts
+    from xodrcheck.rules.junction_shapes import Piece
 
 
 def _boundaries(ctx: Context) -> Iterator[tuple[JunctionParts, list[Piece]]]:

@@ -24,19 +24,23 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Finding, Severity
-from xodrcheck.junction_elements import JointSegment, JunctionParts, LaneSegment, junction_parts
-from xodrcheck.junction_grid import GridSurface, grid_surface
 from xodrcheck.model import ContactPoint, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context
-from xodrcheck.rules.junction_shapes import Piece, ReferenceLine, boundary_pieces, joint_lanes, reference_line
+from xodrcheck.rules.context import Context, junction_parts
+from xodrcheck.rules.junction_shapes import boundary_pieces, joint_lanes, reference_line
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import end_s, usable
+
+if TYPE_CHECKING:
+    from xodrcheck.junction_elements import JointSegment, JunctionParts
+    from xodrcheck.junction_grid import GridSurface
+    from xodrcheck.rules.junction_shapes import Piece, ReferenceLine
 
 #: Step (m) into the road over which its grade at the end is measured (a difference quotient of the exact surface).
 _DS = 1e-3
@@ -67,6 +71,8 @@ class _Across:
 
 def _zone(pieces: list[Piece], k: int, length: float, tol: float) -> str:
     """Why the transition zone of the joint ``pieces[k]`` cannot be built ("" when it can)."""
+    from xodrcheck.junction_elements import LaneSegment
+
     n = len(pieces)
     for side, piece in (("before", pieces[k - 1]), ("after", pieces[(k + 1) % n])):
         if n < 3 or not isinstance(piece.segment, LaneSegment):
@@ -79,6 +85,8 @@ def _zone(pieces: list[Piece], k: int, length: float, tol: float) -> str:
 
 def _entries(ctx: Context, j: JunctionParts) -> list[_Entry]:
     """The junction's entries and exits: its boundary's joints at road ends, then incoming road ends without one."""
+    from xodrcheck.junction_elements import JointSegment
+
     out: list[_Entry] = []
     seen: set[tuple[str, ContactPoint]] = set()
     pieces = boundary_pieces(ctx, j.boundary) if j.boundary is not None and not j.boundary.unknown else None
@@ -104,6 +112,8 @@ def _entries(ctx: Context, j: JunctionParts) -> list[_Entry]:
 
 def _across(ctx: Context, entry: _Entry) -> _Across | None:
     """The road surface across the entry's lanes at the road's end (``None`` when the road cannot be evaluated)."""
+    from xodrcheck.junction_elements import JointSegment
+
     road, end = entry.road, entry.end
     geometry = usable(ctx, road)
     if geometry is None or not road.lane_sections:
@@ -182,6 +192,8 @@ def elevation_grid_entry_exit(ctx: Context) -> Iterator[Finding]:
 
         <elevation left="0.95 0.95 0.95" center="0.95" right="0.95"/> ...
     """
+    from xodrcheck.junction_grid import grid_surface
+
     tol = ctx.tolerances
     for j in junction_parts(ctx):
         grid, line = j.grid, reference_line(j)

@@ -11,13 +11,17 @@ roads and lanes, boundary segments' roads.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from xodrcheck.findings import Category, Severity
-from xodrcheck.junction_elements import CrossPath, JointSegment, JunctionParts, junction_parts
 from xodrcheck.model import ContactPoint, JunctionType, Lane, LaneType, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.context import Context, junction_parts
 from xodrcheck.rules.junction_roles import legs
 from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:
+    from xodrcheck.junction_elements import CrossPath, JunctionParts
 
 
 # ---------------------------------------------------------------------------------------------------- direct junctions
@@ -247,6 +251,8 @@ def cross_path_roads(ctx: Context):
 # ---------------------------------------------------------------------------------------------------- boundary roads
 def _reaches(j: JunctionParts, road: Road, end: ContactPoint | None) -> bool:
     """Whether a boundary segment of the junction reaches the road's end (``None``: either end)."""
+    from xodrcheck.junction_elements import JointSegment
+
     boundary = j.boundary
     if boundary is None:
         return False

@@ -11,18 +11,20 @@ reference rules'.
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
-from xodrcheck.junction_elements import CrossPath, CrossPathLink, JunctionParts, junction_parts
 from xodrcheck.model import Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.context import Context, junction_parts
 from xodrcheck.rules.junction_shapes import boundary_pieces, gaps, ring, road_points, strip
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import left_of, usable
+
+if TYPE_CHECKING:
+    from xodrcheck.junction_elements import CrossPath, CrossPathLink, JunctionParts
 
 #: How far along the linked road around a lane link's ``s`` its lane is taken, beyond the crossing road's width (m).
 _MARGIN = 2.0

@@ -12,14 +12,18 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
-from xodrcheck.junction_elements import JunctionParts, Priority, junction_parts, local, number
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, link_at, other_end
+from xodrcheck.rules.context import Context, junction_parts, link_at, other_end
 from xodrcheck.rules.registry import rule
+from xodrcheck.xmlvalues import local, number
+
+if TYPE_CHECKING:
+    from xodrcheck.junction_elements import JunctionParts, Priority
 
 
 @dataclass(frozen=True, slots=True)

@@ -16,24 +16,27 @@ order follows on from the segment before it (the file does not say which).
 from __future__ import annotations
 
 import math
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from xodrcheck.arrays import unique
 from xodrcheck.classcache import dataclass
-from xodrcheck.junction_elements import (
-    Boundary,
-    ElevationGrid,
-    JointSegment,
-    JunctionParts,
-    LaneSegment,
-    RoadPlace,
-    Segment,
-)
 from xodrcheck.lanes import RoadGeometry
 from xodrcheck.model import Road
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.sampled import left_of, section_lines, usable
+
+if TYPE_CHECKING:
+    from xodrcheck.junction_elements import (
+        Boundary,
+        ElevationGrid,
+        JointSegment,
+        JunctionParts,
+        LaneSegment,
+        RoadPlace,
+        Segment,
+    )
 
 
 @dataclass(frozen=True)
@@ -146,6 +149,8 @@ def _joint_piece(ctx: Context, seg: JointSegment) -> tuple[np.ndarray, bool] | N
 def boundary_pieces(ctx: Context, boundary: Boundary) -> list[Piece] | None:
     """The boundary's segments in plan view, in file order; ``None`` when a segment cannot be placed (an unknown
     road or lane, a place off its road: the segment rules report those)."""
+    from xodrcheck.junction_elements import LaneSegment
+
     pieces: list[Piece] = []
     for seg in boundary.segments:
         if isinstance(seg, LaneSegment):

@@ -16,12 +16,15 @@ Where Annex F states one requirement under several UIDs (``connectingRoad`` in a
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Finding, Severity
-from xodrcheck.junction_elements import JunctionParts, junction_parts
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.context import Context, junction_parts
 from xodrcheck.rules.registry import Rule, rule
+
+if TYPE_CHECKING:
+    from xodrcheck.junction_elements import JunctionParts
 
 _VIRTUAL_ATTRIBUTES = ("mainRoad", "orientation", "sStart", "sEnd")
 

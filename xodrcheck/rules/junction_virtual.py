@@ -11,17 +11,20 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
-from xodrcheck.junction_elements import JunctionParts, junction_parts
 from xodrcheck.lanes import RoadGeometry
 from xodrcheck.model import ContactPoint, ElementType, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, link_at
+from xodrcheck.rules.context import Context, junction_parts, link_at
 from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.rules.sampled import angle_between, end_s, left_of, usable, warning_note
+
+if TYPE_CHECKING:
+    from xodrcheck.junction_elements import JunctionParts
 
 
 def _branches(ctx: Context) -> Iterator[tuple[JunctionParts, Road, Road, ContactPoint, float, str | None, int]]:

@@ -8,15 +8,18 @@ names the road, the object's ``s`` (the engine places it) and the line of the el
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import TrafficRule
-from xodrcheck.objects import LaneValidity, ObjectReference, RoadObject, Structure
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:
+    from xodrcheck.objects import LaneValidity, ObjectReference, RoadObject, Structure
 
 ORIENTATIONS = ("+", "-", "none")
 
@@ -254,6 +257,8 @@ def validity_against_orientation(ctx: Context):
 
         <object id="1" type="roadMark" orientation="+" ...><validity fromLane="1" toLane="1"/></object>
     """
+    from xodrcheck.objects import RoadObject
+
     for parent in _oriented(ctx):
         if not parent.validities:
             continue

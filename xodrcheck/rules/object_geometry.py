@@ -10,19 +10,22 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
-from xodrcheck.objects import CornerLocal, CornerRoad, Outline, RoadObject, Vertex, curve_points
-from xodrcheck.objects.place import Frame, Volume, frame_of, road_xy, volume_of
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import all_objects, label
 from xodrcheck.rules.object_outlines import name_of
 from xodrcheck.rules.object_skeletons import polyline_name
 from xodrcheck.rules.registry import NO_UID, rule
+
+if TYPE_CHECKING:
+    from xodrcheck.objects import Outline, RoadObject, Vertex
+    from xodrcheck.objects.place import Frame, Volume
 
 #: Samples per metre along ``<curveLocal>`` curves (their points between the curve's ends must be inside too).
 _CURVE_STEP = 0.05
@@ -43,6 +46,8 @@ class Placed:
     """An object's frame and volume, computed on first use (a road point needs the road's geometry)."""
 
     def __init__(self, ctx: Context, obj: RoadObject):
+        from xodrcheck.objects.place import volume_of
+
         self.ctx, self.obj = ctx, obj
         self.volume = volume_of(obj)
         self._frame: Frame | None = None
@@ -50,6 +55,8 @@ class Placed:
 
     @property
     def frame(self) -> Frame | None:
+        from xodrcheck.objects.place import frame_of
+
         if not self._framed:
             geometry = self.ctx.geometry(self.obj.road)
             self._frame = None if geometry is None or not geometry.road.plan_view else frame_of(self.obj, geometry)
@@ -58,6 +65,8 @@ class Placed:
 
     def road_points(self, s, t, dz) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
         """Local ``u``, ``v``, ``z`` of road points (``None`` without frame)."""
+        from xodrcheck.objects.place import road_xy
+
         frame = self.frame
         if frame is None:
             return None
@@ -78,6 +87,8 @@ class Placed:
 
 def outline_points(placed: Placed, outline: Outline) -> Points | None:
     """An outline's points in the local frame: its corners, or its curves sampled (``None``: not placeable)."""
+    from xodrcheck.objects import CornerLocal, CornerRoad, curve_points
+
     if outline.curves:
         parts = []
         for curve in outline.curves:

@@ -11,14 +11,17 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.objects import Outline, RoadObject
-from xodrcheck.objects.model import CORNER_LOCAL, CORNER_ROAD, CURVE_LOCAL
+from xodrcheck.objects.kinds import CORNER_LOCAL, CORNER_ROAD, CURVE_LOCAL
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import all_objects, at, label
 from xodrcheck.rules.registry import NO_UID, rule
+
+if TYPE_CHECKING:
+    from xodrcheck.objects import Outline, RoadObject
 
 
 def outlines(ctx: Context) -> Iterator[tuple[RoadObject, Outline]]:

@@ -3,13 +3,17 @@ it (13.4, OpenDRIVE 1.9's rules)."""
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from xodrcheck.findings import Category, Severity
-from xodrcheck.objects import Repeat, RoadObject
-from xodrcheck.objects.model import CORNER_ROAD
+from xodrcheck.objects.kinds import CORNER_ROAD
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import all_objects, at, label
 from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:
+    from xodrcheck.objects import Repeat, RoadObject
 
 
 @rule("B040", "repeat-beyond-road", Category.OBJECT, Severity.ERROR, uids=(U.REPEAT_VALID_S_LENGTH,), xml=True)

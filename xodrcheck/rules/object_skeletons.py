@@ -8,14 +8,17 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.objects import Polyline, RoadObject, Vertex
-from xodrcheck.objects.model import VERTEX_LOCAL, VERTEX_ROAD
+from xodrcheck.objects.kinds import VERTEX_LOCAL, VERTEX_ROAD
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import all_objects, at, label
 from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:
+    from xodrcheck.objects import Polyline, RoadObject, Vertex
 
 
 def polylines(ctx: Context) -> Iterator[tuple[RoadObject, Polyline]]:

@@ -16,8 +16,6 @@ import numpy as np
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
-from xodrcheck.objects import RoadObject
-from xodrcheck.objects.place import Instance, Volume, instances, road_xy, volume_of
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import all_objects, at, label
@@ -27,6 +25,8 @@ if TYPE_CHECKING:  # pragma: no cover
     import shapely
 
     from xodrcheck.lanes import RoadGeometry
+    from xodrcheck.objects import RoadObject
+    from xodrcheck.objects.place import Instance, Volume
 
 
 def surface_objects(ctx: Context) -> Iterator[RoadObject]:
@@ -143,6 +143,8 @@ class Box:
 def _boxes(ctx: Context) -> list[Box]:
     """Every placed bounding volume of the file's surface objects (each instance of a repeated one, thinned where
     instances pile up: :func:`_thinned`). Cached."""
+    from xodrcheck.objects.place import instances
+
     cache = ctx.__dict__.get("_surface_boxes")
     if cache is not None:
         return cache
@@ -161,6 +163,8 @@ def _placed_boxes(obj: RoadObject, geometry: RoadGeometry, run: list[Instance]) 
     """The plan-view boxes (or 64-gons of cylinders) of instances, all evaluated at once on the road's exact reference
     line; an instance where the road has no reference line is left out."""
     import shapely
+
+    from xodrcheck.objects.place import road_xy
 
     volumes = [inst.volume for inst in run if inst.volume is not None]
     run = [inst for inst in run if inst.volume is not None]
@@ -461,6 +465,7 @@ def perp_to_road_skewed(ctx: Context):
         <elevation s="0" a="0" b="0" c="-0.5" d="0"/>...<object ... length="2" width="2" perpToRoad="true">
     """
     from xodrcheck.geometry.profile import Piecewise
+    from xodrcheck.objects.place import volume_of
 
     for obj in all_objects(ctx):
         volume = volume_of(obj)

@@ -11,17 +11,19 @@ import dataclasses
 import itertools
 import math
 from collections.abc import Iterator
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Arc, Line, ParamPoly3, PRange
-from xodrcheck.objects import CurveLocal, Outline, RoadObject, curve_end
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.elements import length_verdict
 from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:
+    from xodrcheck.objects import CurveLocal, Outline, RoadObject
 
 
 def _curve_outlines(ctx: Context) -> Iterator[tuple[RoadObject, Outline]]:
@@ -37,6 +39,8 @@ def _gap(a: CurveLocal, b: CurveLocal, tol: float) -> tuple[float, float, float]
     (shape unknown, or an arcLength paramPoly3 without ``length``). Without ``length`` a curve "shall extend up to the
     next <curveLocal>": a line or arc then ends at ``b``'s start if that lies on it (ahead, for a line), a normalized
     paramPoly3 ends where ``p = 1`` takes it."""
+    from xodrcheck.objects import curve_end
+
     shape = a.shape
     if shape is None:
         return None

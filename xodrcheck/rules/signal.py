@@ -6,12 +6,15 @@ references are :mod:`.signal_validity`'s.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.signals import Signal
+
+if TYPE_CHECKING:
+    from xodrcheck.signals import Signal
 
 
 def has_signals(ctx: Context) -> bool:

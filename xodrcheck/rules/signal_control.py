@@ -24,6 +24,7 @@ further on), control nothing here; a lane with several lane links across a lane 
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -35,7 +36,9 @@ from xodrcheck.rules.junction_geometry import _centre_path, _parted
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import usable
 from xodrcheck.rules.signal import has_signals
-from xodrcheck.signals import Controller, Validity
+
+if TYPE_CHECKING:
+    from xodrcheck.signals import Controller, Validity
 
 #: Dynamic signals of the OpenDRIVE signal reference that are not for vehicles on the lanes they stand beside:
 #: pedestrian light (1000002, the spec's own example of 14.4), pedestrian and bicycle light (1000007), bicycle light

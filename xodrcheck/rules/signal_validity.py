@@ -5,6 +5,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
+from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import TrafficRule
@@ -12,7 +13,9 @@ from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.signal import has_signals
-from xodrcheck.signals import Validity
+
+if TYPE_CHECKING:
+    from xodrcheck.signals import Validity
 
 _ORIENTATIONS = ("+", "-", "none")
 
