@@ -16,7 +16,6 @@ GeoJSON: a FeatureCollection of LineString features; ``properties`` may hold ``i
 from __future__ import annotations
 
 import itertools
-import json
 import math
 from pathlib import Path
 from typing import Any
@@ -295,6 +294,8 @@ def parse(data: Any, source: str = "<input>") -> ControlLines:
 
 def load(path: str | Path) -> ControlLines:
     """Read a JSON / GeoJSON control-line file; every problem is an :class:`InputError` naming the file."""
+    import json  # here: a generated map without a control-line file reads no JSON
+
     p = Path(path)
     try:
         if p.stat().st_size > MAX_FILE_BYTES:

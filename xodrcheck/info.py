@@ -7,13 +7,13 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Iterable, Mapping
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from xodrcheck.arrays import unique
 from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
-from xodrcheck.elevation_info import ElevationInfo, elevation_info
 from xodrcheck.findings import Finding, Severity
 from xodrcheck.lanes import RoadGeometry, geometry_of
 from xodrcheck.model import (
@@ -31,6 +31,9 @@ from xodrcheck.model import (
 )
 from xodrcheck.reader import ReadResult
 from xodrcheck.sampling import step_counts
+
+if TYPE_CHECKING:
+    from xodrcheck.elevation_info import ElevationInfo
 
 #: OpenDRIVE element names of the plan-view geometry kinds.
 GEOMETRY_NAMES = {Line: "line", Arc: "arc", Spiral: "spiral", Poly3: "poly3", ParamPoly3: "paramPoly3"}
@@ -203,6 +206,8 @@ def _finding_counts(findings: Iterable[Finding]) -> dict[str, int]:
 
 def map_info(result: ReadResult, tolerances: Tolerances | None = None) -> MapInfo:
     """Summarise a read file."""
+    from xodrcheck.elevation_info import elevation_info  # here: the meshes' lane_type_name loads no elevation
+
     doc = result.document
     findings = _finding_counts(result.findings)
     if doc is None:
