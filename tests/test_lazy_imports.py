@@ -5,17 +5,20 @@ Fresnel integrals for spirals are its own)."""
 
 from __future__ import annotations
 
+import gc
 import json
 import os
 import subprocess
 import sys
 from pathlib import Path
+from typing import Any
 
 import pytest
 
 import xodrcheck.cli
+from xodrcheck import startup
 from xodrcheck.cli import COMMANDS, command_module
-from xodrcheck.threads import THREAD_VARIABLES, one_blas_thread
+from xodrcheck.startup import THREAD_VARIABLES, one_blas_thread
 
 #: Third-party packages whose loading the tests watch.
 WATCHED = (
@@ -104,7 +107,7 @@ def test_help_loads_no_third_party_package(tmp_path: Path) -> None:
 def test_help_loads_no_module_of_the_checker(tmp_path: Path) -> None:
     # the package's __init__ names the engine lazily: no model, configuration, rules or engine for the bare usage
     ours = {m for m in modules(tmp_path, "xodrcheck.cli", "xodrcheck", "--help") if m.split(".")[0] == "xodrcheck"}
-    assert ours == {"xodrcheck", "xodrcheck.cli", "xodrcheck.threads"}
+    assert ours == {"xodrcheck", "xodrcheck.cli", "xodrcheck.startup"}
 
 
 def test_plain_check_loads_what_the_rules_need(tmp_path: Path, plain: Path) -> None:
@@ -283,3 +286,56 @@ def test_import_xodrcheck_sets_no_thread_variable(tmp_path: Path) -> None:
     clean = {k: v for k, v in os.environ.items() if k not in THREAD_VARIABLES}
     done = subprocess.run([sys.executable, "-c", code], env=clean, capture_output=True, text=True, check=True)
     assert done.stdout.strip() == "[]"
+
+
+_GC_PROBE = """
+import gc, json, sys
+from {module} import main
+out, own = sys.argv[1], sys.argv[2] == "own"
+sys.argv = ["prog", *sys.argv[3:]]
+try:
+    main() if own else main(sys.argv[1:])
+except SystemExit:
+    pass
+json.dump({{"enabled": gc.isenabled(), "frozen": gc.get_freeze_count()}}, open(out, "w"))
+"""
+
+
+def _collector(tmp_path: Path, module: str, own: bool, *argv: str) -> dict[str, Any]:
+    out = tmp_path / "gc.json"
+    probe = _GC_PROBE.format(module=module)
+    command = [sys.executable, "-c", probe, str(out), "own" if own else "call", *argv]
+    subprocess.run(command, cwd=tmp_path, capture_output=True, timeout=300, check=True)
+    return json.loads(out.read_text())
+
+
+def test_commands_freeze_their_imports_and_resume_the_collector(tmp_path: Path, plain: Path) -> None:
+    # the process's own command line: the modules imported with the collector paused are frozen, then it runs again
+    for module, argv in (
+        ("xodrcheck.cli", ("check", str(plain))),
+        ("xodrcheck.cli", ("info", str(plain))),
+        ("junctionart.cli", ("generate", "--size", "300x300", "-q", "-o", "m.xodr")),
+    ):
+        state = _collector(tmp_path, module, True, *argv)
+        assert state["enabled"] and state["frozen"] > 10_000, (module, argv, state)
+        # main(argv), as a caller in its own process (a test) runs it: the caller's objects stay collectable
+        assert _collector(tmp_path, module, False, *argv) == {"enabled": True, "frozen": 0}
+
+
+def test_collector_pause_and_resume(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(startup, "_paused", False)
+    monkeypatch.setattr(gc, "freeze", lambda: None)  # this test's process keeps its objects collectable
+    assert gc.isenabled()
+    try:
+        assert startup.pause_collector() and not gc.isenabled()
+        assert not startup.pause_collector()  # once
+        startup.imports_done()
+        assert gc.isenabled()
+        startup.imports_done()  # nothing to resume
+        assert gc.isenabled()
+        gc.disable()
+        assert not startup.pause_collector()  # a collector stopped by someone else stays stopped
+        startup.imports_done()
+        assert not gc.isenabled()
+    finally:
+        gc.enable()

@@ -14,7 +14,7 @@ import importlib
 import sys
 from types import ModuleType
 
-from xodrcheck.threads import one_blas_thread
+from xodrcheck import startup
 
 #: Subcommands in the order ``--help`` lists them, with their one-line help (each module's ``HELP``; a test keeps them
 #: equal). The table lets ``xodrcheck --help`` and ``xodrcheck COMMAND`` import no subcommand module but the one used.
@@ -64,12 +64,12 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
         if only is None or name == only:
             module = command_module(name)
             module.add_arguments(p)
-            p.set_defaults(_run=module.run)
+            p.set_defaults(_run=module.run, _preload=getattr(module, "preload", None))
     return parser
 
 
 def main(argv: list[str] | None = None) -> int:
-    one_blas_thread()  # before numpy loads: the command's arrays are small (xodrcheck.threads)
+    startup.begin(argv)  # before numpy loads: one BLAS thread; the collector paused while the command imports
     parser = build_parser(only=_chosen(argv) or "")
     args = parser.parse_args(argv)
     from xodrcheck.atomic import EXIT_INTERRUPTED, EXIT_TERMINATED, Terminated, signals_raise
@@ -90,6 +90,9 @@ def main(argv: list[str] | None = None) -> int:
 def _run(args: argparse.Namespace) -> int:
     import numpy as np  # here: `xodrcheck --help` and usage errors load no numpy
 
+    if args._preload is not None:
+        args._preload()  # the command's modules, imported with the collector paused (xodrcheck.startup)
+    startup.imports_done()
     # Damaged numbers (1e308 widths, say) overflow to inf/nan, which the rules report as findings; numpy's
     # floating-point warnings would only repeat that as noise on stderr. IEEE results are the same either way.
     with np.errstate(all="ignore"):
