@@ -4,8 +4,10 @@ Versions 1.1 to 1.7 use XSD 1.0 and compile in lxml in milliseconds. 1.8 and 1.9
 ``xs:alternative``), which lxml cannot compile: xmlschema's ``XMLSchema11`` validator is used, and since building it
 takes about half a second, the compiled schema is cached per version. xmlschema validates about 1 MB/s, so a file is
 first given a fast verdict (:mod:`xodrcheck.schema_fast`: lxml on the XSD 1.0 part, with the alternatives made
-explicit and the assertions evaluated one by one, from the schema's plan, without importing xmlschema); only a file
-not shown valid that way goes through xmlschema, which reports its errors.
+explicit and the assertions evaluated one by one, from the schema's plan, without importing xmlschema). A file whose
+only errors are false assertions gets them from there too, worded and ordered as xmlschema gives them (the fast path
+knows them to be all when lxml finds the rest valid); any other file not shown valid goes through xmlschema, which
+reports its errors.
 
 Which schema a version gets (:data:`SCHEMA_FOLDERS`): the header has only ``revMajor`` and ``revMinor`` (its
 ``version`` attribute is the map's own version, not the standard's), so a patch release cannot be told apart from its
@@ -145,8 +147,17 @@ def validate(tree, version: tuple[int, int]) -> Iterator[SchemaError]:
         from xodrcheck import schema_fast
 
         folder, main = SCHEMA_FOLDERS[version]
-        if schema_fast.is_valid(tree, folder, main):
-            return  # shown valid by lxml on the XSD 1.0 part plus the alternatives and assertions (schema_fast)
+        failures = schema_fast.assertion_failures(tree, folder, main)
+        if failures is not None:
+            # valid by lxml on the XSD 1.0 part plus the alternatives, and these assertions false (schema_fast): the
+            # full validator's errors, worded as it words them
+            for failure in failures:
+                elem = failure.elem
+                yield SchemaError(
+                    elem.sourceline or 0,
+                    f"Element '{elem.tag}': assertion test is false: {' '.join(failure.test.split())}",
+                )
+            return
         for err in compiled(version).iter_errors(tree):
             line = getattr(err, "sourceline", None) or 0
             reason = err.reason or str(err.message)

@@ -18,10 +18,12 @@ times the file's size, and a 50 MB map's copy alone cost gigabytes):
 
 The declarations, types and tests come from the schema's plan (:mod:`xodrcheck.schema_plan`: written from xmlschema's
 compiled schema, shipped beside the schema files, tests translated to XPath 1.0), walked along the instance, so
-nothing here knows OpenDRIVE and neither xmlschema nor elementpath is imported. :func:`is_valid` only ever says
-"valid" or "don't know": when it says False (or anything goes wrong, a test is not translated, or the file already
-uses ``xsi:`` attributes), :mod:`xodrcheck.schema` runs the full XSD 1.1 validator, which gives the errors with their
-lines. Both are compared on the corpus, generated maps and damaged documents in ``tests/xodrcheck/test_schema_fast.py``.
+nothing here knows OpenDRIVE and neither xmlschema nor elementpath is imported. :func:`assertion_failures` says
+"valid", "only these assertions are false" (the XSD 1.0 part valid: then they are all the full validator's errors,
+which :mod:`xodrcheck.schema` words as it does) or "don't know": then (anything goes wrong, a test is not translated,
+or the file already uses ``xsi:`` attributes) :mod:`xodrcheck.schema` runs the full XSD 1.1 validator, which gives
+the errors with their lines. Both are compared on the corpus, generated maps, documents breaking assertions and
+damaged documents in ``tests/xodrcheck/test_schema_fast.py``.
 """
 
 from __future__ import annotations
@@ -78,6 +80,8 @@ class _Type(NamedTuple):
     assertions: tuple[etree.XPath | None, ...]
     #: Local name -> declaration number of the children the content model declares.
     children: dict[str, int]
+    #: The assertions' XPath 2.0 tests as the schema writes them (the full validator's error messages quote them).
+    tests: tuple[str, ...]
 
 
 class _Decl(NamedTuple):
@@ -145,7 +149,12 @@ def plan(folder_name: str) -> _Plan:
         for d in data["decls"]
     ]
     types = [
-        _Type(t["name"], tuple(_compiled(a["xpath"]) for a in t["assertions"]), dict(t["children"]))
+        _Type(
+            t["name"],
+            tuple(_compiled(a["xpath"]) for a in t["assertions"]),
+            dict(t["children"]),
+            tuple(str(a["test"]) for a in t["assertions"]),
+        )
         for t in data["types"]
     ]
     return _Plan(dict(data["top"]), decls, types)
@@ -167,46 +176,81 @@ def is_valid(tree: etree._ElementTree, folder_name: str, main: str) -> bool:
     """True when ``tree`` is certainly valid against the XSD 1.1 schema of the files ``folder_name``/``main``; False
     means "not shown valid here": validate it fully. ``tree`` is typed in place for the check and restored before
     this returns."""
+    return assertion_failures(tree, folder_name, main) == []
+
+
+class Failure(NamedTuple):
+    """An assertion that is false on an element: the full validator's error ``assertion test is false``."""
+
+    elem: etree._Element
+    #: The assertion's XPath 2.0 test as the schema writes it.
+    test: str
+
+
+def assertion_failures(tree: etree._ElementTree, folder_name: str, main: str) -> list[Failure] | None:
+    """The errors the full XSD 1.1 validator finds in ``tree`` when they are certainly assertions only: the XSD 1.0
+    part valid (lxml, with the alternatives' types), every test met translated and evaluated without error, and no
+    attribute in a failing element's fragment with whitespace that typing would normalise. Then each false assertion
+    is one :class:`Failure`, in the full validator's order (elements in document order, each element's assertions
+    before its children's, in its type's order); ``[]``: valid. ``None``: not known here: validate it fully.
+    ``tree`` is typed in place for the check and restored before this returns."""
     typed: list[tuple[etree._Element, list[str] | None]] = []
+    failures: list[Failure] = []
     try:
         schema10 = derived(folder_name, main)
         schema_plan = plan(folder_name)
         root = tree.getroot()
         if root.xpath("boolean(//@*[namespace-uri() = $ns])", ns=XSI):
-            return False  # xsi:type and friends: their interplay with alternatives is the full validator's job
+            return None  # xsi:type and friends: their interplay with alternatives is the full validator's job
         top = schema_plan.top.get(etree.QName(root).localname)
-        if top is None:
-            return False
-        return _typed_and_asserted(root, top, schema_plan, typed) and bool(schema10.validate(tree))
+        if top is None or not _typed_and_asserted(root, top, schema_plan, typed, failures):
+            return None
+        if not all(_plain(f.elem) for f in failures) or not schema10.validate(tree):
+            return None
+        return failures
     except Exception:
-        return False
+        return None
     finally:
         _untype(typed)
 
 
-def _typed_and_asserted(root: etree._Element, top: int, schema_plan: _Plan, typed: list) -> bool:
-    """Walk the instance along its declarations: False at the first assertion that fails; every element with
-    alternatives gets its selected type as ``xsi:type`` (recorded in ``typed`` with, when the element had no
-    ``xsi`` namespace in scope, the prefixes it had, for :func:`_untype`)."""
+def _plain(elem: etree._Element) -> bool:
+    """No attribute value of ``elem``'s fragment has leading, trailing, repeated or non-space whitespace (where a
+    typed value, whitespace-collapsed, could differ from the untyped string the assertions were evaluated on)."""
+    return all(value == " ".join(value.split()) for e in elem.iter("*") for value in e.attrib.values())
+
+
+def _typed_and_asserted(
+    root: etree._Element, top: int, schema_plan: _Plan, typed: list, failures: list[Failure]
+) -> bool:
+    """Walk the instance along its declarations in document order, adding each false assertion to ``failures``;
+    False ("don't know") at a test that is not translated or that raises. Every element with alternatives gets its
+    selected type as ``xsi:type`` (recorded in ``typed`` with, when the element had no ``xsi`` namespace in scope,
+    the prefixes it had, for :func:`_untype`)."""
     decls, types = schema_plan.decls, schema_plan.types
     stack = [(root, top)]
     while stack:
         elem, number = stack.pop()
         decl = decls[number]
         xsd_type = types[_selected_type(decl, elem) if decl.alternatives else decl.type]
-        for assertion in xsd_type.assertions:
-            if not _holds(assertion, elem):
+        for assertion, test in zip(xsd_type.assertions, xsd_type.tests):
+            holds = _holds(assertion, elem)
+            if holds is None:
                 return False
+            if not holds:
+                failures.append(Failure(elem, test))
         if decl.alternatives:  # after the tests and assertions that read the element
             prefixes = elem.nsmap
             typed.append((elem, None if XSI in prefixes.values() else [p for p in prefixes if p]))
             elem.set(f"{{{XSI}}}type", xsd_type.name)  # None (an anonymous type) raises: "don't know"
         declared = xsd_type.children
+        children = []
         for child in elem:
             if isinstance(child.tag, str):  # not comments or processing instructions
                 sub = declared.get(etree.QName(child).localname)
                 if sub is not None:
-                    stack.append((child, sub))
+                    children.append((child, sub))
+        stack.extend(reversed(children))  # popped in document order
     return True
 
 
@@ -219,11 +263,11 @@ def _untype(typed: list) -> None:
             etree.cleanup_namespaces(elem, keep_ns_prefixes=kept)
 
 
-def _holds(assertion: etree.XPath | None, elem: etree._Element) -> bool:
-    """Whether a compiled assertion holds on ``elem`` (one not translated, or that raises, does not)."""
+def _holds(assertion: etree.XPath | None, elem: etree._Element) -> bool | None:
+    """Whether a compiled assertion holds on ``elem``; ``None`` (not known) for one not translated or that raises."""
     if assertion is None:
-        return False
+        return None
     try:
         return bool(assertion(elem))
     except Exception:
-        return False
+        return None

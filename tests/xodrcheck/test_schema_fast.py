@@ -7,6 +7,7 @@ from pathlib import Path
 
 import pytest
 from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 from lxml import etree
 
 import junctionart as ja
@@ -224,6 +225,127 @@ def test_valid_19_documents_take_the_fast_path(data):
 @given(damaged_documents(base=_V19_DOCS, min_mutations=1, max_mutations=3))
 def test_damaged_19_documents_are_never_shown_valid_when_they_are_not(data):
     _damaged_is_not_shown_valid(data)
+
+
+def _full_messages(tree, version) -> list[schema.SchemaError]:
+    """What schema.validate gives when it takes the full validator's path."""
+    errors = []
+    for err in schema.compiled(version).iter_errors(tree):
+        reason = err.reason or str(err.message)
+        if type(err.validator).__name__ == "XsdAssert":
+            reason = f"{reason}: {' '.join(str(err.validator.path).split())}"
+        errors.append(schema.SchemaError(int(err.sourceline or 0), f"{schema._xpath_hint(err)}{reason}"))
+    return errors
+
+
+def _failures_are_the_full_errors(data: bytes) -> bool:
+    """Where the fast path gives the errors itself (assertions only), they are the full validator's, in its order and
+    words; returns whether it did."""
+    try:
+        tree = _tree(data)
+    except etree.XMLSyntaxError:
+        return False
+    version = _version_of(tree)
+    folder, main = schema.SCHEMA_FOLDERS[version]
+    if schema_fast.assertion_failures(tree, folder, main) is None:
+        return False
+    assert list(schema.validate(tree, version)) == _full_messages(tree, version)
+    return True
+
+
+@pytest.mark.parametrize(
+    ("name", "minor"), [(name, minor) for name, (minors, _) in XSD11_ONLY_ERRORS.items() for minor in minors]
+)
+def test_assertion_errors_are_given_as_the_full_validator_gives_them(name, minor):
+    data = XSD11_ONLY_ERRORS[name][1](minor)
+    # an alternative's error is in the XSD 1.0 part (lxml): only the full validator words it
+    assert _failures_are_the_full_errors(data) is (name != "alternative")
+
+
+_OBJECT = '<object id="{i}" s="1" t="0" zOffset="0" {size} type="{kind}" orientation="none">{inner}</object>'
+
+
+@pytest.mark.parametrize("minor", [8, 9])
+def test_several_false_assertions_come_in_the_full_validators_order(minor):
+    """Several objects, one failing two assertions, in document order; a junction with a repeated connection id."""
+    objects = "".join(
+        _OBJECT.format(i=i, size=size, kind=kind, inner=inner)
+        for i, (size, kind, inner) in enumerate(
+            [
+                ('radius="1" width="1" length="1"', "barrier", ""),  # both the size and the barrier assertion
+                ('width="1"', "pole", ""),
+                ('radius="1"', "pole", ""),  # valid
+                (
+                    'width="1" length="1"',
+                    "building",
+                    '<repeat s="0" length="1" distance="0" tStart="0" tEnd="0" '
+                    'heightStart="1" heightEnd="1" zOffsetStart="0" zOffsetEnd="0"/>',
+                ),
+            ]
+        )
+    )
+    junction = COMMON.replace(
+        "</junction>", COMMON[COMMON.index("<connection") : COMMON.index("</junction>")] + "</junction>"
+    )
+    data = _doc(junction, objects=f"<objects>{objects}</objects>", minor=minor)
+    assert _failures_are_the_full_errors(data)
+    assert len(list(schema.validate(_tree(data), (1, minor)))) >= 4
+
+
+def test_whitespace_typing_could_normalise_goes_to_the_full_validator():
+    data = _doc(
+        COMMON,
+        objects=_OBJECT.join(("<objects>", "</objects>")).format(
+            i=1, size='radius="1" width=" 1" length="1"', kind="pole", inner=""
+        ),
+    )
+    assert not _failures_are_the_full_errors(data)
+
+
+_KINDS = ("none", "barrier", "building", "crosswalk", "gantry", "obstacle", "parkingSpace", "pole", "tree", "roadMark")
+_REPEAT = (
+    '<repeat s="0" length="1" distance="{}" tStart="0" tEnd="0" heightStart="1" heightEnd="1" zOffsetStart="0" '
+    'zOffsetEnd="0"/>'
+)
+
+
+@st.composite
+def _objects(draw) -> str:
+    """Objects with any mix of sizes, types, repeats (distances of several spellings) and materials: most break one
+    assertion or more, nothing else."""
+    out = []
+    for i in range(draw(st.integers(1, 4))):
+        size = " ".join(
+            f'{a}="{draw(st.sampled_from(("1", "0.5", "2e0")))}"'
+            for a in ("radius", "width", "length")
+            if draw(st.booleans())
+        )
+        repeats = "".join(
+            _REPEAT.format(draw(st.sampled_from(("0", "1", "0.0", "2.5", "1e1", "+0", "-0"))))
+            for _ in range(draw(st.integers(0, 2)))
+        )
+        material = '<material friction="0.5"/>' if draw(st.booleans()) else ""
+        kind = draw(st.sampled_from(_KINDS))
+        out.append(_OBJECT.format(i=i, size=size, kind=kind, inner=repeats + material))
+    return "".join(out)
+
+
+@settings(max_examples=60, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(_objects(), st.sampled_from([8, 9]))
+def test_objects_breaking_assertions_get_the_full_validators_errors(objects, minor):
+    _failures_are_the_full_errors(_doc(COMMON, objects=f"<objects>{objects}</objects>", minor=minor))
+
+
+@settings(max_examples=200, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(damaged_documents(base=_V18_DOCS, min_mutations=1, max_mutations=3))
+def test_damaged_documents_get_the_full_validators_errors(data):
+    _failures_are_the_full_errors(data)
+
+
+@settings(max_examples=100, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(damaged_documents(base=_V19_DOCS, min_mutations=1, max_mutations=3))
+def test_damaged_19_documents_get_the_full_validators_errors(data):
+    _failures_are_the_full_errors(data)
 
 
 class _Recording:
