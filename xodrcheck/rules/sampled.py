@@ -283,10 +283,11 @@ class _SectionCache:
 
     def _evaluate_from(self, position: int) -> dict[tuple[str, int], SectionLines]:
         """Evaluate the batch of listed sections starting at ``position`` and keep it (returned whole: the window
-        may drop its first sections while keeping its last). A batch takes at most a quarter of the window (the
-        temporaries of its evaluation are several times its size)."""
+        may drop its first sections while keeping its last). In a file that does not fit, a batch takes at most a
+        quarter of the window (the temporaries of its evaluation are several times its size); in one that fits (no
+        window: all is kept), it is bounded by :data:`_BATCH_SAMPLES` only."""
         size = min(2 * self._size, _BATCH_SAMPLES) if position == self._next else self._first
-        room = max(self._window_budget.limit // 4, 1)
+        room = LINES_BUDGET if self.fits else max(self._window_budget.limit // 4, 1)
         end, total, weight = position, 0, 0
         while end < len(self._grids) and (
             end == position or (total + len(self._grids[end]) <= size and weight + self._bytes[end] <= room)
