@@ -187,4 +187,59 @@ def test_lines_read_in_order_are_those_of_the_cache_and_released_before_the_mesh
                 assert np.array_equal(p.hdg, alone.borders[lane_id].hdg, equal_nan=True)
         sampled.road_end(ctx, first, ContactPoint.START)
         sampled.release_lines(ctx)
-    assert ctx not in sampled._LINES and ctx not in sampled._ENDS
+    assert ctx not in sampled._LINES and ctx not in sampled._ENDS and ctx not in sampled._END_CURVES
+
+
+@pytest.mark.corpus
+def test_a_file_that_fits_has_its_lines_evaluated_in_one_batch(corpus_dir: Path, monkeypatch: pytest.MonkeyPatch):
+    path = corpus_dir / "carla-towns/OpenDrive/Town01.xodr"
+    ctx = Context(read(path).document, Config(), path=str(path), data=None)
+    sizes: list[int] = []
+    evaluate = sampled._evaluate_batch
+
+    def counted(entries, keys, grids, out) -> None:
+        sizes.append(len(entries))
+        evaluate(entries, keys, grids, out)
+
+    monkeypatch.setattr(sampled, "_evaluate_batch", counted)
+    with np.errstate(all="ignore"):
+        sampled.section_lines(ctx, ctx.document.roads[0], 0)
+    cache = sampled._LINES[ctx]
+    assert cache.fits and sizes == [len(cache._keys)] and cache.kept == len(cache._keys) > 100
+
+
+@pytest.mark.corpus
+@pytest.mark.parametrize(
+    "name",
+    [
+        "carla-towns/OpenDrive/Town01.xodr",
+        "esmini/resources/xodr/fabriksgatan.xodr",
+        "esmini/EnvironmentSimulator/Unittest/xodr/two_pitched_and_rolled_roads.xodr",
+    ],
+)
+def test_road_ends_evaluated_together_are_each_roads_own_border_curves(corpus_dir: Path, name: str):
+    """sampled.road_end takes the border curves of every road end from one pass (roadpass) where it covers the
+    section, and from RoadGeometry.border_curves elsewhere (superelevation): the same numbers to the last bit."""
+    path = corpus_dir / name
+    ctx = Context(read(path).document, Config(), path=str(path), data=None)
+    with np.errstate(all="ignore"):
+        together = sampled._end_curves(ctx)
+        compared = 0
+        for road in ctx.document.roads:
+            geometry = sampled.usable(ctx, road)
+            for end in (ContactPoint.START, ContactPoint.END) if geometry is not None else ():
+                index, _, s = sampled._end_samples(road, end)
+                alone = geometry.border_curves(index, s)
+                if (road.id, index) in together:
+                    got = together[(road.id, index)]
+                    assert list(got) == list(alone)
+                    for lane_id, p in alone.items():
+                        for field in ("x", "y", "z", "hdg", "curvature", "speed"):
+                            a, b = getattr(got[lane_id], field), getattr(p, field)
+                            assert a.shape == b.shape and a.tobytes() == b.tobytes(), (road.id, end, lane_id, field)
+                    compared += 1
+                end_point = sampled.road_end(ctx, road, end).border(0, "outer")
+                assert end_point is None or end_point.x == float(
+                    alone[0].x[0 if len(s) == 1 or end is ContactPoint.START else 1]
+                )
+    assert compared > 0 or "rolled" in name

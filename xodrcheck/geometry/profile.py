@@ -177,10 +177,21 @@ def jumps(profile: Profile, origin: float = 0.0) -> list[tuple[Cubic, float, flo
         if k + 1 < len(records) and records[k + 1].s == record.s:
             continue  # a later record with the same start holds from there
         if previous is not None and record.s > previous.s:
-            at = np.array([record.s + origin])
-            reached = float(Piecewise((previous,), origin).jet(at)[0][0])
-            starts = float(Piecewise((record,), origin).jet(at)[0][0])
+            at = record.s + origin
+            reached = _value(previous, origin, at)
+            starts = _value(record, origin, at)
             if math.isfinite(reached - starts):
                 out.append((record, reached, starts))
         previous = record
     return out
+
+
+def _value(record: Cubic, origin: float, at: float) -> float:
+    """``Piecewise((record,), origin).jet(np.array([at]))[0][0]`` in scalar arithmetic: the same IEEE double
+    operations in the same order, so the same number, without building arrays (0 before the record starts, or where
+    ``at`` is NaN)."""
+    ds = float(at) - float(record.s + origin)
+    if not ds >= 0:
+        return 0.0
+    a, b, c, d = float(record.a), float(record.b), float(record.c), float(record.d)
+    return a + ds * (b + ds * (c + ds * d))

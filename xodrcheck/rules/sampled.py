@@ -123,7 +123,7 @@ def release_lines(ctx: Context) -> None:
     """Drop the file's cached section lines (:func:`section_lines`), road ends (:func:`road_end`) and reference ends
     (:func:`reference_end`) once no rule to come reads them (the overlap rules, run last among the geometric rules,
     call it before building their meshes). A later call builds them again: the findings do not change."""
-    for cache in (_LINES, _ENDS, _REFERENCE):
+    for cache in (_LINES, _ENDS, _END_CURVES, _REFERENCE):
         cache.pop(ctx, None)
 
 
@@ -395,19 +395,66 @@ class RoadEnd:
 _ENDS: weakref.WeakKeyDictionary[Context, dict[tuple[str, ContactPoint], RoadEnd]] = weakref.WeakKeyDictionary()
 
 
+def _end_samples(road: Road, end: ContactPoint) -> tuple[int, tuple[ContactPoint, ...], np.ndarray]:
+    """Where :func:`road_end` evaluates a road's lines for ``end``: (lane section, the ends evaluated, their ``s``);
+    a road with one lane section is evaluated at both ends in one call."""
+    last = len(road.lane_sections) - 1
+    ends = (ContactPoint.START, ContactPoint.END) if last == 0 else (end,)
+    return 0 if end is ContactPoint.START else last, ends, np.array([end_s(road, e) for e in ends])
+
+
+_END_CURVES: weakref.WeakKeyDictionary[Context, dict[tuple[str, int], dict[int, LanePoints]]] = (
+    weakref.WeakKeyDictionary()
+)
+
+
+def _end_curves(ctx: Context) -> dict[tuple[str, int], dict[int, LanePoints]]:
+    """The border curves :func:`road_end` needs (:meth:`RoadGeometry.border_curves` at :func:`_end_samples`) of every
+    usable road's end sections that :mod:`xodrcheck.roadpass` covers, evaluated together in one pass (the same
+    numbers, with a fraction of the numpy calls), keyed by (road id, section index); the rest are evaluated when
+    asked for."""
+    from xodrcheck import roadpass
+
+    found = _END_CURVES.get(ctx)
+    if found is not None:
+        return found
+    entries: list[tuple[RoadGeometry, int]] = []
+    keys: list[tuple[str, int]] = []
+    grids: list[np.ndarray] = []
+    for road in ctx.document.roads:
+        geometry = usable(ctx, road)
+        if geometry is None:
+            continue
+        for end in (ContactPoint.START, ContactPoint.END) if len(road.lane_sections) > 1 else (ContactPoint.START,):
+            index, _, s = _end_samples(road, end)
+            if roadpass.covered(geometry, index) and np.isfinite(s).all() and bool(np.all(np.diff(s) > 0)):
+                entries.append((geometry, index))
+                keys.append((road.id, index))
+                grids.append(s)
+    found = {}
+    for lo, hi in batches([len(s) for s in grids], _BATCH_SAMPLES):
+        points = roadpass.section_points(entries[lo:hi], grids[lo:hi])
+        for key, p in zip(keys[lo:hi], points or ()):
+            found[key] = {
+                lane_id: LanePoints(p.x[k], p.y[k], p.z[k], p.hdg[k], p.curvature[k], p.speed[k])
+                for k, lane_id in enumerate(p.ids)
+            }
+    _END_CURVES[ctx] = found
+    return found
+
+
 def road_end(ctx: Context, road: Road, end: ContactPoint) -> RoadEnd:
     """The lane lines of a usable road at its start or end (cached for the file; a road with one lane section is
-    evaluated at both ends in one call)."""
+    evaluated at both ends in one call; the border curves of all roads' ends in one pass, :func:`_end_curves`)."""
     cache = _ENDS.setdefault(ctx, {})
     found = cache.get((road.id, end))
     if found is None:
         geometry = ctx.geometry(road.id)
         assert geometry is not None, "road_end is asked for usable roads only"
-        last = len(road.lane_sections) - 1
-        ends = (ContactPoint.START, ContactPoint.END) if last == 0 else (end,)
-        index = 0 if end is ContactPoint.START else last
-        s = np.array([end_s(road, e) for e in ends])
-        curves = geometry.border_curves(index, s)
+        index, ends, s = _end_samples(road, end)
+        curves = _end_curves(ctx).get((road.id, index))
+        if curves is None:
+            curves = geometry.border_curves(index, s)
         inner: dict[int, int] = {}
         for side in geometry.side_lanes(index):
             previous = 0

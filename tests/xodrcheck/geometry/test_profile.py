@@ -1,3 +1,5 @@
+import itertools
+
 import numpy as np
 import pytest
 
@@ -79,3 +81,32 @@ def test_batch_gives_exactly_each_profiles_own_jet(with_nan):
     for law, got in zip(laws, batched):
         for part, expected in zip(got, law.jet(s)):
             np.testing.assert_array_equal(part, expected)
+
+
+_EXTREMES = (0.0, -0.0, 1.0, -2.5, 0.1, 1e-300, 1e300, 1e308, -1e308, float("nan"), float("inf"), 123456.789)
+
+
+@pytest.mark.parametrize("origin", [0.0, 317.25, 1e300])
+def test_jumps_are_the_piecewise_values_to_the_last_bit(origin):
+    """jumps() evaluates the two records at each start in scalar arithmetic: the numbers are Piecewise.jet's, bit for
+    bit, overflow and NaN included (a record pair whose difference is not finite is left out)."""
+    rng = np.random.default_rng(5)
+    for _ in range(400):
+        picks = rng.choice(len(_EXTREMES), size=(3, 5))
+        records = tuple(
+            Cubic(
+                float(10 * k + rng.uniform(0, 5)) if k else 0.0,
+                *(_EXTREMES[i] if i % 3 else rng.uniform(-9, 9) for i in picks[k][1:]),
+            )
+            for k in range(3)
+        )
+        got = profile.jumps(records, origin)
+        want = []
+        for previous, record in itertools.pairwise(records):
+            at = np.array([record.s + origin])
+            with np.errstate(all="ignore"):
+                reached = profile.Piecewise((previous,), origin).jet(at)[0][0]
+                starts = profile.Piecewise((record,), origin).jet(at)[0][0]
+                if np.isfinite(reached - starts):
+                    want.append((record, reached.tobytes(), starts.tobytes()))
+        assert [(r, np.float64(a).tobytes(), np.float64(b).tobytes()) for r, a, b in got] == want
