@@ -280,7 +280,7 @@ def check(
             version = _version_text(ctx.version)
             more, ran = run_rules(ctx, selection)
             findings.extend(f for f in more if selection.wants_finding(f) or f.code in _ENGINE_CODES)
-            findings = [ctx.locate(f) for f in findings]  # x, y, z of every finding naming a road and an s
+            findings = ctx.locate_all(findings)  # x, y, z of every finding naming a road and an s
         run.extend(ran)
     return Report(
         path=result.path,

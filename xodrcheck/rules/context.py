@@ -288,22 +288,24 @@ class Context:
             return None
         import numpy as np
 
-        at = np.array([float(s)])
-        sections = geometry.road.lane_sections
-        index = None
-        if lane and sections:
-            starts = [i for i, section in enumerate(sections) if section.s == section_s]
-            index = starts[0] if starts else int(geometry.section_index(at)[0])
-        with np.errstate(all="ignore"):
-            if index is not None and lane in placed_lane_ids(geometry, index):
-                p = geometry.lane_points(index, lane, at, "centre", raised=True)
-                x, y, z = float(p.x[0]), float(p.y[0]), float(p.z[0])
-            else:
-                pose = geometry.reference(at)
-                x, y, z = float(pose.x[0]), float(pose.y[0]), float(geometry.elevation(at)[0])
-        if not (math.isfinite(x) and math.isfinite(y)):
-            return None
-        return x, y, z if math.isfinite(z) else float("nan")
+        from xodrcheck.rules.places import lane_placed, points_at
+
+        return points_at(geometry, np.array([float(s)]), lane_placed(geometry, s, lane, section_s))[0]
+
+    def known_position(self, key: tuple) -> bool:
+        """Whether :meth:`position` has the place ``(road_id, s, lane, section_s)`` already."""
+        return key in self._positions
+
+    def remember_position(self, key: tuple, point: tuple[float, float, float] | None) -> None:
+        """Keep a place evaluated elsewhere (:func:`xodrcheck.rules.places.locate_all`) as :meth:`position` would."""
+        self._positions[key] = point
+
+    def locate_all(self, findings: list[Finding]) -> list[Finding]:
+        """:meth:`locate` of every finding (places on one lane evaluated together:
+        :func:`xodrcheck.rules.places.locate_all`)."""
+        from xodrcheck.rules.places import locate_all
+
+        return locate_all(self, findings)
 
     def locate(self, finding: Finding) -> Finding:
         """``finding`` with x, y and z filled in from its road, ``s`` and lane (:meth:`position`) when it names a place
