@@ -505,6 +505,20 @@ def border_lines(entries: Sequence[Entry], samples: Sequence[np.ndarray]) -> Bor
 
 
 # ------------------------------------------------------------------------------------------------------ lane points
+def section_borders(entries: Sequence[Entry], samples: Sequence[np.ndarray]) -> list[dict[int, np.ndarray]]:
+    """:meth:`RoadGeometry.borders` of every entry (each :func:`covered`) at its samples (finite, in any order): ``t``
+    of each lane's outer border and of lane 0's line, without the reference line."""
+    counts = [len(s) for s in samples]
+    offsets = np.concatenate(([0], np.cumsum(counts))).astype(np.int64)
+    lines = _lines(entries, np.concatenate(samples) if samples else np.zeros(0), offsets)
+    out = []
+    for k, ids in enumerate(lines.ids):
+        lo, n = int(lines.base[k]), counts[k]
+        rows = lines.t[lo : lo + len(ids) * n].reshape(len(ids), n)
+        out.append({lane_id: rows[j].copy() for j, lane_id in enumerate(ids)})
+    return out
+
+
 @dataclass
 class SectionPoints:
     """One section's lines at its samples, as the per-section code gives them: ``t`` of each line

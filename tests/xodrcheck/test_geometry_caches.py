@@ -243,3 +243,35 @@ def test_road_ends_evaluated_together_are_each_roads_own_border_curves(corpus_di
                     alone[0].x[0 if len(s) == 1 or end is ContactPoint.START else 1]
                 )
     assert compared > 0 or "rolled" in name
+
+
+@pytest.mark.corpus
+@pytest.mark.parametrize(
+    "name",
+    [
+        "carla-towns/OpenDrive/Town01.xodr",
+        "esmini/resources/xodr/fabriksgatan.xodr",
+        "esmini/EnvironmentSimulator/Unittest/xodr/two_pitched_and_rolled_roads.xodr",
+    ],
+)
+def test_lane_width_pieces_evaluated_together_are_each_sections_own(corpus_dir: Path, name: str):
+    """lane_shape's pieces (G010, G011, G015) take every covered section's borders from one roadpass pass: the same
+    numbers as RoadGeometry.borders section by section."""
+    from xodrcheck.rules import lane_shape
+
+    path = corpus_dir / name
+    ctx = Context(read(path).document, Config(), path=str(path), data=None)
+    compared = 0
+    with np.errstate(all="ignore"):
+        for road in ctx.document.roads:
+            for index in range(len(road.lane_sections)) if sampled.usable(ctx, road) is not None else ():
+                together = lane_shape._lane_pieces(ctx, road, index)
+                alone = lane_shape._section_pieces(ctx, road, index, lane_shape._piece_nodes(ctx, road, index))
+                assert (together is None) == (alone is None)
+                if together is not None:
+                    assert together[0] == alone[0]
+                    assert all(
+                        x.shape == y.shape and x.tobytes() == y.tobytes() for x, y in zip(together[1:], alone[1:])
+                    )
+                    compared += 1
+    assert compared > 0

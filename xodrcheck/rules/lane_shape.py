@@ -49,12 +49,42 @@ _PIECES: weakref.WeakKeyDictionary[Context, dict] = weakref.WeakKeyDictionary()
 
 
 def _lane_pieces(ctx: Context, road: Road, index: int):
-    """:func:`_section_pieces`, computed once per file and section for the rules that share it (G010, G011, G015)."""
-    cache = _PIECES.setdefault(ctx, {})
+    """:func:`_section_pieces`, computed once per file and section for the rules that share it (G010, G011, G015):
+    on first use for every usable road's sections, their borders evaluated together (:func:`_all_borders`)."""
+    cache = _PIECES.get(ctx)
+    if cache is None:
+        cache = _PIECES[ctx] = {}
+        nodes = {}
+        for each in ctx.document.roads:
+            if usable(ctx, each) is not None:
+                for i in range(len(each.lane_sections)):
+                    nodes[(id(each), i)] = (each, _piece_nodes(ctx, each, i))
+        borders = _all_borders(ctx, nodes)
+        for key, (each, found) in nodes.items():
+            cache[key] = None if found is None else _section_pieces(ctx, each, key[1], found, borders.get(key))
     key = (id(road), index)
-    if key not in cache:
-        cache[key] = _section_pieces(ctx, road, index)
+    if key not in cache:  # a road the file-wide pass skipped (asked for by a caller of its own)
+        cache[key] = _section_pieces(ctx, road, index, _piece_nodes(ctx, road, index))
     return cache[key]
+
+
+def _all_borders(ctx: Context, nodes: dict) -> dict[tuple[int, int], dict[int, np.ndarray]]:
+    """:meth:`RoadGeometry.borders` at the piece nodes of every section :mod:`xodrcheck.roadpass` covers, evaluated
+    in batches of sections (the same numbers as section by section, with a fraction of the numpy calls)."""
+    from xodrcheck import roadpass
+    from xodrcheck.arrays import batches
+
+    keys, entries, samples = [], [], []
+    for key, (road, found) in nodes.items():
+        geometry = ctx.road_geometry(road)
+        if found is not None and roadpass.covered(geometry, key[1]) and np.isfinite(found[2]).all():
+            keys.append(key)
+            entries.append((geometry, key[1]))
+            samples.append(found[2])
+    out: dict[tuple[int, int], dict[int, np.ndarray]] = {}
+    for lo, hi in batches([len(s) for s in samples], 1 << 16):
+        out.update(zip(keys[lo:hi], roadpass.section_borders(entries[lo:hi], samples[lo:hi])))
+    return out
 
 
 _EXTREMES: weakref.WeakKeyDictionary[Context, dict] = weakref.WeakKeyDictionary()
@@ -94,13 +124,10 @@ def _split_extremes(blocks: list[np.ndarray]) -> list[tuple[np.ndarray, np.ndarr
     return list(zip(np.split(low, cuts), np.split(where, cuts), np.split(high, cuts)))
 
 
-def _section_pieces(ctx: Context, road: Road, index: int):
-    """Every lane with records in a section and its signed width as exact cubics: ``(lanes, a, b, coefficients)``
-    with the pieces ``[a, b]`` between consecutive knots and ``coefficients[:, :, k]`` the cubic in ``u`` in [0, 1] of
-    each lane's width on piece ``k`` (all lanes and pieces of the section in one vectorised pass); ``None`` when the
-    section has no piece or no such lane."""
-    geometry = ctx.road_geometry(road)
-    cuts = knots(geometry, index)
+def _piece_nodes(ctx: Context, road: Road, index: int) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """``(a, b, s)``: the pieces ``[a, b]`` between consecutive knots of a section and the ``s`` of their nodes;
+    ``None`` when the section has no piece."""
+    cuts = knots(ctx.road_geometry(road), index)
     if len(cuts) < 2:
         return None
     a, b = cuts[:-1], cuts[1:]
@@ -108,8 +135,21 @@ def _section_pieces(ctx: Context, road: Road, index: int):
     a, b = a[keep], b[keep]
     if not len(a):
         return None
-    s = (a[:, None] + (b - a)[:, None] * _NODES[None, :]).ravel()
-    borders = geometry.borders(index, s)
+    return a, b, (a[:, None] + (b - a)[:, None] * _NODES[None, :]).ravel()
+
+
+def _section_pieces(ctx: Context, road: Road, index: int, nodes, borders: dict[int, np.ndarray] | None = None):
+    """Every lane with records in a section and its signed width as exact cubics: ``(lanes, a, b, coefficients)``
+    with the pieces ``[a, b]`` between consecutive knots and ``coefficients[:, :, k]`` the cubic in ``u`` in [0, 1] of
+    each lane's width on piece ``k`` (all lanes and pieces of the section in one vectorised pass); ``None`` when the
+    section has no piece or no such lane. ``nodes``: :func:`_piece_nodes`; ``borders``: the borders at them when
+    evaluated already."""
+    if nodes is None:
+        return None
+    a, b, s = nodes
+    geometry = ctx.road_geometry(road)
+    if borders is None:
+        borders = geometry.borders(index, s)
     lanes, widths = [], []
     for sign, side in zip((+1, -1), geometry.side_lanes(index)):
         inner = borders[0]
