@@ -11,6 +11,7 @@ neighbour (``G011``, ASAM's ``road.lane.border.overlap_with_inner_lanes``).
 from __future__ import annotations
 
 import weakref
+from collections.abc import Iterator
 
 import numpy as np
 
@@ -59,18 +60,21 @@ def _lane_pieces(ctx: Context, road: Road, index: int):
             if usable(ctx, each) is not None:
                 for i in range(len(each.lane_sections)):
                     nodes[(id(each), i)] = (each, _piece_nodes(ctx, each, i))
-        borders = _all_borders(ctx, nodes)
+        for key, borders in _all_borders(ctx, nodes):  # one batch's borders alive at a time
+            each, found = nodes[key]
+            cache[key] = _section_pieces(ctx, each, key[1], found, borders)
         for key, (each, found) in nodes.items():
-            cache[key] = None if found is None else _section_pieces(ctx, each, key[1], found, borders.get(key))
+            if key not in cache:
+                cache[key] = None if found is None else _section_pieces(ctx, each, key[1], found)
     key = (id(road), index)
     if key not in cache:  # a road the file-wide pass skipped (asked for by a caller of its own)
         cache[key] = _section_pieces(ctx, road, index, _piece_nodes(ctx, road, index))
     return cache[key]
 
 
-def _all_borders(ctx: Context, nodes: dict) -> dict[tuple[int, int], dict[int, np.ndarray]]:
-    """:meth:`RoadGeometry.borders` at the piece nodes of every section :mod:`xodrcheck.roadpass` covers, evaluated
-    in batches of sections (the same numbers as section by section, with a fraction of the numpy calls)."""
+def _all_borders(ctx: Context, nodes: dict) -> Iterator[tuple[tuple[int, int], dict[int, np.ndarray]]]:
+    """(key, :meth:`RoadGeometry.borders` at the piece nodes) of every section :mod:`xodrcheck.roadpass` covers,
+    evaluated in batches of sections (the same numbers as section by section, with a fraction of the numpy calls)."""
     from xodrcheck import roadpass
     from xodrcheck.arrays import batches
 
@@ -81,10 +85,8 @@ def _all_borders(ctx: Context, nodes: dict) -> dict[tuple[int, int], dict[int, n
             keys.append(key)
             entries.append((geometry, key[1]))
             samples.append(found[2])
-    out: dict[tuple[int, int], dict[int, np.ndarray]] = {}
     for lo, hi in batches([len(s) for s in samples], 1 << 16):
-        out.update(zip(keys[lo:hi], roadpass.section_borders(entries[lo:hi], samples[lo:hi])))
-    return out
+        yield from zip(keys[lo:hi], roadpass.section_borders(entries[lo:hi], samples[lo:hi]))
 
 
 _EXTREMES: weakref.WeakKeyDictionary[Context, dict] = weakref.WeakKeyDictionary()
