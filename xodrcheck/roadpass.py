@@ -231,8 +231,8 @@ class _Lines:
     q: np.ndarray
     dq: np.ndarray
     ddq: np.ndarray
-    #: ``t`` of each pair's line (lane 0: the laneOffset; otherwise the lane's outer border), before projection.
-    t: np.ndarray
+    #: Jet (``t``, its derivatives) of each pair's line before projection (lane 0: laneOffset; else outer border).
+    outer: tuple[np.ndarray, np.ndarray, np.ndarray]
 
 
 def _lines(entries: Sequence[Entry], s: np.ndarray, offsets: np.ndarray) -> _Lines:
@@ -283,7 +283,7 @@ def _lines(entries: Sequence[Entry], s: np.ndarray, offsets: np.ndarray) -> _Lin
                 values[out] = new
                 lat[out] = lat[inn] + (new - inner)
     q, dq, ddq = lateral
-    return _Lines(ids, np.array(bases, dtype=np.int64), sample, q, dq, ddq, outer[0])
+    return _Lines(ids, np.array(bases, dtype=np.int64), sample, q, dq, ddq, outer)
 
 
 def _bend(lines: _Lines, pose: Pose) -> tuple[np.ndarray, np.ndarray]:
@@ -514,7 +514,7 @@ def section_borders(entries: Sequence[Entry], samples: Sequence[np.ndarray]) -> 
     out = []
     for k, ids in enumerate(lines.ids):
         lo, n = int(lines.base[k]), counts[k]
-        rows = lines.t[lo : lo + len(ids) * n].reshape(len(ids), n)
+        rows = lines.outer[0][lo : lo + len(ids) * n].reshape(len(ids), n)
         out.append({lane_id: rows[j].copy() for j, lane_id in enumerate(ids)})
     return out
 
@@ -563,6 +563,6 @@ def section_points(entries: Sequence[Entry], samples: Sequence[np.ndarray]) -> l
         n = int(counts[k])
         lo = int(lines.base[k])
         hi, shape = lo + len(ids) * n, (len(ids), n)
-        rows = [v[lo:hi].reshape(shape) for v in (lines.t, x, y, z, hdg, curvature, speed)]
+        rows = [v[lo:hi].reshape(shape) for v in (lines.outer[0], x, y, z, hdg, curvature, speed)]
         out.append(SectionPoints(ids, rows[0], pose.curvature[offsets[k] : offsets[k + 1]], *rows[1:]))
     return out

@@ -14,7 +14,7 @@ from xodrcheck.check import Selection, run_rules
 from xodrcheck.config import Config
 from xodrcheck.model import ContactPoint
 from xodrcheck.reader import read
-from xodrcheck.rules import sampled
+from xodrcheck.rules import curvature, sampled
 from xodrcheck.rules.context import Context
 
 #: The modules whose rules read the shared section lines, road ends and lane evaluations.
@@ -54,6 +54,8 @@ def test_section_lines_and_evaluations_stay_within_their_budgets_with_unchanged_
     corpus_dir: Path, monkeypatch: pytest.MonkeyPatch
 ):
     path = corpus_dir / "carla-towns/OpenDrive/Town07.xodr"
+    # C001 lane by lane (as on roads roadpass leaves out, superelevation): its lane evaluations fill the budget below
+    monkeypatch.setattr(curvature, "_centre_hits", lambda ctx, bound: {})
     monkeypatch.setattr(sampled, "LINES_BUDGET", 1 << 40)
     monkeypatch.setattr(lanes, "EVALUATION_BUDGET", 1 << 40)
     whole, ctx = _check(path)

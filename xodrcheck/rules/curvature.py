@@ -25,11 +25,12 @@ import math
 
 import numpy as np
 
+from xodrcheck.arrays import batches
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Road
 from xodrcheck.rules.context import Context, placed_lane_ids
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import lines_in_order, section_samples, usable
+from xodrcheck.rules.sampled import _BATCH_SAMPLES, lines_in_order, section_samples, usable
 
 
 def _sections(ctx: Context):
@@ -79,21 +80,65 @@ def lane_radius_too_small(ctx: Context):
         <geometry ... length="1"><arc curvature="2"/></geometry>
     """
     bound = 1.0 / ctx.tolerances.min_radius if ctx.tolerances.min_radius > 0 else math.inf
+    together = _centre_hits(ctx, bound)
     for road, index, geometry, s in _sections(ctx):
         placed = placed_lane_ids(geometry, index)
+        hits = together.get((road.id, index))
         for lane in road.lane_sections[index].lanes:
             if lane.id not in placed or not lane.drivable:
                 continue  # lane 0, and lanes filed on the wrong side (lane-id-sequence reports those)
-            points = geometry.lane_points(index, lane.id, s, "centre")
-            i = _tightest(np.where(points.speed > 0, points.curvature, 0.0), bound)
-            if i is None:
+            if hits is not None:
+                hit = hits.get(lane.id)
+            else:
+                points = geometry.lane_points(index, lane.id, s, "centre")
+                i = _tightest(np.where(points.speed > 0, points.curvature, 0.0), bound)
+                hit = None if i is None else (i, float(points.curvature[i]), float(points.x[i]), float(points.y[i]))
+            if hit is None:
                 continue
-            radius = 1.0 / abs(float(points.curvature[i]))
+            i, curvature, x, y = hit
             yield lane_radius_too_small.finding(
-                f"road {road.id}: the centre of {lane.type.value} lane {lane.id} has a radius of {radius:.3g} m at "
-                f"s={s[i]:.6g}, under the {ctx.tolerances.min_radius:g} m minimum; widen the curve",
-                **_where(road, index, lane.id, float(s[i]), float(points.x[i]), float(points.y[i]), lane.line),
+                f"road {road.id}: the centre of {lane.type.value} lane {lane.id} has a radius of "
+                f"{1.0 / abs(curvature):.3g} m at s={s[i]:.6g}, under the {ctx.tolerances.min_radius:g} m minimum; "
+                "widen the curve",
+                **_where(road, index, lane.id, float(s[i]), x, y, lane.line),
             )
+
+
+#: The tightest point of a lane's centre line above the bound: (sample index, curvature, x, y).
+_Hit = tuple[int, float, float, float]
+
+
+def _centre_hits(ctx: Context, bound: float) -> dict[tuple[str, int], dict[int, _Hit]]:
+    """The tightest centre point above ``bound`` of each drivable lane (none: not listed) of every lane section
+    :mod:`xodrcheck.roadpass` covers, by (road id, section index) and lane id, evaluated together in batches of
+    samples (:mod:`xodrcheck.centres`: the numbers of ``lane_points`` lane by lane); other sections are left out."""
+    from xodrcheck import centres, roadpass
+
+    entries, keys, grids, wanted = [], [], [], []
+    out: dict[tuple[str, int], dict[int, _Hit]] = {}
+    for road, index, geometry, s in _sections(ctx):
+        if not roadpass.covered(geometry, index) or not np.isfinite(s).all():
+            continue
+        placed = placed_lane_ids(geometry, index)
+        lanes = [lane.id for lane in road.lane_sections[index].lanes if lane.id in placed and lane.drivable]
+        out[(road.id, index)] = {}
+        if lanes:
+            entries.append((geometry, index))
+            keys.append((road.id, index))
+            grids.append(s)
+            wanted.append(list(dict.fromkeys(lanes)))
+    for lo, hi in batches([len(s) * len(ids) for s, ids in zip(grids, wanted)], _BATCH_SAMPLES):
+        found = centres.centre_lines(entries[lo:hi], grids[lo:hi], wanted[lo:hi])
+        if found is None:
+            for key in keys[lo:hi]:
+                del out[key]  # lane by lane
+            continue
+        hits = [(j, hit) for j, hit in enumerate(centres.tightest(found, bound)) if hit is not None]
+        places = found.xy([pair for _, (pair, _) in hits])
+        for (j, (pair, i)), (x, y) in zip(hits, places):
+            k, lane_id = found.lanes[j]
+            out[keys[lo + k]][lane_id] = (i, float(found.curvature[pair]), x, y)
+    return out
 
 
 @rule("C002", "reference-radius-too-small", Category.CURVATURE, Severity.ERROR)

@@ -21,12 +21,13 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from xodrcheck.arrays import batches
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Connection, ContactPoint, JunctionType, Road
 from xodrcheck.rules.context import Context, placed_lane_ids, travel_direction
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import end_s, road_end, section_samples, usable
+from xodrcheck.rules.sampled import _BATCH_SAMPLES, end_s, road_end, section_samples, usable
 
 if TYPE_CHECKING:
     import shapely
@@ -59,23 +60,41 @@ def _enters(incoming: Road, end: ContactPoint, lane_id: int) -> bool:
     return direction == (1 if end is ContactPoint.END else -1)
 
 
-def _centre_path(ctx: Context, road: Road, lane_id: int, contact: ContactPoint) -> np.ndarray | None:
-    """The lane's centre from ``contact`` through the road, following its lane links across sections."""
+def _walk(ctx: Context, road: Road, lane_id: int, contact: ContactPoint) -> list[tuple[int, int]]:
+    """(section index, lane id) of the lane from ``contact`` through the road, following its lane links across
+    sections while each is placed."""
     geometry = ctx.road_geometry(road)
     sections = road.lane_sections
     order = range(len(sections)) if contact is ContactPoint.START else range(len(sections) - 1, -1, -1)
-    pieces = []
+    steps = []
     current: int | None = lane_id
     for index in order:
         lane = sections[index].lane(current) if current is not None else None
-        if lane is None or current not in placed_lane_ids(geometry, index):
+        if lane is None or current is None or current not in placed_lane_ids(geometry, index):
             break
-        s = section_samples(ctx, road, index)
-        points = geometry.lane_points(index, current, s, "centre")
-        xy = np.column_stack((points.x, points.y))
-        pieces.append(xy if contact is ContactPoint.START else xy[::-1])
+        steps.append((index, current))
         links = lane.successors if contact is ContactPoint.START else lane.predecessors
         current = links[0] if len(links) == 1 else None
+    return steps
+
+
+#: Centre lines evaluated ahead, by (road id, section index, lane id): plan-view points (n, 2) at the section samples.
+_Known = dict[tuple[str, int, int], np.ndarray]
+
+
+def _centre_path(
+    ctx: Context, road: Road, lane_id: int, contact: ContactPoint, known: _Known | None = None
+) -> np.ndarray | None:
+    """The lane's centre from ``contact`` through the road, following its lane links across sections (the lines in
+    ``known`` are taken from there)."""
+    geometry = ctx.road_geometry(road)
+    pieces = []
+    for index, current in _walk(ctx, road, lane_id, contact):
+        xy = known.get((road.id, index, current)) if known is not None else None
+        if xy is None:
+            points = geometry.lane_points(index, current, section_samples(ctx, road, index), "centre")
+            xy = np.column_stack((points.x, points.y))
+        pieces.append(xy if contact is ContactPoint.START else xy[::-1])
     if not pieces:
         return None
     xy = np.concatenate(pieces)
@@ -104,18 +123,74 @@ def _groups(ctx: Context):
                 yield junction, incoming, end, group
 
 
-def _paths(ctx: Context, incoming: Road, end: ContactPoint, connections: list[_Connected]) -> list[_Path]:
+def _paths(
+    ctx: Context, incoming: Road, end: ContactPoint, connections: list[_Connected], known: _Known | None = None
+) -> list[_Path]:
     out: list[_Path] = []
     seen: set[tuple[str, int]] = set()
     for c, connecting, contact in ((k.connection, k.road, k.contact) for k in connections):
         for link in c.lane_links:
             if not _enters(incoming, end, link.from_lane) or (connecting.id, link.to_lane) in seen:
                 continue
-            xy = _centre_path(ctx, connecting, link.to_lane, contact)
+            xy = _centre_path(ctx, connecting, link.to_lane, contact, known)
             if xy is None:
                 continue
             seen.add((connecting.id, link.to_lane))
             out.append(_Path(c, link.from_lane, connecting, link.to_lane, link.line or c.line, xy))
+    return out
+
+
+def _ahead(ctx: Context):
+    """:func:`_groups`, each with the centre lines its paths follow (:data:`_Known`), evaluated ahead for a run of
+    groups at a time (:func:`_known`; at most about ``_BATCH_SAMPLES`` points kept)."""
+    run: list[tuple] = []
+    wanted: dict[tuple[str, int], tuple[Road, list[int]]] = {}
+    size = 0
+    for group in _groups(ctx):
+        _, incoming, end, connections = group
+        for k in connections:
+            for link in k.connection.lane_links:
+                if not _enters(incoming, end, link.from_lane):
+                    continue
+                for index, lane_id in _walk(ctx, k.road, link.to_lane, k.contact):
+                    road, lanes = wanted.setdefault((k.road.id, index), (k.road, []))
+                    if lane_id not in lanes:
+                        lanes.append(lane_id)
+                        size += len(section_samples(ctx, road, index))
+        run.append(group)
+        if size >= _BATCH_SAMPLES:
+            known = _known(ctx, wanted)
+            yield from ((*g, known) for g in run)
+            run, wanted, size = [], {}, 0
+    if run:
+        known = _known(ctx, wanted)
+        yield from ((*g, known) for g in run)
+
+
+def _known(ctx: Context, wanted: dict[tuple[str, int], tuple[Road, list[int]]]) -> _Known:
+    """The centre lines of ``wanted`` lanes ((road id, section index) -> road, lane ids) in the sections
+    :mod:`xodrcheck.roadpass` covers, evaluated together (:func:`xodrcheck.centres.centre_lines`: the points of
+    ``lane_points`` lane by lane); the others are left out."""
+    from xodrcheck import centres, roadpass
+
+    entries, keys, grids, lanes = [], [], [], []
+    for (road_id, index), (road, ids) in wanted.items():
+        geometry = ctx.road_geometry(road)
+        s = section_samples(ctx, road, index)
+        if roadpass.covered(geometry, index) and np.isfinite(s).all():
+            entries.append((geometry, index))
+            keys.append(road_id)
+            grids.append(s)
+            lanes.append(ids)
+    out: _Known = {}
+    for lo, hi in batches([len(s) * len(ids) for s, ids in zip(grids, lanes)], _BATCH_SAMPLES):
+        found = centres.centre_lines(entries[lo:hi], grids[lo:hi], lanes[lo:hi])
+        if found is None:
+            continue
+        x, y = found.all_xy()
+        for j, (k, lane_id) in enumerate(found.lanes):
+            a, b = int(found.starts[j]), int(found.starts[j + 1])
+            out[(keys[lo + k], entries[lo + k][1], lane_id)] = np.column_stack((x[a:b], y[a:b]))
     return out
 
 
@@ -171,8 +246,8 @@ def connection_lanes_cross(ctx: Context):
         <connection incomingRoad="1" connectingRoad="12" contactPoint="start"><laneLink from="-2" to="-1"/>
     """
     tol = ctx.tolerances.junction_start
-    for junction, incoming, end, group in _groups(ctx):
-        paths = _paths(ctx, incoming, end, group)
+    for junction, incoming, end, group, known in _ahead(ctx):
+        paths = _paths(ctx, incoming, end, group, known)
         for i, p in enumerate(paths):
             for q in paths[i + 1 :]:
                 point = _crossing(p, q, tol)
