@@ -204,9 +204,14 @@ def test_a_file_that_fits_has_its_lines_evaluated_in_one_batch(corpus_dir: Path,
         evaluate(entries, keys, grids, out)
 
     monkeypatch.setattr(sampled, "_evaluate_batch", counted)
+    roads = ctx.document.roads
     with np.errstate(all="ignore"):
-        sampled.section_lines(ctx, ctx.document.roads[0], 0)
+        sampled.section_lines(ctx, roads[len(roads) // 2], 0)  # asked first in the middle: all from the first on
+        sampled.section_lines(ctx, roads[0], 0)
+        for _ in sampled.lines_in_order(ctx):
+            pass
     cache = sampled._LINES[ctx]
+    assert cache.position((roads[len(roads) // 2].id, 0)) > 0
     assert cache.fits and sizes == [len(cache._keys)] and cache.kept == len(cache._keys) > 100
 
 

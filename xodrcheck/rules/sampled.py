@@ -129,9 +129,7 @@ def release_lines(ctx: Context) -> None:
 
 def _lines_of(ctx: Context) -> _SectionCache:
     found = _LINES.get(ctx)
-    if found is None:
-        found = _LINES[ctx] = _SectionCache(ctx)
-    return found
+    return found if found is not None else _LINES.setdefault(ctx, _SectionCache(ctx))
 
 
 def _lines_size(lines: SectionLines) -> int:
@@ -251,7 +249,9 @@ class _SectionCache:
             self._window_budget.touch(self._window, key)
             return found
         position = self._position.get(key)
-        if position is not None:
+        if position is not None and self.fits and not self.kept:  # all is kept: the first batch from the first on
+            found = self._evaluate_from(0).get(key)
+        if found is None and position is not None:
             found = self._evaluate_from(position).get(key)
         if found is None:
             geometry = ctx.road_geometry(road)
