@@ -22,7 +22,6 @@ from xodrcheck.findings import Severity
 from xodrcheck.lanes import LanePoints, RoadGeometry
 from xodrcheck.model import ContactPoint, Road
 from xodrcheck.rules.context import Context
-from xodrcheck.sampling import knots, step_counts
 
 
 def usable(ctx: Context, road: Road) -> RoadGeometry | None:
@@ -73,18 +72,9 @@ def grid_step(tol: Tolerances) -> float:
 
 
 def _grid(ctx: Context, geometry: RoadGeometry, section_index: int) -> np.ndarray:
-    start, end = geometry.section_range(section_index)
-    if not end > start:
-        return np.array([start], dtype=float)
-    tol = ctx.tolerances
-    step = grid_step(tol)
-    cuts = knots(geometry, section_index)
-    lengths = np.diff(cuts)
-    counts = step_counts(lengths, step, tol.max_samples_per_section)
-    owner = np.repeat(np.arange(len(lengths)), counts)
-    offset = np.arange(owner.size) - np.repeat(np.cumsum(counts) - counts, counts)
-    s = np.append(cuts[owner] + lengths[owner] * offset / counts[owner], left_of(end))
-    return np.maximum.accumulate(s)
+    from xodrcheck.rules.grids import section_grids
+
+    return section_grids(ctx.tolerances, [(geometry, section_index)], grid_step(ctx.tolerances))[0]
 
 
 def section_lines(ctx: Context, road: Road, section_index: int) -> SectionLines:
@@ -167,24 +157,27 @@ class _SectionCache:
 
     def __init__(self, ctx: Context) -> None:
         from xodrcheck import roadpass
+        from xodrcheck.rules.grids import section_grids
 
         self._entries: list[tuple[RoadGeometry, int]] = []
         self._keys: list[tuple[str, int]] = []
         self._grids: list[np.ndarray] = []
         self._bytes: list[int] = []
-        for road in ctx.document.roads:
-            geometry = usable(ctx, road)
-            if geometry is None:
-                continue
-            for index in range(len(road.lane_sections)):
-                if roadpass.covered(geometry, index):
-                    s = _grid(ctx, geometry, index)
-                    if np.isfinite(s).all():
-                        self._entries.append((geometry, index))
-                        self._keys.append((road.id, index))
-                        self._grids.append(s)
-                        lanes = 1 + sum(len(side.lanes) for side in geometry.side_lanes(index))
-                        self._bytes.append(array_bytes(2 + 7 * lanes, s.size))
+        candidates = [
+            (road, geometry, index)
+            for road in ctx.document.roads
+            if (geometry := usable(ctx, road)) is not None
+            for index in range(len(road.lane_sections))
+            if roadpass.covered(geometry, index)
+        ]
+        grids = section_grids(ctx.tolerances, [(g, i) for _, g, i in candidates], grid_step(ctx.tolerances))
+        for (road, geometry, index), s in zip(candidates, grids):
+            if np.isfinite(s).all():
+                self._entries.append((geometry, index))
+                self._keys.append((road.id, index))
+                self._grids.append(s)
+                lanes = 1 + sum(len(side.lanes) for side in geometry.side_lanes(index))
+                self._bytes.append(array_bytes(2 + 7 * lanes, s.size))
         self._position = {key: i for i, key in enumerate(self._keys)}
         fits = sum(self._bytes) <= LINES_BUDGET
         self._resident: dict[tuple[str, int], SectionLines] = {}
