@@ -23,7 +23,7 @@ from xodrcheck.rules import xml as R
 KNOWN_VERSIONS = frozenset((1, minor) for minor in range(1, 10))
 
 _JUNCTION_TYPES = {t.value: t for t in JunctionType}
-_OFFSET = ("x", "y", "z", "hdg")
+_OFFSET = ["x", "y", "z", "hdg"]
 _NONE: tuple[int, ...] = ()
 _BOUNDS = ("north", "south", "east", "west")
 

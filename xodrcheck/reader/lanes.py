@@ -46,6 +46,9 @@ _SKIP_LANE = "the lane is skipped"
 LAYERS = {layer.value: layer for layer in LaneLayer}
 _PERMANENT = "read as permanent, the standard's default"
 
+_SPEED = ["sOffset", "max"]
+_HEIGHT = ["sOffset", "inner", "outer"]
+
 _Links = tuple[tuple[int, ...], tuple[int, ...], tuple[int, ...], tuple[int, ...]]
 
 
@@ -133,12 +136,12 @@ def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
 
 
 def _speed(ctx: Context, el: etree._Element) -> Speed | None:
-    v = ctx.floats(el, ("sOffset", "max"), (0, 1), SKIP_RECORD)
+    v = ctx.floats(el, _SPEED, (0, 1), SKIP_RECORD)
     return None if v is None else make_speed(v[0], v[1], el.get("unit"), el.sourceline)
 
 
 def _height(ctx: Context, el: etree._Element) -> LaneHeight | None:
-    v = ctx.floats(el, ("sOffset", "inner", "outer"), (0,), SKIP_RECORD)
+    v = ctx.floats(el, _HEIGHT, (0,), SKIP_RECORD)
     return None if v is None else make_lane_height(v[0], v[1], v[2], el.sourceline)
 
 

@@ -42,11 +42,12 @@ _ELEMENT_DIRS = {"+": ElementDir.PLUS, "-": ElementDir.MINUS}
 _TRAFFIC_RULES = {"rht": TrafficRule.RHT, "lht": TrafficRule.LHT}
 _P_RANGES = {"arclength": PRange.ARC_LENGTH, "normalized": PRange.NORMALIZED}
 
-_GEOMETRY = ("s", "x", "y", "hdg", "length")
+# attribute names as lists, the type of ``el.keys()``, which Context.floats compares them with
+_GEOMETRY = ["s", "x", "y", "hdg", "length"]
 _GEOMETRY_NONNEG = (0, 4)
-_SPIRAL = ("curvStart", "curvEnd")
-_POLY3 = ("a", "b", "c", "d")
-_PARAM_POLY3 = ("aU", "bU", "cU", "dU", "aV", "bV", "cV", "dV")
+_SPIRAL = ["curvStart", "curvEnd"]
+_POLY3 = ["a", "b", "c", "d"]
+_PARAM_POLY3 = ["aU", "bU", "cU", "dU", "aV", "bV", "cV", "dV"]
 _NONE: tuple[int, ...] = ()
 #: Children of ``<geometry>`` that are not its shape.
 _GEOMETRY_EXTRAS = frozenset({"userData", "include", "dataQuality"})
