@@ -539,6 +539,7 @@ def test_fast_constructors_build_what_the_class_builds(cls):
     values = [f"v{i}" for i, _ in enumerate(fields)]
     make = CONSTRUCTORS[cls]
     assert make(*values) == cls(*values)
+    assert type(make(*values)) is cls
     assert make(*values[: len(required)]) == cls(*values[: len(required)])
     assert inspect.signature(make).parameters.keys() == inspect.signature(cls).parameters.keys()
     with pytest.raises(TypeError):

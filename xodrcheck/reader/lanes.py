@@ -111,9 +111,10 @@ def _layered_lane_links(ctx: Context, el: etree._Element) -> _Links:
 
 def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
     get = el.get
+    numbers = ctx.numbers
     try:
-        s = float(get("sOffset"))
-        if s - s != 0.0 or s < 0.0:
+        s = numbers[get("sOffset")]
+        if s < 0.0:
             raise ValueError
     except (TypeError, ValueError):
         given = ctx.number(el, "sOffset", SKIP_RECORD, nonneg=True)
@@ -127,8 +128,8 @@ def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
     width = get("width")
     if width is not None:
         try:
-            width = float(width)
-            if width - width != 0.0 or width < 0.0:
+            width = numbers[width]
+            if width < 0.0:
                 raise ValueError
         except ValueError:
             width = ctx.number(el, "width", "the width is read as absent", nonneg=True)
@@ -243,8 +244,8 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
 
 def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
     try:
-        s = float(el.get("s"))
-        if s - s != 0.0 or s < 0.0:
+        s = ctx.numbers[el.get("s")]
+        if s < 0.0:
             raise ValueError
     except (TypeError, ValueError):
         given = ctx.number(el, "s", "the lane section and its lanes are skipped", nonneg=True, uid=U.S_ATTR_VALUE)

@@ -250,8 +250,8 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
 
     raw = get("length")
     try:
-        length = float(raw)
-        valid = length - length == 0.0 and length >= 0.0
+        length = ctx.numbers[raw]
+        valid = length >= 0.0
     except (TypeError, ValueError):
         valid = False
     if not valid:
