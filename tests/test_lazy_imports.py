@@ -37,8 +37,10 @@ WATCHED = (
     "xodrcheck",
 )
 
+# at exit: the process's own command line ends the process when done (xodrcheck.startup.finish), after the atexit
+# handlers
 _PROBE = """
-import json, sys
+import atexit, json, sys
 out = sys.argv[1]
 sys.argv = [sys.argv[2], *sys.argv[3:]]
 
@@ -46,12 +48,12 @@ def report():
     with open(out, 'w') as f:
         json.dump(sorted(sys.modules), f)
 
+atexit.register(report)
 try:
     from {module} import main
     code = main()
 except SystemExit as exc:
     code = exc.code
-report()
 sys.exit(code or 0)
 """
 
@@ -291,15 +293,20 @@ def test_import_xodrcheck_sets_no_thread_variable(tmp_path: Path) -> None:
 
 
 _GC_PROBE = """
-import gc, json, sys
+import atexit, gc, json, sys
 from {module} import main
 out, own = sys.argv[1], sys.argv[2] == "own"
 sys.argv = ["prog", *sys.argv[3:]]
+
+def report():
+    with open(out, "w") as f:
+        json.dump({{"enabled": gc.isenabled(), "frozen": gc.get_freeze_count()}}, f)
+
+atexit.register(report)  # the process's own command line ends the process when done, after the atexit handlers
 try:
     main() if own else main(sys.argv[1:])
 except SystemExit:
     pass
-json.dump({{"enabled": gc.isenabled(), "frozen": gc.get_freeze_count()}}, open(out, "w"))
 """
 
 
@@ -341,3 +348,30 @@ def test_collector_pause_and_resume(monkeypatch: pytest.MonkeyPatch) -> None:
         assert not gc.isenabled()
     finally:
         gc.enable()
+
+
+_FINISH_PROBE = """
+import atexit, sys
+from xodrcheck.cli import main
+own = sys.argv[1] == "own"
+sys.argv = ["xodrcheck", *sys.argv[2:]]
+atexit.register(lambda: print("atexit ran", flush=True))
+code = main() if own else main(sys.argv[1:])
+print("returned", code, flush=True)
+sys.exit(7)
+"""
+
+
+def test_own_command_line_ends_the_process_after_the_atexit_handlers(tmp_path: Path, plain: Path) -> None:
+    # xodrcheck.startup.finish: the report written, the atexit handlers run, the command's exit code, no return
+    for own in (True, False):
+        argv = ["own" if own else "call", "check", "--format", "json", str(plain)]
+        done = subprocess.run(
+            [sys.executable, "-c", _FINISH_PROBE, *argv], cwd=tmp_path, capture_output=True, text=True, timeout=300
+        )
+        report, _, rest = done.stdout.rpartition("}")
+        assert json.loads(report + "}")["files"][0]["path"].endswith("plain.xodr")
+        if own:
+            assert (rest.split(), done.returncode) == (["atexit", "ran"], 0)
+        else:  # main(argv), as a caller in its own process runs it: it returns, the caller exits as it likes
+            assert (rest.split(), done.returncode) == (["returned", "0", "atexit", "ran"], 7)

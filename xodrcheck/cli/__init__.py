@@ -76,7 +76,7 @@ def main(argv: list[str] | None = None) -> int:
 
     try:
         with signals_raise():
-            return _run(args)
+            code = _run(args)
     except KeyboardInterrupt:
         print("xodrcheck: interrupted", file=sys.stderr)
         return EXIT_INTERRUPTED
@@ -85,6 +85,7 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_TERMINATED
     except BrokenPipeError:
         return EXIT_OK
+    return startup.finish(code)  # the process's own command line ends here, without the interpreter's teardown
 
 
 def _run(args: argparse.Namespace) -> int:
