@@ -163,6 +163,21 @@ def test_plain_check_loads_no_junction_object_or_signal_module(tmp_path: Path, p
     assert FEATURE_MODULES.isdisjoint(names)
 
 
+def test_plain_check_of_any_version_loads_no_junction_object_or_signal_module(tmp_path: Path) -> None:
+    # 1.7 and 1.8 run rules a 1.6 file does not (validity orientation, surface volumes, the junction grid's entries);
+    # an empty <objects/> holds nothing to read
+    for minor in (7, 8):
+        path = tmp_path / f"plain-1.{minor}.xodr"
+        path.write_text(PLAIN.replace('revMinor="6"', f'revMinor="{minor}"'))
+        names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(path))
+        assert "xodrcheck.rules.junction_entries" in names and "xodrcheck.rules.object_surfaces" in names
+        assert FEATURE_MODULES.isdisjoint(names), (minor, FEATURE_MODULES & names)
+    path = tmp_path / "empty-objects.xodr"
+    path.write_text(PLAIN.replace("    </lanes>\n", "    </lanes>\n    <objects><!-- none --></objects>\n"))
+    names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(path))
+    assert FEATURE_MODULES.isdisjoint(names), FEATURE_MODULES & names
+
+
 def test_check_of_junctions_objects_and_signals_loads_their_modules(tmp_path: Path) -> None:
     path = tmp_path / "features.xodr"
     path.write_text(FEATURES)

@@ -189,8 +189,9 @@ class Context:
         outlines, skeletons, markings, borders, repeats, surfaces; object references, tunnels, bridges), built from
         :attr:`tree` once per file; empty when the file is not well-formed."""
         tree = self.tree
-        if tree is None or not any(next(r.iterchildren("{*}objects"), None) is not None for r in _roads(tree)):
-            return {}  # no <objects> (what read_road_objects gives): xodrcheck.objects' dataclasses are not loaded
+        if tree is None or not any(_has_element(group) for r in _roads(tree) for group in r.iterchildren("{*}objects")):
+            # no <objects> with an element in it (what read_road_objects gives): xodrcheck.objects is not loaded
+            return {}
         from xodrcheck.objects import read_road_objects
 
         return read_road_objects(tree.getroot(), self.version)
@@ -492,3 +493,8 @@ def junction_parts(ctx: Context) -> tuple[JunctionParts, ...]:
 def _roads(tree: etree._ElementTree) -> Iterator[etree._Element]:
     """The ``<road>`` elements of the file, whatever their namespace."""
     return tree.getroot().iterchildren("{*}road")
+
+
+def _has_element(group: etree._Element) -> bool:
+    """Whether an element (``<objects>``) has an element in it (comments and text do not count)."""
+    return next(group.iterchildren("{*}*"), None) is not None

@@ -192,12 +192,14 @@ def elevation_grid_entry_exit(ctx: Context) -> Iterator[Finding]:
 
         <elevation left="0.95 0.95 0.95" center="0.95" right="0.95"/> ...
     """
-    from xodrcheck.junction_grid import grid_surface
-
     tol = ctx.tolerances
     for j in junction_parts(ctx):
         grid, line = j.grid, reference_line(j)
-        surface = grid_surface(grid) if grid is not None and j.type == "default" else None
+        if grid is None or j.type != "default":
+            continue
+        from xodrcheck.junction_grid import grid_surface  # here: only a junction with a grid loads it
+
+        surface = grid_surface(grid)
         if surface is None or line is None:
             continue
         for entry in _entries(ctx, j):

@@ -257,11 +257,11 @@ def validity_against_orientation(ctx: Context):
 
         <object id="1" type="roadMark" orientation="+" ...><validity fromLane="1" toLane="1"/></object>
     """
-    from xodrcheck.objects import RoadObject
-
     for parent in _oriented(ctx):
         if not parent.validities:
             continue
+        from xodrcheck.objects import RoadObject  # here: a file without objects loads no xodrcheck.objects.model
+
         road = ctx.road(parent.road)
         lht = road is not None and road.rule is TrafficRule.LHT
         traffic_uid, traffic = (U.VALIDITY_LHT, "left-hand") if lht else (U.VALIDITY_RHT, "right-hand")

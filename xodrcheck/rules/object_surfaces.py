@@ -143,13 +143,13 @@ class Box:
 def _boxes(ctx: Context) -> list[Box]:
     """Every placed bounding volume of the file's surface objects (each instance of a repeated one, thinned where
     instances pile up: :func:`_thinned`). Cached."""
-    from xodrcheck.objects.place import instances
-
     cache = ctx.__dict__.get("_surface_boxes")
     if cache is not None:
         return cache
     out: list[Box] = []
     for obj in surface_objects(ctx):
+        from xodrcheck.objects.place import instances  # here: a file without objects loads no objects.place
+
         geometry = ctx.geometry(obj.road)
         if geometry is None or not geometry.road.plan_view:
             continue
@@ -237,11 +237,11 @@ def surface_volumes_overlap(ctx: Context):
         <object id="1" type="roadSurface" s="10" t="1" ... length="1" width="1" height="0"><surface>...</surface>
         <object id="2" type="roadSurface" s="10.5" t="1" ... length="1" width="1" height="0"><surface>...</surface>
     """
-    import shapely
-
     boxes = _boxes(ctx)
     if len(boxes) < 2:
         return
+    import shapely  # here: the boxes' polygons are shapely's, so it is loaded already
+
     tol = ctx.tolerances.object_volume
     tree = shapely.STRtree([b.polygon for b in boxes])
     pairs = tree.query([b.polygon for b in boxes], predicate="intersects")
