@@ -48,3 +48,15 @@ def test_loads_with_the_counts_lxml_sees(path: Path, corpus_dir: Path):
         built = sum(isinstance(g, kind) for r in document.roads for g in r.plan_view)
         assert built == len(root.findall(f"road/planView/geometry/{tag}")), tag
     assert document.version == (int(root.find("header").get("revMajor")), int(root.find("header").get("revMinor")))
+
+
+@pytest.mark.parametrize("path", corpus_files(), ids=lambda p: p.relative_to(corpus_root()).as_posix())
+def test_read_without_blank_text_builds_the_same_model(path: Path, corpus_dir: Path):
+    """``read()`` parses without the whitespace between elements (only the XML rules' tree needs it): the model and
+    the findings, lines included, are those of the reader that keeps the checker's tree."""
+    from xodrcheck.reader import read_keeping_tree
+
+    kept, _tree = read_keeping_tree(path)
+    plain = read(path)
+    assert plain.document == kept.document
+    assert plain.findings == kept.findings

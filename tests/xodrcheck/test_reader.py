@@ -127,6 +127,27 @@ def test_reading_leaves_the_garbage_collector_as_it_was(enabled):
         (gc.enable if was else gc.disable)()
 
 
+def test_blank_text_is_left_out_only_below_65535_lines():
+    """read() parses without the indentation between elements, except in a file long enough that libxml2 needs the
+    text nodes for its elements' line numbers; either way the model and its lines are the same."""
+    from xodrcheck.reader import read_keeping_tree
+    from xodrcheck.reader.xmlsafe import parse
+
+    data = xodr(road())
+    short, _ = parse(data, keep_blank_text=False)
+    assert all(not (el.tail or "").strip() for el in short.iter()) and short[0].tail is None
+    kept, _ = parse(data)
+    assert kept[0].tail is not None and not kept[0].tail.strip()
+    # past line 65,535 libxml2 finds an element's line through the text nodes beside it: they are kept there
+    lanes = "".join(f'\n  <lane id="-{k}" type="driving" level="false">\n  </lane>' for k in range(1, 40001))
+    long_doc = xodr(road(lanes=f"<lanes>{section(CENTER, f'<right>{lanes}</right>')}</lanes>"))
+    long, _ = parse(long_doc, keep_blank_text=False)
+    assert long[0].tail is not None
+    lines = [lane.line for lane in read(long_doc).document.roads[0].lane_sections[0].right]
+    assert lines[-1] > 65535 and lines == sorted(lines)
+    assert read(long_doc).document == read_keeping_tree(long_doc)[0].document
+
+
 def test_gzip_compressed_file_is_read(tmp_path):
     path = tmp_path / "map.xodrz"
     path.write_bytes(gzip.compress(xodr(road())))

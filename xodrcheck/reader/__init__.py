@@ -135,7 +135,7 @@ def read(source: str | os.PathLike[str] | bytes, *, max_bytes: int | None = None
     ``max_bytes`` defaults to :attr:`Tolerances.max_file_bytes`. Raises :class:`ReadError` only when the input cannot
     be opened or is over that limit.
     """
-    return read_keeping_tree(source, max_bytes=max_bytes)[0]
+    return _read(source, max_bytes, keep_tree=False)[0]
 
 
 def read_keeping_tree(
@@ -144,6 +144,14 @@ def read_keeping_tree(
     """:func:`read`, and the parse tree the model was built from when it is the tree the XML rules read
     (:attr:`xodrcheck.rules.context.Context.tree`: well-formed, no namespace to strip), else ``None``. The checker
     parses a file once this way instead of twice (on a 51 MB map the tree is ~720 MB)."""
+    return _read(source, max_bytes, keep_tree=True)
+
+
+def _read(
+    source: str | os.PathLike[str] | bytes, max_bytes: int | None, *, keep_tree: bool
+) -> tuple[ReadResult, etree._ElementTree | None]:
+    """:func:`read_keeping_tree`; without ``keep_tree`` no tree is returned, and the parse leaves out the whitespace
+    between elements, which only the XML rules' tree needs (the model is the same: tests/xodrcheck/test_reader.py)."""
     limit = Tolerances().max_file_bytes if max_bytes is None else max_bytes
     if isinstance(source, (bytes, bytearray, memoryview)):
         data = bytes(source)
@@ -159,7 +167,7 @@ def read_keeping_tree(
         if unpacked is None:
             return ReadResult(None, tuple(findings), path), None
         data = unpacked
-    root, parse_findings = parse(data)
+    root, parse_findings = parse(data, keep_blank_text=keep_tree)
     del data  # the bytes (a decompressed copy, say) are not needed past the parse
     findings.extend(parse_findings)
     document = None
@@ -171,6 +179,6 @@ def read_keeping_tree(
         # the root, which the reader strips from every tag)
         shared = None not in root.nsmap and not any(f.code == R.NOT_WELL_FORMED.code for f in parse_findings)
         document = _build_without_collecting(Context(findings), root, path)
-        if shared and document is not None:
+        if keep_tree and shared and document is not None:
             tree = etree.ElementTree(root)
     return ReadResult(document, tuple(findings), path), tree
