@@ -167,20 +167,20 @@ class Context:
         """A finite float (>= 0 with ``nonneg``), or ``None`` with a finding (none for an absent optional one);
         ``uid`` names the Annex F rule an absent required attribute breaks."""
         raw = el.get(name)
-        value = self.numbers.get(raw)  # a value met before, so finite
-        if value is None:
-            if raw is None:
-                if required:
-                    self.missing(el, name, then, uid=uid)
-                return None
+        if raw is None:
+            if required:
+                self.missing(el, name, then, uid=uid)
+            return None
+        try:
+            value = self.numbers[raw]  # finite, and remembered for the next record with the same text
+        except ValueError:
             try:
-                value = float(raw)
+                float(raw)
             except ValueError:
                 self.invalid(el, name, raw, "which is not a number", then)
-                return None
-            if value - value != 0.0:
+            else:
                 self.invalid(el, name, raw, "which is not a finite number", then)
-                return None
+            return None
         if nonneg and value < 0.0:
             self.invalid(el, name, raw, f"but {name} must be >= 0", then)
             return None

@@ -69,28 +69,8 @@ def layered(ctx: Context) -> bool:
 
 def _lane_links(ctx: Context, el: etree._Element) -> _Links:
     """Predecessor and successor lane ids on the permanent layer, then on the temporary layer."""
-    if layered(ctx):
-        return _layered_lane_links(ctx, el)
-    pred: list[int] = []
-    succ: list[int] = []
-    for child in el:  # before 1.9 there are no layers: the common case, without the layer bookkeeping
-        tag = child.tag
-        if tag == "predecessor":
-            ids = pred
-        elif tag == "successor":
-            ids = succ
-        else:
-            continue
-        try:
-            ids.append(int(child.get("id")))
-        except (TypeError, ValueError):
-            ctx.integer(child, "id", "the lane link is ignored")
-    return tuple(pred), tuple(succ), (), ()
-
-
-def _layered_lane_links(ctx: Context, el: etree._Element) -> _Links:
-    """:func:`_lane_links` of a file with lane layers (1.9): a link's ``layer`` says which layer it belongs to."""
     links: tuple[list[int], list[int], list[int], list[int]] = ([], [], [], [])
+    with_layers = layered(ctx)
     for child in el:
         tag = child.tag
         if tag == "predecessor":
@@ -99,7 +79,11 @@ def _layered_lane_links(ctx: Context, el: etree._Element) -> _Links:
             k = 1
         else:
             continue
-        if child.get("layer") is not None and ctx.choice(child, "layer", LAYERS, _PERMANENT) is LaneLayer.TEMPORARY:
+        if (
+            with_layers
+            and child.get("layer") is not None
+            and ctx.choice(child, "layer", LAYERS, _PERMANENT) is LaneLayer.TEMPORARY
+        ):
             k += 2
         raw = child.get("id")
         try:
@@ -111,9 +95,8 @@ def _layered_lane_links(ctx: Context, el: etree._Element) -> _Links:
 
 def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
     get = el.get
-    numbers = ctx.numbers
     try:
-        s = numbers[get("sOffset")]
+        s = ctx.numbers[get("sOffset")]
         if s < 0.0:
             raise ValueError
     except (TypeError, ValueError):
@@ -128,7 +111,7 @@ def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
     width = get("width")
     if width is not None:
         try:
-            width = numbers[width]
+            width = ctx.numbers[width]
             if width < 0.0:
                 raise ValueError
         except ValueError:
