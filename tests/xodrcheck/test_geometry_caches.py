@@ -215,15 +215,17 @@ def test_a_file_that_fits_has_its_lines_evaluated_in_one_batch(corpus_dir: Path,
     assert cache.fits and sizes == [len(cache._keys)] and cache.kept == len(cache._keys) > 100
 
 
+#: Files whose sections one roadpass pass covers in part: a town, a small esmini map, and one whose superelevation
+#: leaves every section to the per-section code.
+_PASS_FILES = [
+    "carla-towns/OpenDrive/Town01.xodr",
+    "esmini/resources/xodr/fabriksgatan.xodr",
+    "esmini/EnvironmentSimulator/Unittest/xodr/two_pitched_and_rolled_roads.xodr",
+]
+
+
 @pytest.mark.corpus
-@pytest.mark.parametrize(
-    "name",
-    [
-        "carla-towns/OpenDrive/Town01.xodr",
-        "esmini/resources/xodr/fabriksgatan.xodr",
-        "esmini/EnvironmentSimulator/Unittest/xodr/two_pitched_and_rolled_roads.xodr",
-    ],
-)
+@pytest.mark.parametrize("name", _PASS_FILES)
 def test_road_ends_evaluated_together_are_each_roads_own_border_curves(corpus_dir: Path, name: str):
     """sampled.road_end takes the border curves of every road end from one pass (roadpass) where it covers the
     section, and from RoadGeometry.border_curves elsewhere (superelevation): the same numbers to the last bit."""
@@ -253,14 +255,7 @@ def test_road_ends_evaluated_together_are_each_roads_own_border_curves(corpus_di
 
 
 @pytest.mark.corpus
-@pytest.mark.parametrize(
-    "name",
-    [
-        "carla-towns/OpenDrive/Town01.xodr",
-        "esmini/resources/xodr/fabriksgatan.xodr",
-        "esmini/EnvironmentSimulator/Unittest/xodr/two_pitched_and_rolled_roads.xodr",
-    ],
-)
+@pytest.mark.parametrize("name", _PASS_FILES)
 def test_lane_width_pieces_evaluated_together_are_each_sections_own(corpus_dir: Path, name: str):
     """lane_shape's pieces (G010, G011, G015) take every covered section's borders from one roadpass pass: the same
     numbers as RoadGeometry.borders section by section."""
