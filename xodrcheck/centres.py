@@ -12,12 +12,12 @@ here.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 
 import numpy as np
 
 from xodrcheck import roadpass
-from xodrcheck.arrays import ranges
+from xodrcheck.arrays import batches, ranges
 from xodrcheck.classcache import dataclass
 from xodrcheck.geometry.pose import Pose
 
@@ -36,18 +36,19 @@ class Centres:
     pose: Pose
 
     def xy(self, pairs: Sequence[int]) -> list[tuple[float, float]]:
-        """Plan-view ``x``, ``y`` of some pairs (:meth:`RoadGeometry._place`'s formulas; the heading's sine and cosine
-        of all the pass's samples at once, as :func:`xodrcheck.roadpass.border_lines`)."""
+        """Plan-view ``x``, ``y`` of some pairs (as :meth:`all_xy`)."""
         if not pairs:
             return []
-        at, q = self.sample[list(pairs)], self.q[list(pairs)]
-        x = self.pose.x[at] - q * np.sin(self.pose.hdg)[at]
-        y = self.pose.y[at] + q * np.cos(self.pose.hdg)[at]
+        x, y = self._place(self.sample[list(pairs)], self.q[list(pairs)])
         return [(float(a), float(b)) for a, b in zip(x, y)]
 
     def all_xy(self) -> tuple[np.ndarray, np.ndarray]:
-        """Plan-view ``x``, ``y`` of every pair (as :meth:`xy`)."""
-        at, q = self.sample, self.q
+        """Plan-view ``x``, ``y`` of every pair."""
+        return self._place(self.sample, self.q)
+
+    def _place(self, at: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """:meth:`RoadGeometry._place`'s formulas at samples ``at`` and lateral offsets ``q`` (the heading's sine and
+        cosine of all the pass's samples at once, as :func:`xodrcheck.roadpass.border_lines`)."""
         return self.pose.x[at] - q * np.sin(self.pose.hdg)[at], self.pose.y[at] + q * np.cos(self.pose.hdg)[at]
 
 
@@ -88,6 +89,16 @@ def centre_lines(
         curvature = (a * a * k_ + a * ddq + 2.0 * dq * dq * k_ + q * dq * dk) / speed**3
     starts = np.concatenate(([0], np.cumsum(np.array(sizes, dtype=np.int64))))
     return Centres(lanes, starts, at, q, curvature, speed, pose)
+
+
+def centre_batches(
+    entries: Sequence[roadpass.Entry], samples: Sequence[np.ndarray], wanted: Sequence[Sequence[int]], limit: int
+) -> Iterator[tuple[int, int, Centres | None]]:
+    """:func:`centre_lines` of consecutive runs ``lo:hi`` of the entries, each run's (line, sample) pairs within
+    ``limit`` (a run of one entry may exceed it): ``(lo, hi, centres)``, ``centres`` ``None`` for a run the pass
+    does not cover exactly."""
+    for lo, hi in batches([len(s) * len(ids) for s, ids in zip(samples, wanted)], limit):
+        yield lo, hi, centre_lines(entries[lo:hi], samples[lo:hi], wanted[lo:hi])
 
 
 def tightest(centres: Centres, bound: float) -> list[tuple[int, int] | None]:

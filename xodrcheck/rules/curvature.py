@@ -25,7 +25,6 @@ import math
 
 import numpy as np
 
-from xodrcheck.arrays import batches
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Road
 from xodrcheck.rules.context import Context, placed_lane_ids
@@ -127,8 +126,7 @@ def _centre_hits(ctx: Context, bound: float) -> dict[tuple[str, int], dict[int, 
             keys.append((road.id, index))
             grids.append(s)
             wanted.append(list(dict.fromkeys(lanes)))
-    for lo, hi in batches([len(s) * len(ids) for s, ids in zip(grids, wanted)], _BATCH_SAMPLES):
-        found = centres.centre_lines(entries[lo:hi], grids[lo:hi], wanted[lo:hi])
+    for lo, hi, found in centres.centre_batches(entries, grids, wanted, _BATCH_SAMPLES):
         if found is None:
             for key in keys[lo:hi]:
                 del out[key]  # lane by lane

@@ -21,7 +21,6 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.arrays import batches
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Connection, ContactPoint, JunctionType, Road
@@ -183,8 +182,7 @@ def _known(ctx: Context, wanted: dict[tuple[str, int], tuple[Road, list[int]]]) 
             grids.append(s)
             lanes.append(ids)
     out: _Known = {}
-    for lo, hi in batches([len(s) * len(ids) for s, ids in zip(grids, lanes)], _BATCH_SAMPLES):
-        found = centres.centre_lines(entries[lo:hi], grids[lo:hi], lanes[lo:hi])
+    for lo, _hi, found in centres.centre_batches(entries, grids, lanes, _BATCH_SAMPLES):
         if found is None:
             continue
         x, y = found.all_xy()
