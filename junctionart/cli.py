@@ -336,7 +336,7 @@ def _check_target(path: str | Path) -> None:
 
 
 def _add_era(p: argparse.ArgumentParser) -> None:
-    from .era import add_arguments
+    from .era_cli import add_arguments
 
     add_arguments(p)
 
@@ -435,7 +435,7 @@ def _command(args: argparse.Namespace) -> int:
         return _generate(args)
     startup.imports_done()
     if args.command == "era":
-        from .era import run as _era
+        from .era_cli import run as _era
 
         return _era(args)
     if args.command == "intersection":

@@ -15,7 +15,10 @@ How a run goes
   listed in ``maps.csv`` and first drops rows of maps that never got their ``maps.csv`` line (an interrupted write), so
   an interrupted run resumes where it stopped.
 * Work runs on local processes (``concurrent.futures.ProcessPoolExecutor``, all cores by default) or on a Dask cluster
-  (``scheduler=ADDRESS``; needs the ``[dask]`` extra).
+  (``scheduler=ADDRESS``; needs the ``[dask]`` extra; :mod:`junctionart.era_executors`).
+
+This module measures maps, keeps the table on disk and collects the runs; the ``junctionart era`` subcommand and the
+analysis of a finished table (figures, report) are :mod:`junctionart.era_cli`.
 """
 
 from __future__ import annotations
@@ -27,14 +30,14 @@ import os
 import time
 import traceback
 from collections.abc import Callable, Iterable
-from concurrent.futures import FIRST_COMPLETED, ProcessPoolExecutor
-from concurrent.futures import wait as _wait
 from dataclasses import field
 from pathlib import Path
 from typing import Any
 
 from xodrcheck.classcache import dataclass
 
+from .era_executors import Dask as _Dask
+from .era_executors import Local as _Local
 from .errors import JunctionArtError, ParamsError
 from .params import Params
 
@@ -151,6 +154,30 @@ def measure_map(run: str, params: Params, seed: int) -> MapResult:
     rows = metric_rows(run, seed, metrics)
     intersections = sum(1 for m in metrics if m.legs >= MIN_LEGS)
     return MapResult(run, seed, "ok", tuple(rows), len(metrics), intersections, time.perf_counter() - t0)
+
+
+def measure_folder(folder: Path) -> list[dict]:
+    """``legs.csv``-style rows of every ``.xodr`` under ``folder`` (run = the folder's name, seed = file index);
+    unreadable files are skipped with a note on stderr."""
+    import sys
+
+    from xodrcheck.findings import ReadError
+    from xodrcheck.metrics import map_metrics
+    from xodrcheck.reader import read
+
+    files = sorted(Path(folder).rglob("*.xodr"))
+    if not files:
+        raise ParamsError(f"--compare {folder}: no .xodr files there")
+    rows: list[dict] = []
+    for index, path in enumerate(files):
+        try:
+            document = read(path).document
+        except ReadError as exc:
+            print(f"junctionart: skipping {path}: {exc}", file=sys.stderr)
+            continue
+        if document is not None:
+            rows += metric_rows(Path(folder).name, index, map_metrics(document))
+    return rows
 
 
 # --------------------------------------------------------------------------------------------------------------------
@@ -295,72 +322,8 @@ def select(rows: list[dict], run: str, n: int) -> list[dict]:
 
 
 # --------------------------------------------------------------------------------------------------------------------
-# Executors: local processes or a Dask cluster, behind one submit / wait pair
+# Collecting: maps generated and measured on the workers until every run has its intersections
 # --------------------------------------------------------------------------------------------------------------------
-class _Executor:
-    """What both executors share on top of their ``submit`` / ``wait_first``."""
-
-    def submit(self, fn, *args):
-        raise NotImplementedError
-
-    def wait_first(self, pending):
-        raise NotImplementedError
-
-    def map_ordered(self, fn: Callable[..., Any], calls: Iterable[tuple], bar: Any = None) -> list[Any]:
-        """``[fn(*args) for args in calls]`` on the workers: every call submitted at once, the results in the order
-        of ``calls`` whatever order they finish in; ``bar`` (a tqdm bar or None) ticks once per finished call."""
-        pending = {self.submit(fn, *args): k for k, args in enumerate(calls)}
-        out: list[Any] = [None] * len(pending)
-        while pending:
-            done, _ = self.wait_first(pending)
-            for future in done:
-                out[pending.pop(future)] = future.result()
-                if bar is not None:
-                    bar.update(1)
-        return out
-
-
-class _Local(_Executor):
-    def __init__(self, jobs: int):
-        self.pool = ProcessPoolExecutor(max_workers=jobs)
-        self.width = jobs
-
-    def submit(self, fn, *args):
-        return self.pool.submit(fn, *args)
-
-    def wait_first(self, pending):
-        return _wait(pending, return_when=FIRST_COMPLETED)
-
-    def close(self):
-        self.pool.shutdown(wait=True, cancel_futures=True)
-
-
-class _Dask(_Executor):
-    def __init__(self, address):
-        try:
-            from distributed import Client
-        except ImportError:
-            raise ParamsError("--scheduler needs dask: pip install 'junctionart[dask]'") from None
-        try:
-            self.client = address if isinstance(address, Client) else Client(address, timeout=30)
-        except (OSError, TimeoutError) as exc:
-            raise ParamsError(f"--scheduler {address}: cannot connect ({exc})") from None
-        self.owned = not isinstance(address, Client)
-        self.width = max(sum(self.client.nthreads().values()), 1)
-
-    def submit(self, fn, *args):
-        return self.client.submit(fn, *args, pure=False)
-
-    def wait_first(self, pending):
-        from distributed import wait
-
-        return wait(list(pending), return_when="FIRST_COMPLETED")
-
-    def close(self):
-        if self.owned:
-            self.client.close()
-
-
 def collect(
     runs: dict[str, Params],
     n: int,
@@ -426,160 +389,3 @@ def _collect_run(table, executor, run, params, n, max_maps, progress, on_map) ->
         table.add(future.result())
     if bar is not None:
         bar.close()
-
-
-# --------------------------------------------------------------------------------------------------------------------
-# Comparison maps, the whole analysis, and the ``junctionart era`` subcommand
-# --------------------------------------------------------------------------------------------------------------------
-def measure_folder(folder: Path) -> list[dict]:
-    """``legs.csv``-style rows of every ``.xodr`` under ``folder`` (run = the folder's name, seed = file index);
-    unreadable files are skipped with a note on stderr."""
-    import sys
-
-    from xodrcheck.findings import ReadError
-    from xodrcheck.metrics import map_metrics
-    from xodrcheck.reader import read
-
-    files = sorted(Path(folder).rglob("*.xodr"))
-    if not files:
-        raise ParamsError(f"--compare {folder}: no .xodr files there")
-    rows: list[dict] = []
-    for index, path in enumerate(files):
-        try:
-            document = read(path).document
-        except ReadError as exc:
-            print(f"junctionart: skipping {path}: {exc}", file=sys.stderr)
-            continue
-        if document is not None:
-            rows += metric_rows(Path(folder).name, index, map_metrics(document))
-    return rows
-
-
-def analyse(
-    folder: Path, run_names: Iterable[str], n: int, compare: Path | None, setup: list[str], archive: Path | None = None
-) -> Path:
-    """Cut each run to its first ``n`` intersections, measure the comparison folder and write figures and report
-    (with a section on a search's archive folder when given, :mod:`junctionart.era_archive`)."""
-    from .era_report import Sample, write_report
-
-    rows = read_csv(Path(folder) / "legs.csv")
-    selected = {run: select(rows, run, n) for run in run_names}
-    samples = [Sample.of(run, chosen) for run, chosen in selected.items()]
-    other, compare_rows = None, None
-    if compare is not None:
-        compare_rows = measure_folder(compare)
-        other = Sample.of(Path(compare).name, compare_rows)
-    extra: list[str] = []
-    if archive is not None:
-        from . import era_archive as ea
-
-        runs = [ea.from_rows(run, chosen) for run, chosen in selected.items()]
-        theirs = ea.from_rows(Path(compare).name, compare_rows) if compare is not None and compare_rows else None
-        extra = ea.section(Path(folder), runs, theirs, ea.from_archive(archive))
-    return write_report(Path(folder), samples, other, setup, extra)
-
-
-def add_arguments(p) -> None:
-    p.add_argument(
-        "-o",
-        "--output",
-        type=Path,
-        default=Path("era"),
-        help="folder for legs.csv, maps.csv, figures and report.md (default: ./era); reused to resume",
-    )
-    p.add_argument(
-        "-n",
-        "--intersections",
-        type=int,
-        default=10_000,
-        help="intersections (3+ legs) to collect per run (default 10000, as in the paper)",
-    )
-    p.add_argument(
-        "--runs", default="two-lane,random-lane", help="comma-separated runs: two-lane, random-lane (default: both)"
-    )
-    p.add_argument("--size", default="2000x2000", help="map size WxH in metres (default 2000x2000)")
-    p.add_argument("-j", "--jobs", type=int, default=None, help="worker processes (default: all cores)")
-    p.add_argument(
-        "--scheduler",
-        default=None,
-        metavar="ADDRESS",
-        help="run on this Dask scheduler (e.g. tcp://host:8786) instead of local processes",
-    )
-    p.add_argument(
-        "--compare",
-        type=Path,
-        default=None,
-        metavar="DIR",
-        help="overlay the distributions of the .xodr maps in DIR (e.g. the CARLA towns)",
-    )
-    p.add_argument(
-        "--archive",
-        type=Path,
-        default=None,
-        metavar="DIR",
-        help="add a section setting the elites of a junctionart search folder (its archive.csv) beside the runs "
-        "and --compare",
-    )
-    p.add_argument("--max-maps", type=int, default=100_000, help="give up on a run after this many seeds")
-    p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
-
-
-def run(args) -> int:
-    import resource
-    import sys
-
-    try:
-        width, height = (float(v) for v in args.size.lower().split("x"))
-    except ValueError:
-        raise ParamsError(f"--size {args.size!r}: expected WxH in metres, e.g. 2000x2000") from None
-    known = paper_runs(width, height)
-    names = [name.strip() for name in args.runs.split(",") if name.strip()]
-    unknown = [name for name in names if name not in known]
-    if unknown or not names:
-        raise ParamsError(f"--runs {args.runs!r}: choose from {', '.join(known)}")
-    if args.compare is not None and not args.compare.is_dir():
-        raise ParamsError(f"--compare {args.compare}: not a folder")
-    if args.archive is not None and not (args.archive / "archive.csv").is_file():
-        raise ParamsError(f"--archive {args.archive}: no archive.csv there (the folder of a junctionart search)")
-    t0 = time.perf_counter()
-    table = collect(
-        {name: known[name] for name in names},
-        args.intersections,
-        args.output,
-        args.jobs,
-        args.scheduler,
-        args.max_maps,
-        not args.quiet,
-    )
-    seconds = time.perf_counter() - t0
-    usage = [resource.getrusage(who) for who in (resource.RUSAGE_SELF, resource.RUSAGE_CHILDREN)]
-    peak = max(u.ru_maxrss for u in usage) / 1024
-    setup = [
-        (
-            f"Runs: {', '.join(names)}; maps {width:g} m x {height:g} m, seeds 0, 1, 2, ... per run; the first "
-            f"{args.intersections} intersections (junctions with 3+ legs) of each run in seed order."
-        ),
-        (
-            "Metrics: `xodrcheck.metrics` (definitions in its docstring), computed on each map after writing it "
-            "and reading it back with the independent reader."
-        ),
-        f"Generator: junctionart {generator_version()} (package version + source hash, also in maps.csv).",
-    ]
-    for name in names:
-        seeds = [s for (r, s), v in table.done.items() if r == name]
-        failed = sum(1 for (r, s), v in table.done.items() if r == name and v < 0)
-        setup.append(f"{name}: {len(seeds)} maps measured ({failed} failed), {table.collected(name)} intersections.")
-    setup.append(f"This invocation: {seconds:.0f} s wall, peak resident memory {peak:.0f} MB per process.")
-    report = analyse(args.output, names, args.intersections, args.compare, setup, args.archive)
-    print(
-        f"{report}: {', '.join(f'{n} {table.collected(n)} intersections' for n in names)}, {seconds:.0f} s",
-        file=sys.stderr,
-    )
-    short = [n for n in names if table.collected(n) < args.intersections]
-    if short:
-        print(
-            f"junctionart: warning: {', '.join(short)} stopped short of {args.intersections} intersections "
-            f"(--max-maps {args.max_maps})",
-            file=sys.stderr,
-        )
-    return 0
