@@ -2,12 +2,12 @@
 of chosen lanes' centre lines, the numbers :meth:`RoadGeometry.lane_points` gives with ``where="centre"``, to the last
 bit.
 
-The border jets and the lateral offset of every border line come from :func:`xodrcheck.roadpass._lines` (lane by
-lane outward, as :meth:`RoadGeometry._border_lines`); a lane's centre line is then, as :meth:`RoadGeometry._projected`
-computes it, the lateral offset of its inner border line plus ``0.5 * (inner + outer) - inner`` (jets of ``t``), and
-its curvature and speed are :meth:`RoadGeometry._bend`'s formulas, elementwise on flat arrays of (line, sample)
-pairs. Only sections :func:`xodrcheck.roadpass.covered` covers (no superelevation, no lane id twice) are evaluated
-here.
+The border jets and the lateral offset of every border line come from
+:func:`xodrcheck.roadpass_lines.lateral_lines` (lane by lane outward, as :meth:`RoadGeometry._border_lines`); a lane's
+centre line is then, as :meth:`RoadGeometry._projected` computes it, the lateral offset of its inner border line plus
+``0.5 * (inner + outer) - inner`` (jets of ``t``), and its curvature and speed are :meth:`RoadGeometry._bend`'s
+formulas, elementwise on flat arrays of (line, sample) pairs. Only sections :func:`xodrcheck.roadpass.covered` covers
+(no superelevation, no lane id twice) are evaluated here.
 """
 
 from __future__ import annotations
@@ -20,6 +20,8 @@ from xodrcheck import roadpass
 from xodrcheck.arrays import batches, ranges
 from xodrcheck.classcache import dataclass
 from xodrcheck.geometry.pose import Pose
+from xodrcheck.roadpass_lines import lateral_lines
+from xodrcheck.roadpass_pose import poses
 
 
 @dataclass
@@ -60,10 +62,10 @@ def centre_lines(
     counts = np.array([len(s) for s in samples], dtype=np.int64)
     offsets = np.concatenate(([0], np.cumsum(counts)))
     s = np.concatenate(samples) if len(samples) else np.zeros(0)
-    pose = roadpass._pose(entries, s, offsets) if entries else None
+    pose = poses(entries, s, offsets) if entries else None
     if pose is None:
         return None
-    lines = roadpass._lines(entries, s, offsets)
+    lines = lateral_lines(entries, s, offsets)
     lanes, outer_rows, inner_rows, sizes = [], [], [], []
     for k, ((rg, index), ids) in enumerate(zip(entries, lines.ids)):
         n, base = int(counts[k]), int(lines.base[k])
