@@ -3,11 +3,11 @@ of chosen lanes' centre lines, the numbers :meth:`RoadGeometry.lane_points` give
 bit.
 
 The border jets and the lateral offset of every border line come from
-:func:`xodrcheck.roadpass_lines.lateral_lines` (lane by lane outward, as :meth:`RoadGeometry._border_lines`); a lane's
-centre line is then, as :meth:`RoadGeometry._projected` computes it, the lateral offset of its inner border line plus
-``0.5 * (inner + outer) - inner`` (jets of ``t``), and its curvature and speed are :meth:`RoadGeometry._bend`'s
-formulas, elementwise on flat arrays of (line, sample) pairs. Only sections :func:`xodrcheck.roadpass.covered` covers
-(no superelevation, no lane id twice) are evaluated here.
+:func:`xodrcheck.roadpass_lines.lateral_lines` (lane by lane outward, as :func:`xodrcheck.lane_lines.border_lines`); a
+lane's centre line is then, as :func:`xodrcheck.lane_lines.projected` computes it, the lateral offset of its inner
+border line plus ``0.5 * (inner + outer) - inner`` (jets of ``t``), and its curvature and speed are
+:func:`xodrcheck.lane_lines.bend`'s formulas, elementwise on flat arrays of (line, sample) pairs. Only sections
+:func:`xodrcheck.roadpass.covered` covers (no superelevation, no lane id twice) are evaluated here.
 """
 
 from __future__ import annotations
@@ -49,8 +49,8 @@ class Centres:
         return self._place(self.sample, self.q)
 
     def _place(self, at: np.ndarray, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """:meth:`RoadGeometry._place`'s formulas at samples ``at`` and lateral offsets ``q`` (the heading's sine and
-        cosine of all the pass's samples at once, as :func:`xodrcheck.roadpass.border_lines`)."""
+        """:func:`xodrcheck.lane_lines.place`'s formulas at samples ``at`` and lateral offsets ``q`` (the heading's
+        sine and cosine of all the pass's samples at once, as :func:`xodrcheck.roadpass.border_lines`)."""
         return self.pose.x[at] - q * np.sin(self.pose.hdg)[at], self.pose.y[at] + q * np.cos(self.pose.hdg)[at]
 
 

@@ -44,6 +44,10 @@ Lane heading and curvature are those of the offset curve ``P = R(s) + q(s) N(s)`
 lateral offset), with ``q'`` and ``q''`` carried exactly (:mod:`xodrcheck.geometry.jet`): heading
 ``theta + atan2(q', 1 - q k)`` and curvature ``(A^2 k + A q'' + 2 q'^2 k + q q' k') / (A^2 + q'^2)^(3/2)``,
 ``A = 1 - q k``; widening lanes therefore contribute their width change.
+
+This module keeps each road's structure (sections, the lanes of each side, profiles, lane heights), the evaluations'
+caches and the entry points; one section's evaluation at an array of ``s`` and the lane lines drawn from it (border
+jets, lateral offsets across rolled and level lanes, plan-view points) are :mod:`xodrcheck.lane_lines`'s.
 """
 
 from __future__ import annotations
@@ -52,91 +56,32 @@ from collections.abc import Iterator, Mapping
 
 import numpy as np
 
-from xodrcheck.budget import ByteBudget, array_bytes
-from xodrcheck.classcache import dataclass
+from xodrcheck.budget import ByteBudget
 from xodrcheck.config import Tolerances
 from xodrcheck.geometry import profile
 from xodrcheck.geometry.jet import Jet
 from xodrcheck.geometry.planview import ReferenceLine
 from xodrcheck.geometry.pose import Pose, as_array
+from xodrcheck.lane_lines import (
+    Evaluation,
+    LanePoints,
+    SideLanes,
+    bend,
+    border_jets,
+    evaluation_size,
+    place,
+    projected,
+    stacked_border_lines,
+)
 from xodrcheck.model import Cubic, Document, Lane, LaneLayer, Road, document_cache
 from xodrcheck.sampling import sample_section
 
 _WHERE = ("centre", "inner", "outer")
 
 
-@dataclass(frozen=True, slots=True)
-class LanePoints:
-    """Points on a lane line (centre or a border): inertial x, y, z, plan-view heading and curvature, and ``speed``,
-    the plan-view length of the line per metre of reference-line ``s`` (``integral speed ds`` is the line's length)."""
-
-    x: np.ndarray
-    y: np.ndarray
-    z: np.ndarray
-    hdg: np.ndarray
-    curvature: np.ndarray
-    speed: np.ndarray
-
-
-@dataclass(frozen=True, slots=True)
-class SideLanes:
-    """The lanes of one side in effect in a section, inner to outer, with the ``s`` their records are relative to.
-
-    ``laws[i]`` is lane ``i``'s compiled width profile (``is_width[i]``) or border profile, ``None`` for neither."""
-
-    lanes: tuple[Lane, ...]
-    origin: float
-    laws: tuple[profile.Piecewise | None, ...]
-    is_width: tuple[bool, ...]
-
-
-class _Evaluation:
-    """Everything lane points at one array of ``s`` in one section need, computed once. ``cos``/``sin`` are the jets
-    of the superelevation's cosine and sine, ``None`` on a road without superelevation (no roll anywhere). The
-    reference pose is evaluated on first use (lateral ``t`` alone does not need it)."""
-
-    __slots__ = ("_heading", "_pose", "_reference", "borders", "cos", "elevation", "s", "sin")
-
-    def __init__(
-        self,
-        reference: ReferenceLine,
-        s: np.ndarray,
-        borders: dict[int, Jet],
-        cos: Jet | None,
-        sin: Jet | None,
-        elevation: np.ndarray,
-    ):
-        self._reference = reference
-        self.s = s
-        self.borders = borders
-        self.cos = cos
-        self.sin = sin
-        self.elevation = elevation
-        self._pose: Pose | None = None
-        self._heading: tuple[np.ndarray, np.ndarray] | None = None
-
-    @property
-    def pose(self) -> Pose:
-        if self._pose is None:
-            self._pose = self._reference.evaluate(self.s)
-        return self._pose
-
-    def heading(self) -> tuple[np.ndarray, np.ndarray]:
-        """``sin`` and ``cos`` of the reference line's heading (computed once, shared by every lane line)."""
-        if self._heading is None:
-            self._heading = (np.sin(self.pose.hdg), np.cos(self.pose.hdg))
-        return self._heading
-
-
 #: Bytes of lane evaluations the roads of one document keep cached together (:class:`~xodrcheck.budget.ByteBudget`;
 #: each road also keeps at most its last few): a 10 km map's roads kept 466 MB after the curvature rules without it.
 EVALUATION_BUDGET = 32 << 20
-
-
-def _evaluation_size(evaluation: _Evaluation) -> int:
-    """Bytes an evaluation holds once its pose is computed, about: ``s`` and its key, every border's jet, elevation,
-    the roll's jets and the pose with its heading (about 160 bytes of Python per array)."""
-    return array_bytes(3 * len(evaluation.borders) + 16, evaluation.s.size)
 
 
 class RoadGeometry:
@@ -168,7 +113,7 @@ class RoadGeometry:
         self._offset = profile.Piecewise(road.lane_offset)
         self._elevation = profile.Piecewise(road.elevation)
         self._roll = profile.Piecewise(road.superelevation)
-        self._evaluations: dict[tuple[int, bytes], _Evaluation] = {}
+        self._evaluations: dict[tuple[int, bytes], Evaluation] = {}
         self._batches: dict[int, profile.Batch] = {}
         self._heights: dict[tuple[int, int], tuple[Lane, profile.Piecewise, profile.Piecewise] | None] = {}
 
@@ -240,7 +185,7 @@ class RoadGeometry:
             self._batches[section_index] = batch
         return batch
 
-    def _evaluate(self, section_index: int, s: np.ndarray) -> _Evaluation:
+    def _evaluate(self, section_index: int, s: np.ndarray) -> Evaluation:
         """Reference pose, border jets, superelevation and elevation at ``s`` (a few recent queries are cached, so
         asking for several lanes at the same ``s`` costs one evaluation)."""
         key = (section_index, s.tobytes())
@@ -257,9 +202,8 @@ class RoadGeometry:
             else:
                 cos = sin = None
             offset, elevation, *laws = self._batch(section_index).jets(s)
-            found = _Evaluation(
-                self.reference_line, s.copy(), self._border_jets(section_index, offset, laws), cos, sin, elevation[0]
-            )
+            jets = border_jets(self.side_lanes(section_index), offset, laws)
+            found = Evaluation(self.reference_line, s.copy(), jets, cos, sin, elevation[0])
             if len(self._evaluations) >= self._CACHED_EVALUATIONS:
                 oldest = next(iter(self._evaluations))
                 del self._evaluations[oldest]
@@ -267,28 +211,8 @@ class RoadGeometry:
                     self._budget.discard(self._evaluations, oldest)
             self._evaluations[key] = found
             if self._budget is not None:
-                self._budget.add(self._evaluations, key, _evaluation_size(found))
+                self._budget.add(self._evaluations, key, evaluation_size(found))
         return found
-
-    def _border_jets(self, section_index: int, offset: tuple, laws: list[tuple]) -> dict[int, Jet]:
-        """``t`` of every lane's outer border as a jet (lane 0: the laneOffset line), from the laneOffset's jet and
-        the lanes' width or border jets (in :meth:`_batch` order)."""
-        centre = Jet(*offset)
-        jets = {0: centre}
-        values = iter(laws)
-        for sign, side in zip((+1, -1), self.side_lanes(section_index)):
-            inner = centre
-            for lane, law, is_width in zip(side.lanes, side.laws, side.is_width):
-                if law is None:
-                    outer = inner
-                elif is_width:
-                    width = Jet(*next(values))
-                    outer = inner + width if sign > 0 else inner - width
-                else:
-                    outer = Jet(*next(values))
-                jets[lane.id] = outer
-                inner = outer
-        return jets
 
     def borders(self, section_index: int, s) -> dict[int, np.ndarray]:
         """Lateral ``t`` of each lane's outer border at ``s`` (lane 0: the laneOffset line)."""
@@ -348,15 +272,17 @@ class RoadGeometry:
         if where not in _WHERE:
             raise ValueError(f"where must be one of {_WHERE}, got {where!r}")
         evaluation = self._evaluate(section_index, as_array(s))
-        lateral, height = self._projected(section_index, evaluation, lane_id, where)
+        if lane_id not in evaluation.borders:
+            raise KeyError(f"road {self.road.id}: no lane {lane_id} in lane section {section_index}")
+        lateral, height = projected(self.side_lanes(section_index), evaluation, lane_id, where)
         if raised:
             lateral, height = self._raised(section_index, evaluation, lane_id, where, lateral, height)
-        return self._place(evaluation, lateral, height)
+        return place(evaluation, lateral, height)
 
     def _raised(
         self,
         section_index: int,
-        evaluation: _Evaluation,
+        evaluation: Evaluation,
         lane_id: int,
         where: str,
         lateral: Jet,
@@ -382,115 +308,13 @@ class RoadGeometry:
     def border_curves(self, section_index: int, s) -> dict[int, LanePoints]:
         """Every lane's outer border (and lane 0's line) at ``s``: all the border polylines of the section."""
         evaluation = self._evaluate(section_index, as_array(s))
-        ids, lateral, height = self._stacked_border_lines(section_index, evaluation)
-        p = self._place(evaluation, lateral, height)  # every line at once, one row each
+        ids, lateral, height = stacked_border_lines(self.side_lanes(section_index), evaluation)
+        p = place(evaluation, lateral, height)  # every line at once, one row each
         z = p.z if p.z.ndim == 2 else np.repeat(p.z[None, :], len(ids), axis=0)  # flat road: one z for all
         return {
             lane_id: LanePoints(p.x[k], p.y[k], z[k], p.hdg[k], p.curvature[k], p.speed[k])
             for k, lane_id in enumerate(ids)
         }
-
-    def _stacked_border_lines(
-        self, section_index: int, evaluation: _Evaluation
-    ) -> tuple[list[int], Jet, np.ndarray | float]:
-        """:meth:`_border_lines` as one jet and one height of 2-D arrays, a row per line."""
-        ids, laterals, heights = zip(*self._border_lines(section_index, evaluation))
-        lateral = Jet(
-            np.array([jet.v for jet in laterals]),
-            np.array([jet.d1 for jet in laterals]),
-            np.array([jet.d2 for jet in laterals]),
-        )
-        if all(isinstance(h, float) and h == 0.0 for h in heights):
-            return list(ids), lateral, 0.0
-        n = len(lateral.v[0])
-        return list(ids), lateral, np.array([np.broadcast_to(h, n) for h in heights])
-
-    def _border_lines(
-        self, section_index: int, evaluation: _Evaluation
-    ) -> Iterator[tuple[int, Jet, np.ndarray | float]]:
-        """Lane id, plan-view lateral offset and height of lane 0's line, then of every lane's outer border, in the
-        order of ``evaluation.borders``: one walk outward per side, lane k's line continuing lane k-1's (as
-        :meth:`_projected` computes them one at a time)."""
-        jets = evaluation.borders
-        start = self._centre_line(evaluation)
-        yield 0, *start
-        seen = {0}
-        for side in self.side_lanes(section_index):
-            lateral, height = start
-            inner = jets[0]
-            for lane in side.lanes:
-                outer = jets[lane.id]
-                lateral, height = self._rolled(evaluation, lane, lateral, height, outer - inner)
-                if lane.id not in seen:  # a duplicated id: the first lane with it, as lane_points gives
-                    seen.add(lane.id)
-                    yield lane.id, lateral, height
-                inner = outer
-
-    @staticmethod
-    def _centre_line(evaluation: _Evaluation) -> tuple[Jet, np.ndarray | float]:
-        """Plan-view lateral offset (jet) and height above the reference line of lane 0's line."""
-        centre = evaluation.borders[0]
-        if evaluation.cos is None or evaluation.sin is None:  # no superelevation (both or neither)
-            return centre, 0.0
-        return centre * evaluation.cos, centre.v * evaluation.sin.v
-
-    @staticmethod
-    def _rolled(
-        evaluation: _Evaluation, lane: Lane, lateral: Jet, height: np.ndarray | float, step: Jet
-    ) -> tuple[Jet, np.ndarray | float]:
-        """Lateral offset and height after moving ``step`` (in ``t``) across ``lane``: rolled by the superelevation
-        unless the lane is level or the road has none."""
-        if lane.level or evaluation.cos is None or evaluation.sin is None:
-            return lateral + step, height
-        return lateral + step * evaluation.cos, height + step.v * evaluation.sin.v
-
-    def _projected(
-        self, section_index: int, evaluation: _Evaluation, lane_id: int, where: str
-    ) -> tuple[Jet, np.ndarray | float]:
-        """Plan-view lateral offset (jet) and height above the reference line of a lane line, superelevation applied."""
-        jets = evaluation.borders
-        if lane_id not in jets:
-            raise KeyError(f"road {self.road.id}: no lane {lane_id} in lane section {section_index}")
-        lateral, height = self._centre_line(evaluation)
-        if lane_id == 0:
-            return lateral, height
-        side = self.side_lanes(section_index)[0 if lane_id > 0 else 1]
-        inner = jets[0]
-        for lane in side.lanes:
-            outer = jets[lane.id]
-            if lane.id == lane_id:
-                target = inner if where == "inner" else outer if where == "outer" else (inner + outer).scale(0.5)
-                return self._rolled(evaluation, lane, lateral, height, target - inner)
-            lateral, height = self._rolled(evaluation, lane, lateral, height, outer - inner)
-            inner = outer
-        return lateral, height
-
-    @staticmethod
-    def _bend(pose: Pose, lateral: Jet) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """``A = 1 - q k``, the plan-view speed and the curvature of the offset curve at lateral offset ``lateral``."""
-        q, dq, ddq = lateral.v, lateral.d1, lateral.d2
-        k, dk = pose.curvature, pose.dcurvature
-        a = 1.0 - q * k
-        speed = np.hypot(a, dq)
-        if (speed > 0).all():  # the usual case, without the cost of np.errstate
-            return a, speed, (a * a * k + a * ddq + 2.0 * dq * dq * k + q * dq * dk) / speed**3
-        with np.errstate(divide="ignore", invalid="ignore"):
-            return a, speed, (a * a * k + a * ddq + 2.0 * dq * dq * k + q * dq * dk) / speed**3
-
-    @classmethod
-    def _place(cls, evaluation: _Evaluation, lateral: Jet, height: np.ndarray | float) -> LanePoints:
-        pose = evaluation.pose
-        a, speed, curvature = cls._bend(pose, lateral)
-        q, dq = lateral.v, lateral.d1
-        sin_hdg, cos_hdg = evaluation.heading()
-        return LanePoints(
-            pose.x - q * sin_hdg,
-            pose.y + q * cos_hdg,
-            evaluation.elevation + height,
-            pose.hdg + np.arctan2(dq, a),
-            curvature,
-            speed,
-        )
 
     def border_bending(self, section_index: int, s) -> np.ndarray:
         """At each ``s``, the largest of ``|curvature| * speed^2`` over the section's border lines (lane 0's line
@@ -498,8 +322,8 @@ class RoadGeometry:
         NaN where every one is NaN."""
         evaluation = self._evaluate(section_index, as_array(s))
         pose = evaluation.pose
-        _, lateral, _ = self._stacked_border_lines(section_index, evaluation)
-        _, speed, curvature = self._bend(pose, lateral)
+        _, lateral, _ = stacked_border_lines(self.side_lanes(section_index), evaluation)
+        _, speed, curvature = bend(pose, lateral)
         return np.fmax(np.abs(pose.curvature), np.fmax.reduce(np.abs(curvature) * speed**2, axis=0))
 
     # ---------------------------------------------------------------------------------------------------------------

@@ -11,7 +11,8 @@ the per-section code's, operation for operation, so the results are the same to 
 * profiles (laneOffset, elevation, lane widths and borders) are evaluated elementwise with the same formulas, the
   record in force found by counting starts at or before ``s``, as :class:`~xodrcheck.geometry.profile.Batch`;
 * border jets accumulate outward lane by lane (one array step per lane depth over all sections and sides), and the
-  plan-view lateral offset of each line as ``inner line + (outer - inner)``, as :meth:`RoadGeometry._border_lines`;
+  plan-view lateral offset of each line as ``inner line + (outer - inner)``, as
+  :func:`xodrcheck.lane_lines.border_lines`;
 * the reference line is evaluated element run by element run; elements whose evaluation depends on the whole batch
   of points (spirals, poly3, paramPoly3: series lengths and Newton iterations are chosen per call) are evaluated once
   per section, with exactly the points the per-section code gives them;

@@ -102,7 +102,7 @@ class Lines:
 
 def lateral_lines(entries: Sequence[Entry], s: np.ndarray, offsets: np.ndarray) -> Lines:
     """Plan-view lateral offset jets of every border line (lane 0's line and each lane's outer border) of each entry
-    at its samples: :meth:`RoadGeometry._border_lines` without superelevation, for all entries at once."""
+    at its samples: :func:`xodrcheck.lane_lines.border_lines` without superelevation, for all entries at once."""
     counts = np.diff(offsets)
     ids: list[list[int]] = []
     laws = Laws()
@@ -152,7 +152,7 @@ def lateral_lines(entries: Sequence[Entry], s: np.ndarray, offsets: np.ndarray) 
 
 
 def bend(lines: Lines, pose: Pose) -> tuple[np.ndarray, np.ndarray]:
-    """Plan-view speed and curvature of every pair's line (:meth:`RoadGeometry._bend`)."""
+    """Plan-view speed and curvature of every pair's line (:func:`xodrcheck.lane_lines.bend`)."""
     at = lines.sample
     q, dq, ddq = lines.q, lines.dq, lines.ddq
     k, dk = pose.curvature[at], pose.dcurvature[at]
