@@ -1,7 +1,7 @@
 """Lanes linked across a lane-section boundary inside a road, for ``lane-border-discontinuous`` (``L101``,
-:mod:`xodrcheck.rules.link`): which lanes must meet (a lane and the lane it continues as, or the band of lanes side by
-side it splits into or merges from), the band a lane should have been linked to all of, the heights of their edges,
-and how the finding words lanes and changes.
+:mod:`xodrcheck.rules.link`): the lane links across the boundary, which lanes must meet (a lane and the lane it
+continues as, or the band of lanes side by side it splits into or merges from), the band a lane should have been
+linked to all of, the heights of their edges, and how the finding words lanes and changes.
 """
 
 from __future__ import annotations
@@ -10,7 +10,22 @@ import itertools
 from collections.abc import Iterator
 
 from xodrcheck.lanes import RoadGeometry
+from xodrcheck.model import LaneSection
 from xodrcheck.rules.sampled import SectionLines
+
+
+def boundary_links(before: LaneSection, after: LaneSection) -> dict[tuple[int, int], int]:
+    """The lane links across the boundary between two consecutive sections, ``(lane before, lane after) -> line``: the
+    earlier lanes' ``<successor>`` records, then the later lanes' ``<predecessor>`` records (a link given both ways
+    keeps the first one's line)."""
+    pairs: dict[tuple[int, int], int] = {}
+    for lane in before.lanes:
+        for nxt in lane.successors:
+            pairs.setdefault((lane.id, nxt), lane.line)
+    for lane in after.lanes:
+        for prev in lane.predecessors:
+            pairs.setdefault((prev, lane.id), lane.line)
+    return pairs
 
 
 def inner_pairs(side):

@@ -38,6 +38,7 @@ from xodrcheck.rules import road_uids as RU
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.geometry import profile_steps
 from xodrcheck.rules.lane_boundary import (
+    boundary_links,
     change_text,
     group_heights,
     inner_pairs,
@@ -297,14 +298,7 @@ def lane_border_discontinuous(ctx: Context):
         sections = road.lane_sections
         surface_steps: set[float] | None = None
         for i in range(1, len(sections)):
-            before, after = sections[i - 1], sections[i]
-            pairs: dict[tuple[int, int], int] = {}
-            for lane in before.lanes:
-                for nxt in lane.successors:
-                    pairs.setdefault((lane.id, nxt), lane.line)
-            for lane in after.lanes:
-                for prev in lane.predecessors:
-                    pairs.setdefault((prev, lane.id), lane.line)
+            pairs = boundary_links(sections[i - 1], sections[i])
             if not pairs:
                 continue
             if surface_steps is None:  # the road's own elevation or superelevation steps: profile-step says so
