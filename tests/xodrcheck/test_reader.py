@@ -8,6 +8,7 @@ import inspect
 import os
 
 import pytest
+from lxml import etree
 
 from tests.xodrcheck.readerdocs import (
     CENTER,
@@ -565,3 +566,22 @@ def test_fast_constructors_build_what_the_class_builds(cls):
     assert inspect.signature(make).parameters.keys() == inspect.signature(cls).parameters.keys()
     with pytest.raises(TypeError):
         make(*values[: len(required) - 1])
+
+
+def test_a_short_file_of_many_lines_is_parsed_again_with_its_text_nodes():
+    """A file under the size from which lines are counted before the parse (1 MiB) can still have 65,535 lines (blank
+    ones, here): the parse without text nodes shows it by its last element's line and is done again with them, so the
+    lines past 65,535 are right."""
+    from xodrcheck.reader import read_keeping_tree
+    from xodrcheck.reader.xmlsafe import _COUNT_LINES_FROM, parse
+
+    lanes = "".join(f'\n\n\n\n\n\n\n\n<lane id="-{k}" type="driving" level="false"/>' for k in range(1, 9001))
+    doc = xodr(road(lanes=f"<lanes>{section(CENTER, f'<right>{lanes}</right>')}</lanes>"))
+    assert len(doc) < _COUNT_LINES_FROM and doc.count(b"\n") > 65535
+    root, _ = parse(doc, keep_blank_text=False)
+    assert root.find(".//right")[0].tail is not None  # parsed again, keeping the text nodes
+    without = etree.fromstring(doc, etree.XMLParser(remove_blank_text=True))
+    assert without.find(".//right")[-1].sourceline == 65535  # what the first parse saw: the line saturated
+    lines = [lane.line for lane in read(doc).document.roads[0].lane_sections[0].right]
+    assert lines[-1] > 72000 and lines == sorted(lines)
+    assert read(doc).document == read_keeping_tree(doc)[0].document

@@ -51,6 +51,10 @@ _ENTITY_DECL = re.compile(rb"<!ENTITY\s+(%\s+)?([^\s\"'>]+)")
 _PARSER_HINT = re.compile(r",?\s*use XML_PARSE_HUGE option")
 #: From this line on libxml2 keeps an element's line number through the text nodes beside it (XML_PARSE_BIG_LINES).
 _BIG_LINES = 65535
+#: Files this long have their lines counted before the parse to know whether the text nodes must be kept; shorter ones
+#: (whose 65,535th line would mean fewer than 16 bytes a line) are parsed without them and parsed again with them if
+#: the last element's line shows it was needed: counting costs about 2 % of a read.
+_COUNT_LINES_FROM = 1 << 20
 _SHOW = 60  # characters of a raw value or of parser text shown in a message
 
 
@@ -267,7 +271,35 @@ def parse(
         return None, findings
     data = stripped
 
-    keep_blank_text = keep_blank_text or data.count(b"\n") >= _BIG_LINES
+    if not keep_blank_text and len(data) >= _COUNT_LINES_FROM:
+        keep_blank_text = data.count(b"\n") >= _BIG_LINES
+    # the parse adds to (and may reword) the findings so far: a copy, in case it is done again
+    root, found = _parse(data, list(findings), recover, strip_namespaces, keep_blank_text, declared)
+    if not keep_blank_text and root is not None and _past_big_lines(root):
+        del root  # the tree without text nodes, freed before the parse that keeps them
+        root, found = _parse(data, findings, recover, strip_namespaces, True, declared)
+    return root, found
+
+
+def _past_big_lines(root: etree._Element) -> bool:
+    """Whether the last element of the tree (the one starting last) starts at line 65535 or later, or at a line
+    libxml2 does not know: the elements past that line have their lines only through the text nodes beside them."""
+    el = root
+    while len(el):
+        el = el[-1]
+    line = el.sourceline
+    return line is None or line >= _BIG_LINES
+
+
+def _parse(
+    data: bytes,
+    findings: list[Finding],
+    recover: bool,
+    strip_namespaces: bool,
+    keep_blank_text: bool,
+    declared: frozenset[str],
+) -> tuple[etree._Element | None, list[Finding]]:
+    """:func:`parse` once the bytes are ready for lxml."""
     parser = _parser(recover=False, keep_blank_text=keep_blank_text)
     try:
         root = etree.fromstring(data, parser)
