@@ -29,7 +29,7 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Road
 from xodrcheck.rules.context import Context, placed_lane_ids
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import _BATCH_SAMPLES, lines_in_order, section_samples, usable
+from xodrcheck.rules.sampled import BATCH_SAMPLES, lines_in_order, section_samples, usable
 
 
 def _sections(ctx: Context):
@@ -126,7 +126,7 @@ def _centre_hits(ctx: Context, bound: float) -> dict[tuple[str, int], dict[int, 
             keys.append((road.id, index))
             grids.append(s)
             wanted.append(list(dict.fromkeys(lanes)))
-    for lo, hi, found in centres.centre_batches(entries, grids, wanted, _BATCH_SAMPLES):
+    for lo, hi, found in centres.centre_batches(entries, grids, wanted, BATCH_SAMPLES):
         if found is None:
             for key in keys[lo:hi]:
                 del out[key]  # lane by lane

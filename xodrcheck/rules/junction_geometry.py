@@ -26,7 +26,7 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Connection, ContactPoint, JunctionType, Road
 from xodrcheck.rules.context import Context, placed_lane_ids, travel_direction
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import _BATCH_SAMPLES, end_s, road_end, section_samples, usable
+from xodrcheck.rules.sampled import BATCH_SAMPLES, end_s, road_end, section_samples, usable
 
 if TYPE_CHECKING:
     import shapely
@@ -141,7 +141,7 @@ def _paths(
 
 def _ahead(ctx: Context):
     """:func:`_groups`, each with the centre lines its paths follow (:data:`_Known`), evaluated ahead for a run of
-    groups at a time (:func:`_known`; at most about ``_BATCH_SAMPLES`` points kept)."""
+    groups at a time (:func:`_known`; at most about ``BATCH_SAMPLES`` points kept)."""
     run: list[tuple] = []
     wanted: dict[tuple[str, int], tuple[Road, list[int]]] = {}
     size = 0
@@ -157,7 +157,7 @@ def _ahead(ctx: Context):
                         lanes.append(lane_id)
                         size += len(section_samples(ctx, road, index))
         run.append(group)
-        if size >= _BATCH_SAMPLES:
+        if size >= BATCH_SAMPLES:
             known = _known(ctx, wanted)
             yield from ((*g, known) for g in run)
             run, wanted, size = [], {}, 0
@@ -182,7 +182,7 @@ def _known(ctx: Context, wanted: dict[tuple[str, int], tuple[Road, list[int]]]) 
             grids.append(s)
             lanes.append(ids)
     out: _Known = {}
-    for lo, _hi, found in centres.centre_batches(entries, grids, lanes, _BATCH_SAMPLES):
+    for lo, _hi, found in centres.centre_batches(entries, grids, lanes, BATCH_SAMPLES):
         if found is None:
             continue
         x, y = found.all_xy()

@@ -72,6 +72,11 @@ def _lane_pieces(ctx: Context, road: Road, index: int):
     return cache[key]
 
 
+#: Samples of the file-wide border pass evaluated together: half of :data:`~xodrcheck.rules.sampled.BATCH_SAMPLES`,
+#: as every sample holds the borders of all of a section's lanes.
+_BORDER_BATCH_SAMPLES = 1 << 16
+
+
 def _all_borders(ctx: Context, nodes: dict) -> Iterator[tuple[tuple[int, int], dict[int, np.ndarray]]]:
     """(key, :meth:`RoadGeometry.borders` at the piece nodes) of every section :mod:`xodrcheck.roadpass` covers,
     evaluated in batches of sections (the same numbers as section by section, with a fraction of the numpy calls)."""
@@ -85,7 +90,7 @@ def _all_borders(ctx: Context, nodes: dict) -> Iterator[tuple[tuple[int, int], d
             keys.append(key)
             entries.append((geometry, key[1]))
             samples.append(found[2])
-    for lo, hi in batches([len(s) for s in samples], 1 << 16):
+    for lo, hi in batches([len(s) for s in samples], _BORDER_BATCH_SAMPLES):
         yield from zip(keys[lo:hi], roadpass.section_borders(entries[lo:hi], samples[lo:hi]))
 
 

@@ -186,7 +186,7 @@ class _SectionCache:
         self._window: dict[tuple[str, int], SectionLines] = {}
         self._window_budget = ByteBudget(LINES_BUDGET - self._resident_limit)
         #: Samples of a batch started away from where the last one ended: all at once when everything fits.
-        self._first = _BATCH_SAMPLES if fits else _FIRST_BATCH_SAMPLES
+        self._first = BATCH_SAMPLES if fits else _FIRST_BATCH_SAMPLES
         self._next = -1
         self._size = self._first
 
@@ -198,7 +198,7 @@ class _SectionCache:
     @property
     def fits(self) -> bool:
         """Whether every listed section's lines fit :data:`LINES_BUDGET` (then all are kept)."""
-        return self._first == _BATCH_SAMPLES
+        return self._first == BATCH_SAMPLES
 
     def position(self, key: tuple[str, int]) -> int | None:
         """The place of a listed section in document order (``None`` for the others)."""
@@ -261,7 +261,7 @@ class _SectionCache:
     def evaluate_all(self) -> dict[tuple[str, int], SectionLines]:
         """Every listed section's lines, evaluated in full batches (not kept)."""
         out: dict[tuple[str, int], SectionLines] = {}
-        for lo, hi in batches([len(s) for s in self._grids], _BATCH_SAMPLES):
+        for lo, hi in batches([len(s) for s in self._grids], BATCH_SAMPLES):
             _evaluate_batch(self._entries[lo:hi], self._keys[lo:hi], self._grids[lo:hi], out)
         return out
 
@@ -278,8 +278,8 @@ class _SectionCache:
         """Evaluate the batch of listed sections starting at ``position`` and keep it (returned whole: the window
         may drop its first sections while keeping its last). In a file that does not fit, a batch takes at most a
         quarter of the window (the temporaries of its evaluation are several times its size); in one that fits (no
-        window: all is kept), it is bounded by :data:`_BATCH_SAMPLES` only."""
-        size = min(2 * self._size, _BATCH_SAMPLES) if position == self._next else self._first
+        window: all is kept), it is bounded by :data:`BATCH_SAMPLES` only."""
+        size = min(2 * self._size, BATCH_SAMPLES) if position == self._next else self._first
         room = LINES_BUDGET if self.fits else max(self._window_budget.limit // 4, 1)
         end, total, weight = position, 0, 0
         while end < len(self._grids) and (
@@ -314,9 +314,10 @@ def _all_sections(ctx: Context) -> dict[tuple[str, int], SectionLines]:
     return _SectionCache(ctx).evaluate_all()
 
 
-#: Samples evaluated together by :func:`_all_sections` (the temporaries of one pass scale with it: a 10 km map's
-#: sections at once took about 1 GB more than the results; batches keep that to tens of MB at the same speed).
-_BATCH_SAMPLES = 1 << 17
+#: Samples evaluated together by :func:`_all_sections` and by the file-wide passes of the curvature and junction
+#: rules (the temporaries of one pass scale with it: a 10 km map's sections at once took about 1 GB more than the
+#: results; batches keep that to tens of MB at the same speed).
+BATCH_SAMPLES = 1 << 17
 #: Estimated bytes of the lines :func:`lines_in_order` evaluates together and drops once read (the temporaries of a
 #: batch are a few times its size).
 _PASSING_BYTES = 12 << 20
@@ -425,7 +426,7 @@ def _end_curves(ctx: Context) -> dict[tuple[str, int], dict[int, LanePoints]]:
                 keys.append((road.id, index))
                 grids.append(s)
     found = {}
-    for lo, hi in batches([len(s) for s in grids], _BATCH_SAMPLES):
+    for lo, hi in batches([len(s) for s in grids], BATCH_SAMPLES):
         points = roadpass.section_points(entries[lo:hi], grids[lo:hi])
         for key, p in zip(keys[lo:hi], points or ()):
             found[key] = {
