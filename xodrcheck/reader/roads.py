@@ -222,10 +222,11 @@ def build_road(ctx: Context, el: etree._Element) -> Road | None:
         ctx.road = None
 
 
-def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
-    get = el.get
+def _children(ctx: Context, el: etree._Element) -> tuple[dict[str, etree._Element], list[etree._Element]]:
+    """The first of each child of a road that may appear once (a repeated one is reported and skipped), and its
+    ``<lanes>`` (one per lane layer in 1.9: :func:`build_layers` sorts them out)."""
     first: dict[str, etree._Element] = {}
-    lanes: list[etree._Element] = []  # one per lane layer (1.9), see build_layers
+    lanes: list[etree._Element] = []
     for child in el:
         tag = child.tag
         if tag == "lanes":
@@ -235,39 +236,54 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
                 ctx.repeated(child, first[tag], RU.GEOMETRY_ONLY_ONE_REFLINE if tag == "planView" else None)
             else:
                 first[tag] = child
+    return first, lanes
 
-    pv = first.get("planView")
-    if pv is None:
+
+def _reference_line(ctx: Context, el: etree._Element, plan_view: etree._Element | None) -> tuple[Geometry, ...]:
+    if plan_view is None:
         ctx.report(
             R.MISSING_ELEMENT,
             f"{describe(el)} has no <planView>; the road has no reference line",
             el,
             uid=RU.GEOMETRY_REFLINE_EXISTS,
         )
-        plan_view: tuple[Geometry, ...] = ()
-    else:
-        plan_view = _plan_view(ctx, pv)
+        return ()
+    return _plan_view(ctx, plan_view)
 
-    raw = get("length")
+
+def _length(ctx: Context, el: etree._Element, plan_view: tuple[Geometry, ...]) -> float:
+    """The road's ``length``; when it is missing or unusable (with a finding), the sum of its geometries' lengths."""
     try:
-        length = ctx.numbers[raw]
-        valid = length >= 0.0
+        length = ctx.numbers[el.get("length")]
+        if length >= 0.0:
+            return length
     except (TypeError, ValueError):
-        valid = False
-    if not valid:
-        total = sum(g.length for g in plan_view)
-        given = ctx.number(el, "length", f"the sum of its geometry lengths ({total:g}) is used", nonneg=True)
-        length = total if given is None else given
+        pass
+    total = sum(g.length for g in plan_view)
+    given = ctx.number(el, "length", f"the sum of its geometry lengths ({total:g}) is used", nonneg=True)
+    return total if given is None else given
 
-    raw_junction = get("junction")
-    if raw_junction is None:
+
+def _junction(ctx: Context, el: etree._Element) -> str | None:
+    """The id of the junction the road belongs to; ``None`` for "-1" (outside any junction), or with a finding when
+    the attribute is missing or empty."""
+    raw = el.get("junction")
+    if raw is None:
         ctx.missing(el, "junction", 'read as "-1" (not inside a junction)')
-        junction = None
-    else:
-        junction = None if raw_junction.strip() == "-1" else raw_junction
-        if junction is not None and not junction.strip():
-            ctx.invalid(el, "junction", raw_junction, "which is empty", 'read as "-1" (not inside a junction)')
-            junction = None
+        return None
+    junction = None if raw.strip() == "-1" else raw
+    if junction is not None and not junction.strip():
+        ctx.invalid(el, "junction", raw, "which is empty", 'read as "-1" (not inside a junction)')
+        return None
+    return junction
+
+
+def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
+    get = el.get
+    first, lanes = _children(ctx, el)
+    plan_view = _reference_line(ctx, el, first.get("planView"))
+    length = _length(ctx, el, plan_view)
+    junction = _junction(ctx, el)
 
     rule = TrafficRule.RHT
     if get("rule") is not None:
