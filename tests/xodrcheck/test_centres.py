@@ -82,7 +82,7 @@ def test_c001_and_j101_find_the_same_with_lines_evaluated_lane_by_lane(
     together = run()
     assert together or "fabriksgatan" in name or "rolled" in name  # Town01, Town03, the 3-way junction find some
     for module in (curvature, junction_geometry):  # many small batches (a big map's): the same findings
-        monkeypatch.setattr(module, "_BATCH_SAMPLES", 64)
+        monkeypatch.setattr(module, "BATCH_SAMPLES", 64)
     assert run() == together
     monkeypatch.setattr(curvature, "_centre_hits", lambda ctx, bound: {})
     monkeypatch.setattr(junction_geometry, "_known", lambda ctx, wanted: {})

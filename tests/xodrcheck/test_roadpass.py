@@ -118,7 +118,7 @@ def test_checker_grid_lines_in_batches_are_the_one_pass_numbers(corpus_dir: Path
     document = read(path).document
 
     def lines(batch: int) -> dict:
-        monkeypatch.setattr(sampled, "_BATCH_SAMPLES", batch)
+        monkeypatch.setattr(sampled, "BATCH_SAMPLES", batch)
         return sampled._all_sections(Context(document, Config(), path=str(path), data=None))
 
     whole, batched = lines(1 << 40), lines(1000)
