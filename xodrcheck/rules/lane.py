@@ -1,102 +1,23 @@
 """Lane topology (``L0xx``): centre lanes, lane ids, and lane links across lane sections and road links.
 
-A *joint* is where the lanes of one lane section end and those of another begin: between two lane sections of a
-road, or at a road link between two roads. Seen from one side, a joint is (this road, section, end) touching
-(the other road, section, end); lane links at that end (``predecessor`` at a start, ``successor`` at an end) name
-lanes of the other side. Joints into a junction are the junction's (its ``laneLink`` elements, see
-:mod:`xodrcheck.rules.junction`); a connecting road's own links to the roads it joins are joints like any other.
+The rules here walk *joints*, where the lanes of one lane section end and those of another begin (between two lane
+sections of a road, or at a road link between two roads). What a joint is and how to list them (:class:`Side`,
+:class:`Joint`, :func:`joints`, :func:`side_lanes`, :func:`pair_key`) moved to :mod:`xodrcheck.rules.lane_joints`;
+they are named here as before (:mod:`.lane_attributes` and :mod:`.lane_links` import them from here).
 """
 
 from __future__ import annotations
 
-from collections.abc import Iterator
 from typing import Any
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
-from xodrcheck.model import DRIVABLE_LANE_TYPES, ContactPoint, ElementType, Lane, LaneSection, LaneType, Road
+from xodrcheck.model import DRIVABLE_LANE_TYPES, ContactPoint, Lane, LaneType
 from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context, link_at, travel_direction
+from xodrcheck.rules.context import Context, travel_direction
+from xodrcheck.rules.lane_joints import WORD, joints, pair_key, side_lanes
+from xodrcheck.rules.lane_joints import Joint as Joint  # named here as before
+from xodrcheck.rules.lane_joints import Side as Side
 from xodrcheck.rules.registry import rule
-
-_WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}
-
-
-@dataclass(frozen=True, slots=True)
-class Side:
-    """One side of a joint: a lane section of a road, at its start or end."""
-
-    road: Road
-    index: int
-    end: ContactPoint
-
-    @property
-    def section(self) -> LaneSection:
-        return self.road.lane_sections[self.index]
-
-    @property
-    def s(self) -> float:
-        return self.section.s if self.end is ContactPoint.START else self.road.section_end(self.index)
-
-    def links(self, lane: Lane) -> tuple[int, ...]:
-        """The lane's links across this end."""
-        return lane.predecessors if self.end is ContactPoint.START else lane.successors
-
-    def describe(self) -> str:
-        return f"road {self.road.id} lane section s={self.section.s:g}"
-
-    def where(self, lane_id: int) -> dict:
-        return {"road": self.road.id, "lane": lane_id, "section_s": self.section.s, "s": self.s}
-
-
-@dataclass(frozen=True, slots=True)
-class Joint:
-    """Where a lane meets another across a lane-section boundary or a road link: both sides and whether the links
-    agree."""
-
-    mine: Side
-    other: Side
-    #: Whether the other side's links at this joint point back here (always inside a road; at a road link when the
-    #: other road links back to this one).
-    mutual: bool
-
-    @property
-    def same_orientation(self) -> bool:
-        """Whether the two sides' s run the same way through the joint (an end meeting a start)."""
-        return self.mine.end is not self.other.end
-
-
-def joints(ctx: Context) -> Iterator[Joint]:
-    """Every joint, once from each side that has lanes."""
-    for road in ctx.document.roads:
-        sections = road.lane_sections
-        for i in range(len(sections) - 1):
-            yield Joint(Side(road, i, ContactPoint.END), Side(road, i + 1, ContactPoint.START), True)
-            yield Joint(Side(road, i + 1, ContactPoint.START), Side(road, i, ContactPoint.END), True)
-        if not sections:
-            continue
-        for end in (ContactPoint.START, ContactPoint.END):
-            link = link_at(road, end)
-            if link is None or link.element_type is not ElementType.ROAD or link.contact_point is None:
-                continue
-            target = ctx.road(link.element_id)
-            if target is None or not target.lane_sections:
-                continue
-            back = link_at(target, link.contact_point)
-            mutual = back is not None and back.element_type is ElementType.ROAD and back.element_id == road.id
-            index, target_index = ctx.section_index_at(road, end), ctx.section_index_at(target, link.contact_point)
-            if index is None or target_index is None:  # both roads have lane sections (checked above)
-                continue
-            yield Joint(Side(road, index, end), Side(target, target_index, link.contact_point), mutual)
-
-
-def side_lanes(section: LaneSection) -> tuple[Lane, ...]:
-    return tuple(lane for lane in section.lanes if lane.id != 0)
-
-
-def pair_key(a: Side, a_id: int, b: Side, b_id: int) -> frozenset:
-    return frozenset({(a.road.id, a.index, a.end, a_id), (b.road.id, b.index, b.end, b_id)})
-
 
 # ------------------------------------------------------------------------------------------------ centre lane, ids
 _CENTRE_ID = U.CENTER_LANE_ID
@@ -336,7 +257,7 @@ def lane_not_continued(ctx: Context):
             across = "the next lane section" if mine.road is other.road else f"road {other.road.id}"
             yield lane_not_continued.finding(
                 f"{mine.describe()}: lane {lane.id} ({lane.type.value}, {width:.2f} m wide at its "
-                f"{mine.end.value}) has no {_WORD[mine.end]} in {across}; link it, or let it "
+                f"{mine.end.value}) has no {WORD[mine.end]} in {across}; link it, or let it "
                 f"{'open' if mine.end is ContactPoint.START else 'close'} at zero width",
                 severity=_continuity_severity(lane),
                 line=lane.line or None,
@@ -379,8 +300,8 @@ def lane_link_not_reciprocal(ctx: Context):
                 if target is None or target_id == 0 or lane.id in other.links(target):
                     continue
                 yield lane_link_not_reciprocal.finding(
-                    f"{mine.describe()}: lane {lane.id}'s {_WORD[mine.end]} is lane {target_id} of "
-                    f"{other.describe()}, but that lane's {_WORD[other.end]} does not name lane {lane.id}",
+                    f"{mine.describe()}: lane {lane.id}'s {WORD[mine.end]} is lane {target_id} of "
+                    f"{other.describe()}, but that lane's {WORD[other.end]} does not name lane {lane.id}",
                     line=target.line or None,
                     **other.where(target_id),
                 )
@@ -431,7 +352,7 @@ def lane_link_direction(ctx: Context):
                     continue
                 seen.add(key)
                 yield lane_link_direction.finding(
-                    f"{mine.describe()}: lane {lane.id}'s {_WORD[mine.end]} is lane {target_id} of "
+                    f"{mine.describe()}: lane {lane.id}'s {WORD[mine.end]} is lane {target_id} of "
                     f"{other.describe()}, whose traffic runs the other way "
                     f"({'an end meets a start' if joint.same_orientation else f'two {mine.end.value}s meet'})",
                     line=lane.line or None,
@@ -489,7 +410,7 @@ def zero_width_lane_linked(ctx: Context):
                     seen.add(key)
                     yield zero_width_lane_linked.finding(
                         f"{mine.describe()}: lane {lane.id} has zero width at its {mine.end.value} but a "
-                        f"{_WORD[mine.end]} (lane {', '.join(map(str, targets))}); a lane that "
+                        f"{WORD[mine.end]} (lane {', '.join(map(str, targets))}); a lane that "
                         f"{'opens' if mine.end is ContactPoint.START else 'closes'} has none",
                         uid=_own_zero_width_uid(ctx, mine.end),
                         line=lane.line or None,
@@ -502,7 +423,7 @@ def zero_width_lane_linked(ctx: Context):
                     continue
                 seen.add(key)
                 yield zero_width_lane_linked.finding(
-                    f"{mine.describe()}: lane {lane.id}'s {_WORD[mine.end]} is lane {target_id} of "
+                    f"{mine.describe()}: lane {lane.id}'s {WORD[mine.end]} is lane {target_id} of "
                     f"{other.describe()}, which has zero width there (it "
                     f"{'opens' if other.end is ContactPoint.START else 'closes'}); link the continuing lane instead",
                     uid=U.LINK_NEW_LANE_APPEAR,
