@@ -103,12 +103,18 @@ def render(
     written."""
     fmt = image_format(output)
     plt = pyplot("junctionart render")
-    from matplotlib.collections import LineCollection, PolyCollection
-    from matplotlib.lines import Line2D
-    from matplotlib.patches import Patch
+    doc = _read_map(source)
+    layered = _heights_vary(doc)
+    shapes = _gather(doc, layered)
+    fig, ax = _draw(plt, shapes, layered, size)
+    n_roads, n_j = _label(ax, doc, source, title, shapes)
+    _save(plt, fig, output, dpi, fmt)
+    return Rendered(Path(output), fmt, n_roads, n_j)
 
+
+def _read_map(source: str | Path):
+    """The document of ``source``; :class:`InputError` when it cannot be read, or not whole, or has no road."""
     from xodrcheck.findings import ReadError
-    from xodrcheck.lanes import geometry_of
     from xodrcheck.reader import read
 
     try:
@@ -121,84 +127,139 @@ def render(
     doc = result.document
     if doc is None or not doc.roads:
         raise InputError(f"{source}: no road could be read")
+    return doc
+
+
+class _Shapes:
+    """What :func:`render` draws, gathered road by road: polygons (lane pieces, and on a map whose heights vary the
+    reference-line strips) with their colours and mean heights, the flat reference lines, and whether any strip was
+    drawn."""
+
+    __slots__ = ("colours", "drawn_refs", "heights", "polys", "refs")
+
+    def __init__(self) -> None:
+        self.polys: list[np.ndarray] = []
+        self.colours: list[str] = []
+        self.heights: list[float] = []
+        self.refs: list[np.ndarray] = []
+        self.drawn_refs = False
+
+    def add(self, ring: np.ndarray, colour: str, height: float) -> None:
+        self.polys.append(ring)
+        self.colours.append(colour)
+        self.heights.append(height)
+
+
+def _gather(doc, layered: bool) -> _Shapes:
+    """The lanes and reference lines of every road of ``doc``; a road the geometry cannot evaluate is left out of the
+    picture (what it added before failing stays), never fatal."""
+    from xodrcheck.lanes import geometry_of
+
     geos = geometry_of(doc)
-    polys: list[np.ndarray] = []
-    colours: list[str] = []
-    heights: list[float] = []
-    refs: list[np.ndarray] = []
-    layered = _heights_vary(doc)
-    drawn_refs = False
+    shapes = _Shapes()
     for road in doc.roads:
         try:
             geo = geos[road.id]
-            in_junction = road.junction is not None
-            for idx, sec in enumerate(road.lane_sections):
-                s0, s1 = sec.s, road.section_end(idx)
-                if s1 - s0 <= 1e-9:
-                    continue
-                s = np.linspace(s0, s1, max(2, min(400, int((s1 - s0) / 2.0) + 2)))
-                z = geo.elevation(s)
-                for lane in (*sec.left, *sec.right):
-                    inner = geo.lane_points(idx, lane.id, s, where="inner")
-                    outer = geo.lane_points(idx, lane.id, s, where="outer")
-                    colour = JUNCTION_COLOUR if in_junction else COLOURS.get(lane.type.value, OTHER_COLOUR)
-                    for lo, hi in _pieces(len(s), layered):
-                        ring = np.column_stack(
-                            [
-                                np.concatenate([inner.x[lo:hi], outer.x[lo:hi][::-1]]),
-                                np.concatenate([inner.y[lo:hi], outer.y[lo:hi][::-1]]),
-                            ]
-                        )
-                        if not np.all(np.isfinite(ring)):
-                            continue
-                        polys.append(ring)
-                        colours.append(colour)
-                        heights.append(float(z[lo:hi].mean()))
-            s = np.linspace(0.0, road.length, max(2, min(400, int(road.length / 2.0) + 2)))
-            pose = geo.reference(s)
-            if not in_junction and not layered:
-                refs.append(np.column_stack([pose.x, pose.y]))
-            elif not in_junction:  # a strip among the lanes, above the road's own pieces
-                z = geo.elevation(s)
-                nx, ny = -np.sin(pose.hdg) * REFERENCE_HALF, np.cos(pose.hdg) * REFERENCE_HALF
-                for lo, hi in _pieces(len(s), layered):
-                    xs, ys = pose.x[lo:hi], pose.y[lo:hi]
-                    ring = np.column_stack(
-                        [
-                            np.concatenate([xs + nx[lo:hi], (xs - nx[lo:hi])[::-1]]),
-                            np.concatenate([ys + ny[lo:hi], (ys - ny[lo:hi])[::-1]]),
-                        ]
-                    )
-                    polys.append(ring)
-                    colours.append(REFERENCE_COLOUR)
-                    heights.append(float(z[lo:hi].mean()) + REFERENCE_LIFT)
-                drawn_refs = True
-        except (ArithmeticError, ValueError, KeyError, IndexError, TypeError):  # a road the geometry cannot
-            # evaluate is left out of the picture, never fatal
+            _add_lanes(shapes, road, geo, layered)
+            _add_reference(shapes, road, geo, layered)
+        except (ArithmeticError, ValueError, KeyError, IndexError, TypeError):
             continue
+    return shapes
+
+
+def _add_lanes(shapes: _Shapes, road, geo, layered: bool) -> None:
+    """One polygon per side lane of each of ``road``'s lane sections (per piece when ``layered``), coloured by lane
+    type, or in :data:`JUNCTION_COLOUR` on a connecting road; pieces that do not evaluate to finite numbers are
+    left out."""
+    in_junction = road.junction is not None
+    for idx, sec in enumerate(road.lane_sections):
+        s0, s1 = sec.s, road.section_end(idx)
+        if s1 - s0 <= 1e-9:
+            continue
+        s = np.linspace(s0, s1, max(2, min(400, int((s1 - s0) / 2.0) + 2)))
+        z = geo.elevation(s)
+        for lane in (*sec.left, *sec.right):
+            inner = geo.lane_points(idx, lane.id, s, where="inner")
+            outer = geo.lane_points(idx, lane.id, s, where="outer")
+            colour = JUNCTION_COLOUR if in_junction else COLOURS.get(lane.type.value, OTHER_COLOUR)
+            for lo, hi in _pieces(len(s), layered):
+                ring = np.column_stack(
+                    [
+                        np.concatenate([inner.x[lo:hi], outer.x[lo:hi][::-1]]),
+                        np.concatenate([inner.y[lo:hi], outer.y[lo:hi][::-1]]),
+                    ]
+                )
+                if not np.all(np.isfinite(ring)):
+                    continue
+                shapes.add(ring, colour, float(z[lo:hi].mean()))
+
+
+def _add_reference(shapes: _Shapes, road, geo, layered: bool) -> None:
+    """``road``'s reference line (none for a connecting road): a thin line on a flat map; where heights vary, a strip
+    of :data:`REFERENCE_HALF` among the lanes, in pieces lifted by :data:`REFERENCE_LIFT` above the road's own."""
+    in_junction = road.junction is not None
+    s = np.linspace(0.0, road.length, max(2, min(400, int(road.length / 2.0) + 2)))
+    pose = geo.reference(s)
+    if not in_junction and not layered:
+        shapes.refs.append(np.column_stack([pose.x, pose.y]))
+    elif not in_junction:  # a strip among the lanes, above the road's own pieces
+        z = geo.elevation(s)
+        nx, ny = -np.sin(pose.hdg) * REFERENCE_HALF, np.cos(pose.hdg) * REFERENCE_HALF
+        for lo, hi in _pieces(len(s), layered):
+            xs, ys = pose.x[lo:hi], pose.y[lo:hi]
+            ring = np.column_stack(
+                [
+                    np.concatenate([xs + nx[lo:hi], (xs - nx[lo:hi])[::-1]]),
+                    np.concatenate([ys + ny[lo:hi], (ys - ny[lo:hi])[::-1]]),
+                ]
+            )
+            shapes.add(ring, REFERENCE_COLOUR, float(z[lo:hi].mean()) + REFERENCE_LIFT)
+        shapes.drawn_refs = True
+
+
+def _draw(plt, shapes: _Shapes, layered: bool, size: float):
+    """A new figure of ``size`` inches with the lanes (lowest first when ``layered``) and reference lines drawn,
+    framed with a margin around all polygons: (figure, axes)."""
+    from matplotlib.collections import LineCollection, PolyCollection
+
     fig, ax = plt.subplots(figsize=(size, size))
-    legend: list[Patch | Line2D] = [Patch(color=c, label=name) for name, c in _legend_entries(colours)]
-    if refs or drawn_refs:
-        legend.append(Line2D([], [], color=REFERENCE_COLOUR, linewidth=1.5, label="reference line"))
+    polys, colours = shapes.polys, shapes.colours
     if layered:  # lowest first; each piece edged in its own colour so that no seam shows between pieces
-        order = np.argsort(np.asarray(heights), kind="stable")
+        order = np.argsort(np.asarray(shapes.heights), kind="stable")
         polys, colours = [polys[k] for k in order], [colours[k] for k in order]
         ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors=colours, linewidths=0.3))
     else:
         ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors="none", alpha=0.95))
-    ax.add_collection(LineCollection(refs, colors=REFERENCE_COLOUR, linewidths=0.4))
+    ax.add_collection(LineCollection(shapes.refs, colors=REFERENCE_COLOUR, linewidths=0.4))
     pts = np.concatenate(polys) if polys else np.zeros((1, 2))
     pad = 10.0
     ax.set_xlim(pts[:, 0].min() - pad, pts[:, 0].max() + pad)
     ax.set_ylim(pts[:, 1].min() - pad, pts[:, 1].max() + pad)
     ax.set_aspect("equal")
     ax.set_facecolor("#f7f7f2")
+    return fig, ax
+
+
+def _label(ax, doc, source: str | Path, title: str | None, shapes: _Shapes) -> tuple[int, int]:
+    """Title (``title``, or the file name with its counts), a legend of the colours drawn beside the map, and axis
+    labels; returns (roads outside junctions, junctions)."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+
+    legend: list[Patch | Line2D] = [Patch(color=c, label=name) for name, c in _legend_entries(shapes.colours)]
+    if shapes.refs or shapes.drawn_refs:
+        legend.append(Line2D([], [], color=REFERENCE_COLOUR, linewidth=1.5, label="reference line"))
     n_j = len(doc.junctions)
     n_roads = sum(r.junction is None for r in doc.roads)
     ax.set_title(title or f"{Path(str(source)).name}: {n_roads} roads, {n_j} junctions")
     ax.legend(handles=legend, loc="upper left", bbox_to_anchor=(1.01, 1.0), frameon=False, fontsize=9)
     ax.set_xlabel("x (m)")
     ax.set_ylabel("y (m)")
+    return n_roads, n_j
+
+
+def _save(plt, fig, output: str | Path, dpi: int, fmt: str) -> None:
+    """Write ``fig`` to ``output`` atomically (:class:`OutputError` when it cannot be written) and close it."""
     try:
         with atomic_file(output, "wb") as stream:
             fig.savefig(stream, dpi=dpi, bbox_inches="tight", format=fmt)
@@ -206,4 +267,3 @@ def render(
         raise OutputError(str(exc)) from None
     finally:
         plt.close(fig)
-    return Rendered(Path(output), fmt, n_roads, n_j)
