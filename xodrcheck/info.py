@@ -22,12 +22,11 @@ from xodrcheck.model import (
     ElementType,
     Junction,
     JunctionType,
-    Lane,
-    LaneType,
     Line,
     ParamPoly3,
     Poly3,
     Spiral,
+    lane_type_name,
 )
 from xodrcheck.reader import ReadResult
 from xodrcheck.sampling import step_counts
@@ -115,13 +114,6 @@ def junction_legs(junction: Junction, document: Document) -> int:
             if other is None or other.junction != junction.id:  # a road chained inside the junction is no leg
                 roads.add(link.element_id)
     return len(roads)
-
-
-def lane_type_name(lane: Lane) -> str:
-    """The lane's type as the standard spells it; an unknown type as the file spelled it."""
-    if lane.type is LaneType.UNKNOWN and lane.type_name:
-        return lane.type_name
-    return lane.type.value
 
 
 def _sorted(counter: Counter) -> dict:

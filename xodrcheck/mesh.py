@@ -24,9 +24,8 @@ from xodrcheck.arrays import batches, ranges
 from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import XodrError
-from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, geometry_of
-from xodrcheck.model import Document, Lane, LaneKey, Road, document_cache
+from xodrcheck.model import Document, Lane, LaneKey, Road, document_cache, lane_type_name
 
 __all__ = ["MAX_COORDINATE", "LaneSurfaces", "MeshTooLarge", "build_surfaces", "cached_per_chord", "surfaces_of"]
 

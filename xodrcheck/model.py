@@ -56,6 +56,7 @@ __all__ = [
     "TemporaryLanes",
     "TrafficRule",
     "document_cache",
+    "lane_type_name",
 ]
 
 
@@ -366,6 +367,13 @@ class Lane:
     @property
     def drivable(self) -> bool:
         return self.type in DRIVABLE_LANE_TYPES
+
+
+def lane_type_name(lane: Lane) -> str:
+    """The lane's type as the standard spells it; an unknown type as the file spelled it."""
+    if lane.type is LaneType.UNKNOWN and lane.type_name:
+        return lane.type_name
+    return lane.type.value
 
 
 @dataclass(frozen=True, slots=True)

@@ -12,9 +12,8 @@ import numpy as np
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
-from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, geometry_of
-from xodrcheck.model import Document
+from xodrcheck.model import Document, lane_type_name
 
 __all__ = ["KINDS", "LaneLine", "sample_count", "sample_lanes", "section_s_values"]
 

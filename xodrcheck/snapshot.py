@@ -31,9 +31,9 @@ from xodrcheck.check import check
 from xodrcheck.classcache import dataclass
 from xodrcheck.config import Config, Tolerances
 from xodrcheck.findings import XodrError
-from xodrcheck.info import bounding_box, junction_legs, lane_type_name
+from xodrcheck.info import bounding_box, junction_legs
 from xodrcheck.lanes import geometry_of
-from xodrcheck.model import ContactPoint, Document, ElementType, Road
+from xodrcheck.model import ContactPoint, Document, ElementType, Road, lane_type_name
 from xodrcheck.reader import read
 
 __all__ = [

@@ -19,9 +19,8 @@ import numpy as np
 
 from xodrcheck.arrays import unique
 from xodrcheck.classcache import dataclass
-from xodrcheck.info import lane_type_name
 from xodrcheck.lanes import RoadGeometry, SideLanes, geometry_of
-from xodrcheck.model import Document, Lane, Road, RoadMark
+from xodrcheck.model import Document, Lane, Road, RoadMark, lane_type_name
 
 #: Default chord tolerance (m) of the drawn polylines: below a pixel at any useful zoom.
 CHORD = 0.05
