@@ -14,7 +14,7 @@ from xodrcheck.check import Selection, run_rules
 from xodrcheck.config import Config
 from xodrcheck.model import ContactPoint
 from xodrcheck.reader import read
-from xodrcheck.rules import curvature, sampled
+from xodrcheck.rules import curvature, road_ends, sampled
 from xodrcheck.rules.context import Context
 
 #: The modules whose rules read the shared section lines, road ends and lane evaluations.
@@ -232,12 +232,12 @@ def test_road_ends_evaluated_together_are_each_roads_own_border_curves(corpus_di
     path = corpus_dir / name
     ctx = Context(read(path).document, Config(), path=str(path), data=None)
     with np.errstate(all="ignore"):
-        together = sampled._end_curves(ctx)
+        together = road_ends.end_curves(ctx)
         compared = 0
         for road in ctx.document.roads:
             geometry = sampled.usable(ctx, road)
             for end in (ContactPoint.START, ContactPoint.END) if geometry is not None else ():
-                index, _, s = sampled._end_samples(road, end)
+                index, _, s = road_ends.end_samples(road, end)
                 alone = geometry.border_curves(index, s)
                 if (road.id, index) in together:
                     got = together[(road.id, index)]

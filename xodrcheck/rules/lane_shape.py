@@ -20,7 +20,7 @@ from xodrcheck.model import Road
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import usable
+from xodrcheck.rules.sampled import BATCH_SAMPLES, usable
 from xodrcheck.sampling import knots
 
 _NODES = np.array([0.125, 0.375, 0.625, 0.875])
@@ -72,9 +72,9 @@ def _lane_pieces(ctx: Context, road: Road, index: int):
     return cache[key]
 
 
-#: Samples of the file-wide border pass evaluated together: half of :data:`~xodrcheck.rules.sampled.BATCH_SAMPLES`,
-#: as every sample holds the borders of all of a section's lanes.
-_BORDER_BATCH_SAMPLES = 1 << 16
+#: Samples of the file-wide border pass evaluated together: half of the other passes' batch, as every sample holds
+#: the borders of all of a section's lanes.
+_BORDER_BATCH_SAMPLES = BATCH_SAMPLES // 2
 
 
 def _all_borders(ctx: Context, nodes: dict) -> Iterator[tuple[tuple[int, int], dict[int, np.ndarray]]]:

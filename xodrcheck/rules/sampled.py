@@ -31,9 +31,7 @@ from xodrcheck.rules.road_ends import ENDS as _ENDS
 from xodrcheck.rules.road_ends import REFERENCE as _REFERENCE
 from xodrcheck.rules.road_ends import EndPoint as EndPoint  # named here as before
 from xodrcheck.rules.road_ends import RoadEnd as RoadEnd
-from xodrcheck.rules.road_ends import end_curves as _end_curves  # noqa: F401  (tests read it here)
 from xodrcheck.rules.road_ends import end_s as end_s
-from xodrcheck.rules.road_ends import end_samples as _end_samples  # noqa: F401  (tests read it here)
 from xodrcheck.rules.road_ends import left_of as left_of
 from xodrcheck.rules.road_ends import reference_end as reference_end
 from xodrcheck.rules.road_ends import road_end as road_end
