@@ -22,10 +22,13 @@ from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Finding, ReadError, Severity
 from xodrcheck.model import Document
+from xodrcheck.reader import fast
 from xodrcheck.reader.context import Context
 from xodrcheck.reader.document import KNOWN_VERSIONS, build_document
 from xodrcheck.reader.xmlsafe import parse
 from xodrcheck.rules import xml as R
+
+fast.load()  # the compiled fast path, when it is installed (the model is the same without it)
 
 if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree

@@ -15,6 +15,7 @@ from lxml import etree
 
 from xodrcheck.findings import Finding, Severity
 from xodrcheck.model import Cubic, Profile
+from xodrcheck.reader import fast
 from xodrcheck.reader.construct import make_cubic
 from xodrcheck.rules import xml as R
 from xodrcheck.rules.registry import NO_UID, Rule
@@ -306,6 +307,10 @@ def cubic(ctx: Context, el: etree._Element, offset: bool = False) -> Cubic | Non
 
 def cubics(ctx: Context, parent: etree._Element, tag: str, uid: str | None = None) -> Profile:
     """The ``<tag s a b c d>`` records under ``parent``, checked for order (``uid``: the Annex F rule on the order)."""
+    if fast.profile is not None:
+        built = fast.profile(parent, ctx.numbers, tag)
+        if built is not None:
+            return built
     out = []
     for rec in parent:
         if rec.tag == tag:

@@ -25,6 +25,7 @@ from xodrcheck.model import (
     Speed,
     TemporaryLanes,
 )
+from xodrcheck.reader import fast
 from xodrcheck.reader.construct import (
     make_lane,
     make_lane_height,
@@ -288,6 +289,10 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
 
 def build_lanes(ctx: Context, el: etree._Element) -> tuple[Profile, tuple[LaneSection, ...]]:
     """The laneOffset profile and the lane sections of a road's ``<lanes>``."""
+    if fast.lanes is not None:
+        built = fast.lanes(el, ctx.numbers, layered(ctx))
+        if built is not None:
+            return built
     offsets = []
     sections = []
     seen = False

@@ -21,6 +21,7 @@ from xodrcheck.model import (
     RoadLink,
     TrafficRule,
 )
+from xodrcheck.reader import fast
 from xodrcheck.reader.construct import (
     make_arc,
     make_line,
@@ -138,6 +139,10 @@ def _geometry(ctx: Context, el: etree._Element) -> Geometry | None:
 
 
 def _plan_view(ctx: Context, el: etree._Element) -> tuple[Geometry, ...]:
+    if fast.plan_view is not None:
+        built = fast.plan_view(el, ctx.numbers)
+        if built is not None:
+            return built
     out = []
     seen = False
     for g in el:
