@@ -1,11 +1,11 @@
 """The compiled fast path of the reader, when the optional ``xodrcheck-speedups`` module is installed.
 
-``speedups/xodrcheck_speedups.c`` builds a road's plan view, its cubic profiles and its ``<lanes>`` straight from
-libxml2's tree, without an lxml proxy per element, when every record there reads without a finding; for anything
-else it answers ``None`` and the Python reader builds that part, findings and all. Its records are made by the
-reader's own constructors from the read's own number cache, so the model is the same value for value (checked on
-every corpus file by ``tests/xodrcheck/test_reader_fast.py``); only the time differs (about half the model build of a
-CARLA town).
+``speedups/`` (C: module.c, values.c, planview.c, lanes.c) builds a road's plan view, its cubic profiles and its
+``<lanes>`` straight from libxml2's tree, without an lxml proxy per element, when every record there reads without a
+finding; for anything else it answers ``None`` and the Python reader builds that part, findings and all. Its records
+are made by the reader's own constructors from the read's own number cache, so the model is the same value for value
+(checked on every corpus file by ``tests/xodrcheck/test_reader_fast.py``); only the time differs (about half the
+model build of a CARLA town).
 
 Each function here is ``None`` when the module is missing, was built for another layout of lxml's elements (checked
 on import), or ``XODRCHECK_PURE_READER=1`` is set (to rule the compiled path out when hunting a reader problem).

@@ -1,0 +1,241 @@
+/*
+ * One attribute, number, integer or line read the way lxml and the Python reader read it, and the cubic records
+ * (<width>, <elevation>, <laneOffset>...) built from them.
+ */
+#include <string.h>
+
+#include "read.h"
+
+/* The head of lxml's _Element (lxml/etree.h, struct LxmlElement), stable since lxml 2: the proxied node follows the
+ * document. xodrcheck/reader/fast.py checks the layout against lxml itself (node_line) before the module is used. */
+typedef struct {
+    PyObject_HEAD
+    void *doc;
+    xmlNode *c_node;
+} Element;
+
+xmlNode *proxied_node(PyObject *el)
+{
+    if (element_type == NULL || !PyObject_TypeCheck(el, element_type)) {
+        return NULL;
+    }
+    return ((Element *)el)->c_node;
+}
+
+xmlNode *node_of(PyObject *el)
+{
+    xmlNode *node = proxied_node(el);
+    if (node == NULL || node->type != XML_ELEMENT_NODE || node->doc == NULL) {
+        return NULL;
+    }
+    if (node->doc->intSubset != NULL || node->doc->extSubset != NULL) {
+        return NULL; /* a DTD may give attributes default values, which el.get() would return */
+    }
+    return node;
+}
+
+int named(const xmlNode *node, const char *tag)
+{
+    return node->type == XML_ELEMENT_NODE && (node->ns == NULL || node->ns->href == NULL) &&
+           strcmp((const char *)node->name, tag) == 0;
+}
+
+/* 1 and *value set: found; 0: absent; -1: present but not one text node. */
+int attribute(const xmlNode *node, const char *name, const char **value)
+{
+    for (const xmlAttr *p = node->properties; p != NULL; p = p->next) {
+        if (p->ns == NULL && strcmp((const char *)p->name, name) == 0) {
+            const xmlNode *text = p->children;
+            if (text == NULL) {
+                *value = "";
+                return 1;
+            }
+            if (text->next == NULL && text->type == XML_TEXT_NODE && text->content != NULL) {
+                *value = (const char *)text->content;
+                return 1;
+            }
+            return -1;
+        }
+    }
+    return 0;
+}
+
+int has_attribute(const xmlNode *node, const char *name)
+{
+    for (const xmlAttr *p = node->properties; p != NULL; p = p->next) {
+        if (p->ns == NULL && strcmp((const char *)p->name, name) == 0) {
+            return 1;
+        }
+    }
+    return 0;
+}
+
+PyObject *line_of(const xmlNode *node)
+{
+    unsigned short line = node->line;
+    if (line == 0 || line == 65535) {
+        return FALLBACK;
+    }
+    return PyLong_FromLong(line);
+}
+
+PyObject *text(const char *value)
+{
+    return PyUnicode_DecodeUTF8(value, (Py_ssize_t)strlen(value), "strict");
+}
+
+/* el.get(name): the value as str, None when absent (new references); FALLBACK when unusual. */
+PyObject *optional_text(const xmlNode *node, const char *name)
+{
+    const char *value;
+    int found = attribute(node, name, &value);
+    if (found < 0) {
+        return FALLBACK;
+    }
+    if (found == 0) {
+        Py_RETURN_NONE;
+    }
+    return text(value);
+}
+
+/* numbers[el.get(name)], >= 0 with nonneg; FALLBACK when absent, unusual, invalid or negative. */
+PyObject *number(const xmlNode *node, const char *name, const Reading *r, int nonneg)
+{
+    const char *value;
+    if (attribute(node, name, &value) != 1) {
+        return FALLBACK;
+    }
+    PyObject *key = text(value);
+    if (key == NULL) {
+        return NULL;
+    }
+    PyObject *result = PyDict_GetItemWithError(r->numbers, key);
+    if (result != NULL) {
+        Py_INCREF(result);
+    } else if (!PyErr_Occurred()) {
+        result = PyObject_GetItem(r->numbers, key); /* Numbers.__missing__: parses, remembers, or ValueError */
+        if (result == NULL && PyErr_ExceptionMatches(PyExc_ValueError)) {
+            PyErr_Clear();
+        }
+    }
+    Py_DECREF(key);
+    if (result == NULL) {
+        return NULL;
+    }
+    if (!PyFloat_CheckExact(result) || (nonneg && PyFloat_AS_DOUBLE(result) < 0.0)) {
+        Py_DECREF(result);
+        return FALLBACK;
+    }
+    return result;
+}
+
+/* int(el.get(name)) for [-]digits (at most 9 of them); FALLBACK otherwise. */
+PyObject *integer(const xmlNode *node, const char *name)
+{
+    const char *value;
+    if (attribute(node, name, &value) != 1) {
+        return FALLBACK;
+    }
+    const char *p = value;
+    int negative = 0;
+    if (*p == '-') {
+        negative = 1;
+        p++;
+    }
+    long n = 0;
+    int digits = 0;
+    for (; *p >= '0' && *p <= '9'; p++) {
+        if (++digits > 9) {
+            return FALLBACK;
+        }
+        n = n * 10 + (*p - '0');
+    }
+    if (digits == 0 || *p != '\0') {
+        return FALLBACK;
+    }
+    return PyLong_FromLong(negative ? -n : n);
+}
+
+/* Call a constructor with n arguments, stealing them (any of them NULL: release the others, return NULL). */
+PyObject *make(PyObject *constructor, PyObject **args, Py_ssize_t n)
+{
+    PyObject *result = NULL;
+    Py_ssize_t i;
+    for (i = 0; i < n; i++) {
+        if (args[i] == NULL) {
+            break;
+        }
+    }
+    if (i == n) {
+        result = PyObject_Vectorcall(constructor, args, (size_t)n, NULL);
+    }
+    for (i = 0; i < n; i++) {
+        Py_XDECREF(args[i]);
+    }
+    return result;
+}
+
+/* Append a record (stolen) to list if its s is not below the previous record's; FALLBACK for out of order. */
+int append_in_order(PyObject *list, PyObject *record, PyObject *s, double *last)
+{
+    double value = PyFloat_AS_DOUBLE(s);
+    if (PyList_GET_SIZE(list) > 0 && value < *last) {
+        Py_DECREF(record);
+        return -1;
+    }
+    *last = value;
+    int status = PyList_Append(list, record);
+    Py_DECREF(record);
+    return status;
+}
+
+PyObject *list_to_tuple(PyObject *list)
+{
+    if (list == NULL) {
+        return NULL;
+    }
+    PyObject *tuple = PyList_AsTuple(list);
+    Py_DECREF(list);
+    return tuple;
+}
+
+/* <tag s a b c d> (sOffset with offset), s >= 0. */
+PyObject *cubic(const xmlNode *node, const Reading *r, int offset, PyObject **s_out)
+{
+    PyObject *args[6] = {
+        number(node, offset ? "sOffset" : "s", r, 1),
+        NULL, NULL, NULL, NULL, NULL,
+    };
+    if (args[0] == NULL) {
+        return NULL;
+    }
+    args[1] = number(node, "a", r, 0);
+    args[2] = args[1] ? number(node, "b", r, 0) : NULL;
+    args[3] = args[2] ? number(node, "c", r, 0) : NULL;
+    args[4] = args[3] ? number(node, "d", r, 0) : NULL;
+    args[5] = args[4] ? line_of(node) : NULL;
+    *s_out = args[0]; /* borrowed from the record once made */
+    return make(make_cubic, args, 6);
+}
+
+/* The <tag> children of parent as a list of cubic records in ascending s. */
+PyObject *cubic_list(const xmlNode *parent, const char *tag, const Reading *r, int offset)
+{
+    PyObject *out = PyList_New(0);
+    double last = 0.0;
+    if (out == NULL) {
+        return NULL;
+    }
+    for (const xmlNode *child = parent->children; child != NULL; child = child->next) {
+        if (!named(child, tag)) {
+            continue;
+        }
+        PyObject *s = NULL;
+        PyObject *record = cubic(child, r, offset, &s);
+        if (record == NULL || append_in_order(out, record, s, &last) < 0) {
+            Py_DECREF(out);
+            return NULL;
+        }
+    }
+    return out;
+}
