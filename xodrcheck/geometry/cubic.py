@@ -168,8 +168,17 @@ def parameters_at(curves: list[CubicCurve], sigma: np.ndarray, counts: np.ndarra
     call's Newton iterations stop when its own tests say so (a call alone stops when all its points are done, so the
     number of steps a point gets depends on its call, and here too)."""
     counts = np.asarray(counts, dtype=np.int64)
+    owner = np.repeat(np.arange(len(curves)), counts)
+    p, start, width, base = _first_guesses(curves, sigma, counts, owner)
+    return _newton(curves, sigma, counts, owner, p, start, width, base)
+
+
+def _first_guesses(
+    curves: list[CubicCurve], sigma: np.ndarray, counts: np.ndarray, owner: np.ndarray
+) -> tuple[np.ndarray, ...]:
+    """Each point's first guess of its parameter from its own call's table, and the start, width and arc length at
+    the start of the table interval it falls in."""
     calls = len(curves)
-    owner = np.repeat(np.arange(calls), counts)
     sizes = np.array([len(c.breaks) for c in curves], dtype=np.int64)
     table_at = np.concatenate(([0], np.cumsum(sizes)))
     breaks = np.concatenate([c.breaks for c in curves])
@@ -196,6 +205,22 @@ def parameters_at(curves: list[CubicCurve], sigma: np.ndarray, counts: np.ndarra
     start = breaks[at]
     width = breaks[at + 1] - start
     base = cumulative[at]
+    return p, start, width, base
+
+
+def _newton(
+    curves: list[CubicCurve],
+    sigma: np.ndarray,
+    counts: np.ndarray,
+    owner: np.ndarray,
+    p: np.ndarray,
+    start: np.ndarray,
+    width: np.ndarray,
+    base: np.ndarray,
+) -> np.ndarray:
+    """Newton iterations from the first guesses ``p`` (updated in place and returned), call by call as
+    :func:`parameters_at` says."""
+    calls = len(curves)
     u = np.array([c.u for c in curves])[owner]
     v = np.array([c.v for c in curves])[owner]
     u1, u2x, u3x = u[:, 1], 2.0 * u[:, 2], 3.0 * u[:, 3]

@@ -12,7 +12,7 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.model import JunctionType
+from xodrcheck.model import Document, JunctionType
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
@@ -79,54 +79,56 @@ def link_attribute_usage(ctx: Context):
     document = ctx.document
     main_roads = _main_roads(ctx)
     for road_id, junction_id, el in _links(ctx):
-        kind = el.get("elementType")
-        target = el.get("elementId")
-        where = {"road": road_id, "line": el.sourceline}
-        tag = el.tag.rsplit("}", 1)[-1]
-        mine = f"road {road_id}: the {tag} {target!r} (line {el.sourceline})"
-        if kind is None:
-            if target in document.road_by_id and target not in document.junction_by_id:
-                yield link_attribute_usage.finding(
-                    f'{mine} has no elementType; road {target} is linked with elementType="road"',
-                    uid=U.LINKAGE_ROAD_ATTRIBUTES,
-                    **where,
-                )
-            elif target in document.junction_by_id and target not in document.road_by_id:
-                yield link_attribute_usage.finding(
-                    f'{mine} has no elementType; junction {target} is linked with elementType="junction"',
-                    uid=U.LINKAGE_JUNCTION_ATTRIBUTES,
-                    **where,
-                )
-            continue
-        if kind == "junction":
-            extra = [name for name in _NOT_FOR_JUNCTIONS if el.get(name) is not None]
-            if extra:
-                junction = document.junction_by_id.get(target or "")
-                what = f"{junction.type.value} junction" if junction is not None else "junction"
-                yield link_attribute_usage.finding(
-                    f"{mine} links to a {what} with {', '.join(extra)}: a junction is linked by elementType and "
-                    f"elementId only; remove {', '.join(extra)}",
-                    uid=U.LINKAGE_JUNCTION_ATTRIBUTES,
-                    **where,
-                )
-            continue
-        if kind != "road":
-            continue  # not a link type (schema, reader)
-        has_s, has_dir = el.get("elementS") is not None, el.get("elementDir") is not None
-        if has_s != has_dir:
-            given, missing = ("elementS", "elementDir") if has_s else ("elementDir", "elementS")
-            yield link_attribute_usage.finding(
-                f"{mine} has {given} but no {missing}: a connection inside road {target} needs both",
-                uid=U.LINKAGE_VIRTUAL_ATTRIBUTES,
-                **where,
+        for message, uid in _misuses(document, main_roads, road_id, junction_id, el):
+            yield link_attribute_usage.finding(message, uid=uid, road=road_id, line=el.sourceline)
+
+
+def _misuses(
+    document: Document, main_roads: dict[str, str], road_id: str, junction_id: str | None, el: etree._Element
+) -> Iterator[tuple[str, str]]:
+    """What road ``road_id``'s link ``el`` gets wrong: (message, the Annex F UID it breaks)."""
+    kind = el.get("elementType")
+    target = el.get("elementId")
+    tag = el.tag.rsplit("}", 1)[-1]
+    mine = f"road {road_id}: the {tag} {target!r} (line {el.sourceline})"
+    if kind is None:
+        if target in document.road_by_id and target not in document.junction_by_id:
+            yield (
+                f'{mine} has no elementType; road {target} is linked with elementType="road"',
+                U.LINKAGE_ROAD_ATTRIBUTES,
             )
-        elif not has_s and junction_id is not None and main_roads.get(junction_id) == target:
-            junction = document.junction_by_id.get(junction_id)
-            if junction is not None and junction.type is JunctionType.VIRTUAL:
-                yield link_attribute_usage.finding(
-                    f"{mine} joins road {target}, the main road of virtual junction {junction_id}, without elementS "
-                    "and elementDir: say where on the main road (elementS) and in which direction (elementDir) the "
-                    "connection meets it",
-                    uid=U.LINKAGE_VIRTUAL_ATTRIBUTES,
-                    **where,
-                )
+        elif target in document.junction_by_id and target not in document.road_by_id:
+            yield (
+                f'{mine} has no elementType; junction {target} is linked with elementType="junction"',
+                U.LINKAGE_JUNCTION_ATTRIBUTES,
+            )
+        return
+    if kind == "junction":
+        extra = [name for name in _NOT_FOR_JUNCTIONS if el.get(name) is not None]
+        if extra:
+            junction = document.junction_by_id.get(target or "")
+            what = f"{junction.type.value} junction" if junction is not None else "junction"
+            yield (
+                f"{mine} links to a {what} with {', '.join(extra)}: a junction is linked by elementType and "
+                f"elementId only; remove {', '.join(extra)}",
+                U.LINKAGE_JUNCTION_ATTRIBUTES,
+            )
+        return
+    if kind != "road":
+        return  # not a link type (schema, reader)
+    has_s, has_dir = el.get("elementS") is not None, el.get("elementDir") is not None
+    if has_s != has_dir:
+        given, missing = ("elementS", "elementDir") if has_s else ("elementDir", "elementS")
+        yield (
+            f"{mine} has {given} but no {missing}: a connection inside road {target} needs both",
+            U.LINKAGE_VIRTUAL_ATTRIBUTES,
+        )
+    elif not has_s and junction_id is not None and main_roads.get(junction_id) == target:
+        junction = document.junction_by_id.get(junction_id)
+        if junction is not None and junction.type is JunctionType.VIRTUAL:
+            yield (
+                f"{mine} joins road {target}, the main road of virtual junction {junction_id}, without elementS "
+                "and elementDir: say where on the main road (elementS) and in which direction (elementDir) the "
+                "connection meets it",
+                U.LINKAGE_VIRTUAL_ATTRIBUTES,
+            )
