@@ -15,7 +15,11 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from lxml import etree
 
+import junctionart as ja
+from junctionart.fuzz.documents import opendrive_documents
 from junctionart.fuzz.mutations import damaged_documents
+from junctionart.params import Params
+from junctionart.writer import to_bytes
 from tests.conftest import corpus_files
 from xodrcheck.reader import fast, read
 from xodrcheck.reader.context import Numbers
@@ -331,4 +335,41 @@ def test_the_pure_reader_can_be_asked_for():
 @settings(max_examples=150, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
 @given(damaged_documents(min_mutations=1, max_mutations=4))
 def test_damaged_documents_read_the_same(data):
+    assert_same(data)
+
+
+def every_part_is_fast(data: bytes) -> None:
+    """Every road's plan view and ``<lanes>`` of a valid document are built by the compiled path."""
+    root = etree.fromstring(data)
+    layered = root.find("header").get("revMinor") == "9"
+    roads = root.findall("road")
+    assert roads
+    for road in roads:
+        numbers = Numbers()
+        assert fast.plan_view(road.find("planView"), numbers) is not None, road.get("id")
+        assert fast.lanes(road.find("lanes"), numbers, layered) is not None, road.get("id")
+
+
+@pytest.mark.parametrize("version", ["1.7", "1.8", "1.9"])
+@pytest.mark.parametrize("seed", [1, 2])
+def test_generated_maps_take_the_fast_path_and_read_the_same(seed, version):
+    data = to_bytes(ja.generate(Params(), seed), version)
+    every_part_is_fast(data)
+    assert_same(data)
+
+
+@settings(max_examples=60, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(opendrive_documents(versions=((1, 4), (1, 6), (1, 7), (1, 8), (1, 9))))
+def test_valid_documents_take_the_fast_path_and_read_the_same(data):
+    every_part_is_fast(data)
+    assert_same(data)
+
+
+_V19 = opendrive_documents(versions=((1, 9),), max_roads_per_chain=2, max_elements=2, max_lanes=2)
+
+
+@settings(max_examples=100, deadline=None, derandomize=True, suppress_health_check=[HealthCheck.too_slow])
+@given(damaged_documents(base=_V19, min_mutations=1, max_mutations=4))
+def test_damaged_19_documents_read_the_same(data):
+    """1.9 files have lane layers, which the compiled path leaves to Python."""
     assert_same(data)
