@@ -12,7 +12,7 @@ typedef struct {
 
 enum { WIDTHS, BORDERS, MARKS, SPEEDS, HEIGHTS };
 
-static PyObject *road_mark(const xmlNode *node, const Reading *r, PyObject **s_out)
+static PyObject *road_mark(const xmlNode *node, const Reading *r, double *s_out)
 {
     PyObject *args[7] = {number(node, "sOffset", r, 1), NULL, NULL, NULL, NULL, NULL, NULL};
     const char *kind;
@@ -28,27 +28,33 @@ static PyObject *road_mark(const xmlNode *node, const Reading *r, PyObject **s_o
         args[5] = args[4] ? optional_text(node, "laneChange") : NULL;
         args[6] = args[5] ? line_of(node) : NULL;
     }
-    *s_out = args[0];
+    if (args[6] != NULL) {
+        *s_out = PyFloat_AS_DOUBLE(args[0]);
+    }
     return make(make_road_mark, args, 7);
 }
 
-static PyObject *speed(const xmlNode *node, const Reading *r, PyObject **s_out)
+static PyObject *speed(const xmlNode *node, const Reading *r, double *s_out)
 {
     PyObject *args[4] = {number(node, "sOffset", r, 1), NULL, NULL, NULL};
     args[1] = args[0] ? number(node, "max", r, 1) : NULL;
     args[2] = args[1] ? optional_text(node, "unit") : NULL;
     args[3] = args[2] ? line_of(node) : NULL;
-    *s_out = args[0];
+    if (args[3] != NULL) {
+        *s_out = PyFloat_AS_DOUBLE(args[0]);
+    }
     return make(make_speed, args, 4);
 }
 
-static PyObject *height(const xmlNode *node, const Reading *r, PyObject **s_out)
+static PyObject *height(const xmlNode *node, const Reading *r, double *s_out)
 {
     PyObject *args[4] = {number(node, "sOffset", r, 1), NULL, NULL, NULL};
     args[1] = args[0] ? number(node, "inner", r, 0) : NULL;
     args[2] = args[1] ? number(node, "outer", r, 0) : NULL;
     args[3] = args[2] ? line_of(node) : NULL;
-    *s_out = args[0];
+    if (args[3] != NULL) {
+        *s_out = PyFloat_AS_DOUBLE(args[0]);
+    }
     return make(make_lane_height, args, 4);
 }
 
@@ -86,7 +92,7 @@ static int lane_links(const xmlNode *link, const Reading *r, LaneRecords *rec)
 
 static int lane_record(const xmlNode *child, const Reading *r, LaneRecords *rec)
 {
-    PyObject *s = NULL;
+    double s = 0.0;
     PyObject *record;
     int k;
     if (named(child, "roadMark")) {
@@ -148,16 +154,16 @@ static PyObject *lane(const xmlNode *node, const Reading *r, int *is_centre)
         ok = lane_record(child, r, &rec) == 0;
     }
     if (ok) {
-        args[3] = PyList_AsTuple(rec.links[0]);
-        args[4] = PyList_AsTuple(rec.links[1]);
-        args[5] = PyList_AsTuple(rec.lists[WIDTHS]);
-        args[6] = PyList_AsTuple(rec.lists[BORDERS]);
-        args[7] = PyList_AsTuple(rec.lists[MARKS]);
-        args[8] = PyList_AsTuple(rec.lists[SPEEDS]);
-        args[10] = line_of(node);
-        args[11] = PyList_AsTuple(rec.lists[HEIGHTS]);
-        args[12] = PyTuple_New(0);
-        args[13] = PyTuple_New(0);
+        /* predecessors, successors, widths, borders, marks, speeds: arguments 3 to 8 */
+        PyObject *const lists[] = {rec.links[0],        rec.links[1],       rec.lists[WIDTHS],
+                                   rec.lists[BORDERS], rec.lists[MARKS], rec.lists[SPEEDS]};
+        for (int i = 0; ok && i < 6; i++) {
+            ok = (args[3 + i] = PyList_AsTuple(lists[i])) != NULL;
+        }
+        ok = ok && (args[10] = line_of(node)) != NULL;
+        ok = ok && (args[11] = PyList_AsTuple(rec.lists[HEIGHTS])) != NULL;
+        ok = ok && (args[12] = PyTuple_New(0)) != NULL;
+        ok = ok && (args[13] = PyTuple_New(0)) != NULL;
     }
     for (int k = 0; k < 5; k++) {
         Py_XDECREF(rec.lists[k]);
@@ -270,19 +276,15 @@ PyObject *lanes_pair(const xmlNode *node, const Reading *r)
     int ok = offsets != NULL && sections != NULL;
     int seen = 0;
     for (const xmlNode *child = node->children; ok && child != NULL; child = child->next) {
-        PyObject *s = NULL;
+        double s = 0.0;
         PyObject *record;
         if (named(child, "laneSection")) {
             seen = 1;
             record = section(child, r);
-            if (record != NULL) {
-                s = PyObject_GetAttrString(record, "s");
-                if (s == NULL) {
-                    Py_CLEAR(record);
-                }
+            if (record != NULL && record_s(record, &s) < 0) {
+                Py_CLEAR(record);
             }
             ok = record != NULL && append_in_order(sections, record, s, &last_section) == 0;
-            Py_XDECREF(s);
         } else if (named(child, "laneOffset")) {
             record = cubic(child, r, 0, &s);
             ok = record != NULL && append_in_order(offsets, record, s, &last_offset) == 0;
@@ -290,7 +292,13 @@ PyObject *lanes_pair(const xmlNode *node, const Reading *r)
     }
     PyObject *result = NULL;
     if (ok && seen) {
-        result = Py_BuildValue("(NN)", PyList_AsTuple(offsets), PyList_AsTuple(sections));
+        PyObject *offset_tuple = PyList_AsTuple(offsets);
+        PyObject *section_tuple = offset_tuple == NULL ? NULL : PyList_AsTuple(sections);
+        if (section_tuple != NULL) {
+            result = PyTuple_Pack(2, offset_tuple, section_tuple);
+        }
+        Py_XDECREF(offset_tuple);
+        Py_XDECREF(section_tuple);
     }
     Py_XDECREF(offsets);
     Py_XDECREF(sections);

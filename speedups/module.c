@@ -19,10 +19,14 @@
  *   - int(raw): only [-]digits (at most 9) here; anything int() would read otherwise goes to Python.
  *
  * Records are made by the reader's own constructors (xodrcheck/reader/construct.py), handed over by configure().
+ * The walk holds libxml2's nodes while it calls them and the number cache: the tree must not change during a call
+ * (read() builds from a tree nobody else sees), and numbers must be the reader's Numbers itself, not a subclass.
  */
+#include <string.h>
+
 #include "read.h"
 
-PyTypeObject *element_type;
+PyTypeObject *element_type, *numbers_type;
 PyObject *make_cubic, *make_line, *make_arc, *make_spiral, *make_poly3, *make_param_poly3;
 PyObject *make_road_mark, *make_speed, *make_lane_height, *make_lane, *make_lane_section;
 PyObject *lane_types, *p_ranges;
@@ -35,7 +39,7 @@ static int reading(PyObject *const *args, Py_ssize_t nargs, const char *name, in
         PyErr_Format(PyExc_TypeError, "%s() takes %zd arguments", name, expected);
         return -1;
     }
-    if (!PyDict_Check(args[1])) {
+    if (numbers_type == NULL || !Py_IS_TYPE(args[1], numbers_type)) {
         PyErr_Format(PyExc_TypeError, "%s(): numbers must be the read's Numbers", name);
         return -1;
     }
@@ -82,9 +86,13 @@ static PyObject *py_profile(PyObject *self, PyObject *const *args, Py_ssize_t na
         PyErr_SetString(PyExc_TypeError, "profile(el, numbers, tag)");
         return NULL;
     }
-    const char *tag = PyUnicode_AsUTF8(args[2]);
+    Py_ssize_t size;
+    const char *tag = PyUnicode_AsUTF8AndSize(args[2], &size);
     if (tag == NULL || reading(args, 2, "profile", 0, &r, &node) < 0) {
         return NULL;
+    }
+    if ((size_t)size != strlen(tag) || tag[0] == '{') {
+        Py_RETURN_NONE; /* a tag with a namespace or a NUL: the Python reader's */
     }
     return finish(node == NULL ? NULL : list_to_tuple(cubic_list(node, tag, &r, 0)));
 }
@@ -114,16 +122,42 @@ static const char *const CONFIGURED_NAMES[] = {
 #define N_CONFIGURED (sizeof(CONFIGURED) / sizeof(CONFIGURED[0]))
 
 PyDoc_STRVAR(configure_doc,
-             "configure(element_type, **parts): lxml's _Element class, the reader's constructors (make_cubic, ... "
-             "make_lane_section) and its lane_types and p_ranges dicts.");
+             "configure(element_type, numbers_type, **parts): lxml's _Element class, the reader's Numbers class, "
+             "its constructors (make_cubic, ... make_lane_section) and its lane_types and p_ranges dicts.");
+
+/* Whether type is lxml's _Element (or a subclass) laid out as this module reads it. */
+static int is_element_type(PyTypeObject *type)
+{
+    PyObject *etree = PyImport_ImportModule("lxml.etree");
+    PyObject *base = etree == NULL ? NULL : PyObject_GetAttrString(etree, "_Element");
+    Py_XDECREF(etree);
+    if (base == NULL) {
+        return -1;
+    }
+    int fits = PyType_Check(base) && PyType_IsSubtype(type, (PyTypeObject *)base) &&
+               (size_t)((PyTypeObject *)base)->tp_basicsize >= element_head_size();
+    Py_DECREF(base);
+    return fits;
+}
 
 static PyObject *py_configure(PyObject *self, PyObject *args, PyObject *kwargs)
 {
-    PyObject *type;
-    if (!PyArg_ParseTuple(args, "O!", &PyType_Type, &type) || kwargs == NULL) {
+    PyObject *type, *numbers;
+    if (!PyArg_ParseTuple(args, "O!O!", &PyType_Type, &type, &PyType_Type, &numbers) || kwargs == NULL) {
         if (!PyErr_Occurred()) {
-            PyErr_SetString(PyExc_TypeError, "configure(element_type, **parts)");
+            PyErr_SetString(PyExc_TypeError, "configure(element_type, numbers_type, **parts)");
         }
+        return NULL;
+    }
+    int fits = is_element_type((PyTypeObject *)type);
+    if (fits <= 0) {
+        if (fits == 0) {
+            PyErr_SetString(PyExc_TypeError, "configure(): element_type is not lxml.etree._Element");
+        }
+        return NULL;
+    }
+    if (!PyType_IsSubtype((PyTypeObject *)numbers, &PyDict_Type)) {
+        PyErr_SetString(PyExc_TypeError, "configure(): numbers_type is not a dict class");
         return NULL;
     }
     PyObject *values[N_CONFIGURED];
@@ -142,6 +176,7 @@ static PyObject *py_configure(PyObject *self, PyObject *args, PyObject *kwargs)
         Py_XSETREF(*CONFIGURED[i], Py_NewRef(values[i]));
     }
     Py_XSETREF(element_type, (PyTypeObject *)Py_NewRef(type));
+    Py_XSETREF(numbers_type, (PyTypeObject *)Py_NewRef(numbers));
     Py_RETURN_NONE;
 }
 

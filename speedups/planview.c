@@ -19,7 +19,7 @@ static int numbers_into(const xmlNode *node, const char *const *names, int count
     return 1;
 }
 
-static PyObject *geometry(const xmlNode *node, const Reading *r)
+static PyObject *geometry(const xmlNode *node, const Reading *r, double *s_out)
 {
     const xmlNode *shape = NULL;
     for (const xmlNode *child = node->children; child != NULL; child = child->next) {
@@ -81,6 +81,7 @@ static PyObject *geometry(const xmlNode *node, const Reading *r)
         }
         return NULL;
     }
+    *s_out = PyFloat_AS_DOUBLE(args[0]);
     return make(constructor, args, n);
 }
 
@@ -95,20 +96,13 @@ PyObject *plan_view_list(const xmlNode *parent, const Reading *r)
         if (!named(child, "geometry")) {
             continue;
         }
-        PyObject *record = geometry(child, r);
+        double s = 0.0;
+        PyObject *record = geometry(child, r, &s);
         if (record == NULL) {
             Py_DECREF(out);
             return NULL;
         }
-        PyObject *s = PyObject_GetAttrString(record, "s");
-        if (s == NULL) {
-            Py_DECREF(record);
-            Py_DECREF(out);
-            return NULL;
-        }
-        int status = append_in_order(out, record, s, &last);
-        Py_DECREF(s);
-        if (status < 0) {
+        if (append_in_order(out, record, s, &last) < 0) {
             Py_DECREF(out);
             return NULL;
         }

@@ -18,12 +18,13 @@ typedef struct {
 } Reading;
 
 /* Set by configure() (module.c): lxml's _Element, the reader's constructors and its lookup tables. */
-extern PyTypeObject *element_type;
+extern PyTypeObject *element_type, *numbers_type;
 extern PyObject *make_cubic, *make_line, *make_arc, *make_spiral, *make_poly3, *make_param_poly3;
 extern PyObject *make_road_mark, *make_speed, *make_lane_height, *make_lane, *make_lane_section;
 extern PyObject *lane_types, *p_ranges;
 
 /* values.c */
+size_t element_head_size(void);      /* the bytes of lxml's _Element this module reads */
 xmlNode *proxied_node(PyObject *el); /* the node under an lxml element, or NULL */
 xmlNode *node_of(PyObject *el);      /* ... when it is an element the fast path may read */
 int named(const xmlNode *node, const char *tag);
@@ -35,9 +36,10 @@ PyObject *optional_text(const xmlNode *node, const char *name);
 PyObject *number(const xmlNode *node, const char *name, const Reading *r, int nonneg);
 PyObject *integer(const xmlNode *node, const char *name);
 PyObject *make(PyObject *constructor, PyObject **args, Py_ssize_t n);
-int append_in_order(PyObject *list, PyObject *record, PyObject *s, double *last);
+int append_in_order(PyObject *list, PyObject *record, double s, double *last);
+int record_s(PyObject *record, double *s);
 PyObject *list_to_tuple(PyObject *list);
-PyObject *cubic(const xmlNode *node, const Reading *r, int offset, PyObject **s_out);
+PyObject *cubic(const xmlNode *node, const Reading *r, int offset, double *s_out);
 PyObject *cubic_list(const xmlNode *parent, const char *tag, const Reading *r, int offset);
 
 /* planview.c */

@@ -14,6 +14,11 @@ typedef struct {
     xmlNode *c_node;
 } Element;
 
+size_t element_head_size(void)
+{
+    return sizeof(Element);
+}
+
 xmlNode *proxied_node(PyObject *el)
 {
     if (element_type == NULL || !PyObject_TypeCheck(el, element_type)) {
@@ -175,18 +180,30 @@ PyObject *make(PyObject *constructor, PyObject **args, Py_ssize_t n)
     return result;
 }
 
-/* Append a record (stolen) to list if its s is not below the previous record's; FALLBACK for out of order. */
-int append_in_order(PyObject *list, PyObject *record, PyObject *s, double *last)
+/* Append a record (stolen) to list if its s is not below the previous record's; -1 for out of order (a FALLBACK,
+ * no error set) or an error. */
+int append_in_order(PyObject *list, PyObject *record, double s, double *last)
 {
-    double value = PyFloat_AS_DOUBLE(s);
-    if (PyList_GET_SIZE(list) > 0 && value < *last) {
+    if (PyList_GET_SIZE(list) > 0 && s < *last) {
         Py_DECREF(record);
         return -1;
     }
-    *last = value;
+    *last = s;
     int status = PyList_Append(list, record);
     Py_DECREF(record);
     return status;
+}
+
+/* A built record's s (a float); -1 with the error set when it cannot be read. */
+int record_s(PyObject *record, double *s)
+{
+    PyObject *value = PyObject_GetAttrString(record, "s");
+    if (value == NULL) {
+        return -1;
+    }
+    *s = PyFloat_AsDouble(value);
+    Py_DECREF(value);
+    return *s == -1.0 && PyErr_Occurred() ? -1 : 0;
 }
 
 PyObject *list_to_tuple(PyObject *list)
@@ -200,7 +217,7 @@ PyObject *list_to_tuple(PyObject *list)
 }
 
 /* <tag s a b c d> (sOffset with offset), s >= 0. */
-PyObject *cubic(const xmlNode *node, const Reading *r, int offset, PyObject **s_out)
+PyObject *cubic(const xmlNode *node, const Reading *r, int offset, double *s_out)
 {
     PyObject *args[6] = {
         number(node, offset ? "sOffset" : "s", r, 1),
@@ -214,7 +231,9 @@ PyObject *cubic(const xmlNode *node, const Reading *r, int offset, PyObject **s_
     args[3] = args[2] ? number(node, "c", r, 0) : NULL;
     args[4] = args[3] ? number(node, "d", r, 0) : NULL;
     args[5] = args[4] ? line_of(node) : NULL;
-    *s_out = args[0]; /* borrowed from the record once made */
+    if (args[5] != NULL) {
+        *s_out = PyFloat_AS_DOUBLE(args[0]);
+    }
     return make(make_cubic, args, 6);
 }
 
@@ -230,7 +249,7 @@ PyObject *cubic_list(const xmlNode *parent, const char *tag, const Reading *r, i
         if (!named(child, tag)) {
             continue;
         }
-        PyObject *s = NULL;
+        double s = 0.0;
         PyObject *record = cubic(child, r, offset, &s);
         if (record == NULL || append_in_order(out, record, s, &last) < 0) {
             Py_DECREF(out);

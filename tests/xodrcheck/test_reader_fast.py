@@ -301,6 +301,48 @@ def test_arguments_that_are_not_elements_are_the_python_readers():
         fast.lanes(etree.Element("lanes"), [], False)
 
 
+class _Forgetful(Numbers):
+    """A number cache that could change the tree or the cache under the compiled walk: refused."""
+
+    __slots__ = ()
+
+
+@pytest.mark.parametrize("numbers", [{}, _Forgetful()], ids=["dict", "Numbers subclass"])
+def test_numbers_must_be_the_readers_own_cache(numbers):
+    lanes = etree.fromstring(document()).find("road/lanes")
+    with pytest.raises(TypeError, match="Numbers"):
+        fast.lanes(lanes, numbers, False)
+
+
+def test_profile_tags_with_a_namespace_or_a_nul_are_the_python_readers():
+    profile = etree.fromstring(
+        b'<elevationProfile xmlns:x="urn:x"><x:elevation s="0" a="1" b="0" c="0" d="0"/>'
+        b'<elev s="0" a="1" b="0" c="0" d="0"/></elevationProfile>'
+    )
+    assert fast.profile(profile, Numbers(), "{urn:x}elevation") is None
+    assert fast.profile(profile, Numbers(), "elev\0ation") is None
+    assert len(fast.profile(profile, Numbers(), "elev")) == 1
+
+
+def test_configure_refuses_what_is_not_lxmls_element():
+    import xodrcheck_speedups
+
+    with pytest.raises(TypeError, match="_Element"):
+        xodrcheck_speedups.configure(dict, Numbers, make_cubic=None)
+    assert fast.lanes(etree.fromstring(document()).find("road/lanes"), Numbers(), False) is not None  # unchanged
+
+
+@pytest.mark.parametrize("spelling", ["offRamp", "HOV", "connectingRamp", "offramp"])
+def test_lane_types_spelled_as_the_standard_does_take_the_fast_path(spelling):
+    """The standard writes some types in camel case; the Python reader matches them without regard to case."""
+    data = document(8, '<lane id="-2" type="sidewalk"', f'<lane id="-2" type="{spelling}"')
+    sections = fast_results(data)[2][1]
+    lane = sections[0].right[1]
+    assert lane.type_name == spelling and lane.type.value.lower() == spelling.lower()
+    assert_same(data)
+    assert read(data).findings == ()
+
+
 def test_no_memory_is_kept_by_the_compiled_path():
     """Each call's records (built or abandoned on the way to a hand-back) are freed with the result."""
     good = etree.fromstring(document()).find("road")

@@ -53,11 +53,17 @@ def _load() -> str:
         import xodrcheck_speedups as module
     except ImportError:
         return "the xodrcheck-speedups module is not installed (scripts/setup builds it)"
+    from xodrcheck.model import LaneType
+    from xodrcheck.reader.context import Numbers
     from xodrcheck.reader.lanes import LANE_TYPES  # here: lanes imports this module
+
+    # the exact spellings the Python reader maps without a finding: lower case, and the standard's own (offRamp...)
+    lane_types = {**LANE_TYPES, **{t.value: t for t in LaneType if t is not LaneType.UNKNOWN}}
 
     p_ranges = {"arcLength": PRange.ARC_LENGTH, "arclength": PRange.ARC_LENGTH, "normalized": PRange.NORMALIZED}
     module.configure(
         etree._Element,
+        Numbers,
         make_cubic=construct.make_cubic,
         make_line=construct.make_line,
         make_arc=construct.make_arc,
@@ -69,7 +75,7 @@ def _load() -> str:
         make_lane_height=construct.make_lane_height,
         make_lane=construct.make_lane,
         make_lane_section=construct.make_lane_section,
-        lane_types=dict(LANE_TYPES),
+        lane_types=lane_types,
         p_ranges=p_ranges,
     )
     if not _layout_matches(module):
