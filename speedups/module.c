@@ -30,6 +30,7 @@ PyTypeObject *element_type, *numbers_type;
 PyObject *make_cubic, *make_line, *make_arc, *make_spiral, *make_poly3, *make_param_poly3;
 PyObject *make_road_mark, *make_speed, *make_lane_height, *make_lane, *make_lane_section;
 PyObject *lane_types, *p_ranges;
+Py_ssize_t numbers_remembered;
 
 static int reading(PyObject *const *args, Py_ssize_t nargs, const char *name, int with_layers, Reading *r,
                    xmlNode **node)
@@ -122,7 +123,8 @@ static const char *const CONFIGURED_NAMES[] = {
 #define N_CONFIGURED (sizeof(CONFIGURED) / sizeof(CONFIGURED[0]))
 
 PyDoc_STRVAR(configure_doc,
-             "configure(element_type, numbers_type, **parts): lxml's _Element class, the reader's Numbers class, "
+             "configure(element_type, numbers_type, remembered, **parts): lxml's _Element class, the reader's Numbers "
+             "class and how many values it keeps, "
              "its constructors (make_cubic, ... make_lane_section) and its lane_types and p_ranges dicts.");
 
 /* Whether type is lxml's _Element (or a subclass) laid out as this module reads it. */
@@ -143,9 +145,11 @@ static int is_element_type(PyTypeObject *type)
 static PyObject *py_configure(PyObject *self, PyObject *args, PyObject *kwargs)
 {
     PyObject *type, *numbers;
-    if (!PyArg_ParseTuple(args, "O!O!", &PyType_Type, &type, &PyType_Type, &numbers) || kwargs == NULL) {
+    Py_ssize_t remembered;
+    if (!PyArg_ParseTuple(args, "O!O!n", &PyType_Type, &type, &PyType_Type, &numbers, &remembered) ||
+        kwargs == NULL) {
         if (!PyErr_Occurred()) {
-            PyErr_SetString(PyExc_TypeError, "configure(element_type, numbers_type, **parts)");
+            PyErr_SetString(PyExc_TypeError, "configure(element_type, numbers_type, remembered, **parts)");
         }
         return NULL;
     }
@@ -177,6 +181,7 @@ static PyObject *py_configure(PyObject *self, PyObject *args, PyObject *kwargs)
     }
     Py_XSETREF(element_type, (PyTypeObject *)Py_NewRef(type));
     Py_XSETREF(numbers_type, (PyTypeObject *)Py_NewRef(numbers));
+    numbers_remembered = remembered;
     Py_RETURN_NONE;
 }
 

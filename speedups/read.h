@@ -22,6 +22,7 @@ extern PyTypeObject *element_type, *numbers_type;
 extern PyObject *make_cubic, *make_line, *make_arc, *make_spiral, *make_poly3, *make_param_poly3;
 extern PyObject *make_road_mark, *make_speed, *make_lane_height, *make_lane, *make_lane_section;
 extern PyObject *lane_types, *p_ranges;
+extern Py_ssize_t numbers_remembered; /* how many values Numbers keeps (its _REMEMBER) */
 
 /* values.c */
 size_t element_head_size(void);      /* the bytes of lxml's _Element this module reads */

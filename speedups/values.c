@@ -2,6 +2,7 @@
  * One attribute, number, integer or line read the way lxml and the Python reader read it, and the cubic records
  * (<width>, <elevation>, <laneOffset>...) built from them.
  */
+#include <math.h>
 #include <string.h>
 
 #include "read.h"
@@ -103,6 +104,27 @@ PyObject *optional_text(const xmlNode *node, const char *name)
     return text(value);
 }
 
+/* A number not in the cache yet, as Numbers.__missing__ makes it, when the text is a plain finite float: float()
+ * converts what it reads with PyOS_string_to_double, once whitespace and underscores are taken out, so a text that
+ * function reads whole, with neither, gives the same value. NULL without an error for anything else (Python's). */
+static PyObject *parsed(const char *value, PyObject *key, PyObject *numbers)
+{
+    char *end;
+    double x = PyOS_string_to_double(value, &end, NULL);
+    if (x == -1.0 && PyErr_Occurred()) {
+        PyErr_Clear();
+        return NULL;
+    }
+    if (end == value || *end != '\0' || !isfinite(x)) {
+        return NULL;
+    }
+    PyObject *result = PyFloat_FromDouble(x);
+    if (result != NULL && PyDict_GET_SIZE(numbers) < numbers_remembered && PyDict_SetItem(numbers, key, result) < 0) {
+        Py_CLEAR(result);
+    }
+    return result;
+}
+
 /* numbers[el.get(name)], >= 0 with nonneg; FALLBACK when absent, unusual, invalid or negative. */
 PyObject *number(const xmlNode *node, const char *name, const Reading *r, int nonneg)
 {
@@ -118,7 +140,10 @@ PyObject *number(const xmlNode *node, const char *name, const Reading *r, int no
     if (result != NULL) {
         Py_INCREF(result);
     } else if (!PyErr_Occurred()) {
-        result = PyObject_GetItem(r->numbers, key); /* Numbers.__missing__: parses, remembers, or ValueError */
+        result = parsed(value, key, r->numbers);
+        if (result == NULL && !PyErr_Occurred()) {
+            result = PyObject_GetItem(r->numbers, key); /* Numbers.__missing__: parses, remembers, or ValueError */
+        }
         if (result == NULL && PyErr_ExceptionMatches(PyExc_ValueError)) {
             PyErr_Clear();
         }

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import contextlib
 import os
+import struct
 import subprocess
 import sys
 import tracemalloc
@@ -22,7 +23,7 @@ from junctionart.params import Params
 from junctionart.writer import to_bytes
 from tests.conftest import corpus_files
 from xodrcheck.reader import fast, read
-from xodrcheck.reader.context import Numbers
+from xodrcheck.reader.context import REMEMBER, Numbers
 
 FAST = (fast.plan_view, fast.profile, fast.lanes)
 
@@ -328,7 +329,7 @@ def test_configure_refuses_what_is_not_lxmls_element():
     import xodrcheck_speedups
 
     with pytest.raises(TypeError, match="_Element"):
-        xodrcheck_speedups.configure(dict, Numbers, make_cubic=None)
+        xodrcheck_speedups.configure(dict, Numbers, 10, make_cubic=None)
     assert fast.lanes(etree.fromstring(document()).find("road/lanes"), Numbers(), False) is not None  # unchanged
 
 
@@ -415,3 +416,59 @@ _V19 = opendrive_documents(versions=((1, 9),), max_roads_per_chain=2, max_elemen
 def test_damaged_19_documents_read_the_same(data):
     """1.9 files have lane layers, which the compiled path leaves to Python."""
     assert_same(data)
+
+
+NUMBER_TEXTS = [
+    "3.5",
+    "+3.5",
+    "-0",
+    "-0.0",
+    ".5",
+    "5.",
+    "1E5",
+    "1e-400",
+    "4.9406564584124654e-324",
+    "1.7976931348623157e308",
+    "1.7976931348623159e308",
+    "3.5000000000000000e+0",
+    "0.1",
+    "1_0",
+    " 3.5",
+    "3.5 ",
+    "0x10",
+    "inf",
+    "-Infinity",
+    "nan",
+    "1e",
+    "",
+    "٣",
+]
+
+
+@pytest.mark.parametrize("raw", NUMBER_TEXTS)
+def test_numbers_are_the_floats_python_reads(raw):
+    """The compiled path parses a plain float itself (PyOS_string_to_double, as float() does) and leaves anything
+    else (whitespace, underscores, non-finite, not a number) to the cache's own __missing__."""
+    data = document(8, '<width sOffset="10" a="3.5"', f'<width sOffset="10" a="{raw}"')
+    lanes = fast_results(data)[2]
+    try:
+        expected = float(raw)
+    except ValueError:
+        expected = None
+    if expected is None or expected - expected != 0.0:
+        assert lanes is None  # a finding: the Python reader's
+    else:
+        width = lanes[1][0].right[0].widths[1]
+        assert struct.pack("<d", width.a) == struct.pack("<d", expected)
+    assert_same(data)
+
+
+def test_a_full_number_cache_is_not_grown():
+    numbers = Numbers({str(i): float(i) for i in range(REMEMBER)})
+    road = etree.fromstring(document()).find("road")
+    assert fast.lanes(road.find("lanes"), numbers, False) is not None
+    assert fast.plan_view(road.find("planView"), numbers) is not None
+    assert len(numbers) == REMEMBER
+    smaller = Numbers()
+    fast.lanes(road.find("lanes"), smaller, False)
+    assert "3.5" in smaller and 0 < len(smaller) < 20

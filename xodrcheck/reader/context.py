@@ -70,7 +70,7 @@ def describe(el: etree._Element) -> str:
 
 #: How many distinct values :class:`Numbers` remembers: a CARLA town has a few thousand, a 50 MB map far more, and
 #: past this the rarer values are parsed each time instead of kept (the cache is dropped with the read's context).
-_REMEMBER = 1 << 16
+REMEMBER = 1 << 16
 
 
 class Numbers(dict[str | None, float]):
@@ -85,7 +85,7 @@ class Numbers(dict[str | None, float]):
         value = float(raw)  # type: ignore[arg-type]  # TypeError for None, as wanted
         if value - value != 0.0:
             raise ValueError(raw)
-        if len(self) < _REMEMBER:
+        if len(self) < REMEMBER:
             self[raw] = value
         return value
 

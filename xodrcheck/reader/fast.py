@@ -54,7 +54,7 @@ def _load() -> str:
     except ImportError:
         return "the xodrcheck-speedups module is not installed (scripts/setup builds it)"
     from xodrcheck.model import LaneType
-    from xodrcheck.reader.context import Numbers
+    from xodrcheck.reader.context import REMEMBER, Numbers
     from xodrcheck.reader.lanes import LANE_TYPES  # here: lanes imports this module
 
     # the exact spellings the Python reader maps without a finding: lower case, and the standard's own (offRamp...)
@@ -64,6 +64,7 @@ def _load() -> str:
     module.configure(
         etree._Element,
         Numbers,
+        REMEMBER,
         make_cubic=construct.make_cubic,
         make_line=construct.make_line,
         make_arc=construct.make_arc,
