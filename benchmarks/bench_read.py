@@ -16,7 +16,7 @@ and the ratio is that of the work done alone.
 
 The reader builds its model with the compiled fast path when ``xodrcheck-speedups`` is installed (scripts/setup
 builds it); the first line printed says whether it is on. ``--pure`` measures the pure-Python reader instead
-(Town01 2.15 with ``--no-trim`` at the last measurement, against ~1.3 with the fast path).
+(Town01 2.13 with ``--no-trim`` when last measured, 1.3-1.7 with the fast path, 2026-11-27).
 
     python benchmarks/bench_read.py [--repeats 5] [--corpus DIR] [--no-trim] [--pure]
 

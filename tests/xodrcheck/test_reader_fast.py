@@ -472,3 +472,27 @@ def test_a_full_number_cache_is_not_grown():
     smaller = Numbers()
     fast.lanes(road.find("lanes"), smaller, False)
     assert "3.5" in smaller and 0 < len(smaller) < 20
+
+
+class _Misfit:
+    """A compiled module built for another lxml: configure refuses, or its nodes are not where it looks."""
+
+    def __init__(self, refuses: bool) -> None:
+        self.refuses = refuses
+
+    def configure(self, *args, **parts):
+        if self.refuses:
+            raise TypeError("configure(): element_type is not lxml.etree._Element")
+
+    def node_line(self, el):
+        return ("b", 2)
+
+
+@pytest.mark.parametrize(
+    "refuses, reason", [(True, "does not fit this installation"), (False, "built for another lxml")]
+)
+def test_a_module_that_does_not_fit_is_left_off(monkeypatch, refuses, reason):
+    monkeypatch.setitem(sys.modules, "xodrcheck_speedups", _Misfit(refuses))
+    before = (fast.plan_view, fast.profile, fast.lanes)
+    assert reason in fast._load()
+    assert (fast.plan_view, fast.profile, fast.lanes) == before  # the working module stays in use

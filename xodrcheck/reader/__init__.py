@@ -6,6 +6,9 @@ Only input that cannot be opened at all (a missing file, a directory, more bytes
 :class:`~xodrcheck.findings.ReadError`.
 
 Gzip-compressed files (``.xodrz``, the standard's compressed form) are decompressed first, within the same size limit.
+
+The model is built in Python (:mod:`.document`, :mod:`.roads`, :mod:`.lanes`); where the optional compiled module is
+installed, :mod:`.fast` builds the plan views, profiles and lanes that read without a finding, the same values faster.
 """
 
 from __future__ import annotations

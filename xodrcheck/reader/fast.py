@@ -53,13 +53,24 @@ def _load() -> str:
         import xodrcheck_speedups as module
     except ImportError:
         return "the xodrcheck-speedups module is not installed (scripts/setup builds it)"
+    try:
+        _configure(module)
+    except (TypeError, ValueError, AttributeError) as exc:  # built for an lxml or a model this one is not
+        return f"xodrcheck-speedups does not fit this installation ({exc}): rebuild it (scripts/setup)"
+    if not _layout_matches(module):
+        return "xodrcheck-speedups was built for another lxml: rebuild it (scripts/setup)"
+    plan_view, profile, lanes = module.plan_view, module.profile, module.lanes
+    return ""
+
+
+def _configure(module: Any) -> None:
+    """Hand the module lxml's element class, the reader's number cache, its constructors and its tables."""
     from xodrcheck.model import LaneType
     from xodrcheck.reader.context import REMEMBER, Numbers
     from xodrcheck.reader.lanes import LANE_TYPES  # here: lanes imports this module
 
     # the exact spellings the Python reader maps without a finding: lower case, and the standard's own (offRamp...)
     lane_types = {**LANE_TYPES, **{t.value: t for t in LaneType if t is not LaneType.UNKNOWN}}
-
     p_ranges = {"arcLength": PRange.ARC_LENGTH, "arclength": PRange.ARC_LENGTH, "normalized": PRange.NORMALIZED}
     module.configure(
         etree._Element,
@@ -79,7 +90,3 @@ def _load() -> str:
         lane_types=lane_types,
         p_ranges=p_ranges,
     )
-    if not _layout_matches(module):
-        return "xodrcheck-speedups was built for another lxml: rebuild it (scripts/setup)"
-    plan_view, profile, lanes = module.plan_view, module.profile, module.lanes
-    return ""
