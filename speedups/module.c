@@ -214,10 +214,15 @@ static struct PyModuleDef module = {
     methods,
 };
 
+/* What xodrcheck/reader/fast.py expects (its CONTRACT): raised whenever what the module reads, or how, changes, so
+ * a module built from older sources is left unused rather than trusted. */
+#define CONTRACT 1
+
 PyMODINIT_FUNC PyInit_xodrcheck_speedups(void)
 {
     PyObject *m = PyModule_Create(&module);
-    if (m != NULL && PyModule_AddIntConstant(m, "LIBXML_VERSION", LIBXML_VERSION) < 0) {
+    if (m != NULL && (PyModule_AddIntConstant(m, "LIBXML_VERSION", LIBXML_VERSION) < 0 ||
+                      PyModule_AddIntConstant(m, "CONTRACT", CONTRACT) < 0)) {
         Py_DECREF(m);
         return NULL;
     }

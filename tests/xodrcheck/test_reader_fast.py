@@ -10,6 +10,7 @@ import struct
 import subprocess
 import sys
 import tracemalloc
+import types
 from pathlib import Path
 
 import pytest
@@ -477,6 +478,8 @@ def test_a_full_number_cache_is_not_grown():
 class _Misfit:
     """A compiled module built for another lxml: configure refuses, or its nodes are not where it looks."""
 
+    CONTRACT = fast.CONTRACT
+
     def __init__(self, refuses: bool) -> None:
         self.refuses = refuses
 
@@ -496,3 +499,19 @@ def test_a_module_that_does_not_fit_is_left_off(monkeypatch, refuses, reason):
     before = (fast.plan_view, fast.profile, fast.lanes)
     assert reason in fast._load()
     assert (fast.plan_view, fast.profile, fast.lanes) == before  # the working module stays in use
+
+
+@pytest.mark.parametrize("contract", [None, fast.CONTRACT + 1])
+def test_a_module_of_another_contract_is_left_off(monkeypatch, contract):
+    """A module built from other sources (an older checkout) is not trusted, even if it would configure."""
+    module = types.SimpleNamespace(configure=lambda *args, **parts: None, node_line=lambda el: ("a", 1))
+    if contract is not None:
+        module.CONTRACT = contract
+    monkeypatch.setitem(sys.modules, "xodrcheck_speedups", module)
+    assert f"contract {contract if contract is not None else 'none'}, this reader needs" in fast._load()
+
+
+def test_the_installed_module_is_of_this_readers_contract():
+    import xodrcheck_speedups
+
+    assert xodrcheck_speedups.CONTRACT == fast.CONTRACT

@@ -32,6 +32,10 @@ UNAVAILABLE = "not loaded"
 
 _LAYOUT_PROBE = b"<a>\n\n<b/></a>"
 
+#: The compiled module's ``CONTRACT`` this reader was written against (speedups/module.c): a module built from other
+#: sources (an older checkout, say) is not used.
+CONTRACT = 1
+
 
 def _layout_matches(module: Any) -> bool:
     """Whether the module reads lxml's elements as lxml does: the node under a known element has its name and line."""
@@ -53,6 +57,9 @@ def _load() -> str:
         import xodrcheck_speedups as module
     except ImportError:
         return "the xodrcheck-speedups module is not installed (scripts/setup builds it)"
+    if getattr(module, "CONTRACT", None) != CONTRACT:
+        found = getattr(module, "CONTRACT", "none")
+        return f"xodrcheck-speedups has contract {found}, this reader needs {CONTRACT}: rebuild it (scripts/setup)"
     try:
         _configure(module)
     except (TypeError, ValueError, AttributeError) as exc:  # built for an lxml or a model this one is not
