@@ -28,10 +28,7 @@ static PyObject *road_mark(const xmlNode *node, const Reading *r, double *s_out)
         args[5] = args[4] ? optional_text(node, "laneChange") : NULL;
         args[6] = args[5] ? line_of(node) : NULL;
     }
-    if (args[6] != NULL) {
-        *s_out = PyFloat_AS_DOUBLE(args[0]);
-    }
-    return make(make_road_mark, args, 7);
+    return make_record(make_road_mark, args, 7, s_out);
 }
 
 static PyObject *speed(const xmlNode *node, const Reading *r, double *s_out)
@@ -40,10 +37,7 @@ static PyObject *speed(const xmlNode *node, const Reading *r, double *s_out)
     args[1] = args[0] ? number(node, "max", r, 1) : NULL;
     args[2] = args[1] ? optional_text(node, "unit") : NULL;
     args[3] = args[2] ? line_of(node) : NULL;
-    if (args[3] != NULL) {
-        *s_out = PyFloat_AS_DOUBLE(args[0]);
-    }
-    return make(make_speed, args, 4);
+    return make_record(make_speed, args, 4, s_out);
 }
 
 static PyObject *height(const xmlNode *node, const Reading *r, double *s_out)
@@ -52,10 +46,7 @@ static PyObject *height(const xmlNode *node, const Reading *r, double *s_out)
     args[1] = args[0] ? number(node, "inner", r, 0) : NULL;
     args[2] = args[1] ? number(node, "outer", r, 0) : NULL;
     args[3] = args[2] ? line_of(node) : NULL;
-    if (args[3] != NULL) {
-        *s_out = PyFloat_AS_DOUBLE(args[0]);
-    }
-    return make(make_lane_height, args, 4);
+    return make_record(make_lane_height, args, 4, s_out);
 }
 
 /* A lane's <link>: its predecessor and successor ids (no layer attribute in a layered file: that is Python's). */
@@ -221,7 +212,7 @@ static PyObject *single_side(const xmlNode *node)
     return FALLBACK;
 }
 
-static PyObject *section(const xmlNode *node, const Reading *r)
+static PyObject *section(const xmlNode *node, const Reading *r, double *s_out)
 {
     /* s, single_side, left, center, right, line, length */
     PyObject *args[7] = {number(node, "s", r, 1), NULL, NULL, NULL, NULL, NULL, NULL};
@@ -260,7 +251,7 @@ static PyObject *section(const xmlNode *node, const Reading *r)
             }
         }
         args[5] = line_of(node);
-        return make(make_lane_section, args, 7);
+        return make_record(make_lane_section, args, 7, s_out);
     }
     for (int i = 0; i < 7; i++) {
         Py_XDECREF(args[i]);
@@ -280,10 +271,7 @@ PyObject *lanes_pair(const xmlNode *node, const Reading *r)
         PyObject *record;
         if (named(child, "laneSection")) {
             seen = 1;
-            record = section(child, r);
-            if (record != NULL && record_s(record, &s) < 0) {
-                Py_CLEAR(record);
-            }
+            record = section(child, r, &s);
             ok = record != NULL && append_in_order(sections, record, s, &last_section) == 0;
         } else if (named(child, "laneOffset")) {
             record = cubic(child, r, 0, &s);

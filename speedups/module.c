@@ -95,7 +95,7 @@ static PyObject *py_profile(PyObject *self, PyObject *const *args, Py_ssize_t na
     if ((size_t)size != strlen(tag) || tag[0] == '{') {
         Py_RETURN_NONE; /* a tag with a namespace or a NUL: the Python reader's */
     }
-    return finish(node == NULL ? NULL : list_to_tuple(cubic_list(node, tag, &r, 0)));
+    return finish(node == NULL ? NULL : list_to_tuple(ordered_records(node, tag, &r, profile_cubic)));
 }
 
 PyDoc_STRVAR(lanes_doc,

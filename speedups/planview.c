@@ -81,33 +81,13 @@ static PyObject *geometry(const xmlNode *node, const Reading *r, double *s_out)
         }
         return NULL;
     }
-    *s_out = PyFloat_AS_DOUBLE(args[0]);
-    return make(constructor, args, n);
+    return make_record(constructor, args, n, s_out);
 }
 
 PyObject *plan_view_list(const xmlNode *parent, const Reading *r)
 {
-    PyObject *out = PyList_New(0);
-    double last = 0.0;
-    if (out == NULL) {
-        return NULL;
-    }
-    for (const xmlNode *child = parent->children; child != NULL; child = child->next) {
-        if (!named(child, "geometry")) {
-            continue;
-        }
-        double s = 0.0;
-        PyObject *record = geometry(child, r, &s);
-        if (record == NULL) {
-            Py_DECREF(out);
-            return NULL;
-        }
-        if (append_in_order(out, record, s, &last) < 0) {
-            Py_DECREF(out);
-            return NULL;
-        }
-    }
-    if (PyList_GET_SIZE(out) == 0) {
+    PyObject *out = ordered_records(parent, "geometry", r, geometry);
+    if (out != NULL && PyList_GET_SIZE(out) == 0) {
         Py_DECREF(out);
         return FALLBACK; /* no <geometry>: a finding */
     }

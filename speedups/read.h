@@ -37,11 +37,14 @@ PyObject *optional_text(const xmlNode *node, const char *name);
 PyObject *number(const xmlNode *node, const char *name, const Reading *r, int nonneg);
 PyObject *integer(const xmlNode *node, const char *name);
 PyObject *make(PyObject *constructor, PyObject **args, Py_ssize_t n);
+PyObject *make_record(PyObject *constructor, PyObject **args, Py_ssize_t n, double *s_out);
 int append_in_order(PyObject *list, PyObject *record, double s, double *last);
-int record_s(PyObject *record, double *s);
 PyObject *list_to_tuple(PyObject *list);
 PyObject *cubic(const xmlNode *node, const Reading *r, int offset, double *s_out);
-PyObject *cubic_list(const xmlNode *parent, const char *tag, const Reading *r, int offset);
+PyObject *profile_cubic(const xmlNode *node, const Reading *r, double *s_out);
+/* A record of one element and its s; NULL without an error: FALLBACK. */
+typedef PyObject *(*Builder)(const xmlNode *node, const Reading *r, double *s_out);
+PyObject *ordered_records(const xmlNode *parent, const char *tag, const Reading *r, Builder build);
 
 /* planview.c */
 PyObject *plan_view_list(const xmlNode *parent, const Reading *r);

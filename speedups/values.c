@@ -205,6 +205,17 @@ PyObject *make(PyObject *constructor, PyObject **args, Py_ssize_t n)
     return result;
 }
 
+/* make() a record whose first argument is its s (a float), and hand that s back when the record is made. */
+PyObject *make_record(PyObject *constructor, PyObject **args, Py_ssize_t n, double *s_out)
+{
+    double s = args[0] != NULL ? PyFloat_AS_DOUBLE(args[0]) : 0.0;
+    PyObject *record = make(constructor, args, n);
+    if (record != NULL) {
+        *s_out = s;
+    }
+    return record;
+}
+
 /* Append a record (stolen) to list if its s is not below the previous record's; -1 for out of order (a FALLBACK,
  * no error set) or an error. */
 int append_in_order(PyObject *list, PyObject *record, double s, double *last)
@@ -217,18 +228,6 @@ int append_in_order(PyObject *list, PyObject *record, double s, double *last)
     int status = PyList_Append(list, record);
     Py_DECREF(record);
     return status;
-}
-
-/* A built record's s (a float); -1 with the error set when it cannot be read. */
-int record_s(PyObject *record, double *s)
-{
-    PyObject *value = PyObject_GetAttrString(record, "s");
-    if (value == NULL) {
-        return -1;
-    }
-    *s = PyFloat_AsDouble(value);
-    Py_DECREF(value);
-    return *s == -1.0 && PyErr_Occurred() ? -1 : 0;
 }
 
 PyObject *list_to_tuple(PyObject *list)
@@ -256,14 +255,17 @@ PyObject *cubic(const xmlNode *node, const Reading *r, int offset, double *s_out
     args[3] = args[2] ? number(node, "c", r, 0) : NULL;
     args[4] = args[3] ? number(node, "d", r, 0) : NULL;
     args[5] = args[4] ? line_of(node) : NULL;
-    if (args[5] != NULL) {
-        *s_out = PyFloat_AS_DOUBLE(args[0]);
-    }
-    return make(make_cubic, args, 6);
+    return make_record(make_cubic, args, 6, s_out);
 }
 
-/* The <tag> children of parent as a list of cubic records in ascending s. */
-PyObject *cubic_list(const xmlNode *parent, const char *tag, const Reading *r, int offset)
+/* <tag s a b c d>, as in a profile (s, not sOffset). */
+PyObject *profile_cubic(const xmlNode *node, const Reading *r, double *s_out)
+{
+    return cubic(node, r, 0, s_out);
+}
+
+/* The <tag> children of parent built by build, as a list in ascending s. */
+PyObject *ordered_records(const xmlNode *parent, const char *tag, const Reading *r, Builder build)
 {
     PyObject *out = PyList_New(0);
     double last = 0.0;
@@ -275,7 +277,7 @@ PyObject *cubic_list(const xmlNode *parent, const char *tag, const Reading *r, i
             continue;
         }
         double s = 0.0;
-        PyObject *record = cubic(child, r, offset, &s);
+        PyObject *record = build(child, r, &s);
         if (record == NULL || append_in_order(out, record, s, &last) < 0) {
             Py_DECREF(out);
             return NULL;

@@ -57,8 +57,8 @@ def _load() -> str:
         import xodrcheck_speedups as module
     except ImportError:
         return "the xodrcheck-speedups module is not installed (scripts/setup builds it)"
-    if getattr(module, "CONTRACT", None) != CONTRACT:
-        found = getattr(module, "CONTRACT", "none")
+    found = getattr(module, "CONTRACT", "none")
+    if found != CONTRACT:
         return f"xodrcheck-speedups has contract {found}, this reader needs {CONTRACT}: rebuild it (scripts/setup)"
     try:
         _configure(module)
@@ -74,11 +74,12 @@ def _configure(module: Any) -> None:
     """Hand the module lxml's element class, the reader's number cache, its constructors and its tables."""
     from xodrcheck.model import LaneType
     from xodrcheck.reader.context import REMEMBER, Numbers
-    from xodrcheck.reader.lanes import LANE_TYPES  # here: lanes imports this module
+    from xodrcheck.reader.lanes import LANE_TYPES  # here: lanes and roads import this module
+    from xodrcheck.reader.roads import P_RANGES
 
     # the exact spellings the Python reader maps without a finding: lower case, and the standard's own (offRamp...)
     lane_types = {**LANE_TYPES, **{t.value: t for t in LaneType if t is not LaneType.UNKNOWN}}
-    p_ranges = {"arcLength": PRange.ARC_LENGTH, "arclength": PRange.ARC_LENGTH, "normalized": PRange.NORMALIZED}
+    p_ranges = {**P_RANGES, **{p.value: p for p in PRange}}
     module.configure(
         etree._Element,
         Numbers,

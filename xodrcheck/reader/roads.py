@@ -41,7 +41,7 @@ ELEMENT_TYPES = {"road": ElementType.ROAD, "junction": ElementType.JUNCTION}
 CONTACT_POINTS = {"start": ContactPoint.START, "end": ContactPoint.END}
 _ELEMENT_DIRS = {"+": ElementDir.PLUS, "-": ElementDir.MINUS}
 _TRAFFIC_RULES = {"rht": TrafficRule.RHT, "lht": TrafficRule.LHT}
-_P_RANGES = {"arclength": PRange.ARC_LENGTH, "normalized": PRange.NORMALIZED}
+P_RANGES = {"arclength": PRange.ARC_LENGTH, "normalized": PRange.NORMALIZED}
 
 # attribute names as lists, the type of ``el.keys()``, which Context.floats compares them with
 _GEOMETRY = ["s", "x", "y", "hdg", "length"]
@@ -91,7 +91,7 @@ def _param_poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], li
         else:
             ctx.missing(kind, "pRange", "it is required since OpenDRIVE 1.5; " + then)
     else:
-        chosen = ctx.choice(kind, "pRange", _P_RANGES, SKIP_GEOMETRY)
+        chosen = ctx.choice(kind, "pRange", P_RANGES, SKIP_GEOMETRY)
         if chosen is None:
             return None
         p_range = chosen
