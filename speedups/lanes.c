@@ -118,7 +118,8 @@ static PyObject *lane(const xmlNode *node, const Reading *r, int *is_centre)
     const char *raw;
     LaneRecords rec = {{NULL}, {0.0}, {NULL}, 0};
     args[0] = integer(node, "id");
-    if (args[0] == NULL || attribute(node, "type", &raw) != 1) {
+    /* a lane with @direction (1.8) is Python's: the model's direction is read there, by version */
+    if (args[0] == NULL || attribute(node, "type", &raw) != 1 || has_attribute(node, "direction")) {
         Py_XDECREF(args[0]);
         return NULL;
     }

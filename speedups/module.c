@@ -216,7 +216,7 @@ static struct PyModuleDef module = {
 
 /* What xodrcheck/reader/fast.py expects (its CONTRACT): raised whenever what the module reads, or how, changes, so
  * a module built from older sources is left unused rather than trusted. */
-#define CONTRACT 1
+#define CONTRACT 2
 
 PyMODINIT_FUNC PyInit_xodrcheck_speedups(void)
 {

@@ -22,6 +22,7 @@ from functools import cached_property
 from xodrcheck.classcache import dataclass
 
 __all__ = [
+    "DIRECTED_LANE_TYPES",
     "DRIVABLE_LANE_TYPES",
     "Arc",
     "Connection",
@@ -36,6 +37,7 @@ __all__ = [
     "JunctionLaneLink",
     "JunctionType",
     "Lane",
+    "LaneDirection",
     "LaneHeight",
     "LaneKey",
     "LaneLayer",
@@ -175,6 +177,23 @@ DRIVABLE_LANE_TYPES = frozenset(
         LaneType.SLIP_LANE,
     }
 )
+
+
+#: Lane types whose traffic has one direction of travel (11.3.1: the lane's side and the road's RHT/LHT give it,
+#: @direction may change it): vehicle lanes and ``biking``. The others carry no directed traffic: ``none``,
+#: ``border``, ``shoulder``, ``curb``, ``median`` and ``restricted`` are not driven on, ``walking``/``sidewalk``
+#: lanes are walked both ways, ``parking``, ``stop`` (a hard shoulder for emergency stops), ``tram``, ``rail``,
+#: ``roadWorks`` and ``special1-3`` do not state one; ``bidirectional`` carries both.
+DIRECTED_LANE_TYPES = (DRIVABLE_LANE_TYPES - {LaneType.BIDIRECTIONAL}) | {LaneType.BIKING}
+
+
+class LaneDirection(enum.Enum):
+    """A lane's ``@direction`` (1.8, 11.3.1): ``standard`` keeps the direction its side and the road's traffic rule
+    give, ``reversed`` turns it round, ``both`` allows both (it replaces the deprecated type ``bidirectional``)."""
+
+    STANDARD = "standard"
+    REVERSED = "reversed"
+    BOTH = "both"
 
 
 class Side(enum.Enum):
@@ -359,6 +378,8 @@ class Lane:
     #: lanes of the permanent layer, the default of a link whatever layer the lane itself is on (11.6).
     temporary_predecessors: tuple[int, ...] = ()
     temporary_successors: tuple[int, ...] = ()
+    #: ``@direction`` (1.8 on; ``None`` when absent or in an older file: the standard direction).
+    direction: LaneDirection | None = None
 
     @property
     def side(self) -> Side:

@@ -136,6 +136,39 @@ def test_lane_without_type():
     assert result.document.roads[0].lane_sections[0].right[0].type is m.LaneType.UNKNOWN
 
 
+@pytest.mark.parametrize(
+    ("spelling", "direction"),
+    [
+        ("standard", m.LaneDirection.STANDARD),
+        ("reversed", m.LaneDirection.REVERSED),
+        ("both", m.LaneDirection.BOTH),
+        ("Both", m.LaneDirection.BOTH),
+    ],
+)
+def test_lane_direction_of_1_8(spelling, direction):
+    lane = f'<lane id="-1" type="driving" direction="{spelling}"/>'
+    got = first_road(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>"))))).lane_sections[0].right[0]
+    assert got.direction is direction
+
+
+def test_lane_direction_is_absent_before_1_8_and_by_default():
+    """11.3.1: @direction is new in 1.8 (the schema reports it in older files); absent, the standard direction."""
+    lane = '<lane id="-1" type="driving" direction="reversed"/>'
+    for version in ((1, 7), (1, 8)):
+        data = xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>"))), version=version)
+        got = first_road(data).lane_sections[0].right[0]
+        assert got.direction is (None if version < (1, 8) else m.LaneDirection.REVERSED)
+    plain = first_road(xodr(road(lanes=lanes_of(section(CENTER, '<right><lane id="-1" type="driving"/></right>')))))
+    assert plain.lane_sections[0].right[0].direction is None
+
+
+def test_lane_with_invalid_direction():
+    lane = '<lane id="-1" type="driving" direction="up"/>'
+    result = read(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>")))))
+    assert 'direction="up"' in only(result, "X206").message
+    assert result.document.roads[0].lane_sections[0].right[0].direction is None
+
+
 def test_lane_with_invalid_level():
     lane = '<lane id="-1" type="driving" level="maybe"/>'
     result = read(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>")))))

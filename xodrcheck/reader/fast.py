@@ -34,7 +34,7 @@ _LAYOUT_PROBE = b"<a>\n\n<b/></a>"
 
 #: The compiled module's ``CONTRACT`` this reader was written against (speedups/module.c): a module built from other
 #: sources (an older checkout, say) is not used.
-CONTRACT = 1
+CONTRACT = 2
 
 
 def _layout_matches(module: Any) -> bool:

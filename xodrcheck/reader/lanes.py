@@ -16,6 +16,7 @@ from lxml import etree
 from xodrcheck.model import (
     Cubic,
     Lane,
+    LaneDirection,
     LaneHeight,
     LaneLayer,
     LaneSection,
@@ -43,6 +44,9 @@ LANE_TYPES = {t.value.lower(): t for t in LaneType if t is not LaneType.UNKNOWN}
 #: The usual spellings of ``level``; anything else goes through :meth:`Context.boolean`.
 _LEVELS = {"true": True, "false": False}
 _SKIP_LANE = "the lane is skipped"
+#: ``direction`` values (1.8), matched without regard to case.
+DIRECTIONS = {d.value: d for d in LaneDirection}
+_STANDARD = "read as standard, the standard's default"
 #: ``layer`` values (1.9), matched without regard to case.
 LAYERS = {layer.value: layer for layer in LaneLayer}
 _PERMANENT = "read as permanent, the standard's default"
@@ -61,6 +65,12 @@ def _missing_centre_uid(ctx: Context, section: etree._Element, has_center: bool)
     if layered(ctx) and (parent is None or (parent.get("layer") or "permanent") == "permanent"):
         return U.LAYER_CENTER_PERMANENT
     return U.CENTER_LANE_SINGULAR if has_center else U.CENTER_ELEM_DEFINITION
+
+
+def directed(ctx: Context) -> bool:
+    """Whether the file's lanes may have ``@direction``: OpenDRIVE 1.8 or later, or a version the reader does not
+    know (older files do not have it; the schema reports it there)."""
+    return ctx.version is None or ctx.version >= (1, 8)
 
 
 def layered(ctx: Context) -> bool:
@@ -170,6 +180,9 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
             level = bool(ctx.boolean(el, "level", "read as false, the standard's default"))
     else:
         level = False
+    direction = None
+    if get("direction") is not None and directed(ctx):
+        direction = ctx.choice(el, "direction", DIRECTIONS, _STANDARD)
 
     links: _Links = ((), (), (), ())
     link = None
@@ -227,6 +240,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         tuple(heights),
         links[2],
         links[3],
+        direction,
     )
 
 

@@ -17,6 +17,7 @@ from xodrcheck.classcache import dataclass
 from xodrcheck.config import Config, Tolerances
 from xodrcheck.findings import Finding, XodrError
 from xodrcheck.model import (
+    DIRECTED_LANE_TYPES,
     Connection,
     ContactPoint,
     Document,
@@ -24,6 +25,7 @@ from xodrcheck.model import (
     Junction,
     JunctionType,
     Lane,
+    LaneDirection,
     LaneSection,
     Road,
     RoadLink,
@@ -61,14 +63,20 @@ def other_end(end: ContactPoint) -> ContactPoint:
     return ContactPoint.END if end is ContactPoint.START else ContactPoint.START
 
 
-def travel_direction(road: Road, lane_id: int) -> int:
-    """+1 when traffic on the lane runs along increasing s, -1 against it, 0 for the centre lane.
+def travel_direction(road: Road, lane: Lane) -> int | None:
+    """+1 when traffic on the lane runs along increasing s, -1 against it; ``None`` where no one direction applies.
 
-    Right-hand traffic drives on the right lanes (negative ids) along s; left-hand traffic on the left lanes.
+    11.3.1: in right-hand traffic the right lanes (negative ids) run along s and the left lanes against it, in
+    left-hand traffic the other way round; ``@direction="reversed"`` (1.8) turns the lane's direction round. No
+    direction applies to the centre lane, to a lane whose type carries no directed traffic (sidewalk, shoulder,
+    border, curb, median, none...: :data:`~xodrcheck.model.DIRECTED_LANE_TYPES`) or to a lane open both ways
+    (``@direction="both"``, type ``bidirectional``).
     """
-    if lane_id == 0:
-        return 0
-    along = (lane_id < 0) == (road.rule is TrafficRule.RHT)
+    if lane.id == 0 or lane.type not in DIRECTED_LANE_TYPES or lane.direction is LaneDirection.BOTH:
+        return None
+    along = (lane.id < 0) == (road.rule is TrafficRule.RHT)
+    if lane.direction is LaneDirection.REVERSED:
+        along = not along
     return 1 if along else -1
 
 

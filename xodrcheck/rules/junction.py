@@ -20,7 +20,7 @@ from xodrcheck.model import (
     Junction,
     JunctionLaneLink,
     JunctionType,
-    LaneType,
+    LaneDirection,
     Road,
 )
 from xodrcheck.rules import junction_uids as U
@@ -211,7 +211,9 @@ def junction_lane_link_direction(ctx: Context):
 
     Traffic leaving the incoming lane into the junction must continue along the connecting lane away from the contact
     point (or, for a link describing the other direction, both the other way). Which way a lane runs follows from its
-    side and its road's traffic rule (``RHT``: right lanes along s).
+    side and its road's traffic rule (``RHT``: right lanes along s), turned round by ``direction="reversed"`` (1.8).
+    A link that joins a lane without one direction of traffic (a sidewalk, shoulder, border, curb, median or ``none``
+    lane, or one open both ways: ``direction="both"``, type ``bidirectional``) has no direction to contradict.
 
     Passes (road 1 ends at the junction; road 10 starts there)::
 
@@ -226,10 +228,13 @@ def junction_lane_link_direction(ctx: Context):
     for r in resolved_connections(ctx):
         for ll in r.connection.lane_links:
             a, b = _lanes_of(r, ll, ctx)
-            if a is None or b is None or a.id == 0 or b.id == 0 or LaneType.BIDIRECTIONAL in (a.type, b.type):
+            if a is None or b is None:
                 continue
-            into = travel_direction(r.incoming, a.id) == _toward(r.incoming_end)
-            onward = travel_direction(r.target, b.id) == -_toward(r.contact)
+            along_a, along_b = travel_direction(r.incoming, a), travel_direction(r.target, b)
+            if along_a is None or along_b is None:
+                continue  # a lane without one direction (sidewalk, shoulder, direction="both"...): none to contradict
+            into = along_a == _toward(r.incoming_end)
+            onward = along_b == -_toward(r.contact)
             if into == onward:
                 continue
             yield junction_lane_link_direction.finding(
@@ -263,7 +268,9 @@ def junction_lane_link_outbound(ctx: Context):
     lanes that lead into the junction"; its first sentence is ``connection-duplicate``'s); in 1.7 files a warning;
     older files, written before the standard said so and often listing both directions, get an info. Direct junctions
     are not checked: their lane links join the linked roads' lanes in both directions (12.6.1 links lane 1 of the
-    road that ends at the junction, whose traffic leaves it).
+    road that ends at the junction, whose traffic leaves it). Lanes without one direction of traffic (sidewalk,
+    shoulder, border, curb, median, ``none``; ``direction="both"``, ``bidirectional``) neither lead into the junction
+    nor out of it and are not checked.
 
     Passes (right-hand traffic; road 1 ends at the junction, so lane -1 travels into it)::
 
@@ -284,14 +291,17 @@ def junction_lane_link_outbound(ctx: Context):
             continue  # 12.6: a direct junction's lane links join the roads' lanes in both directions
         for ll in r.connection.lane_links:
             a = ctx.lane_at(r.incoming, r.incoming_end, ll.from_lane)
-            if a is None or a.id == 0 or a.type is LaneType.BIDIRECTIONAL:
+            if a is None:
                 continue
-            if travel_direction(r.incoming, a.id) == _toward(r.incoming_end):
-                continue
+            along = travel_direction(r.incoming, a)
+            if along is None or along == _toward(r.incoming_end):
+                continue  # into the junction, or no one direction (sidewalk, shoulder, direction="both"...)
+            reversed_ = a.direction is LaneDirection.REVERSED
+            traffic = r.incoming.rule.value + (', direction="reversed"' if reversed_ else "")
             yield junction_lane_link_outbound.finding(
                 f"junction {r.junction.id} connection {r.connection.id}: laneLink {ll.from_lane} -> {ll.to_lane} "
-                f"starts at lane {a.id} of road {r.incoming.id}, whose traffic ({r.incoming.rule.value}) leaves the "
-                "junction; list only lanes that enter it",
+                f"starts at lane {a.id} of road {r.incoming.id}, whose traffic ({traffic}) leaves the junction; list "
+                "only lanes that enter it",
                 severity=severity,
                 uid=uid,
                 road=r.incoming.id,
@@ -308,7 +318,8 @@ def incoming_lane_unconnected(ctx: Context):
     Every road linking to the junction is checked, whether or not a connection names it (in a direct junction a lane
     of a linked road is linked by the laneLinks whose ``to`` names it). Roads with a connection
     that has no laneLink at all are skipped (which lanes such a connection joins is not stated), and so are lanes of
-    zero width at the junction and ``bidirectional`` lanes (shared centre lanes that often end at a junction).
+    zero width at the junction and lanes open both ways (``bidirectional``, ``direction="both"``: shared centre
+    lanes that often end at a junction).
 
     Passes::
 
@@ -353,9 +364,9 @@ def incoming_lane_unconnected(ctx: Context):
             section = road.lane_sections[index]
             have = linked.get((into.id, road.id), set())
             for lane in section.lanes:
-                if lane.id == 0 or not lane.drivable or lane.type is LaneType.BIDIRECTIONAL or lane.id in have:
+                if not lane.drivable or lane.id in have:
                     continue
-                if travel_direction(road, lane.id) != _toward(end):
+                if travel_direction(road, lane) != _toward(end):  # out of the junction, or no one direction
                     continue
                 if ctx.zero_width_at(road, index, lane.id, end) is not False:
                     continue

@@ -53,10 +53,11 @@ class _Path:
     xy: np.ndarray  # (n, 2) from the contact point on
 
 
-def _enters(incoming: Road, end: ContactPoint, lane_id: int) -> bool:
-    """Whether traffic on the lane travels towards the road's ``end`` (into the junction)."""
-    direction = travel_direction(incoming, lane_id)
-    return direction == (1 if end is ContactPoint.END else -1)
+def _enters(ctx: Context, incoming: Road, end: ContactPoint, lane_id: int) -> bool:
+    """Whether traffic on the lane travels towards the road's ``end`` (into the junction); not for a lane without one
+    direction of traffic (a sidewalk, a shoulder, ``direction="both"``...)."""
+    lane = ctx.lane_at(incoming, end, lane_id)
+    return lane is not None and travel_direction(incoming, lane) == (1 if end is ContactPoint.END else -1)
 
 
 def _walk(ctx: Context, road: Road, lane_id: int, contact: ContactPoint) -> list[tuple[int, int]]:
@@ -129,7 +130,7 @@ def _paths(
     seen: set[tuple[str, int]] = set()
     for c, connecting, contact in ((k.connection, k.road, k.contact) for k in connections):
         for link in c.lane_links:
-            if not _enters(incoming, end, link.from_lane) or (connecting.id, link.to_lane) in seen:
+            if not _enters(ctx, incoming, end, link.from_lane) or (connecting.id, link.to_lane) in seen:
                 continue
             xy = _centre_path(ctx, connecting, link.to_lane, contact, known)
             if xy is None:
@@ -149,7 +150,7 @@ def _ahead(ctx: Context):
         _, incoming, end, connections = group
         for k in connections:
             for link in k.connection.lane_links:
-                if not _enters(incoming, end, link.from_lane):
+                if not _enters(ctx, incoming, end, link.from_lane):
                     continue
                 for index, lane_id in _walk(ctx, k.road, link.to_lane, k.contact):
                     road, lanes = wanted.setdefault((k.road.id, index), (k.road, []))

@@ -11,7 +11,7 @@ from __future__ import annotations
 from typing import Any
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.model import DRIVABLE_LANE_TYPES, ContactPoint, Lane, LaneType
+from xodrcheck.model import ContactPoint, Lane, LaneType
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, travel_direction
 from xodrcheck.rules.lane_joints import WORD, joints, pair_key, side_lanes
@@ -307,23 +307,16 @@ def lane_link_not_reciprocal(ctx: Context):
                 )
 
 
-#: Lane types whose traffic has a direction (the side of lane 0 and the traffic rule give it).
-_DIRECTED = (DRIVABLE_LANE_TYPES - {LaneType.BIDIRECTIONAL}) | {LaneType.BIKING}
-
-
-def _directed(lane: Lane) -> bool:
-    return lane.type in _DIRECTED
-
-
 @rule("L012", "lane-link-direction", Category.LANE, Severity.ERROR)
 def lane_link_direction(ctx: Context):
     """A lane link joins lanes whose traffic runs in opposite directions.
 
     Inside a road and where a road's end meets the next road's start, right lanes continue right lanes and left lanes
     left lanes. Where two starts or two ends meet, the reference lines run against each other and right lanes continue
-    left lanes. Each road's traffic rule (``rule="RHT"``/``"LHT"``) says which side drives along s. Only lanes with a
-    direction of travel count (vehicle lanes but ``bidirectional``, and ``biking``): a sidewalk, shoulder, median or
-    ``none`` lane may continue on the other side of lane 0 (CARLA moves lane 0 to a road's edge that way).
+    left lanes. Each road's traffic rule (``rule="RHT"``/``"LHT"``) says which side drives along s, and
+    ``direction="reversed"`` (1.8) turns one lane round. Only lanes with one direction of travel count (vehicle lanes
+    and ``biking``; not ``bidirectional`` or ``direction="both"``): a sidewalk, shoulder, median or ``none`` lane may
+    continue on the other side of lane 0 (CARLA moves lane 0 to a road's edge that way).
 
     Passes (road 2 starts at road 1's start)::
 
@@ -341,11 +334,11 @@ def lane_link_direction(ctx: Context):
         for lane in side_lanes(mine.section):
             for target_id in mine.links(lane):
                 target = other.section.lane(target_id)
-                if target is None or target_id == 0 or not (_directed(lane) and _directed(target)):
+                if target is None:
                     continue
-                a = travel_direction(mine.road, lane.id)
-                b = travel_direction(other.road, target_id)
-                if (a == b) == joint.same_orientation:
+                a = travel_direction(mine.road, lane)
+                b = travel_direction(other.road, target)
+                if a is None or b is None or (a == b) == joint.same_orientation:
                     continue
                 key = pair_key(mine, lane.id, other, target_id)
                 if key in seen:

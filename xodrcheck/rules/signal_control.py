@@ -110,17 +110,16 @@ def _lanes(road: Road, p: Placement) -> list[tuple[int, int]]:
         }
         return [(index, k) for k in sorted(ids) if k != 0 and section.lane(k) is not None]
     want = {"+": (1,), "-": (-1,)}.get((p.orientation or "").strip(), (1, -1))
-    return [
-        (index, lane.id)
-        for lane in section.lanes
-        if lane.id != 0 and lane.drivable and travel_direction(road, lane.id) in want
-    ]
+    return [(index, lane.id) for lane in section.lanes if lane.drivable and travel_direction(road, lane) in want]
 
 
 def _to_end(road: Road, index: int, lane_id: int) -> tuple[ContactPoint, int] | None:
     """The road end the lane's traffic drives towards and the lane's id in the section there."""
-    direction = travel_direction(road, lane_id)
-    step = 1 if direction > 0 else -1
+    start = road.lane_sections[index].lane(lane_id)
+    direction = None if start is None else travel_direction(road, start)
+    if direction is None:
+        return None
+    step = direction
     current: int | None = lane_id
     k = index
     while 0 <= k + step < len(road.lane_sections):

@@ -28,3 +28,11 @@ def test_sidewalk_continuing_on_the_other_side_of_lane_0():
 def test_carla_towns_have_no_lane_link_direction_error(corpus_dir):
     for town in ("Town03", "Town06"):
         assert findings(corpus_dir / "carla-towns" / "OpenDrive" / f"{town}.xodr", RULE) == []
+
+
+def test_direction_attribute_turns_or_opens_a_lane():
+    """1.8 @direction (11.3.1): a reversed right lane continues a left lane; a lane open both ways has no direction."""
+    assert findings(fixture(RULE, "pass_direction_reversed.xodr"), RULE) == []
+    assert findings(fixture(RULE, "pass_direction_both.xodr"), RULE) == []
+    (f,) = findings(fixture(RULE, "fail_direction_reversed.xodr"), RULE)
+    assert (f.road, f.lane) == ("1", -1)
