@@ -169,6 +169,31 @@ def test_lane_with_invalid_direction():
     assert result.document.roads[0].lane_sections[0].right[0].direction is None
 
 
+@pytest.mark.parametrize(
+    ("version", "required"),
+    [
+        ((1, 1), False),
+        ((1, 4), False),
+        ((1, 5), True),
+        ((1, 6), True),
+        ((1, 7), True),
+        ((1, 8), False),
+        ((1, 9), False),
+    ],
+)
+def test_centre_lane_type_is_required_where_the_schema_says(version, required):
+    """The centre lane's ``type`` is ``use="required"`` in the 1.5 to 1.7 schemas, optional in 1.8 and 1.9 (and, like
+    every attribute there, in 1.1 to 1.4); a side lane's stays reported."""
+    centre = '<center><lane id="0"/></center>'
+    result = read(
+        xodr(road(lanes=lanes_of(section(centre, '<right><lane id="-1" type="driving"/></right>'))), version=version)
+    )
+    assert codes(result) == (["X205"] if required else [])
+    assert result.document.roads[0].lane_sections[0].center[0].type is m.LaneType.UNKNOWN
+    side = read(xodr(road(lanes=lanes_of(section(CENTER, '<right><lane id="-1"/></right>'))), version=version))
+    assert codes(side) == ["X205"]
+
+
 def test_lane_with_invalid_level():
     lane = '<lane id="-1" type="driving" level="maybe"/>'
     result = read(xodr(road(lanes=lanes_of(section(CENTER, f"<right>{lane}</right>")))))

@@ -140,9 +140,21 @@ def _height(ctx: Context, el: etree._Element) -> LaneHeight | None:
     return None if v is None else make_lane_height(v[0], v[1], v[2], el.sourceline)
 
 
+def _centre_type_optional(ctx: Context, el: etree._Element) -> bool:
+    """Whether ``el`` is a centre lane whose ``type`` the file's schema makes optional: 1.1 to 1.4 (which require no
+    attribute) and 1.8 on (``t_road_lanes_laneSection_center_lane``: ``type`` ``use="optional"``); 1.5 to 1.7
+    require it. A file of unknown version is read as the latest."""
+    parent = el.getparent()
+    if parent is None or parent.tag != "center":
+        return False
+    version = ctx.version
+    return version is None or version <= (1, 4) or version >= (1, 8)
+
+
 def _lane_type(ctx: Context, el: etree._Element, name: str | None) -> LaneType:
     if name is None:
-        ctx.missing(el, "type", "the lane type is read as unknown")
+        if not _centre_type_optional(ctx, el):
+            ctx.missing(el, "type", "the lane type is read as unknown")
         return LaneType.UNKNOWN
     lane_type = LANE_TYPES.get(name.strip().lower())
     if lane_type is None:
