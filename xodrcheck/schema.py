@@ -141,6 +141,53 @@ def compiled(version: tuple[int, int]):
         return _compiled(version)
 
 
+@cache
+def target_namespace(version: tuple[int, int]) -> str | None:
+    """The namespace the schema of ``version`` puts the file's elements in (its ``targetNamespace``: 1.1 and 1.2
+    ``www.vires.com``), ``None`` when it has none (1.3 on). ``KeyError`` when there is no schema for it."""
+    from lxml import etree
+
+    if version not in SCHEMA_FOLDERS:
+        raise KeyError(version)
+    with _schema_file(version).open("rb") as source:
+        for _, root in etree.iterparse(source, events=("start",), resolve_entities=False, no_network=True):
+            return root.get("targetNamespace") or None
+    return None
+
+
+def namespace_mismatch(tree, version: tuple[int, int]) -> tuple[str | None, str | None] | None:
+    """``(the file's namespace, the schema's)`` when the root element is not in the namespace the schema of
+    ``version`` declares its elements in (a 1.1 file without ``xmlns="www.vires.com"``, as every tool writes them),
+    else ``None``."""
+    from lxml import etree
+
+    found = etree.QName(tree.getroot()).namespace
+    expected = target_namespace(version)
+    return None if found == expected else (found, expected)
+
+
+def in_namespace(tree, found: str | None, namespace: str | None):
+    """A copy of ``tree`` whose elements in namespace ``found`` (the root's) are in ``namespace`` instead (``None``:
+    in none); elements of other namespaces (vendor data) and source lines are kept."""
+    import copy
+
+    from lxml import etree
+
+    root = copy.deepcopy(tree.getroot())
+    prefix = "" if found is None else "{" + found + "}"
+    target = "" if namespace is None else "{" + namespace + "}"
+    for el in root.iter():
+        tag = el.tag
+        if not isinstance(tag, str):
+            continue
+        if found is None and tag[0] != "{":
+            el.tag = target + tag
+        elif found is not None and tag.startswith(prefix):
+            el.tag = target + tag[len(prefix) :]
+    etree.cleanup_namespaces(root)
+    return etree.ElementTree(root)
+
+
 def validate(tree, version: tuple[int, int]) -> Iterator[SchemaError]:
     """Validate an lxml tree against the schema of ``version``, yielding each error with its source line."""
     if version in XSD11:

@@ -22,6 +22,10 @@ def schema_invalid(ctx: Context):
     every multiBoard signal, vmsGroup and defaultRegulations would be invalid). Each schema error is one finding at
     its line, up to 200 per file.
 
+    The elements are validated in the namespace the schema declares them in: a file whose elements are in another
+    one (the 1.1 and 1.2 schemas put them in ``www.vires.com``, which the files those versions' tools wrote do not
+    use) is validated as if they were, and ``schema-namespace-assumed`` says so.
+
     Passes (1.7: a lane with its required ``type``)::
 
         <lane id="-1" type="driving" level="false"><width sOffset="0" a="3.5" b="0" c="0" d="0"/></lane>
@@ -34,12 +38,18 @@ def schema_invalid(ctx: Context):
     tree = ctx.tree
     if version is None or tree is None or schema.schema_name(version) is None:
         return
+    mismatch = schema.namespace_mismatch(tree, version)
+    if mismatch is not None:  # validated as if in the schema's namespace: schema-namespace-assumed says so
+        tree = schema.in_namespace(tree, *mismatch)
+    namespace = schema.target_namespace(version)
+    qualified = "" if namespace is None else "{" + namespace + "}"  # left out of the messages' element names
     count = 0
     for err in schema.validate(tree, version):
         count += 1
         if count <= MAX_REPORTED:
+            message = err.message.replace(qualified, "") if qualified else err.message
             yield schema_invalid.finding(
-                f"not valid against the OpenDRIVE {schema.schema_name(version)} schema: {err.message}",
+                f"not valid against the OpenDRIVE {schema.schema_name(version)} schema: {message}",
                 line=err.line or None,
             )
     if count > MAX_REPORTED:
@@ -74,3 +84,42 @@ def schema_not_validated(ctx: Context):
             f"no schema validation: no schema for OpenDRIVE {version[0]}.{version[1]} (known: 1.1 to 1.9)",
             line=header.line if header is not None and header.line else None,
         )
+
+
+def _namespace_words(namespace: str | None) -> str:
+    return "in no namespace" if namespace is None else f"in namespace '{namespace}'"
+
+
+@rule("S003", "schema-namespace-assumed", Category.SCHEMA, Severity.INFO, xml=True)
+def schema_namespace_assumed(ctx: Context):
+    """The file's elements are not in the namespace the schema of its version declares: they were validated as if
+    they were.
+
+    The OpenDRIVE 1.1 and 1.2 schemas declare their elements in the namespace ``www.vires.com``
+    (``targetNamespace``); the files of those versions, as tools write them, put theirs in none (or in another, such
+    as ``http://www.opendrive.org``), and 1.3 on declare none. Validated as written, such a file fails at its root
+    ("no matching global declaration"), which says nothing about its content; ``schema-invalid`` therefore
+    validates the elements as if they were in the schema's namespace, and this finding says so.
+
+    Passes (1.1 with the schema's namespace)::
+
+        <OpenDRIVE xmlns="www.vires.com"><header revMajor="1" revMinor="1"/>...</OpenDRIVE>
+
+    Fails (1.1 in no namespace: validated as if in ``www.vires.com``)::
+
+        <OpenDRIVE><header revMajor="1" revMinor="1"/>...</OpenDRIVE>
+    """
+    version = ctx.version
+    tree = ctx.tree
+    if version is None or tree is None or schema.schema_name(version) is None:
+        return
+    mismatch = schema.namespace_mismatch(tree, version)
+    if mismatch is None:
+        return
+    found, expected = mismatch
+    name = schema.schema_name(version)
+    yield schema_namespace_assumed.finding(
+        f"the OpenDRIVE {name} schema's elements are {_namespace_words(expected)}; this file's are "
+        f"{_namespace_words(found)}: validated as if they were {_namespace_words(expected)}",
+        line=tree.getroot().sourceline or None,
+    )
