@@ -2,6 +2,9 @@
 
 from __future__ import annotations
 
+import re
+from collections.abc import Iterable, Iterator
+
 from xodrcheck import schema
 from xodrcheck.findings import Category, Severity
 from xodrcheck.rules.context import Context
@@ -9,6 +12,38 @@ from xodrcheck.rules.registry import rule
 
 #: Schema errors reported one by one per file; the rest are counted in one last finding.
 MAX_REPORTED = 200
+
+#: The element and attribute a validator's message is about: xmlschema's "Element 'road': attribute length='abc': ..."
+#: and "'bogus' attribute not allowed", lxml's "Element 'road', attribute 'length': ..." and "The attribute 'x' is".
+_ATTRIBUTE = re.compile(
+    r"^Element '(?P<element>[^']+)'(?:: attribute (?P<a>[\w:.-]+)=|, attribute '(?P<b>[^']+)'"
+    r"|: '(?P<c>[^']+)' attribute|: The attribute '(?P<d>[^']+)')"
+)
+
+
+def _cause(error: schema.SchemaError) -> tuple:
+    """What an error is about: (line, element, attribute) when it names an attribute, else (line, message)."""
+    found = _ATTRIBUTE.match(error.message)
+    if found is None:
+        return (error.line, error.message)
+    attribute = found.group("a") or found.group("b") or found.group("c") or found.group("d")
+    return (error.line, found.group("element"), attribute)
+
+
+_PATTERN = "match any pattern"
+
+
+def one_per_cause(errors: Iterable[schema.SchemaError]) -> Iterator[schema.SchemaError]:
+    """The errors, one per cause: xmlschema reports one bad attribute value once per check it fails (a pattern, a
+    conversion, an assertion...), three errors at one line for one ``length="abc"``. The first is kept, unless it only
+    quotes the type's regular expression and a later one says more plainly what is wrong."""
+    kept: dict[tuple, schema.SchemaError] = {}
+    for error in errors:
+        key = _cause(error)
+        first = kept.get(key)
+        if first is None or (_PATTERN in first.message and _PATTERN not in error.message):
+            kept[key] = error
+    return iter(kept.values())
 
 
 @rule("S001", "schema-invalid", Category.SCHEMA, Severity.ERROR, xml=True)
@@ -20,7 +55,8 @@ def schema_invalid(ctx: Context):
     checked against the 1.6.1 schema, 1.7 against 1.7.0, 1.8 against 1.8.1, 1.9 against 1.9.0 (see
     :mod:`xodrcheck.schema`; 1.8.1 and 1.9.0 with the corrections of :mod:`xodrcheck.schema_errata`, without which
     every multiBoard signal, vmsGroup and defaultRegulations would be invalid). Each schema error is one finding at
-    its line, up to 200 per file.
+    its line, up to 200 per file; what the validator reports several times for one cause (one attribute of one element:
+    xmlschema gives a bad number once per check it fails) is one finding.
 
     The elements are validated in the namespace the schema declares them in: a file whose elements are in another
     one (the 1.1 and 1.2 schemas put them in ``www.vires.com``, which the files those versions' tools wrote do not
@@ -44,7 +80,7 @@ def schema_invalid(ctx: Context):
     namespace = schema.target_namespace(version)
     qualified = "" if namespace is None else "{" + namespace + "}"  # left out of the messages' element names
     count = 0
-    for err in schema.validate(tree, version):
+    for err in one_per_cause(schema.validate(tree, version)):
         count += 1
         if count <= MAX_REPORTED:
             message = err.message.replace(qualified, "") if qualified else err.message
