@@ -26,6 +26,7 @@ import numpy as np
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.objects.model import RoadObject
+from xodrcheck.quantities import metres
 
 if TYPE_CHECKING:  # pragma: no cover
     from xodrcheck.lanes import RoadGeometry
@@ -110,11 +111,11 @@ class Volume:
 
     def describe(self) -> str:
         shape = (
-            f"cylinder of radius {self.radius:g} m"
+            f"cylinder of radius {metres(self.radius)} m"
             if self.radius is not None
-            else f"box of length {self.length:g} m and width {self.width:g} m"
+            else f"box of length {metres(self.length)} m and width {metres(self.width)} m"
         )
-        return shape + (f", height {self.height:g} m" if self.height is not None else "")
+        return shape + (f", height {metres(self.height)} m" if self.height is not None else "")
 
     def excess(self, u, v, bottom=None, top=None) -> np.ndarray:
         """How far each local point lies outside the volume (0 inside): in plan view, and in height for points with

@@ -15,6 +15,7 @@ from lxml import etree
 
 from xodrcheck.findings import Finding, Severity
 from xodrcheck.model import Cubic, Profile
+from xodrcheck.quantities import metres
 from xodrcheck.reader import fast
 from xodrcheck.reader.construct import make_cubic
 from xodrcheck.rules import xml as R
@@ -116,7 +117,7 @@ class Context:
         if self.junction is not None:
             parts.append(f"junction {self.junction}")
         if self.section_s is not None:
-            parts.append(f"lane section s={self.section_s:g}")
+            parts.append(f"lane section s={metres(self.section_s)}")
         if self.lane is not None:
             parts.append(f"lane {self.lane}")
         return ", ".join(parts) + ": " if parts else ""
@@ -268,8 +269,8 @@ class Context:
             if rec.s < prev.s:
                 self.report(
                     R.OUT_OF_ORDER,
-                    f"{what} at line {rec.line} starts at {rec.s:g}, before the one at line {prev.line} "
-                    f"({prev.s:g}); the standard wants them in ascending order of s (in {describe(parent)}); "
+                    f"{what} at line {rec.line} starts at {metres(rec.s)}, before the one at line {prev.line} "
+                    f"({metres(prev.s)}); the standard wants them in ascending order of s (in {describe(parent)}); "
                     "they are kept in file order",
                     line=rec.line,
                     uid=uid,

@@ -21,6 +21,7 @@ from xodrcheck.model import (
     RoadLink,
     TrafficRule,
 )
+from xodrcheck.quantities import metres
 from xodrcheck.reader import fast
 from xodrcheck.reader.construct import (
     make_arc,
@@ -265,7 +266,7 @@ def _length(ctx: Context, el: etree._Element, plan_view: tuple[Geometry, ...]) -
     except (TypeError, ValueError):
         pass
     total = sum(g.length for g in plan_view)
-    given = ctx.number(el, "length", f"the sum of its geometry lengths ({total:g}) is used", nonneg=True)
+    given = ctx.number(el, "length", f"the sum of its geometry lengths ({metres(total)}) is used", nonneg=True)
     return total if given is None else given
 
 

@@ -27,6 +27,7 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context, placed_lane_ids
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import BATCH_SAMPLES, lines_in_order, section_samples, usable
@@ -97,8 +98,8 @@ def lane_radius_too_small(ctx: Context):
             i, curvature, x, y = hit
             yield lane_radius_too_small.finding(
                 f"road {road.id}: the centre of {lane.type.value} lane {lane.id} has a radius of "
-                f"{1.0 / abs(curvature):.3g} m at s={s[i]:.6g}, under the {ctx.tolerances.min_radius:g} m minimum; "
-                "widen the curve",
+                f"{1.0 / abs(curvature):.3g} m at s={metres(s[i])}, under the {metres(ctx.tolerances.min_radius)} m "
+                "minimum; widen the curve",
                 **_where(road, index, lane.id, float(s[i]), x, y, lane.line),
             )
 
@@ -166,7 +167,7 @@ def reference_radius_too_small(ctx: Context):
         radius = 1.0 / abs(float(points.curvature[i]))
         yield reference_radius_too_small.finding(
             f"road {road.id}: the lane-0 line (reference line plus laneOffset) has a radius of {radius:.3g} m at "
-            f"s={s[i]:.6g}, under the {ctx.tolerances.min_radius:g} m minimum, beside a drivable lane",
+            f"s={metres(s[i])}, under the {metres(ctx.tolerances.min_radius)} m minimum, beside a drivable lane",
             **_where(road, index, None, float(s[i]), float(points.x[i]), float(points.y[i]), 0),
         )
 
@@ -198,10 +199,9 @@ def border_folds(ctx: Context):
             points = lines.borders[lane_id]
             what = "the lane-0 line" if lane_id == 0 else f"the outer border of lane {lane_id}"
             yield border_folds.finding(
-                f"road {road.id}: {what} lies {abs(float(t[i])):.3g} m to the "
-                f"{'left' if t[i] > 0 else 'right'} of a reference line turning with radius "
-                f"{1.0 / abs(float(k[i])):.3g} m at s={s[i]:.6g}: the border passes the centre of curvature and folds "
-                f"back; widen the curve or narrow the lanes",
+                f"road {road.id}: {what} lies {abs(float(t[i])):.3g} m to the {'left' if t[i] > 0 else 'right'} of a "
+                f"reference line turning with radius {1.0 / abs(float(k[i])):.3g} m at s={metres(s[i])}: the border "
+                "passes the centre of curvature and folds back; widen the curve or narrow the lanes",
                 **_where(
                     road,
                     index,

@@ -10,6 +10,7 @@ from typing import NamedTuple
 from xodrcheck.findings import Category, Severity
 from xodrcheck.geometry.cubic import CubicCurve
 from xodrcheck.model import Arc, ParamPoly3, PRange
+from xodrcheck.quantities import metres
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.geometry import _at, _finite
@@ -81,10 +82,10 @@ def parampoly3_length_mismatch(ctx: Context):
             if verdict.uid_kind is None:
                 continue
             actual, fits_other = verdict.actual, verdict.fits_other
-            p_range = "[0, 1]" if normalized else f"[0, {g.length:g}]"
+            p_range = "[0, 1]" if normalized else f"[0, {metres(g.length)}]"
             text = (
-                f"road {road.id}: the paramPoly3 at s={g.s:g} is declared {g.length:.6g} m long but its curve "
-                f"over p in {p_range} ({g.p_range.value}) is {actual:.6g} m long (difference "
+                f"road {road.id}: the paramPoly3 at s={metres(g.s)} is declared {metres(g.length)} m long but its "
+                f"curve over p in {p_range} ({g.p_range.value}) is {metres(actual)} m long (difference "
                 f"{actual - g.length:+.4g} m)"
             )
             uid = _PP3_UID[verdict.uid_kind]
@@ -93,7 +94,7 @@ def parampoly3_length_mismatch(ctx: Context):
                 text += f": p does not run over [0, @length]{hint}; fix @length or the coefficients"
             elif fits_other:
                 text += (
-                    f"; over p in [0, {g.length:g}] it has the declared length: the coefficients are for "
+                    f"; over p in [0, {metres(g.length)}] it has the declared length: the coefficients are for "
                     'pRange="arcLength", not for p in [0, 1]'
                 )
             else:
@@ -134,14 +135,16 @@ def parampoly3_not_aligned(ctx: Context):
                 continue
             wrong = []
             if math.hypot(g.aU, g.aV) > tol.position:
-                wrong.append(f"aU={g.aU:g}, aV={g.aV:g} move its start {math.hypot(g.aU, g.aV):.4g} m off x, y")
+                wrong.append(
+                    f"aU={metres(g.aU)}, aV={metres(g.aV)} move its start {math.hypot(g.aU, g.aV):.4g} m off x, y"
+                )
             if not g.bU > 0:
                 wrong.append(f"bU={g.bU:g} is not positive")
             elif abs(math.atan2(g.bV, g.bU)) > tol.heading:
                 wrong.append(f"bV={g.bV:g} turns its start {math.degrees(math.atan2(g.bV, g.bU)):.3g} deg off hdg")
             if wrong:
                 yield parampoly3_not_aligned.finding(
-                    f"road {road.id}: the paramPoly3 at s={g.s:g} is not aligned with its start point: "
+                    f"road {road.id}: the paramPoly3 at s={metres(g.s)} is not aligned with its start point: "
                     + "; ".join(wrong)
                     + "; write the curve with aU = aV = bV = 0 and bU > 0 (shift x, y and hdg instead)",
                     **_at(road, g),
@@ -167,6 +170,6 @@ def arc_zero_curvature(ctx: Context):
         for g in road.plan_view:
             if isinstance(g, Arc) and g.curvature == 0.0:
                 yield arc_zero_curvature.finding(
-                    f"road {road.id}: the arc at s={g.s:g} has curvature 0: it is a straight line; write <line/>",
+                    f"road {road.id}: the arc at s={metres(g.s)} has curvature 0: it is a straight line; write <line/>",
                     **_at(road, g),
                 )

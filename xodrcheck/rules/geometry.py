@@ -22,6 +22,7 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.geometry import profile
 from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
 from xodrcheck.model import Cubic, Geometry, Road, Spiral
+from xodrcheck.quantities import metres
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_uids import SECTION_VALID_LENGTH
@@ -85,9 +86,9 @@ def plan_view_gap(ctx: Context):
             severity = tol.grade(gap)
             if severity is not None:
                 yield plan_view_gap.finding(
-                    f"road {road.id}: the {_kind(a)} at s={a.s:g} ends at ({x:.4f}, {y:.4f}) but the next element "
-                    f"starts at ({b.x:.4f}, {b.y:.4f}), a gap of {gap:.4g} m; correct the x/y of the element at "
-                    f"s={b.s:g} or the previous element's parameters{warning_note(severity, tol)}",
+                    f"road {road.id}: the {_kind(a)} at s={metres(a.s)} ends at ({x:.4f}, {y:.4f}) but the next "
+                    f"element starts at ({b.x:.4f}, {b.y:.4f}), a gap of {gap:.4g} m; correct the x/y of the element "
+                    f"at s={metres(b.s)} or the previous element's parameters{warning_note(severity, tol)}",
                     severity=severity,
                     uid=None if severity is Severity.ERROR else NO_UID,
                     **_at(road, b),
@@ -122,7 +123,7 @@ def plan_view_kink(ctx: Context):
             severity = tol.grade(kink, "heading")
             if severity is not None:
                 yield plan_view_kink.finding(
-                    f"road {road.id}: the {_kind(a)} at s={a.s:g} ends with heading {hdg:.5f} rad but the next "
+                    f"road {road.id}: the {_kind(a)} at s={metres(a.s)} ends with heading {hdg:.5f} rad but the next "
                     f"element starts with hdg={b.hdg:.5f}, a kink of {math.degrees(kink):.3g} deg; make the headings "
                     f"agree{warning_note(severity, tol, 'heading')}",
                     severity=severity,
@@ -155,7 +156,7 @@ def plan_view_s_jump(ctx: Context):
         if elements and math.isfinite(elements[0].s) and abs(elements[0].s) > tol:
             first = elements[0]
             yield plan_view_s_jump.finding(
-                f"road {road.id}: the plan view starts at s={first.s:g}, not at s=0",
+                f"road {road.id}: the plan view starts at s={metres(first.s)}, not at s=0",
                 **_at(road, first),
             )
         for a, b in _pairs(road):
@@ -163,9 +164,9 @@ def plan_view_s_jump(ctx: Context):
             # s and length are decimals: 202.082 + 161.953 against 364.036 differs from 1 mm by 3e-14 in binary
             if round(abs(b.s - expected), 9) > tol:
                 yield plan_view_s_jump.finding(
-                    f"road {road.id}: the element at s={b.s:g} follows a {_kind(a)} at s={a.s:g} of length "
-                    f"{a.length:g}, so it should start at s={expected:.6g} ({'overlap' if b.s < expected else 'gap'} "
-                    f"of {abs(b.s - expected):.4g} m in s)",
+                    f"road {road.id}: the element at s={metres(b.s)} follows a {_kind(a)} at s={metres(a.s)} of length "
+                    f"{metres(a.length)}, so it should start at s={metres(expected)} "
+                    f"({'overlap' if b.s < expected else 'gap'} of {abs(b.s - expected):.4g} m in s)",
                     **_at(road, b),
                 )
 
@@ -203,7 +204,7 @@ def road_length_mismatch(ctx: Context):
         slack = tol.length_abs + tol.length_rel * abs(road.length)
         if abs(end - road.length) > slack:
             yield road_length_mismatch.finding(
-                f"road {road.id}: length is {road.length:g} but its plan view ends at s={end:.6g} "
+                f"road {road.id}: length is {metres(road.length)} but its plan view ends at s={metres(end)} "
                 f"(difference {end - road.length:+.4g} m); set the road's length to the sum of its elements' lengths",
                 road=road.id,
                 s=min(end, road.length),
@@ -211,9 +212,10 @@ def road_length_mismatch(ctx: Context):
             )
         elif math.isfinite(total) and abs(total - road.length) > slack:
             yield road_length_mismatch.finding(
-                f"road {road.id}: length is {road.length:g} and its plan view ends there, but the lengths of its "
-                f"{len(elements)} elements add up to {total:.6g} (difference {total - road.length:+.4g} m): their s "
-                "values skip or overlap (see plan-view-s-jump); the road's length is the sum of its elements' lengths",
+                f"road {road.id}: length is {metres(road.length)} and its plan view ends there, but the lengths of its "
+                f"{len(elements)} elements add up to {metres(total)} (difference {total - road.length:+.4g} m): their "
+                "s values skip or overlap (see plan-view-s-jump); the road's length is the sum of its elements' "
+                "lengths",
                 road=road.id,
                 s=road.length,
                 line=road.line or None,
@@ -242,14 +244,14 @@ def degenerate_geometry(ctx: Context):
             where: dict[str, Any] = {"road": road.id, "s": g.s, "x": g.x, "y": g.y, "line": g.line or road.line or None}
             if g.length <= 0:
                 yield degenerate_geometry.finding(
-                    f"road {road.id}: the {_kind(g)} at s={g.s:g} has length {g.length:g}; remove it or give it a "
-                    f"positive length",
+                    f"road {road.id}: the {_kind(g)} at s={metres(g.s)} has length {metres(g.length)}; remove it or "
+                    "give it a positive length",
                     **where,
                 )
             else:
                 yield degenerate_geometry.finding(
-                    f"road {road.id}: the {_kind(g)} at s={g.s:g} is only {g.length:.3g} m long; merge it into a "
-                    f"neighbouring element",
+                    f"road {road.id}: the {_kind(g)} at s={metres(g.s)} is only {g.length:.3g} m long; merge it into a "
+                    "neighbouring element",
                     severity=Severity.WARNING,
                     **where,
                 )
@@ -282,7 +284,7 @@ def spiral_constant_curvature(ctx: Context):
             if isinstance(g, Spiral) and g.curv_start == g.curv_end:
                 shape = "<line/>" if g.curv_start == 0 else f'<arc curvature="{g.curv_start:g}"/>'
                 yield spiral_constant_curvature.finding(
-                    f"road {road.id}: the spiral at s={g.s:g} has curvStart = curvEnd = {g.curv_start:g}; write "
+                    f"road {road.id}: the spiral at s={metres(g.s)} has curvStart = curvEnd = {g.curv_start:g}; write "
                     f"{shape} instead",
                     **_at(road, g),
                 )
@@ -321,8 +323,8 @@ def short_lane_section(ctx: Context):
             if math.isfinite(length) and length < tol:
                 empty = length <= 0.0
                 yield short_lane_section.finding(
-                    f"road {road.id}: the lane section at s={section.s:g} is {length:.3g} m long; remove it or merge "
-                    "it with its neighbour" + (" (a lane section is longer than zero)" if empty else ""),
+                    f"road {road.id}: the lane section at s={metres(section.s)} is {length:.3g} m long; remove it or "
+                    "merge it with its neighbour" + (" (a lane section is longer than zero)" if empty else ""),
                     severity=Severity.ERROR if empty else None,
                     uid=SECTION_VALID_LENGTH if empty else NO_UID,
                     road=road.id,
@@ -361,8 +363,8 @@ def sampling_capped(ctx: Context):
                 continue
             length = road.section_end(index) - section.s
             yield sampling_capped.finding(
-                f"road {road.id}: the lane section at s={section.s:g} is {length:.4g} m long; the geometric rules "
-                f"sample it with about {budget:,} points, a {length / max(budget, 1):.4g} m step instead of "
+                f"road {road.id}: the lane section at s={metres(section.s)} is {length:.4g} m long; the geometric "
+                f"rules sample it with about {budget:,} points, a {length / max(budget, 1):.4g} m step instead of "
                 f"{step:.3g} m (max_samples_per_section): their findings there are less precise",
                 road=road.id,
                 section_s=section.s,
@@ -421,9 +423,9 @@ def profile_step(ctx: Context):
             shown = f"{math.degrees(size):.3g} deg ({size:.4g} rad)" if unit == "rad" else f"{size:.4g} m"
             kind = "heading" if unit == "rad" else "position"
             yield profile_step.finding(
-                f"road {road.id}: the {element} jumps by {shown} at s={record.s:g}: the record before reaches "
-                f"{reached:.6g} {unit} there, the <{element}> at s={record.s:g} starts at {starts:.6g} {unit}; make it "
-                f"start where the previous one ends{warning_note(severity, ctx.tolerances, kind)}",
+                f"road {road.id}: the {element} jumps by {shown} at s={metres(record.s)}: the record before reaches "
+                f"{reached:.6g} {unit} there, the <{element}> at s={metres(record.s)} starts at {starts:.6g} {unit}; "
+                f"make it start where the previous one ends{warning_note(severity, ctx.tolerances, kind)}",
                 severity=severity,
                 road=road.id,
                 s=record.s,

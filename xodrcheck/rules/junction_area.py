@@ -16,6 +16,7 @@ import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import ElementType, Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts
 from xodrcheck.rules.junction_shapes import boundary_pieces, gaps, grid_area, reference_line, ring, signed_area
@@ -157,7 +158,7 @@ def junction_area_coverage(ctx: Context) -> Iterator[Finding]:
         inside = (s >= -tol) & (s <= line.length + tol)
         if not (inside & (np.abs(t) <= tol)).any() and not _crosses(s, t, line.length, tol):
             yield junction_area_coverage.finding(
-                f"{j.describe()}: its reference line (from ({line.x:.3f}, {line.y:.3f}), {line.length:g} m long) "
+                f"{j.describe()}: its reference line (from ({line.x:.3f}, {line.y:.3f}), {metres(line.length)} m long) "
                 "neither crosses nor touches the junction boundary; place the line across the junction",
                 uid=U.REFLINE_MEETS_BOUNDARY,
                 x=line.x,
@@ -168,7 +169,7 @@ def junction_area_coverage(ctx: Context) -> Iterator[Finding]:
             k = int(np.argmax(np.where(s < 0, -s, s - line.length)))
             yield junction_area_coverage.finding(
                 f"{j.describe()}: the boundary point ({xy[k, 0]:.3f}, {xy[k, 1]:.3f}) lies at s={s[k]:.3f} along the "
-                f"junction reference line, outside its 0..{line.length:g} m, so no line perpendicular to the "
+                f"junction reference line, outside its 0..{metres(line.length)} m, so no line perpendicular to the "
                 "reference line reaches it; lengthen or move the reference line to span the junction",
                 uid=U.REFLINE_REACHES_ALL,
                 x=float(xy[k, 0]),
@@ -252,9 +253,9 @@ def _uncovered(ctx: Context, j: JunctionParts, section, road, roads, covered) ->
             continue
         point = left.representative_point()
         yield crossing_section_coverage.finding(
-            f"{j.describe()}: the <roadSection> of road {road.id} (s={section.s_start:g} to {section.s_end:g}) leaves "
-            f"{left.area:.2f} m² of its overlap with road {other_id} uncovered, around ({point.x:.3f}, "
-            f"{point.y:.3f}); widen sStart..sEnd to cover the whole area where the roads overlap",
+            f"{j.describe()}: the <roadSection> of road {road.id} (s={metres(section.s_start)} to "
+            f"{metres(section.s_end)}) leaves {left.area:.2f} m² of its overlap with road {other_id} uncovered, around "
+            f"({point.x:.3f}, {point.y:.3f}); widen sStart..sEnd to cover the whole area where the roads overlap",
             road=road.id,
             x=float(point.x),
             y=float(point.y),
@@ -331,8 +332,8 @@ def overlap_zone_too_short(ctx: Context) -> Iterator[Finding]:
         point = left.representative_point()
         (a, la, _, za, line), (b, lb, _, zb, _) = lanes
         yield overlap_zone_too_short.finding(
-            f"{j.describe()}: lane {la} of road {a.id} (overlapZone {za:g} m) and lane {lb} of road {b.id} "
-            f"(overlapZone {zb:g} m) still share {left.area:.2f} m² beyond their zones, around ({point.x:.3f}, "
+            f"{j.describe()}: lane {la} of road {a.id} (overlapZone {metres(za)} m) and lane {lb} of road {b.id} "
+            f"(overlapZone {metres(zb)} m) still share {left.area:.2f} m² beyond their zones, around ({point.x:.3f}, "
             f"{point.y:.3f}); make overlapZone cover the whole stretch where the lanes overlap",
             road=a.id,
             lane=la,

@@ -31,6 +31,7 @@ import numpy as np
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import ContactPoint, Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts
 from xodrcheck.rules.junction_shapes import boundary_pieces, joint_lanes, reference_line
@@ -225,7 +226,9 @@ def _place(entry: _Entry, across: _Across, k: int, z: float) -> dict:
 def _zone_note(entry: _Entry) -> str:
     if not entry.no_zone or entry.joint is None:
         return ""
-    return f" (its transitionLength {entry.joint.transition_length:g} m builds no transition zone: {entry.no_zone})"
+    return (
+        f" (its transitionLength {metres(entry.joint.transition_length)} m builds no transition zone: {entry.no_zone})"
+    )
 
 
 def _step(ctx: Context, j: JunctionParts, entry: _Entry, across: _Across, z: np.ndarray, tol: float):
@@ -236,8 +239,8 @@ def _step(ctx: Context, j: JunctionParts, entry: _Entry, across: _Across, z: np.
     over = int(np.sum(step > tol))
     yield elevation_grid_entry_exit.finding(
         f"{j.describe()}: at {_where(entry)} the surface steps by {step[k]:.3g} m from the road onto the elevation "
-        f"grid at ({across.xy[k, 0]:.3f}, {across.xy[k, 1]:.3f}): road z={across.z[k]:.3f}, grid z={z[k]:.3f} "
-        f"({over} of {len(step)} points across the road's end step over {tol:g} m){_zone_note(entry)}; make the grid's "
+        f"grid at ({across.xy[k, 0]:.3f}, {across.xy[k, 1]:.3f}): road z={across.z[k]:.3f}, grid z={z[k]:.3f} ({over} "
+        f"of {len(step)} points across the road's end step over {metres(tol)} m){_zone_note(entry)}; make the grid's "
         "heights there match the road's (elevation and superelevation), or give the joint a transitionLength",
         **_place(entry, across, k, float(across.z[k])),
     )

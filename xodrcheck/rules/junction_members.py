@@ -15,6 +15,7 @@ from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, JunctionType, Lane, LaneType, Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts
 from xodrcheck.rules.junction_roles import legs
@@ -150,7 +151,7 @@ def cross_path_lanes(ctx: Context, cp: CrossPath) -> list[tuple[str, Road, Lane 
         if road is not None and link.s is not None:
             out.append(
                 (
-                    f"lane {link.from_lane} of road {road.id} at s={link.s:g} ({which})",
+                    f"lane {link.from_lane} of road {road.id} at s={metres(link.s)} ({which})",
                     road,
                     lane_at_s(road, link.from_lane, link.s),
                     link.from_lane,

@@ -17,6 +17,7 @@ import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts
 from xodrcheck.rules.junction_shapes import boundary_pieces, gaps, ring, road_points, strip
@@ -69,8 +70,8 @@ def _end(ctx: Context, j: JunctionParts, cp: CrossPath, crossing: Road, at_end: 
     if off is not None:
         yield cross_path_ends.finding(
             f"{j.describe()} cross path {cp.id}: the {name} of crossing road {crossing.id} (lane {link.to_lane} at "
-            f"({centre.x[0]:.3f}, {centre.y[0]:.3f})) is {off[1]:.3g} m from lane {link.from_lane} of road "
-            f"{road.id} at s={link.s:g}, which its <{name}LaneLink> links; make the crossing road {name} on that lane",
+            f"({centre.x[0]:.3f}, {centre.y[0]:.3f})) is {off[1]:.3g} m from lane {link.from_lane} of road {road.id} "
+            f"at s={metres(link.s)}, which its <{name}LaneLink> links; make the crossing road {name} on that lane",
             uid=U.CROSS_PATH_LANE_LINKAGE,
             x=float(centre.x[0]),
             y=float(centre.y[0]),
@@ -82,7 +83,7 @@ def _end(ctx: Context, j: JunctionParts, cp: CrossPath, crossing: Road, at_end: 
         x, y = (float(v) for v in points[off[0]])
         yield cross_path_ends.finding(
             f"{j.describe()} cross path {cp.id}: at its {name}, crossing road {crossing.id} reaches ({x:.3f}, "
-            f"{y:.3f}), {off[1]:.3g} m outside lane {link.from_lane} of road {road.id} around s={link.s:g}; the "
+            f"{y:.3f}), {off[1]:.3g} m outside lane {link.from_lane} of road {road.id} around s={metres(link.s)}; the "
             "crossing road's lanes must start and end fully inside the linked lanes",
             uid=U.CROSS_PATH_CONTAINED,
             x=x,
@@ -101,7 +102,9 @@ def _junction_area(ctx: Context, j: JunctionParts, crossing: Road):
             return None
         lo, hi = sorted((j.s_start, j.s_end))
         area = strip(ctx, main, None, lo, hi)
-        return None if area is None else (area, f"main road {main.id} between sStart={lo:g} and sEnd={hi:g}")
+        return (
+            None if area is None else (area, f"main road {main.id} between sStart={metres(lo)} and sEnd={metres(hi)}")
+        )
     if j.type != "default":
         return None
     if j.boundary is not None:

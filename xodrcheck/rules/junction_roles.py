@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts, link_at, other_end
 from xodrcheck.rules.registry import rule
@@ -201,7 +202,7 @@ def junction_priority_with_signals(ctx: Context):
             leg = ctx.road(road_id)
             for sig in signals.get(road_id, ()):
                 if sig.kind == "signal" and leg is not None and _near_junction(ctx, leg, end, sig.s):
-                    found.append(f"signal {sig.id} on incoming road {road_id} at s={sig.s} (line {sig.line})")
+                    found.append(f"signal {sig.id} on incoming road {road_id} at s={metres(sig.s)} (line {sig.line})")
         if found:
             shown = "; ".join(found[:3]) + (f"; {len(found) - 3} more" if len(found) > 3 else "")
             yield junction_priority_with_signals.finding(
@@ -252,8 +253,8 @@ def virtual_junction_controlled(ctx: Context):
                 if on_main and (sig.s is None or lo is None or hi is None or not lo <= sig.s <= hi):
                     continue  # a traffic light on the main road outside the junction's range
                 yield virtual_junction_controlled.finding(
-                    f"{j.describe()}: dynamic signal {sig.id} on road {road_id} at s={sig.s} is a traffic light in "
-                    "the virtual junction; virtual junctions have no traffic lights",
+                    f"{j.describe()}: dynamic signal {sig.id} on road {road_id} at s={metres(sig.s)} is a traffic "
+                    "light in the virtual junction; virtual junctions have no traffic lights",
                     road=road_id,
                     s=sig.s,
                     line=sig.line or None,
@@ -287,12 +288,14 @@ def virtual_junction_range(ctx: Context):
             if value is None
         ]
         if start is not None and end is not None and start > end:
-            problems.append(f"sStart {start:g} lies after sEnd {end:g}")
+            problems.append(f"sStart {metres(start)} lies after sEnd {metres(end)}")
         if main is not None and math.isfinite(main.length):
             tol = ctx.tolerances.length_abs
             for name, value in (("sStart", start), ("sEnd", end)):
                 if value is not None and not -tol <= value <= main.length + tol:
-                    problems.append(f"{name} {value:g} is not on main road {main.id} (0 to {main.length:g})")
+                    problems.append(
+                        f"{name} {metres(value)} is not on main road {main.id} (0 to {metres(main.length)})"
+                    )
         if problems:
             yield virtual_junction_range.finding(
                 f"{j.describe()}: {'; '.join(problems)}; a virtual junction covers one range sStart..sEnd of its "
@@ -372,8 +375,8 @@ def virtual_junction_branches(ctx: Context):
                 if element_s is None or not marks or any(abs(element_s - m) <= tol for m in marks):
                     continue
                 yield virtual_junction_branches.finding(
-                    f"{j.describe()}: connecting road {road.id} {'starts' if end is ContactPoint.START else 'ends'} "
-                    f"at s={element_s:g} of main road {j.main_road}, but the junction spans sStart={j.s_start_raw} "
+                    f"{j.describe()}: connecting road {road.id} {'starts' if end is ContactPoint.START else 'ends'} at "
+                    f"s={metres(element_s)} of main road {j.main_road}, but the junction spans sStart={j.s_start_raw} "
                     f"to sEnd={j.s_end_raw}: connecting roads start or end at sStart or sEnd",
                     uid=U.VIRTUAL_START_END,
                     road=road.id,

@@ -18,6 +18,7 @@ import numpy as np
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.lanes import RoadGeometry
 from xodrcheck.model import ContactPoint, ElementType, Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts, link_at
 from xodrcheck.rules.registry import NO_UID, rule
@@ -125,10 +126,10 @@ def virtual_junction_joint(ctx: Context) -> Iterator[Finding]:
         severity = tol.grade(turn, "heading")
         if severity is not None:
             yield virtual_junction_joint.finding(
-                f"{j.describe()}: connecting road {road.id} {_verb(end)} main road {main.id} at s={s:g} heading "
-                f"{math.degrees(turn):.2f} deg off the main road's heading there ({math.degrees(main_hdg):.2f} deg"
-                f"{', reversed' if direction == '-' else ''}); make the headings equal where they meet"
-                f"{warning_note(severity, tol, 'heading')}",
+                f"{j.describe()}: connecting road {road.id} {_verb(end)} main road {main.id} at s={metres(s)} heading "
+                f"{math.degrees(turn):.2f} deg off the main road's heading there ({math.degrees(main_hdg):.2f} "
+                f"deg{', reversed' if direction == '-' else ''}); make the headings equal where they "
+                f"meet{warning_note(severity, tol, 'heading')}",
                 uid=U.VIRTUAL_HEADING if severity is Severity.ERROR else NO_UID,
                 severity=severity,
                 **where,
@@ -163,9 +164,9 @@ def _lanes(
                 if height is not None:
                     what += f"{' and ' if what else ''}their surfaces step by {step:.4g} m"
                 yield virtual_junction_joint.finding(
-                    f"{j.describe()}: lane {lane.id} of connecting road {road.id} continues lane {other} of main "
-                    f"road {main.id} at s={s:g}, but {what}; make the linked lanes meet where the road "
-                    f"{_verb(end)} the main road{warning_note(severity, tol)}",
+                    f"{j.describe()}: lane {lane.id} of connecting road {road.id} continues lane {other} of main road "
+                    f"{main.id} at s={metres(s)}, but {what}; make the linked lanes meet where the road {_verb(end)} "
+                    f"the main road{warning_note(severity, tol)}",
                     uid=U.VIRTUAL_SMOOTH if severity is Severity.ERROR else NO_UID,
                     severity=severity,
                     road=road.id,

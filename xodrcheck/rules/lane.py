@@ -12,6 +12,7 @@ from typing import Any
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, Lane, LaneType
+from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, travel_direction
 from xodrcheck.rules.lane_joints import WORD, joints, pair_key, side_lanes
@@ -50,7 +51,7 @@ def centre_lane_invalid(ctx: Context):
     """
     for road in ctx.document.roads:
         for section in road.lane_sections:
-            here = f"road {road.id} lane section s={section.s:g}"
+            here = f"road {road.id} lane section s={metres(section.s)}"
             where: dict[str, Any] = {"road": road.id, "section_s": section.s, "s": section.s}
             for lane in section.center:
                 if lane.id != 0:
@@ -103,7 +104,7 @@ def centre_lane_width(ctx: Context):
                     record = (lane.widths or lane.borders)[0]
                     kind = "width" if lane.widths else "border"
                     yield centre_lane_width.finding(
-                        f"road {road.id} lane section s={section.s:g}: the centre lane 0 has a <{kind}> record; "
+                        f"road {road.id} lane section s={metres(section.s)}: the centre lane 0 has a <{kind}> record; "
                         "remove it (lane 0 has no width)",
                         road=road.id,
                         lane=0,
@@ -139,7 +140,7 @@ def lane_id_sequence(ctx: Context):
     """
     for road in ctx.document.roads:
         for section in road.lane_sections:
-            here = f"road {road.id} lane section s={section.s:g}"
+            here = f"road {road.id} lane section s={metres(section.s)}"
             where: dict[str, Any] = {"road": road.id, "section_s": section.s, "s": section.s}
             for name, lanes, sign in (("left", section.left, 1), ("right", section.right, -1)):
                 wrong = [lane for lane in lanes if lane.id * sign <= 0]

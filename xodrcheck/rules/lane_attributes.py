@@ -6,6 +6,7 @@ from __future__ import annotations
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import DRIVABLE_LANE_TYPES as DRIVABLE
 from xodrcheck.model import LaneType
+from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane import joints, pair_key, side_lanes
@@ -37,7 +38,7 @@ def lane_level_one_side(ctx: Context):
                         level_seen = level_seen if level_seen is not None else lane.id
                     elif level_seen is not None:
                         yield lane_level_one_side.finding(
-                            f"road {road.id} lane section s={section.s:g}: lane {lane.id} is not level but lies "
+                            f"road {road.id} lane section s={metres(section.s)}: lane {lane.id} is not level but lies "
                             f"outside lane {level_seen}, which is",
                             road=road.id,
                             lane=lane.id,

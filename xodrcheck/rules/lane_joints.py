@@ -13,6 +13,7 @@ from collections.abc import Iterator
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context, link_at
 
 #: The lane link that crosses each end: ``predecessor`` at a start, ``successor`` at an end.
@@ -40,7 +41,7 @@ class Side:
         return lane.predecessors if self.end is ContactPoint.START else lane.successors
 
     def describe(self) -> str:
-        return f"road {self.road.id} lane section s={self.section.s:g}"
+        return f"road {self.road.id} lane section s={metres(self.section.s)}"
 
     def where(self, lane_id: int) -> dict:
         return {"road": self.road.id, "lane": lane_id, "section_s": self.section.s, "s": self.s}

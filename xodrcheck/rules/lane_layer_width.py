@@ -6,6 +6,7 @@ import numpy as np
 
 from xodrcheck.arrays import unique
 from xodrcheck.findings import Category, Severity
+from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
@@ -85,8 +86,8 @@ def _compare(rule_, road, layer, j, section, permanent, s, tol):
         k = int(np.argmax(beyond))
         if beyond[k] > tol:
             yield rule_.finding(
-                f"road {road.id}: the temporary layer's {name} lanes (lane section s={section.s:g}) reach "
-                f"{beyond[k]:.3g} m further out than the permanent layer's at s={float(s[k]):.6g}; the temporary "
+                f"road {road.id}: the temporary layer's {name} lanes (lane section s={metres(section.s)}) reach "
+                f"{beyond[k]:.3g} m further out than the permanent layer's at s={metres(float(s[k]))}; the temporary "
                 "lanes' widths and lane offset must keep them on the permanent lanes",
                 road=road.id,
                 section_s=section.s,

@@ -12,6 +12,7 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import DRIVABLE_LANE_TYPES, Cubic, LaneType
+from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_xml import LaneXml, SectionXml, lane_elements, number
@@ -48,7 +49,7 @@ def section_end(section: SectionXml, layer: list[SectionXml], road_length: float
 
 
 def _s(section: SectionXml) -> str:
-    return "?" if section.s is None else f"{section.s:g}"
+    return metres(section.s)
 
 
 def _road_length(ctx: Context, road_id: str) -> float | None:
@@ -250,7 +251,7 @@ def temporary_layer_not_linked(ctx: Context):
                 starts = tag == "predecessor"
                 yield temporary_layer_not_linked.finding(
                     f"{lane.describe()}: the temporary lane layer section {'starts' if starts else 'ends'} at "
-                    f"s={at:g}, but this drivable lane has no {tag} on the permanent layer; link it "
+                    f"s={metres(at)}, but this drivable lane has no {tag} on the permanent layer; link it "
                     f'(<{tag} id="..." layer="permanent"/>) so that traffic can {"enter" if starts else "leave"} it',
                     **lane.where() | {"s": at},
                 )
@@ -298,10 +299,10 @@ def layer_link_without_section(ctx: Context):
             if at is not None and any(abs(at - edge) <= tol for edge in edges):
                 continue
             where = "ends" if index == 0 else "starts"
-            found = ", ".join(f"{e:g}" for e in edges) or "none"
+            found = ", ".join(f"{metres(e)}" for e in edges) or "none"
             yield layer_link_without_section.finding(
                 f"{lane.describe()}: {tag} lane {', '.join(map(str, targets))} on the temporary layer, but the lane "
-                f"section {where} at s={'?' if at is None else f'{at:g}'}, where no temporary lane layer section "
+                f"section {where} at s={metres(at)}, where no temporary lane layer section "
                 f"{'starts' if index == 0 else 'ends'} (temporary layer sections {'start' if index == 0 else 'end'} at "
                 f"{found}); start a new permanent lane section where the lanes change layers",
                 **lane.where() | {"s": at},

@@ -8,6 +8,7 @@ from collections import defaultdict
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType
+from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, link_at
 from xodrcheck.rules.lane import joints, side_lanes
@@ -59,8 +60,8 @@ def lane_link_not_omitted(ctx: Context):
                 targets = lane.predecessors if end is ContactPoint.START else lane.successors
                 if targets:
                     yield lane_link_not_omitted.finding(
-                        f"road {road.id} lane {lane.id} (lane section s={section.s:g}): the road's {_WORD[end]} is "
-                        f"junction {link.element_id}, yet the lane names {_WORD[end]} lane "
+                        f"road {road.id} lane {lane.id} (lane section s={metres(section.s)}): the road's {_WORD[end]} "
+                        f"is junction {link.element_id}, yet the lane names {_WORD[end]} lane "
                         f"{', '.join(map(str, targets))}; the junction's laneLinks say where lanes continue: leave the "
                         f"lane's {_WORD[end]} out",
                         road=road.id,

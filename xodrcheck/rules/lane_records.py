@@ -13,6 +13,7 @@ import itertools
 from lxml import etree
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_xml import LaneXml, by_section, lane_elements, local, number
@@ -151,9 +152,9 @@ def lane_records_out_of_order(ctx: Context):
             if tag in last and s < last[tag][0]:
                 reported.add(tag)
                 yield lane_records_out_of_order.finding(
-                    f"{lane.describe()}: <{tag}> at line {child.sourceline} starts at sOffset {s:g}, before the one "
-                    f"at line {last[tag][1]} ({last[tag][0]:g}); list the <{tag}> records in ascending order of "
-                    "sOffset",
+                    f"{lane.describe()}: <{tag}> at line {child.sourceline} starts at sOffset {metres(s)}, before the "
+                    f"one at line {last[tag][1]} ({metres(last[tag][0])}); list the <{tag}> records in ascending order "
+                    "of sOffset",
                     uid=_ORDERED[tag],
                     **lane.where(child.sourceline),
                 )
@@ -201,8 +202,8 @@ def width_and_border_mixed(ctx: Context):
                 continue
             (w_lane, w_el), (b_lane, b_el) = width, border
             both = (
-                f"<{group}> of road {w_lane.road} lane section s={w_lane.section.s:g}: lane {w_lane.id} has <width> "
-                f"(line {w_el.sourceline}) and lane {b_lane.id} <border> (line {b_el.sourceline}) records"
+                f"<{group}> of road {w_lane.road} lane section s={metres(w_lane.section.s)}: lane {w_lane.id} has "
+                f"<width> (line {w_el.sourceline}) and lane {b_lane.id} <border> (line {b_el.sourceline}) records"
                 if w_lane.section.s is not None
                 else f"<{group}> of road {w_lane.road}: <width> (line {w_el.sourceline}) and <border> "
                 f"(line {b_el.sourceline}) records"
@@ -304,7 +305,7 @@ def lane_width_undefined(ctx: Context):
         first = min(starts)
         if first > _ZERO:
             yield lane_width_undefined.finding(
-                f"{lane.describe()}: the first <{tag}> record starts at sOffset {first:g}, so the lane has no width "
-                f"over the first {first:g} m of its lane section; add a <{tag}> record at sOffset 0",
+                f"{lane.describe()}: the first <{tag}> record starts at sOffset {metres(first)}, so the lane has no "
+                f"width over the first {metres(first)} m of its lane section; add a <{tag}> record at sOffset 0",
                 **lane.where(),
             )

@@ -4,6 +4,7 @@ lane; every lane section has a lane to drive on and ends on its road."""
 from __future__ import annotations
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_xml import SectionXml, lane_elements, number
@@ -55,7 +56,7 @@ def lane_sections_from_start(ctx: Context):
         s, first = min(starts, key=lambda item: item[0])
         if s > _ZERO:
             yield lane_sections_from_start.finding(
-                f"road {road}: the first lane section starts at s={s:g}; from s=0 to there the road has no lane "
+                f"road {road}: the first lane section starts at s={metres(s)}; from s=0 to there the road has no lane "
                 "section and no centre lane: start the first lane section at s=0",
                 uid=U.LANE_SECT_FIRST if ctx.version is None or ctx.version >= (1, 9) else U.CENTER_ELEM_DEFINITION,
                 road=road,
@@ -123,7 +124,7 @@ def _from_start(lane) -> bool:
 
 
 def _s(section: SectionXml) -> str:
-    return "?" if section.s is None else f"{section.s:g}"
+    return "?" if section.s is None else f"{metres(section.s)}"
 
 
 @rule("L028", "lane-section-beyond-road", Category.LANE, Severity.ERROR, uids=(U.SECTION_LENGTH_LIMIT_ROAD,), xml=True)
@@ -149,8 +150,8 @@ def lane_section_beyond_road(ctx: Context):
         end = section.s + length
         if end > road.length + ctx.tolerances.length_abs:
             yield lane_section_beyond_road.finding(
-                f"road {road.id}: the lane section at s={section.s:g} with length={length:g} ends at s={end:g}, "
-                f"{end - road.length:.4g} m past the road's end ({road.length:g}); shorten it",
+                f"road {road.id}: the lane section at s={metres(section.s)} with length={metres(length)} ends at "
+                f"s={metres(end)}, {end - road.length:.4g} m past the road's end ({metres(road.length)}); shorten it",
                 road=road.id,
                 section_s=section.s,
                 s=section.s,

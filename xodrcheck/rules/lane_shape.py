@@ -17,6 +17,7 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
@@ -263,8 +264,8 @@ def negative_width(ctx: Context):
     """
     for lane, section, minimum, where in _width_findings(ctx, True):
         yield negative_width.finding(
-            f"road {where['road']}: lane {lane.id} of the lane section at s={section.s:g} is {minimum:.4g} m wide at "
-            f"s={where['s']:.6g}; its width records must stay >= 0 over the section",
+            f"road {where['road']}: lane {lane.id} of the lane section at s={metres(section.s)} is {minimum:.4g} m "
+            f"wide at s={metres(where['s'])}; its width records must stay >= 0 over the section",
             **where,
         )
 
@@ -294,7 +295,8 @@ def border_crosses_inner(ctx: Context):
     """
     for lane, section, minimum, where in _width_findings(ctx, False):
         yield border_crosses_inner.finding(
-            f"road {where['road']}: lane {lane.id} of the lane section at s={section.s:g}: its outer border lies "
-            f"{-minimum:.4g} m on the inner side of its inner border at s={where['s']:.6g}; the lane's borders cross",
+            f"road {where['road']}: lane {lane.id} of the lane section at s={metres(section.s)}: its outer border lies "
+            f"{-minimum:.4g} m on the inner side of its inner border at s={metres(where['s'])}; the lane's borders "
+            "cross",
             **where,
         )

@@ -15,6 +15,7 @@ from collections.abc import Iterator
 from lxml import etree
 
 from xodrcheck.classcache import dataclass
+from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context
 from xodrcheck.xmlvalues import integer, local, number
 
@@ -62,7 +63,7 @@ class LaneXml:
 
     def describe(self) -> str:
         s = self.section.s
-        return f"road {self.road} lane {self.id} (lane section s={'?' if s is None else f'{s:g}'})"
+        return f"road {self.road} lane {self.id} (lane section s={metres(s)})"
 
 
 @dataclass(frozen=True, slots=True)

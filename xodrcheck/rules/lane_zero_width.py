@@ -13,6 +13,7 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Lane, Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_shape import lane_width_bounds
@@ -95,8 +96,8 @@ def lane_zero_width_stretch(ctx: Context):
 
 def _long_finding(road: Road, index: int, section, lane: Lane, length: float):
     return lane_zero_width_stretch.finding(
-        f"road {road.id}: lane {lane.id} of the lane section at s={section.s:g} has zero width over the whole section "
-        f"({length:.4g} m); leave the lane out instead of running it at zero width",
+        f"road {road.id}: lane {lane.id} of the lane section at s={metres(section.s)} has zero width over the whole "
+        f"section ({length:.4g} m); leave the lane out instead of running it at zero width",
         severity=Severity.WARNING,
         uid=U.SECTION_LONG_ZERO_WIDTH,
         road=road.id,
@@ -112,9 +113,9 @@ def _finding(road: Road, geometry, index: int, section_s: float, lane: Lane, str
     point = geometry.lane_points(index, lane.id, np.array([start]), "outer")
     more = f" (and {len(stretches) - 1} more stretch(es))" if len(stretches) > 1 else ""
     return lane_zero_width_stretch.finding(
-        f"road {road.id}: lane {lane.id} of the lane section at s={section_s:g} has zero width from s={start:.6g} to "
-        f"s={end:.6g}{more} and a width elsewhere in the section, so the number of lanes changes inside it; start a "
-        "new lane section where the lane ends or begins, without it",
+        f"road {road.id}: lane {lane.id} of the lane section at s={metres(section_s)} has zero width from "
+        f"s={metres(start)} to s={metres(end)}{more} and a width elsewhere in the section, so the number of lanes "
+        "changes inside it; start a new lane section where the lane ends or begins, without it",
         road=road.id,
         lane=lane.id,
         section_s=section_s,

@@ -32,6 +32,7 @@ from __future__ import annotations
 import math
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as JU
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules import road_uids as RU
@@ -348,9 +349,9 @@ def _boundary_finding(ctx, road, geometry, i, group, line, lines, inners, pairs,
             advice, uid = f"{lanes_text(*merge)} merge into lane {b}: link each of them to it", U.LINK_MULTIPLE
     point = new.borders[b]
     yield lane_border_discontinuous.finding(
-        f"road {road.id}: {lanes_text(a_in, a)} of the lane section at s={before.s:g} continue"
-        f"{'s' if a_in == a else ''} as {lanes_text(b_in, b)} at s={after.s:g}, but {' and '.join(what)}; {advice}"
-        f"{warning_note(severity, tolerances)}",
+        f"road {road.id}: {lanes_text(a_in, a)} of the lane section at s={metres(before.s)} "
+        f"continue{'s' if a_in == a else ''} as {lanes_text(b_in, b)} at s={metres(after.s)}, but "
+        f"{' and '.join(what)}; {advice}{warning_note(severity, tolerances)}",
         severity=severity,
         uid=uid,
         road=road.id,

@@ -14,6 +14,7 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import TrafficRule
+from xodrcheck.quantities import metres
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
@@ -127,8 +128,8 @@ def object_off_road(ctx: Context):
             )
         elif road is not None and not -slack <= obj.s <= road.length + slack:
             yield object_off_road.finding(
-                f"{label(obj)} stands at s={obj.s:g}, but road {obj.road} runs from s=0 to {road.length:g}: place it "
-                "on the road it belongs to (or on the road it stands beside)",
+                f"{label(obj)} stands at s={metres(obj.s)}, but road {obj.road} runs from s=0 to "
+                f"{metres(road.length)}: place it on the road it belongs to (or on the road it stands beside)",
                 road=obj.road,
                 s=min(max(obj.s, 0.0), road.length),
                 line=obj.line,

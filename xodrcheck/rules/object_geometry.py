@@ -16,6 +16,7 @@ import numpy as np
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
+from xodrcheck.quantities import metres
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import all_objects, label
@@ -308,8 +309,8 @@ def skeleton_outside_volume(ctx: Context):
                 w = polyline.vertices[j]
                 yield skeleton_outside_volume.finding(
                     f"{label(obj)}: the cross-section of the <{w.kind}> at line {w.line} of {polyline_name(polyline)} "
-                    f"(radius {_reach(w):g} m) does not reach into the bounding volume ({volume.describe()}) at all: "
-                    "each point's cross-section lies at least partly inside it",
+                    f"(radius {metres(_reach(w))} m) does not reach into the bounding volume ({volume.describe()}) at "
+                    "all: each point's cross-section lies at least partly inside it",
                     uid=U.SKELETON_BOUNDARY_INSIDE_BOX,
                     road=obj.road,
                     s=obj.s,

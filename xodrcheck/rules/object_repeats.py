@@ -7,6 +7,7 @@ from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.objects.kinds import CORNER_ROAD
+from xodrcheck.quantities import metres
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import all_objects, at, label
@@ -40,11 +41,14 @@ def repeat_beyond_road(ctx: Context):
         for r in obj.repeats:
             end = r.s + r.length
             if r.length < 0:
-                why = f"has length {r.length:g}: a repeat runs forward from its s"
+                why = f"has length {metres(r.length)}: a repeat runs forward from its s"
             elif not -slack <= r.s <= road.length + slack:
-                why = f"starts at s={r.s:g}, outside road {obj.road} (s=0 to {road.length:g})"
+                why = f"starts at s={metres(r.s)}, outside road {obj.road} (s=0 to {metres(road.length)})"
             elif end > road.length + slack:
-                why = f"runs from s={r.s:g} to {end:g}, past the end of road {obj.road} at s={road.length:g}"
+                why = (
+                    f"runs from s={metres(r.s)} to {metres(end)}, past the end of road {obj.road} at "
+                    f"s={metres(road.length)}"
+                )
             else:
                 continue
             yield repeat_beyond_road.finding(
@@ -72,9 +76,11 @@ def _changed(obj: RoadObject, repeat: Repeat, tol: float) -> list[str]:
         reference = own if own is not None else (values[0] if values else None)
         if reference is not None and any(abs(v - reference) > tol for v in values):
             given = ", ".join(
-                f"{a}={getattr(repeat, _FIELD[a]):g}" for a in (start, end) if getattr(repeat, _FIELD[a]) is not None
+                f"{a}={metres(getattr(repeat, _FIELD[a]))}"
+                for a in (start, end)
+                if getattr(repeat, _FIELD[a]) is not None
             )
-            out.append(f"{given}" + (f" (the object's {name} is {own:g})" if own is not None else ""))
+            out.append(f"{given}" + (f" (the object's {name} is {metres(own)})" if own is not None else ""))
     return out
 
 

@@ -16,6 +16,7 @@ import numpy as np
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
+from xodrcheck.quantities import metres
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import all_objects, at, label
@@ -261,8 +262,9 @@ def surface_volumes_overlap(ctx: Context):
         same = a.obj is b.obj
         other = "another instance of it" if same else f"road {b.obj.road} object {b.obj.id} (line {b.obj.line})"
         yield surface_volumes_overlap.finding(
-            f"{label(a.obj)} (at s={a.instance.s:g}) has a <surface> whose bounding volume overlaps that of {other} "
-            f"(at s={b.instance.s:g}) by {shared.area:.3g} m2: CRG surfaces of objects shall not cover the same ground",
+            f"{label(a.obj)} (at s={metres(a.instance.s)}) has a <surface> whose bounding volume overlaps that of "
+            f"{other} (at s={metres(b.instance.s)}) by {shared.area:.3g} m2: CRG surfaces of objects shall not cover "
+            "the same ground",
             road=a.obj.road,
             s=a.instance.s,
             x=float(point.x),

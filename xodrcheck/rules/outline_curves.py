@@ -17,6 +17,7 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Arc, Line, ParamPoly3, PRange
+from xodrcheck.quantities import metres
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.elements import length_verdict
@@ -112,9 +113,9 @@ def curve_outline_discontinuous(ctx: Context):
                 continue
             u, v, gap = found
             yield curve_outline_discontinuous.finding(
-                f"road {obj.road} object {obj.id}: the <curveLocal> at line {b.line} starts at u={b.u:g}, v={b.v:g}, "
-                f"but the one before it (line {a.line}) ends at u={u:.4f}, v={v:.4f}, {gap:.4g} m away: the outline "
-                "is not continuous; start each curve where the previous one ends",
+                f"road {obj.road} object {obj.id}: the <curveLocal> at line {b.line} starts at u={metres(b.u)}, "
+                f"v={metres(b.v)}, but the one before it (line {a.line}) ends at u={u:.4f}, v={v:.4f}, {gap:.4g} m "
+                "away: the outline is not continuous; start each curve where the previous one ends",
                 road=obj.road,
                 s=obj.s,
                 line=b.line,
@@ -201,13 +202,13 @@ def curve_local_length_mismatch(ctx: Context):
             if verdict.uid_kind is None:
                 continue
             uid = _CURVE_UID[verdict.uid_kind]
-            p_range = "[0, 1]" if normalized else f"[0, {curve.length:g}]"
+            p_range = "[0, 1]" if normalized else f"[0, {metres(curve.length)}]"
             text = (
-                f"{mine} is {verdict.actual:.6g} m long over p in {p_range} ({g.p_range.value}), but the curve's "
-                f"length is {curve.length:.6g}"
+                f"{mine} is {metres(verdict.actual)} m long over p in {p_range} ({g.p_range.value}), but the curve's "
+                f"length is {metres(curve.length)}"
             )
             if verdict.uid_kind == "normalized_range":
-                text += f"; over p in [0, {curve.length:g}] it is: the coefficients are for arcLength, not [0, 1]"
+                text += f"; over p in [0, {metres(curve.length)}] it is: the coefficients are for arcLength, not [0, 1]"
             elif verdict.uid_kind == "arcLength_range":
                 text += ": p does not run over [0, @length]"
             severity = Severity.WARNING if uid == U.CURVE_LOCAL_LENGTH_MATCH else Severity.ERROR

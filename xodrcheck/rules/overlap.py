@@ -26,6 +26,7 @@ from typing import TYPE_CHECKING, Any
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
+from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as JU
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
@@ -113,8 +114,8 @@ def _message(
     short = f": {clearance - o.dz:.2f} m short of it as a bridge" if o.dz >= BRIDGE_HEIGHT else ""
     return (
         f"{what}road {roads[0]} and road {roads[1]} overlap by {area:.1f} m2 in plan view (lanes {shown}) with "
-        f"{o.dz:.2f} m between their surfaces (clearance {clearance:g} m{short}), around "
-        f"({o.x:.2f}, {o.y:.2f}); {why}"
+        f"{o.dz:.2f} m between their surfaces (clearance {metres(clearance)} m{short}), around ({o.x:.2f}, {o.y:.2f}); "
+        f"{why}"
     )
 
 
@@ -239,8 +240,9 @@ def lane_fold(ctx: Context):
         corner = surfaces.vertices[surfaces.faces[face, 0]]
         road = ctx.road(key.road)
         yield lane_fold.finding(
-            f"lane {key.lane} of road {key.road} (lane section at s={key.section_s:g}) covers {area:.1f} m2 of plan "
-            f"view twice: its surface folds over itself" + (f" from s={surfaces.face_s[face]:.2f}" if flipped else ""),
+            f"lane {key.lane} of road {key.road} (lane section at s={metres(key.section_s)}) covers {area:.1f} m2 of "
+            "plan view twice: its surface folds over itself"
+            + (f" from s={surfaces.face_s[face]:.2f}" if flipped else ""),
             road=key.road,
             lane=key.lane,
             section_s=key.section_s,
@@ -334,10 +336,10 @@ def road_self_overlap(ctx: Context):
         a, b = surfaces.lanes[o.lane_a], surfaces.lanes[o.lane_b]
         road = ctx.road(road_id)
         yield road_self_overlap.finding(
-            f"road {road_id} overlaps itself by {pair.area:.1f} m2 in plan view: lane {a.lane} at s={o.s_a:.2f} "
-            f"(lane section s={a.section_s:g}) and lane {b.lane} at s={o.s_b:.2f} (lane section s={b.section_s:g}) "
-            f"cover the same ground around ({o.x:.2f}, {o.y:.2f}), {o.dz:.2f} m apart in height (clearance "
-            f"{tol.clearance:g} m)",
+            f"road {road_id} overlaps itself by {pair.area:.1f} m2 in plan view: lane {a.lane} at s={o.s_a:.2f} (lane "
+            f"section s={metres(a.section_s)}) and lane {b.lane} at s={o.s_b:.2f} (lane section "
+            f"s={metres(b.section_s)}) cover the same ground around ({o.x:.2f}, {o.y:.2f}), {o.dz:.2f} m apart in "
+            f"height (clearance {metres(tol.clearance)} m)",
             road=road_id,
             lane=a.lane,
             section_s=a.section_s,

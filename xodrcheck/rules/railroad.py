@@ -9,6 +9,7 @@ from lxml import etree
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Lane, LaneSection, LaneType, Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context, placed_lane_ids
 from xodrcheck.rules.registry import rule
@@ -37,8 +38,8 @@ def rail_lanes_per_road(ctx: Context):
             if len(rails) > 1:
                 ids = ", ".join(f"{lane.id} ({lane.type.value})" for lane in rails)
                 yield rail_lanes_per_road.finding(
-                    f"road {road.id}: the lane section at s={section.s:g} has {len(rails)} rail-bound lanes ({ids}): "
-                    "one pair of tracks per road; model each further track as a road of its own",
+                    f"road {road.id}: the lane section at s={metres(section.s)} has {len(rails)} rail-bound lanes "
+                    f"({ids}): one pair of tracks per road; model each further track as a road of its own",
                     road=road.id,
                     section_s=section.s,
                     s=section.s,
@@ -81,7 +82,7 @@ def rail_reference_line_off_centre(ctx: Context):
             if abs(centre[worst]) > tol:
                 yield rail_reference_line_off_centre.finding(
                     f"road {road.id}: the centre of {lane.type.value} lane {lane.id} is at t={centre[worst]:.3f} m at "
-                    f"s={s[worst]:g}, not on the reference line: the reference line runs in the centre of the "
+                    f"s={metres(s[worst])}, not on the reference line: the reference line runs in the centre of the "
                     "tracks (shift the lane onto it with <laneOffset>)",
                     road=road.id,
                     lane=lane.id,
@@ -243,13 +244,13 @@ def rail_lane_too_narrow(ctx: Context) -> Iterator[Finding]:
         where = (
             f"at most {minimum:.4g} m wide along the whole section"
             if everywhere
-            else f"{minimum:.4g} m wide at s={s:.6g}"
+            else f"{minimum:.4g} m wide at s={metres(s)}"
         )
         yield rail_lane_too_narrow.finding(
-            f"road {road.id}: {lane.type.value} lane {lane.id} of the lane section at s={section.s:g} is {where}: "
-            f"narrower than {limit:g} m, the narrowest rail-bound vehicle assumed (tolerance rail_vehicle_min_width); "
-            "widen the lane to the vehicles' width (the lane is the space the vehicle takes, not the gauge), or set "
-            "the tolerance to the vehicles of this map",
+            f"road {road.id}: {lane.type.value} lane {lane.id} of the lane section at s={metres(section.s)} is "
+            f"{where}: narrower than {metres(limit)} m, the narrowest rail-bound vehicle assumed (tolerance "
+            "rail_vehicle_min_width); widen the lane to the vehicles' width (the lane is the space the vehicle takes, "
+            "not the gauge), or set the tolerance to the vehicles of this map",
             road=road.id,
             lane=lane.id,
             section_s=section.s,

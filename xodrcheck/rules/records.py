@@ -12,6 +12,7 @@ from collections.abc import Iterator
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Cubic, Lane, LaneSection, Line, Profile, Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
@@ -88,7 +89,8 @@ def _profiles(road: Road) -> Iterator[Finding]:
     ):
         for prev, nxt in _redundant(profile):
             yield redundant_record.finding(
-                f"road {road.id}: the {name} record at s={nxt.s:g} continues the one at s={prev.s:g} unchanged",
+                f"road {road.id}: the {name} record at s={metres(nxt.s)} continues the one at s={metres(prev.s)} "
+                "unchanged",
                 road=road.id,
                 s=nxt.s,
                 line=nxt.line or None,
@@ -99,8 +101,8 @@ def _lines(road: Road) -> Iterator[Finding]:
     for first, second in itertools.pairwise(road.plan_view):
         if isinstance(first, Line) and isinstance(second, Line) and _same_heading(first.hdg, second.hdg):
             yield redundant_record.finding(
-                f"road {road.id}: the line at s={second.s:g} continues the line at s={first.s:g} in the same "
-                "heading; one line would do",
+                f"road {road.id}: the line at s={metres(second.s)} continues the line at s={metres(first.s)} in the "
+                "same heading; one line would do",
                 road=road.id,
                 s=second.s,
                 line=second.line or None,
@@ -113,8 +115,8 @@ def _lanes(road: Road) -> Iterator[Finding]:
             for name, profile in (("width", lane.widths), ("border", lane.borders)):
                 for prev, nxt in _redundant(profile):
                     yield redundant_record.finding(
-                        f"road {road.id} lane {lane.id} (lane section s={section.s:g}): the {name} record at "
-                        f"sOffset={nxt.s:g} continues the one at sOffset={prev.s:g} unchanged",
+                        f"road {road.id} lane {lane.id} (lane section s={metres(section.s)}): the {name} record at "
+                        f"sOffset={metres(nxt.s)} continues the one at sOffset={metres(prev.s)} unchanged",
                         road=road.id,
                         lane=lane.id,
                         section_s=section.s,
@@ -143,8 +145,8 @@ def _sections(ctx: Context) -> Iterator[Finding]:
         if prev.line in unread or nxt.line in unread:
             continue
         yield redundant_record.finding(
-            f"road {road.id}: the lane section at s={nxt.s:g} continues the one at s={prev.s:g} unchanged (the same "
-            "lanes, types, links, widths, marks and speeds); merge the two",
+            f"road {road.id}: the lane section at s={metres(nxt.s)} continues the one at s={metres(prev.s)} unchanged "
+            "(the same lanes, types, links, widths, marks and speeds); merge the two",
             road=road.id,
             section_s=nxt.s,
             s=nxt.s,
@@ -219,7 +221,7 @@ def _types(ctx: Context) -> Iterator[Finding]:
         for prev, nxt in itertools.pairwise(t for t in road.types if t.s is not None):
             if (prev.type, prev.country, prev.speed) == (nxt.type, nxt.country, nxt.speed):
                 yield redundant_record.finding(
-                    f"road {road.road}: the <type> at s={nxt.s:g} repeats the one at s={prev.s:g} (type "
+                    f"road {road.road}: the <type> at s={metres(nxt.s)} repeats the one at s={metres(prev.s)} (type "
                     f"{nxt.type}); a road type holds until the next one, so delete it",
                     road=road.road,
                     s=nxt.s,

@@ -11,6 +11,7 @@ from typing import Any
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, LaneSection, Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules import feature_uids as F
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, link_at
@@ -104,7 +105,7 @@ def duplicate_lane_id(ctx: Context):
                     seen = f" (first at line {first[lane.id]})" if first[lane.id] else ""
                     yield duplicate_lane_id.finding(
                         f"lane id {lane.id} appears twice in the {_layer(section, temporary)}lane section at "
-                        f"s={section.s:g} of road {road.id}{seen}",
+                        f"s={metres(section.s)} of road {road.id}{seen}",
                         uid=uid,
                         road=road.id,
                         lane=lane.id,
@@ -287,8 +288,8 @@ def junction_lane_link_missing_lane(ctx: Context):
                 ):
                     yield junction_lane_link_missing_lane.finding(
                         f"junction {junction.id} connection {c.id}: laneLink from lane {ll.from_lane}, but the "
-                        f"incoming road {incoming.id} has no lane {ll.from_lane} at its {in_end.value} "
-                        f"(lane section s={in_section.s:g})",
+                        f"incoming road {incoming.id} has no lane {ll.from_lane} at its {in_end.value} (lane section "
+                        f"s={metres(in_section.s)})",
                         road=incoming.id,
                         lane=ll.from_lane,
                         **ctx.end_at(incoming, in_end),
@@ -302,8 +303,8 @@ def junction_lane_link_missing_lane(ctx: Context):
                 ):
                     yield junction_lane_link_missing_lane.finding(
                         f"junction {junction.id} connection {c.id}: laneLink to lane {ll.to_lane}, but road "
-                        f"{target.id} has no lane {ll.to_lane} at its {c.contact_point.value} "
-                        f"(lane section s={to_section.s:g})",
+                        f"{target.id} has no lane {ll.to_lane} at its {c.contact_point.value} (lane section "
+                        f"s={metres(to_section.s)})",
                         road=target.id,
                         lane=ll.to_lane,
                         **ctx.end_at(target, c.contact_point),
@@ -385,9 +386,9 @@ def _lane_link_targets(
     """
     last = len(road.lane_sections) - 1
     if end is ContactPoint.START and index > 0:
-        return f"lane section s={road.lane_sections[index - 1].s:g}", road.lane_sections[index - 1]
+        return f"lane section s={metres(road.lane_sections[index - 1].s)}", road.lane_sections[index - 1]
     if end is ContactPoint.END and index < last:
-        return f"lane section s={road.lane_sections[index + 1].s:g}", road.lane_sections[index + 1]
+        return f"lane section s={metres(road.lane_sections[index + 1].s)}", road.lane_sections[index + 1]
     link = link_at(road, end)
     if link is None:
         return None, None
@@ -442,7 +443,7 @@ def lane_link_missing_lane(ctx: Context):
                     if described is None:
                         targets = ", ".join(map(str, getattr(lane, attr)))
                         yield lane_link_missing_lane.finding(
-                            f"road {road.id} lane {lane.id} (lane section s={section.s:g}) has {word} lane "
+                            f"road {road.id} lane {lane.id} (lane section s={metres(section.s)}) has {word} lane "
                             f"{targets} but the road has no {word}; remove the lane's {word} (or link the road)",
                             uid=U.LINK_NO_LINK,
                             **where,
@@ -453,7 +454,7 @@ def lane_link_missing_lane(ctx: Context):
                     for target_id in getattr(lane, attr):
                         if target_section.lane(target_id) is None:
                             yield lane_link_missing_lane.finding(
-                                f"road {road.id} lane {lane.id} (lane section s={section.s:g}): {word} lane "
+                                f"road {road.id} lane {lane.id} (lane section s={metres(section.s)}): {word} lane "
                                 f"{target_id} does not exist in {described}",
                                 uid=F.ONLY_REF_DEFINED_IDS,
                                 **where,

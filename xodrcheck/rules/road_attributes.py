@@ -15,6 +15,7 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
@@ -44,8 +45,8 @@ def road_type_out_of_order(ctx: Context):
         for prev, nxt in itertools.pairwise(t for t in road.types if t.s is not None):
             if nxt.s is not None and prev.s is not None and nxt.s < prev.s:  # (both are: filtered above)
                 yield road_type_out_of_order.finding(
-                    f"road {road.road}: the <type> at line {nxt.line} starts at s={nxt.s:g}, before the one at line "
-                    f"{prev.line} (s={prev.s:g}); write the road's types in ascending order of s",
+                    f"road {road.road}: the <type> at line {nxt.line} starts at s={metres(nxt.s)}, before the one at "
+                    f"line {prev.line} (s={metres(prev.s)}); write the road's types in ascending order of s",
                     road=road.road,
                     s=nxt.s,
                     line=nxt.line,
@@ -116,11 +117,11 @@ def shape_out_of_order(ctx: Context):
         shapes = [sh for sh in road.shapes if sh.s is not None and sh.t is not None]
         for prev, nxt in itertools.pairwise(shapes):
             if (nxt.s, nxt.t) < (prev.s, prev.t):
-                which = "s" if nxt.s != prev.s else f"t at s={nxt.s:g}"
+                which = "s" if nxt.s != prev.s else f"t at s={metres(nxt.s)}"
                 yield shape_out_of_order.finding(
-                    f"road {road.road}: the <shape> at line {nxt.line} (s={nxt.s:g}, t={nxt.t:g}) comes after the one "
-                    f"at line {prev.line} (s={prev.s:g}, t={prev.t:g}): {which} descends; order the shapes by s, then "
-                    "by t",
+                    f"road {road.road}: the <shape> at line {nxt.line} (s={metres(nxt.s)}, t={metres(nxt.t)}) comes "
+                    f"after the one at line {prev.line} (s={metres(prev.s)}, t={metres(prev.t)}): {which} descends; "
+                    "order the shapes by s, then by t",
                     road=road.road,
                     s=nxt.s,
                     line=nxt.line,
@@ -191,9 +192,9 @@ def shape_t_coverage(ctx: Context):
                 first = group[0]
                 pose = geometry.reference(np.array([s]))
                 yield shape_t_coverage.finding(
-                    f"road {records.road}: the shapes at s={s:g} start at t={t_first:g}, but the road reaches "
-                    f"t={t_edge:.4g} (at s={s_edge:.4g}): the lateral profile leaves {t_first - t_edge:.4g} m of the "
-                    f"road's width uncovered; start the first shape at t <= {t_edge:.4g}",
+                    f"road {records.road}: the shapes at s={metres(s)} start at t={metres(t_first)}, but the road "
+                    f"reaches t={t_edge:.4g} (at s={s_edge:.4g}): the lateral profile leaves {t_first - t_edge:.4g} m "
+                    f"of the road's width uncovered; start the first shape at t <= {t_edge:.4g}",
                     road=records.road,
                     s=s,
                     x=float(pose.x[0]),
@@ -224,8 +225,8 @@ def shapes_start_left(ctx: Context):
             first = group[0]
             if first.t is not None and first.t >= 0:  # (it has a t: shape_groups keeps those only)
                 yield shapes_start_left.finding(
-                    f"road {records.road}: the shapes at s={s:g} start at t={first.t:g}: shapes start at the right "
-                    "side of the road (a negative t) and run leftwards; add a shape at the right edge",
+                    f"road {records.road}: the shapes at s={metres(s)} start at t={metres(first.t)}: shapes start at "
+                    "the right side of the road (a negative t) and run leftwards; add a shape at the right edge",
                     road=records.road,
                     s=s,
                     line=first.line,
@@ -263,8 +264,8 @@ def elevation_beyond_road(ctx: Context):
         for record in road.elevation:
             if record.s > road.length + tol:
                 yield elevation_beyond_road.finding(
-                    f"road {road.id}: the <elevation> at s={record.s:g} starts beyond the end of the road's reference "
-                    f"line (length {road.length:g}): it elevates no part of the road; fix its s",
+                    f"road {road.id}: the <elevation> at s={metres(record.s)} starts beyond the end of the road's "
+                    f"reference line (length {metres(road.length)}): it elevates no part of the road; fix its s",
                     road=road.id,
                     s=record.s,
                     line=record.line or road.line or None,

@@ -25,6 +25,7 @@ from xodrcheck.config import Tolerances
 from xodrcheck.findings import Severity
 from xodrcheck.lanes import LanePoints, RoadGeometry
 from xodrcheck.model import Road
+from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.road_ends import END_CURVES as _END_CURVES
 from xodrcheck.rules.road_ends import ENDS as _ENDS
@@ -361,7 +362,8 @@ def warning_note(severity: Severity, tolerances: Tolerances, kind: str = "positi
         return ""
     if kind == "position":
         return (
-            f" (a warning: over the {tolerances.position:g} m position tolerance, within the {tolerances.gap:g} m gap)"
+            f" (a warning: over the {metres(tolerances.position)} m position tolerance, within the "
+            f"{metres(tolerances.gap)} m gap)"
         )
     return (
         f" (a warning: over the {tolerances.heading:g} rad heading tolerance, within the {tolerances.kink:g} rad "

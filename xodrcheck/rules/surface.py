@@ -10,6 +10,7 @@ from collections.abc import Iterator
 from lxml import etree
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.quantities import metres
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
@@ -155,8 +156,8 @@ def crg_overlap(ctx: Context):
                 if purpose == other and min(a1, b1) - max(a0, b0) > ctx.tolerances.position:
                     yield crg_overlap.finding(
                         f"<CRG file={b.get('file')!r}> of {kind} {owner_id} overlaps <CRG file={a.get('file')!r}> "
-                        f"(line {a.sourceline}) from s={max(a0, b0):g} to {min(a1, b1):g} for purpose {purpose}: "
-                        "give one CRG file per position and purpose",
+                        f"(line {a.sourceline}) from s={metres(max(a0, b0))} to {metres(min(a1, b1))} for purpose "
+                        f"{purpose}: give one CRG file per position and purpose",
                         road=owner_id if kind == "road" else None,
                         s=max(a0, b0) if kind == "road" else None,
                         line=b.sourceline,
@@ -247,8 +248,8 @@ def cross_section_surface_extent(ctx: Context):
             records = [(c, s) for c in el.iterchildren("{*}coefficients") if (s := _number(c, "s")) is not None]
             if records and abs(records[0][1]) > tol:
                 yield cross_section_surface_extent.finding(
-                    f"road {road_id}: the cross section surface's {what} starts at s={records[0][1]:g}, not at the "
-                    'road\'s start: its first <coefficients> shall be at s="0"',
+                    f"road {road_id}: the cross section surface's {what} starts at s={metres(records[0][1])}, not at "
+                    'the road\'s start: its first <coefficients> shall be at s="0"',
                     road=road_id,
                     s=records[0][1],
                     line=records[0][0].sourceline,
@@ -257,8 +258,8 @@ def cross_section_surface_extent(ctx: Context):
             if beyond:
                 c, s = beyond[0]
                 yield cross_section_surface_extent.finding(
-                    f"road {road_id}: the cross section surface's {what} has <coefficients> from s={s:g}, beyond the "
-                    f"road's end (length {length:g}): the surface ends with the road",
+                    f"road {road_id}: the cross section surface's {what} has <coefficients> from s={metres(s)}, beyond "
+                    f"the road's end (length {metres(length)}): the surface ends with the road",
                     road=road_id,
                     line=c.sourceline,
                 )

@@ -9,7 +9,7 @@ import pytest
 
 from tests.xodrcheck.rules.helpers import fixture
 from xodrcheck.config import Config, Tolerances
-from xodrcheck.model import ContactPoint, TrafficRule
+from xodrcheck.model import ContactPoint, Lane, LaneDirection, LaneType, TrafficRule
 from xodrcheck.reader import read
 from xodrcheck.rules.context import Context, link_at, other_end, travel_direction
 
@@ -65,10 +65,30 @@ def test_incoming_contact_and_neighbours_through_a_junction():
 
 def test_travel_direction_follows_side_and_traffic_rule():
     road = read(JUNCTION).document.road_by_id["1"]
-    assert travel_direction(road, -1) == 1 and travel_direction(road, 1) == -1 and travel_direction(road, 0) == 0
+    assert travel_direction(road, _lane(-1)) == 1 and travel_direction(road, _lane(1)) == -1
     lht = dataclasses.replace(road, rule=TrafficRule.LHT)
-    assert travel_direction(lht, -1) == -1 and travel_direction(lht, 2) == 1
+    assert travel_direction(lht, _lane(-1)) == -1 and travel_direction(lht, _lane(2)) == 1
     assert link_at(road, ContactPoint.END) is road.successor and other_end(ContactPoint.END) is ContactPoint.START
+
+
+def _lane(lane_id: int, lane_type: LaneType = LaneType.DRIVING, direction: LaneDirection | None = None) -> Lane:
+    return Lane(lane_id, lane_type, direction=direction)
+
+
+def test_travel_direction_of_lanes_without_one():
+    """11.3.1: @direction reverses a lane or opens it both ways; the centre lane and lanes whose type carries no
+    directed traffic (sidewalk, shoulder, border, curb, median, none...) have no direction; biking lanes have one."""
+    road = read(JUNCTION).document.road_by_id["1"]
+    assert travel_direction(road, _lane(-1, direction=LaneDirection.REVERSED)) == -1
+    assert travel_direction(road, _lane(1, direction=LaneDirection.STANDARD)) == -1
+    assert travel_direction(road, _lane(-1, direction=LaneDirection.BOTH)) is None
+    assert travel_direction(road, _lane(0, LaneType.NONE)) is None
+    assert travel_direction(road, _lane(-1, LaneType.BIDIRECTIONAL)) is None
+    assert travel_direction(road, _lane(-1, LaneType.BIKING)) == 1
+    for kind in (LaneType.SIDEWALK, LaneType.WALKING, LaneType.SHOULDER, LaneType.BORDER, LaneType.CURB):
+        assert travel_direction(road, _lane(-1, kind)) is None
+    for kind in (LaneType.MEDIAN, LaneType.NONE, LaneType.PARKING, LaneType.RESTRICTED, LaneType.UNKNOWN):
+        assert travel_direction(road, _lane(-1, kind)) is None
 
 
 def test_widths_at_section_ends_from_width_records():

@@ -12,7 +12,7 @@ RULE = "curve-local-length-mismatch"
 @pytest.mark.parametrize(
     ("name", "uid", "severity", "text"),
     [
-        ("fail.xodr", U.CURVE_LOCAL_LENGTH_MATCH, Severity.WARNING, "5.57863 m long over p in [0, 1]"),
+        ("fail.xodr", U.CURVE_LOCAL_LENGTH_MATCH, Severity.WARNING, "5.578628 m long over p in [0, 1]"),
         ("fail_normalized_range.xodr", U.CURVE_LOCAL_NORMALIZED_RANGE, Severity.ERROR, "the coefficients are for"),
         ("fail_arclength.xodr", U.CURVE_LOCAL_ARC_LENGTH_RANGE, Severity.ERROR, "100 m long over p in [0, 10]"),
         ("fail_arclength_no_length.xodr", U.CURVE_LOCAL_ARC_LENGTH_RANGE, Severity.ERROR, "has no length"),
