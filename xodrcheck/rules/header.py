@@ -11,17 +11,35 @@ import re
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.geometry.planview import evaluate_element
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 from xodrcheck.xmlvalues import local
 
+#: Longest stretch of a reference line between two of the points :func:`_extent` takes (metres): an arc of radius
+#: 50 m bulges 6 cm between points this far apart.
+_EXTENT_STEP = 5.0
+
 
 def _extent(ctx: Context) -> tuple[float, float, float, float] | None:
-    """Bounding box (min x, min y, max x, max y) of the start points of every plan-view element."""
-    xs = [g.x for road in ctx.document.roads for g in road.plan_view]
-    ys = [g.y for road in ctx.document.roads for g in road.plan_view]
-    x, y = np.asarray(xs, dtype=float), np.asarray(ys, dtype=float)
+    """Bounding box (min x, min y, max x, max y) of the roads' whole reference lines: every plan-view element from
+    its start to its end, at points at most :data:`_EXTENT_STEP` apart (arcs, spirals and curves bulge between their
+    ends). Lane borders are left out: evaluating them costs as much as the geometry rules' sampling, and they widen
+    the box by a road's half width at most."""
+    xs: list[np.ndarray] = []
+    ys: list[np.ndarray] = []
+    for road in ctx.document.roads:
+        for g in road.plan_view:
+            if not math.isfinite(g.length) or g.length < 0.0:
+                continue
+            count = 2 + min(int(g.length // _EXTENT_STEP), 100_000)
+            pose = evaluate_element(g, np.linspace(0.0, g.length, count))
+            xs.append(np.asarray(pose.x, dtype=float).ravel())
+            ys.append(np.asarray(pose.y, dtype=float).ravel())
+    if not xs:
+        return None
+    x, y = np.concatenate(xs), np.concatenate(ys)
     keep = np.isfinite(x) & np.isfinite(y)
     if not keep.any():
         return None
@@ -42,9 +60,10 @@ def coordinates_off_centre(ctx: Context):
     The header's ``<offset>`` should be chosen so that x and y are about centred on (0, 0) (Annex F
     ``header.offset.centered_coords``, 8.5): applications that keep coordinates in floating point lose precision on
     large values (a 32-bit float steps by 1 mm at 8 km, by 0.5 m at 5000 km, UTM's northings). Reported when the
-    centre of the box around every plan-view element's start lies further from (0, 0) than the
-    ``centre_distance`` tolerance (10 km) and further than half the box's diagonal (so the origin is not within the
-    map's own extent). Move the geometry by minus that centre and add the shift to ``<offset>``.
+    centre of the box around the roads' whole reference lines (lane borders are left out: they add at most a road's
+    half width) lies further from (0, 0) than the ``centre_distance`` tolerance (10 km) and further than half the
+    box's diagonal (so the origin is not within the map's own extent). Move the geometry by minus that centre and add
+    the shift to ``<offset>``.
 
     Passes (a map around the origin)::
 
@@ -67,10 +86,10 @@ def coordinates_off_centre(ctx: Context):
     step = float(np.spacing(np.float32(max(far_x, far_y))))
     header = ctx.document.header
     yield coordinates_off_centre.finding(
-        f"the map's plan view spans x {x0:.1f}..{x1:.1f}, y {y0:.1f}..{y1:.1f}: its centre ({cx:.1f}, {cy:.1f}) lies "
-        f"{distance / 1000:.4g} km from (0, 0) (32-bit floats step by {step:.3g} m at its farthest point, "
-        f"{math.hypot(far_x, far_y) / 1000:.4g} km out); move the geometry by ({-cx:.1f}, {-cy:.1f}) and add "
-        f"({cx:.1f}, {cy:.1f}) to the header's <offset>",
+        f"the map's reference lines span x {x0:.1f}..{x1:.1f}, y {y0:.1f}..{y1:.1f}: their centre ({cx:.1f}, "
+        f"{cy:.1f}) lies {distance / 1000:.4g} km from (0, 0) (32-bit floats step by {step:.3g} m at the farthest "
+        f"point, {math.hypot(far_x, far_y) / 1000:.4g} km out); move the geometry by ({0.0 - cx:.1f}, "
+        f"{0.0 - cy:.1f}) and add ({cx:.1f}, {cy:.1f}) to the header's <offset>",
         x=cx,
         y=cy,
         line=(header.line if header is not None else 0) or None,
