@@ -19,7 +19,15 @@ from xodrcheck.model import ElementType, Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts
-from xodrcheck.rules.junction_shapes import boundary_pieces, gaps, grid_area, reference_line, ring, signed_area
+from xodrcheck.rules.junction_shapes import (
+    boundary_pieces,
+    gaps,
+    grid_area,
+    reference_line,
+    ring,
+    road_points,
+    signed_area,
+)
 from xodrcheck.rules.registry import rule
 
 if TYPE_CHECKING:
@@ -129,15 +137,16 @@ def boundary_clockwise(ctx: Context) -> Iterator[Finding]:
     xml=True,
 )
 def junction_area_coverage(ctx: Context) -> Iterator[Finding]:
-    """A junction's reference line or elevation grid does not cover its boundary.
+    """A junction's reference line or elevation grid does not cover its boundary (or, without one, its roads).
 
     With a junction boundary (12.10) and a junction reference line (12.9), the line crosses the boundary or at least
-    touches it (``junctions.geometry.correct_junction_boundry``), and every point of the junction is reached by a
-    line perpendicular to it (``junctions.geometry.ref_line_definition``): every boundary point lies between the
-    normals at the line's start and end. An elevation grid is valid for the whole area enclosed by the boundary
-    (``junctions.elevation_grid.valid_for_entire_boundry``, 12.11): every boundary point lies in a complete square of
-    the grid (rows ``gridSpacing`` apart from ``sStart`` along the line, points ``gridSpacing`` apart across it). The
-    tolerance is ``gap`` (1 cm).
+    touches it (``junctions.geometry.correct_junction_boundry``). Every point of the junction is reached by a line
+    perpendicular to the reference line (``junctions.geometry.ref_line_definition``, which asks it of every junction
+    with a reference line): every boundary point lies between the normals at the line's start and end, and, for a
+    junction without a boundary, every lane border point of its connecting roads does. An elevation grid is valid for
+    the whole area enclosed by the boundary (``junctions.elevation_grid.valid_for_entire_boundry``, 12.11): every
+    boundary point lies in a complete square of the grid (rows ``gridSpacing`` apart from ``sStart`` along the line,
+    points ``gridSpacing`` apart across it). The tolerance is ``gap`` (1 cm).
 
     Passes (boundary x 50..70, y -3.5..10; line from (45, 0) 30 m east; grid rows at s=0..30, 15 m left, 5 m right)::
 
@@ -149,6 +158,7 @@ def junction_area_coverage(ctx: Context) -> Iterator[Finding]:
         <planView><geometry s="0" x="45" y="0" hdg="0" length="20"><line/></geometry></planView>
     """
     tol = ctx.tolerances.gap
+    bounded = {id(j) for j, _ in _boundaries(ctx)}
     for j, pieces in _boundaries(ctx):
         line = reference_line(j)
         if line is None:
@@ -192,6 +202,40 @@ def junction_area_coverage(ctx: Context) -> Iterator[Finding]:
                     y=float(xy[k, 1]),
                     line=grid.line or None,
                 )
+    for j in junction_parts(ctx):
+        if id(j) not in bounded:
+            yield from _unbounded_reach(ctx, j, tol)
+
+
+def _unbounded_reach(ctx: Context, j: JunctionParts, tol: float) -> Iterator[Finding]:
+    """``ref_line_definition`` on a junction without a boundary to measure: its area is then its connecting roads'
+    lanes, and every lane border point of them lies between the normals at the reference line's ends."""
+    line = reference_line(j)
+    if line is None or j.id is None:
+        return
+    worst: tuple[float, Road, np.ndarray] | None = None
+    for road in ctx.roads_in_junction.get(j.id, ()):
+        xy = road_points(ctx, road)
+        if xy is None or not len(xy):
+            continue
+        s, _ = line.frame(xy)
+        beyond = np.maximum(-s, s - line.length)
+        k = int(np.argmax(beyond))
+        if beyond[k] > tol and (worst is None or beyond[k] > worst[0]):
+            worst = (float(beyond[k]), road, np.array([xy[k, 0], xy[k, 1], s[k]]))
+    if worst is None:
+        return
+    _, road, (x, y, s_k) = worst
+    yield junction_area_coverage.finding(
+        f"{j.describe()}: the lane border point ({x:.3f}, {y:.3f}) of its connecting road {road.id} lies at "
+        f"s={s_k:.3f} along the junction reference line, outside its 0..{metres(line.length)} m, so no line "
+        "perpendicular to the reference line reaches it; lengthen or move the reference line to span the junction",
+        uid=U.REFLINE_REACHES_ALL,
+        road=road.id,
+        x=float(x),
+        y=float(y),
+        line=line.line or None,
+    )
 
 
 def _crosses(s: np.ndarray, t: np.ndarray, length: float, tol: float) -> bool:

@@ -38,3 +38,13 @@ def test_all_three_hold_on_the_pass_fixture_and_other_boundaries():
     for name in ("pass.xodr",):
         assert findings(fixture(RULE, name), RULE) == []
     assert findings(fixture("junction-reference-line-shape", "pass.xodr"), RULE) == []
+
+
+def test_reference_line_too_short_for_a_junction_without_boundary():
+    """12.9's ref_line_definition holds for every junction with a reference line, not only those with a <boundary>:
+    without one, the junction's points are its connecting roads' lanes."""
+    assert findings(fixture(RULE, "pass_no_boundary.xodr"), RULE) == []
+    path = fixture(RULE, "fail_short_line_no_boundary.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.rule_uid, f.line) == (U.REFLINE_REACHES_ALL, line_of(path, '<geometry s="0" x="45"'))
+    assert (f.x, f.y) == pytest.approx((70.0, 0.0)) and "s=25.000" in f.message and "connecting road" in f.message
