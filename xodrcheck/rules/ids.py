@@ -13,9 +13,9 @@ from collections.abc import Iterator
 
 from lxml import etree
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.rules import feature_uids as F
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.context import Context, junction_parts
 from xodrcheck.rules.registry import rule
 
 #: Class name -> path of its elements below ``<OpenDRIVE>`` (ids unique file-wide, as in the 1.8.1 schema's keys).
@@ -42,10 +42,17 @@ _REFERENCES = (
     ("road/railroad/switch/sideTrack", "id", "road", ("road",)),
     ("road/railroad/switch/partner", "id", "switch", ("switch",)),
     ("controller/control", "signalId", "signal", ("signal", "sign")),
+    ("junction", "mainRoad", "road", ("road",)),
     ("junction/controller", "id", "controller", ("controller",)),
+    ("junction/priority", "high", "road", ("road",)),
+    ("junction/priority", "low", "road", ("road",)),
+    ("junction/crossPath", "crossingRoad", "road", ("road",)),
     ("junction/crossPath", "roadAtStart", "road", ("road",)),
     ("junction/crossPath", "roadAtEnd", "road", ("road",)),
     ("junction/roadSection", "roadId", "road", ("road",)),
+    ("junction/boundary/segment", "roadId", "road", ("road",)),
+    ("junction/connection/predecessor", "elementId", "road", ("road",)),
+    ("junction/connection/successor", "elementId", "road", ("road",)),
     ("junctionGroup/junctionReference", "junction", "junction", ("junction",)),
     ("station/platform/segment", "roadId", "road", ("road",)),
     ("vmsGroup/vmsBoardReference", "signalId", "signal", ("signal",)),
@@ -163,10 +170,13 @@ def undefined_reference(ctx: Context):
 
     Only defined IDs may be referenced (Annex F ``ids.only_ref_defined_ids``). Checked here: object references,
     signal dependencies, signal references (``<signalReference>``, ``<reference>``), ``positionRoad``, controls of
-    controllers, junction controllers, cross paths and road sections of junctions, junction group members, switch
-    tracks and partners, platform segments and vmsBoard references. Road links, junction connections and lane links
-    are ``road-link-target-missing``'s, ``connection-road-missing``'s, ``junction-lane-link-missing-lane``'s,
-    ``road-junction-missing``'s and ``lane-link-missing-lane``'s.
+    controllers, junction group members, switch tracks and partners, platform segments, vmsBoard references, and
+    every road or lane a junction's children name: its ``mainRoad`` (virtual junctions), controllers, priorities
+    (``high``, ``low``), cross paths (``crossingRoad``, ``roadAtStart``, ``roadAtEnd`` and the lanes of their
+    ``<startLaneLink>``/``<endLaneLink>``), road sections, boundary segments and virtual connections' predecessors and
+    successors. Road links, junction connections and lane links are ``road-link-target-missing``'s,
+    ``connection-road-missing``'s, ``junction-lane-link-missing-lane``'s, ``road-junction-missing``'s and
+    ``lane-link-missing-lane``'s.
 
     Passes::
 
@@ -184,3 +194,22 @@ def undefined_reference(ctx: Context):
             road=_road_of(el),
             line=el.sourceline,
         )
+    yield from _cross_path_lanes(ctx)
+
+
+def _cross_path_lanes(ctx: Context) -> Iterator[Finding]:
+    """Lanes a cross path's ``<startLaneLink>``/``<endLaneLink>`` names that its roads do not have there."""
+    from xodrcheck.rules.junction_members import cross_path_lanes
+
+    for j in junction_parts(ctx):
+        for cp in j.cross_paths:
+            for what, road, lane, lane_id, s, line in cross_path_lanes(ctx, cp):
+                if lane is None and lane_id is not None:
+                    yield undefined_reference.finding(
+                        f"{j.describe()} cross path {cp.id} names {what}, which the road does not have there: "
+                        "correct the lane id",
+                        road=road.id,
+                        lane=lane_id,
+                        s=s,
+                        line=line or None,
+                    )

@@ -190,7 +190,8 @@ def cross_path_roads(ctx: Context):
     """A cross path's crossing road is not the junction's, or it connects lanes that are not for walking or biking.
 
     A cross path's crossing road belongs to the junction: its ``junction`` attribute is the junction's id
-    (``junctions.cross_path.correct_junction_id``, 12.5). Cross paths connect only lanes of ``type="walking"`` or
+    (``junctions.cross_path.correct_junction_id``, 12.5; a crossing road the file does not define is
+    ``undefined-reference``'s). Cross paths connect only lanes of ``type="walking"`` or
     ``"biking"`` (``junctions.cross_path.only_connect_correct_type``): the lanes its ``<startLaneLink>`` and
     ``<endLaneLink>`` name, of the roads at its ends and of the crossing road. The crossing road's own elevation is
     disregarded (``junctions.cross_path.disregard_cross_road_evelation``, a statement, reported as an info where the
@@ -210,11 +211,9 @@ def cross_path_roads(ctx: Context):
         for cp in j.cross_paths:
             at = f"{j.describe()} cross path {cp.id}"
             crossing = ctx.road(cp.crossing_road)
-            if crossing is None or crossing.junction != j.id:
+            if crossing is not None and crossing.junction != j.id:  # a road that does not exist: undefined-reference
                 belongs = (
-                    "does not exist"
-                    if crossing is None
-                    else 'is in no junction (junction="-1")'
+                    'is in no junction (junction="-1")'
                     if crossing.junction is None
                     else f"says it belongs to junction {crossing.junction}"
                 )
@@ -287,8 +286,8 @@ def boundary_roads(ctx: Context):
     (``junctions.boundary.segments_for_each_conn_road``, 12.10): each road linked to the junction has a segment at
     its end there (a joint across it, or a lane segment ending there). Where the existing roads do not close the
     boundary, additional roads are defined for the missing segments (``junctions.boundary.close_gap_with_new_roads``):
-    every segment names an existing road that touches the junction or belongs to it (an added road has
-    ``junction`` set to the junction's id).
+    every segment names a road that touches the junction or belongs to it (an added road has ``junction`` set to the
+    junction's id; a road the file does not define is ``undefined-reference``'s).
 
     Passes::
 
@@ -322,10 +321,10 @@ def boundary_roads(ctx: Context):
             road = ctx.road(seg.road)
             if road is not None and (road.id in touching or road.junction == j.id):
                 continue
+            if road is None and seg.road is not None:
+                continue  # a road that does not exist: undefined-reference (ids.only_ref_defined_ids)
             what = (
                 "names no road"
-                if seg.road is None
-                else f"runs along road {seg.road}, which does not exist"
                 if road is None
                 else f"runs along road {road.id}, which neither touches the junction nor belongs to it"
             )

@@ -324,8 +324,9 @@ def _main_road_ends(road: Road, main: str) -> Iterator[tuple[ContactPoint, float
 def virtual_junction_branches(ctx: Context):
     """A connecting road of a virtual junction does not branch off the main road at ``sStart`` or ``sEnd``.
 
-    Virtual junctions are for branches off the main road only (``junctions.virtual.main_road_only``, 12.7): the main
-    road exists and every connecting road joins it (a predecessor or successor naming it). Each connecting road
+    Virtual junctions are for branches off the main road only (``junctions.virtual.main_road_only``, 12.7): the
+    junction names its main road and every connecting road joins it (a predecessor or successor naming it); a main
+    road the file does not define is ``undefined-reference``'s. Each connecting road
     starts or ends at the main road at ``sStart`` or at ``sEnd`` (``junctions.virtual.connecting_roads_start_end``):
     its link's ``elementS`` is one of the two.
 
@@ -343,16 +344,15 @@ def virtual_junction_branches(ctx: Context):
     for j in junction_parts(ctx):
         if j.type != "virtual":
             continue
-        if j.main_road is None or ctx.road(j.main_road) is None:
-            what = (
-                "names no main road" if j.main_road is None else f"names main road {j.main_road}, which does not exist"
-            )
+        if j.main_road is None:
             yield virtual_junction_branches.finding(
-                f"{j.describe()} {what}: a virtual junction joins branches to the main road it names",
+                f"{j.describe()} names no main road: a virtual junction joins branches to the main road it names",
                 uid=U.VIRTUAL_MAIN_ROAD_ONLY,
                 line=j.line or None,
             )
             continue
+        if ctx.road(j.main_road) is None:
+            continue  # a main road that does not exist: undefined-reference (ids.only_ref_defined_ids)
         seen: set[str] = set()
         for c in j.connections:
             road = ctx.road(c.connecting_road)
