@@ -92,13 +92,21 @@ def _has_centre(lanes_of: dict[int, list[LaneXml]], section: SectionXml) -> bool
 
 
 @rule(
-    "L033", "permanent-section-length", Category.LANE, Severity.ERROR, uids=(U.LAYER_LENGTH_ONLY_TEMPORARY,), xml=True
+    "L033",
+    "permanent-section-length",
+    Category.LANE,
+    Severity.ERROR,
+    uids=(U.LAYER_LENGTH_ONLY_TEMPORARY, U.LAYER_MANDATORY_PERMANENT),
+    xml=True,
 )
 def permanent_section_length(ctx: Context):
     """A lane section of the permanent lane layer has a ``length``.
 
     Annex F ``road.lane.layer.length_only_temporary`` (1.9): lanes in the permanent layer shall not use @length; a
     permanent lane section lasts until the next one or the road's end (the permanent layer covers the whole road).
+    Where the ``length`` ends the section before the next one (or the road's end), the road has no permanent lane
+    there, which ``road.lane.layer.layer_mandatory_permanent`` forbids ("at least one lane in the permanent layer at
+    each s-coordinate"): one finding, under that UID, says both.
 
     Passes::
 
@@ -108,13 +116,32 @@ def permanent_section_length(ctx: Context):
 
         <lanes><laneSection s="0" length="50">...</laneSection></lanes>
     """
-    for section in lane_elements(ctx).sections:
-        length = section.element.get("length")
-        if section.layer == "permanent" and length is not None:
+    tol = ctx.tolerances.length_abs
+    for road_id, layers in _layers(ctx).items():
+        permanent = layers.get("permanent", [])
+        for section in permanent:
+            length = section.element.get("length")
+            if length is None:
+                continue
+            here = f'road {road_id}: the permanent layer\'s lane section at s={_s(section)} has length="{length}"'
+            fix = "only temporary lane sections have a length: remove it (the section lasts until the next one)"
+            ends = section_end(section, permanent, None)
+            later = [o.s for o in permanent if o is not section and o.s is not None and o.s > (section.s or 0.0)]
+            after = min(later) if later else _road_length(ctx, road_id)
+            if ends is not None and after is not None and after - ends > tol:
+                yield permanent_section_length.finding(
+                    f"{here}, so the road has no permanent lane from s={metres(ends)} to s={metres(after)}; {fix}",
+                    uid=U.LAYER_MANDATORY_PERMANENT,
+                    road=road_id,
+                    section_s=section.s,
+                    s=section.s,
+                    line=section.element.sourceline,
+                )
+                continue
             yield permanent_section_length.finding(
-                f'road {section.road}: the permanent layer\'s lane section at s={_s(section)} has length="{length}"; '
-                "only temporary lane sections have a length: remove it (the section lasts until the next one)",
-                road=section.road,
+                f"{here}; {fix}",
+                uid=U.LAYER_LENGTH_ONLY_TEMPORARY,
+                road=road_id,
                 section_s=section.s,
                 s=section.s,
                 line=section.element.sourceline,

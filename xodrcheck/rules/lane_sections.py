@@ -70,18 +70,18 @@ def lane_sections_from_start(ctx: Context):
     "L027",
     "lane-section-without-lanes",
     Category.LANE,
-    Severity.ERROR,
-    uids=(U.LAYER_MANDATORY_PERMANENT, U.LANE_SECTION_DRIVABLE),
+    Severity.WARNING,
+    uids=(U.LANE_SECTION_DRIVABLE,),
     xml=True,
 )
 def lane_section_without_lanes(ctx: Context):
     """A lane section has no side lane whose width is given from the section's start: nothing to drive on.
 
-    OpenDRIVE 1.9, Annex F: there is at least one lane in the permanent lane layer at each s of the road
-    (``road.lane.layer.layer_mandatory_permanent``: an error for a permanent lane section with no ``<left>`` or
-    ``<right>`` lane), and, to be drivable, each lane section should have a ``<left>`` or ``<right>`` valid for its
-    whole length (``road.lane.lane_section_drivable``: a warning for a lane section of either layer whose side lanes
-    all start their width after the section's start, and for a temporary one without side lanes).
+    To be drivable, each lane section should have a ``<left>`` or ``<right>`` lane valid for its whole length
+    (OpenDRIVE 1.9, Annex F ``road.lane.lane_section_drivable``): a lane section of either layer with no side lane,
+    or whose side lanes all start their width after the section's start. (A section with only its centre lane still
+    has a lane, lane 0, at each s: the permanent layer's ``layer_mandatory_permanent`` is broken where a permanent
+    section's ``length`` leaves s without a section, ``permanent-section-length``'s.)
 
     Passes::
 
@@ -96,21 +96,15 @@ def lane_section_without_lanes(ctx: Context):
         lanes_of.setdefault(id(lane.section), []).append(lane)
     for section in lane_elements(ctx).sections:
         side = [lane for lane in lanes_of.get(id(section), ()) if lane.group != "center"]
-        here = f"road {section.road}: the {section.layer} layer's lane section at s={_s(section)}"
-        where = {"road": section.road, "section_s": section.s, "s": section.s, "line": section.element.sourceline}
-        if not side and section.layer == "permanent":
-            yield lane_section_without_lanes.finding(
-                f"{here} has no <left> or <right> lane; the permanent layer has a lane at every s of the road",
-                uid=U.LAYER_MANDATORY_PERMANENT,
-                **where,
-            )
-        elif not any(_from_start(lane) for lane in side):
+        if not any(_from_start(lane) for lane in side):
             what = "has no <left> or <right> lane" if not side else "has no side lane whose width starts at sOffset 0"
             yield lane_section_without_lanes.finding(
-                f"{here} {what}: no part of it is valid for the section's whole length, so it is not drivable",
-                severity=Severity.WARNING,
-                uid=U.LANE_SECTION_DRIVABLE,
-                **where,
+                f"road {section.road}: the {section.layer} layer's lane section at s={_s(section)} {what}: no part of "
+                "it is valid for the section's whole length, so it is not drivable",
+                road=section.road,
+                section_s=section.s,
+                s=section.s,
+                line=section.element.sourceline,
             )
 
 

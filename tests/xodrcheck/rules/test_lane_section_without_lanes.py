@@ -7,9 +7,13 @@ RULE = "lane-section-without-lanes"
 
 
 def test_permanent_section_with_only_its_centre_lane():
+    """Not drivable (lane_section_drivable, a "should"); it still has lane 0, so layer_mandatory_permanent (at least
+    one lane of the permanent layer at each s) is not what it breaks."""
+    from xodrcheck.rules import lane_uids as U
+
     path = fixture(RULE, "fail.xodr")
     (f,) = findings(path, RULE)
-    assert (f.road, f.section_s, f.severity) == ("1", 0.0, Severity.ERROR)
+    assert (f.road, f.section_s, f.severity, f.rule_uid) == ("1", 0.0, Severity.WARNING, U.LANE_SECTION_DRIVABLE)
     assert f.line == line_of(path, '<laneSection s="0"')
 
 
