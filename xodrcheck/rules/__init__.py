@@ -13,7 +13,8 @@ prefix    category    codes
 ``R``     reference   ``R0xx`` ids and references (:mod:`.reference`; ``R02x`` other classes: :mod:`.ids`)
 ``K``     link        ``K0xx`` road-link topology (:mod:`.link_topology`, :mod:`.link_usage`); ``K1xx`` positions at
                       contacts (:mod:`.link`)
-``L``     lane        ``L0xx`` lane topology (:mod:`.lane`, :mod:`.lane_attributes`); ``L1xx`` lane geometry
+``L``     lane        ``L0xx`` lane topology (:mod:`.lane`, :mod:`.lane_attributes`), road marks
+                      (:mod:`.lane_marks`); ``L1xx`` lane geometry
 ``G``     geometry    ``G0xx``-``G8xx`` plan view and profiles (:mod:`.geometry`, :mod:`.elements`), lane shapes
                       (:mod:`.lane_shape`),
                       road types, shapes and country codes (:mod:`.road_attributes`), object outlines of curves
@@ -66,6 +67,7 @@ FAMILIES = (
     "lane_links",
     "lane_sections",
     "lane_layers",
+    "lane_marks",
     "geometry",
     "elements",
     "road_attributes",

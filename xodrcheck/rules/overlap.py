@@ -2,13 +2,14 @@
 meshes (:mod:`xodrcheck.footprint`, sampled under ``Tolerances.chord``).
 
 Two roads may overlap when they are *related* (:class:`xodrcheck.footprint.Relations`): consecutive roads (a road
-link either way: ASAM OpenDRIVE 10.3 allows overlaps of properly linked roads), members of one junction (only roads
-with the same junction id may overlap, Annex F ``road.overlap_inside_junction``; their connection lanes cross by
-design, :func:`xodrcheck.footprint.conflict_areas`), and the roads of one direct junction. Other pairs overlap when
-their footprints share more than ``Tolerances.overlap_area`` square metres where their surfaces are closer in height
-than ``Tolerances.clearance`` (a bridge with clearance is no overlap). Heights are compared at a point inside each
-shared piece and at up to 24 points of its outline; a piece counts in proportion to its points within the
-clearance. Borders that merely touch share no area. A road overlapping itself is ``O002`` (a lane folds) or
+link either way: ASAM OpenDRIVE 10.3 tolerates an overlap where properly linked roads meet; such roads are not
+compared anywhere, so an overlap away from their joint goes unreported: ``O001``'s partial note), members of one
+junction (only roads with the same junction id may overlap, Annex F ``road.overlap_inside_junction``; their connection
+lanes cross by design, :func:`xodrcheck.footprint.conflict_areas`), and the roads of one direct junction. Other pairs
+overlap when their footprints share more than ``Tolerances.overlap_area`` square metres where their surfaces are
+closer in height than ``Tolerances.clearance`` (a bridge with clearance is no overlap). Heights are compared at a
+point inside each shared piece and at up to 24 points of its outline; a piece counts in proportion to its points
+within the clearance. Borders that merely touch share no area. A road overlapping itself is ``O002`` (a lane folds) or
 ``O005`` (two of its lanes).
 
 An overlap involving a drivable lane is an error (``O001`` between roads outside junctions, ``O003`` when one of the
@@ -167,9 +168,13 @@ def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: 
 
 
 _NOT_ROADSIDE = (
-    "overlaps of roadside lanes only (sidewalks, shoulders, borders, lanes of type none: no drivable lane) are "
-    "O004's warnings, and are not reported between roads that share a junction, whose sidewalks commonly meet at its "
-    "corners; roads linked to each other are not compared (10.3 allows their overlap)"
+    "not checked: two roads linked to each other (a road predecessor or successor, either way), anywhere along them. "
+    "10.3 tolerates an overlap where properly linked roads meet ('overlaps or leaps should be avoided but are not "
+    "prohibited if the road reference lines are connected properly'); that tolerance is for their joint, but the "
+    "overlap index does not tell an overlap at the joint from one elsewhere, so a linked road that overlaps its "
+    "neighbour away from their joint (a road curling back over the next one) is not reported. Overlaps of roadside "
+    "lanes only (sidewalks, shoulders, borders, lanes of type none: no drivable lane) are O004's warnings, and are not "
+    "reported between roads that share a junction, whose sidewalks commonly meet at its corners"
 )
 
 

@@ -17,11 +17,6 @@ from xodrcheck.standard import annex_rules
 #: Why a rule of the standard is not enforced, by UID.
 NOT_ENFORCED: dict[str, str] = {
     # road.lane.road_mark (11.9)
-    "asam.net:xodr:1.9.0:road.lane.road_mark.only_outer": (
-        "says what a <roadMark> means: the style of its lane's outer border (the centre lane's: the centre line). A "
-        "file has no way to say that a mark is meant for another border, so a mark written for the inner border "
-        "cannot be told from one for the outer border; every <roadMark> is read as the outer one"
-    ),
     "asam.net:xodr:1.9.0:road.lane.road_mark.position_outer_half": (
         "says where an application draws a marking: centred on the lane's outer border, half on the next lane. A "
         "<roadMark> has no position of its own (the tOffset of its <line> elements and its <sway> are deliberate "

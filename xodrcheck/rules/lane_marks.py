@@ -1,0 +1,105 @@
+"""Road markings of lanes (``L034``): a ``<roadMark>`` describes the lane's outer border line (11.9)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from lxml import etree
+
+from xodrcheck.findings import Category, Finding, Severity
+from xodrcheck.quantities import metres
+from xodrcheck.rules import lane_uids as U
+from xodrcheck.rules.context import Context
+from xodrcheck.rules.lane_xml import LaneXml, lane_elements, number
+from xodrcheck.rules.registry import rule
+
+_NOT_CHECKED = (
+    "a <roadMark> says which border it styles only through the tOffset of its <line> elements (in <type> or "
+    "<explicit>): one without lines, or whose lines follow a <sway>, is read as the outer border's, as 11.9 defines "
+    "it, and cannot be told from one meant for another line"
+)
+
+
+def _lines(mark: etree._Element) -> Iterator[etree._Element]:
+    """The ``<line>`` elements of a road mark's ``<type>`` and ``<explicit>``."""
+    for holder in mark.iterchildren("{*}type", "{*}explicit"):
+        yield from holder.iterchildren("{*}line")
+
+
+@rule(
+    "L034",
+    "road-mark-off-outer-border",
+    Category.LANE,
+    Severity.ERROR,
+    partial={U.ROAD_MARK_ONLY_OUTER: _NOT_CHECKED},
+    xml=True,
+)
+def road_mark_off_outer_border(ctx: Context) -> Iterator[Finding]:
+    """A lane's ``<roadMark>`` draws its line in the inner half of the lane, not on the lane's outer border.
+
+    A ``<roadMark>`` gives the style of the line at its lane's outer border (11.9), and shall only describe that
+    outer marking (Annex F ``road.lane.road_mark.only_outer``, 1.9); a line elsewhere (the inner border's, which
+    belongs to the neighbouring lane's ``<roadMark>``, or a marking inside the lane, which is a signal) is another
+    element's. The ``tOffset`` of a ``<line>`` moves it from the outer border (positive to the left, as t); a line
+    moved toward the lane's inside by more than half the lane's width (at the road mark's start) is nearer the inner
+    border than the outer one. The centre lane's marks (the centre line) are not checked, nor lines following a
+    ``<sway>``.
+
+    Passes (a double line straddling the outer border of right lane -1, 3.5 m wide)::
+
+        <roadMark sOffset="0" type="solid solid"><type name="double" width="0.4">
+          <line length="0" space="0" tOffset="-0.15" sOffset="0" width="0.1"/>
+          <line length="0" space="0" tOffset="0.15" sOffset="0" width="0.1"/></type></roadMark>
+
+    Fails (the line lies on the inner border of lane -1, the centre line's place)::
+
+        <roadMark sOffset="0" type="solid"><type name="inner" width="0.15">
+          <line length="0" space="0" tOffset="3.5" sOffset="0" width="0.15"/></type></roadMark>
+    """
+    for lane in lane_elements(ctx).lanes:
+        if lane.group == "center" or lane.id in (None, 0):
+            continue
+        for mark in lane.element.iterchildren("{*}roadMark"):
+            if next(mark.iterchildren("{*}sway"), None) is not None:
+                continue
+            finding = _inner_line(ctx, lane, mark)
+            if finding is not None:
+                yield finding
+
+
+def _inner_line(ctx: Context, lane: LaneXml, mark: etree._Element) -> Finding | None:
+    """The finding for the first line of ``mark`` nearer the lane's inner border than its outer one, if any."""
+    lines: list[tuple[etree._Element, float]] = []
+    for line in _lines(mark):
+        t = number(line.get("tOffset"))
+        if t is not None:
+            lines.append((line, t))
+    if not lines:
+        return None
+    width = _width(ctx, lane, number(mark.get("sOffset")) or 0.0)
+    if width is None or width <= 0.0:
+        return None
+    inward = 1.0 if (lane.id or 0) < 0 else -1.0  # toward lane 0: +t for right lanes, -t for left lanes
+    for line, t in lines:
+        if t * inward > width / 2:
+            return road_mark_off_outer_border.finding(
+                f"{lane.describe()}: the <roadMark> at line {mark.sourceline} draws a line with tOffset={metres(t)}, "
+                f"{metres(abs(t))} m from the lane's outer border toward its inside, in a lane {metres(width)} m wide: "
+                "a road mark describes only the outer border's line; give the inner border's line to the lane "
+                "whose outer border it is (or lane 0), and a marking inside the lane as a signal",
+                uid=U.ROAD_MARK_ONLY_OUTER,
+                **lane.where(line.sourceline),
+            )
+    return None
+
+
+def _width(ctx: Context, lane: LaneXml, s_offset: float) -> float | None:
+    """The lane's width at the road mark's start (``None`` when the model has no such lane or road)."""
+    road = ctx.road(lane.road)
+    start = lane.section.s
+    if road is None or start is None or lane.id is None:
+        return None
+    for index, section in enumerate(road.lane_sections):
+        if section.line == lane.section.element.sourceline and section.lane(lane.id) is not None:
+            return ctx.lane_width(road, index, lane.id, start + s_offset)
+    return None
