@@ -30,7 +30,7 @@ from xodrcheck.model import Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context, placed_lane_ids
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import BATCH_SAMPLES, lines_in_order, section_samples, usable
+from xodrcheck.rules.sampled import BATCH_SAMPLES, lines_in_order, section_lines, section_samples, usable
 
 
 def _sections(ctx: Context):
@@ -68,8 +68,8 @@ def _tightest(curvature: np.ndarray, bound: float) -> int | None:
 def lane_radius_too_small(ctx: Context):
     """The centre line of a drivable lane curves tighter than ``min_radius`` (5 m by default).
 
-    Reported once per lane and lane section, at the tightest sampled point. Where the lane's border folds
-    (``border-folds``) the curvature is not defined and is not reported here.
+    Reported once per lane and lane section, at the tightest sampled point. A lane whose inner or outer border folds
+    in the section (``border-folds``: the curve is too tight for the lane) is reported there only, once for one cause.
 
     Passes (an arc of radius 50 m)::
 
@@ -93,7 +93,7 @@ def lane_radius_too_small(ctx: Context):
                 points = geometry.lane_points(index, lane.id, s, "centre")
                 i = _tightest(np.where(points.speed > 0, points.curvature, 0.0), bound)
                 hit = None if i is None else (i, float(points.curvature[i]), float(points.x[i]), float(points.y[i]))
-            if hit is None:
+            if hit is None or _folds(ctx, road, index, lane.id):
                 continue
             i, curvature, x, y = hit
             yield lane_radius_too_small.finding(
@@ -102,6 +102,18 @@ def lane_radius_too_small(ctx: Context):
                 "minimum; widen the curve",
                 **_where(road, index, lane.id, float(s[i]), x, y, lane.line),
             )
+
+
+def _folds(ctx: Context, road: Road, index: int, lane_id: int) -> bool:
+    """Whether the lane's inner or outer border folds in the section (``border-folds`` reports it: the curve is too
+    tight for the lane, and the radius of its centre line is a consequence, not a second defect)."""
+    lines = section_lines(ctx, road, index)
+    step = 1 if lane_id > 0 else -1
+    for border in (lane_id - step, lane_id):
+        t = lines.t.get(border)
+        if t is not None and np.nanmax(np.nan_to_num(t * lines.curvature, nan=0.0), initial=0.0) >= 1.0:
+            return True
+    return False
 
 
 #: The tightest point of a lane's centre line above the bound: (sample index, curvature, x, y).

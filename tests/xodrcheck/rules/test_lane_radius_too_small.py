@@ -23,3 +23,10 @@ def test_a_lane_filed_on_the_wrong_side_is_skipped_not_a_crash(tmp_path):
     path.write_text(moved, encoding="utf-8")
     assert findings(path, RULE) == []  # lane -1 (radius 5.75 m) passes; lane 1 is not placed
     assert "lane-id-sequence" in {f.name for f in check(path).findings}
+
+
+def test_a_lane_whose_border_folds_is_border_folds_finding_only():
+    """Radius 2 m, lane 1 reaching 3.5 m to the left: its outer border folds (border-folds), and the 0.25 m radius of
+    its centre is that same defect, not a second one; lane -1 (outside the curve, radius 3.75 m) is still reported."""
+    found = findings(fixture("border-folds", "fail.xodr"), RULE)
+    assert [(f.road, f.lane) for f in found] == [("1", -1)]
