@@ -130,13 +130,17 @@ def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: 
 
     release_lines(ctx)  # the rules after these read no section lines or road ends: room for the lane meshes
     surfaces = _overlap_index(ctx).surfaces
+    roadside = _pairs(ctx, False) if drivable else {}
     for roads, pair in sorted(_pairs(ctx, drivable).items()):
         members = [_in_junction(ctx, r) for r in roads]
         if junction is not None and any(members) is not junction:
             continue
+        if not drivable and roads in _pairs(ctx, True):
+            continue  # one overlap of two roads, one finding: O001's or O003's, which says so
         o, lanes = pair.largest, sorted(pair.lanes)
         if o is None:  # every pair holds at least one overlap (_pairs)
             continue
+        also = roadside.get(roads)
         if junction and not members[0]:  # name the connecting road first
             roads = (roads[1], roads[0])
             o = _swapped(o)
@@ -152,6 +156,8 @@ def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: 
             "y": o.y,
         }
         message = _message(ctx, roads, pair.area, lanes, o, what)
+        if also is not None:
+            message += f"; their roadside lanes (no drivable lane) overlap too, by {also.area:.1f} m2"
         line = road.line if road is not None else None
         if check is not connection_overlap:
             yield check.finding(message, line=line, **where)
@@ -293,7 +299,8 @@ def roadside_overlap(ctx: Context):
 
     Sidewalks, shoulders, borders or lanes of type none of two roads that are neither linked nor share a junction
     cover the same ground (more than ``Tolerances.overlap_area`` m2 within ``Tolerances.clearance``): usually two
-    sidewalks drawn across each other at a corner, or a road of roadside lanes laid over another.
+    sidewalks drawn across each other at a corner, or a road of roadside lanes laid over another. Two roads whose
+    drivable lanes overlap too are ``road-overlap``'s or ``connection-overlap``'s, whose one finding says so.
 
     Passes (two sidewalk roads side by side, 1 m apart).
 

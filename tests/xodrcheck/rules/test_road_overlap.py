@@ -50,3 +50,11 @@ def test_a_bridge_three_metres_above_lacks_clearance():
     assert "(clearance 4.5 m: 1.50 m short of it as a bridge)" in f.message
     (at_grade,) = findings(fixture(RULE, "fail.xodr"), RULE)
     assert "short of it" not in at_grade.message  # roads crossing at one height: no bridge to speak of
+
+
+def test_one_finding_for_two_roads_whose_drivable_and_roadside_lanes_overlap():
+    """Two crossing roads with sidewalks: one O001 finding saying the sidewalks overlap too, no O004 beside it."""
+    path = fixture(RULE, "fail_with_sidewalks.xodr")
+    (f,) = findings(path, RULE)
+    assert "their roadside lanes (no drivable lane) overlap too, by 16.0 m2" in f.message
+    assert findings(path, "roadside-overlap") == []
