@@ -14,8 +14,8 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, Lane, LaneType
 from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context, travel_direction
-from xodrcheck.rules.lane_joints import WORD, joints, pair_key, side_lanes
+from xodrcheck.rules.context import Context
+from xodrcheck.rules.lane_joints import WORD, joints, opposed, pair_key, side_lanes
 from xodrcheck.rules.lane_joints import Joint as Joint  # named here as before
 from xodrcheck.rules.lane_joints import Side as Side
 from xodrcheck.rules.registry import rule
@@ -279,7 +279,8 @@ def lane_link_not_reciprocal(ctx: Context):
 
     Applies between the lane sections of a road and across road links where both roads link to each other (Annex F
     ``road.lane.link.lanes_across_laneSections``: a lane that continues is connected in both directions). Readers that
-    follow links from one side only see different lane graphs.
+    follow links from one side only see different lane graphs. A link to a lane whose traffic runs the other way (a
+    lane on the wrong side of lane 0) is ``lane-link-direction``'s, not reported again here.
 
     Passes::
 
@@ -300,6 +301,8 @@ def lane_link_not_reciprocal(ctx: Context):
                 target = other.section.lane(target_id)
                 if target is None or target_id == 0 or lane.id in other.links(target):
                     continue
+                if opposed(mine.road, lane, other.road, target, joint.same_orientation):
+                    continue  # a link to a lane on the wrong side: lane-link-direction's one finding
                 yield lane_link_not_reciprocal.finding(
                     f"{mine.describe()}: lane {lane.id}'s {WORD[mine.end]} is lane {target_id} of "
                     f"{other.describe()}, but that lane's {WORD[other.end]} does not name lane {lane.id}",
@@ -335,11 +338,7 @@ def lane_link_direction(ctx: Context):
         for lane in side_lanes(mine.section):
             for target_id in mine.links(lane):
                 target = other.section.lane(target_id)
-                if target is None:
-                    continue
-                a = travel_direction(mine.road, lane)
-                b = travel_direction(other.road, target)
-                if a is None or b is None or (a == b) == joint.same_orientation:
+                if target is None or not opposed(mine.road, lane, other.road, target, joint.same_orientation):
                     continue
                 key = pair_key(mine, lane.id, other, target_id)
                 if key in seen:

@@ -14,7 +14,7 @@ from collections.abc import Iterator
 from xodrcheck.classcache import dataclass
 from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, Road
 from xodrcheck.quantities import metres
-from xodrcheck.rules.context import Context, link_at
+from xodrcheck.rules.context import Context, link_at, travel_direction
 
 #: The lane link that crosses each end: ``predecessor`` at a start, ``successor`` at an end.
 WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}
@@ -94,3 +94,11 @@ def side_lanes(section: LaneSection) -> tuple[Lane, ...]:
 
 def pair_key(a: Side, a_id: int, b: Side, b_id: int) -> frozenset:
     return frozenset({(a.road.id, a.index, a.end, a_id), (b.road.id, b.index, b.end, b_id)})
+
+
+def opposed(road: Road, lane: Lane, other_road: Road, other: Lane, same_orientation: bool) -> bool:
+    """Whether a link joins lanes whose traffic runs opposite ways through the joint (``lane-link-direction``): the
+    link names a lane on the wrong side of lane 0 (or the wrong contact point), and the other link rules leave that
+    link to it, one finding for one cause. Lanes without one direction of traffic are never opposed."""
+    a, b = travel_direction(road, lane), travel_direction(other_road, other)
+    return a is not None and b is not None and (a == b) != same_orientation

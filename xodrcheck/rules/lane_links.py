@@ -7,11 +7,12 @@ import itertools
 from collections import defaultdict
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.model import ContactPoint, ElementType
+from xodrcheck.model import ContactPoint, ElementType, Lane
 from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, link_at
 from xodrcheck.rules.lane import joints, side_lanes
+from xodrcheck.rules.lane_joints import Joint, opposed
 from xodrcheck.rules.lane_xml import lane_elements
 from xodrcheck.rules.registry import rule
 
@@ -81,7 +82,8 @@ def lane_links_ambiguous(ctx: Context):
     by side, and lanes side by side may merge into one (``multiple_connections``); links are ambiguous when a lane
     splits into lanes that are not side by side (lane -1 into -1 and -3, past -2), or when a split and a merge share a
     lane (lane -1 into -1 and -2 while lane -2 also leads into -2): lanes cross or weave there, which is what a
-    junction's connecting roads describe. Links in both directions across the joint count.
+    junction's connecting roads describe. Links in both directions across the joint count, but not a link to a lane
+    whose traffic runs the other way (``lane-link-direction``'s).
 
     Passes (lane -1 splits into -1 and -2)::
 
@@ -101,16 +103,25 @@ def lane_links_ambiguous(ctx: Context):
         here, there = defaultdict(set), defaultdict(set)
         for lane in side_lanes(mine.section):
             for target in mine.links(lane):
-                if target != 0 and other.section.lane(target) is not None:
+                if _usable(joint, lane, other.section.lane(target), False):
                     here[lane.id].add(target)
                     there[target].add(lane.id)
         if joint.mutual:
             for lane in side_lanes(other.section):
                 for target in other.links(lane):
-                    if target != 0 and mine.section.lane(target) is not None:
+                    if _usable(joint, lane, mine.section.lane(target), True):
                         here[target].add(lane.id)
                         there[lane.id].add(target)
         yield from _ambiguous(mine, other, here, there)
+
+
+def _usable(joint: Joint, lane: Lane, target: Lane | None, from_other: bool) -> bool:
+    """Whether a link counts here: to a side lane that exists, and not to a lane whose traffic runs the other way
+    (``lane-link-direction`` reports that link, one finding for one cause)."""
+    if target is None or target.id == 0:
+        return False
+    near, far = (joint.other, joint.mine) if from_other else (joint.mine, joint.other)
+    return not opposed(near.road, lane, far.road, target, joint.same_orientation)
 
 
 def _ambiguous(mine, other, here: dict[int, set[int]], there: dict[int, set[int]]):

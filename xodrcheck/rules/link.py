@@ -32,6 +32,7 @@ from __future__ import annotations
 import math
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.model import ContactPoint, LaneSection, Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as JU
 from xodrcheck.rules import lane_uids as U
@@ -47,6 +48,7 @@ from xodrcheck.rules.lane_boundary import (
     link_groups,
     unlinked_band,
 )
+from xodrcheck.rules.lane_joints import opposed
 from xodrcheck.rules.link_joints import (
     border_gap,
     describe_joint,
@@ -165,9 +167,11 @@ def lane_border_gap(ctx: Context):
     junction connection), the inner and outer border of one lane at its road's end must coincide with the borders of
     the other lane at its contact point (in either order). This catches gaps and overlaps between linked lanes (ASAM's
     ``lane.smoothness.contact_point_no_horizontal_gaps``), crossed lane links and lanes linked to a lane of another
-    width. Borders over ``gap`` (1 cm, ASAM's threshold) apart are an error, over ``position`` (1 mm) a warning. An
-    error at a junction connection enforces ``junctions.connection.smooth_fit`` (1.9) or, in a direct junction,
-    ``junctions.direct.linked_lane_smoothness``: the linked lanes fit smoothly as described for roads (10.3).
+    width. A road link naming a lane whose traffic runs the other way (on the wrong side of lane 0) is
+    ``lane-link-direction``'s one finding, not a border gap too. Borders over ``gap`` (1 cm, ASAM's threshold) apart
+    are an error, over ``position`` (1 mm) a warning. An error at a junction connection enforces
+    ``junctions.connection.smooth_fit`` (1.9) or, in a direct junction, ``junctions.direct.linked_lane_smoothness``:
+    the linked lanes fit smoothly as described for roads (10.3).
 
     Passes (lane -1 of both roads is 3.5 m wide and the roads meet)::
 
@@ -187,6 +191,8 @@ def lane_border_gap(ctx: Context):
             if key in done:
                 continue
             done.add(key)
+            if neighbour.connection is None and _opposed_at_link(ctx, road, end, lane, neighbour, other):
+                continue  # a link to a lane on the wrong side: lane-link-direction's one finding
             found = border_gap(mine, lane, theirs, other)
             if found is None:
                 continue
@@ -202,6 +208,14 @@ def lane_border_gap(ctx: Context):
                 uid=junction_uid(ctx, road, neighbour, severity),
                 **location(road, end, point, line or joint_line(road, end, neighbour), lane),
             )
+
+
+def _opposed_at_link(ctx: Context, road: Road, end: ContactPoint, lane_id: int, neighbour, other_id: int) -> bool:
+    """Whether lanes linked across a road link carry traffic running opposite ways (``lane-link-direction``)."""
+    lane, other = ctx.lane_at(road, end, lane_id), ctx.lane_at(neighbour.road, neighbour.contact, other_id)
+    if lane is None or other is None:
+        return False
+    return opposed(road, lane, neighbour.road, other, end is not neighbour.contact)
 
 
 @rule(
@@ -310,12 +324,23 @@ def lane_border_discontinuous(ctx: Context):
             usable_pairs = {
                 (a, b): line
                 for (a, b), line in pairs.items()
-                if a != 0 and b != 0 and a in old.t and b in new.t  # a missing lane is lane-link-missing-lane's
+                if a != 0
+                and b != 0
+                and a in old.t
+                and b in new.t  # a missing lane is lane-link-missing-lane's
+                and not _opposed_in_road(road, sections[i - 1], a, sections[i], b)
             }
             for group, line in link_groups(usable_pairs):
                 yield from _boundary_finding(
                     ctx, road, geometry, i, group, line, (old, new), (inner_of, inner_new), usable_pairs, surface_steps
                 )
+
+
+def _opposed_in_road(road: Road, before: LaneSection, a: int, after: LaneSection, b: int) -> bool:
+    """Whether the link from lane ``a`` to lane ``b`` of the next section names a lane whose traffic runs the other
+    way (``lane-link-direction`` reports that link: its borders jump as a consequence, not a second defect)."""
+    lane, target = before.lane(a), after.lane(b)
+    return lane is not None and target is not None and opposed(road, lane, road, target, True)
 
 
 def _boundary_finding(ctx, road, geometry, i, group, line, lines, inners, pairs, surface_steps):

@@ -36,3 +36,21 @@ def test_direction_attribute_turns_or_opens_a_lane():
     assert findings(fixture(RULE, "pass_direction_both.xodr"), RULE) == []
     (f,) = findings(fixture(RULE, "fail_direction_reversed.xodr"), RULE)
     assert (f.road, f.lane) == ("1", -1)
+
+
+def test_a_link_to_the_wrong_side_is_reported_once():
+    """A lane linked to the lane across lane 0 (a typo, as in ASAM's road_lane_level_true_one_side_lanesection
+    example) is this rule's finding; its consequences are not reported again: the border jump (lane-border-
+    discontinuous), the crossed links (lane-links-ambiguous), the unreturned link itself (lane-link-not-reciprocal)
+    and, across a road link, the border gap (lane-border-gap). Before: 6 errors in the first file, 4 in the others."""
+    path = fixture(RULE, "fail_wrong_side_in_road.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane, f.section_s) == ("1", -1, 50.0)
+    for sibling in ("lane-border-discontinuous", "lane-links-ambiguous"):
+        assert findings(path, sibling) == []
+    # lane -1 at s=0 names lane -1 at s=50, which does not name it back: a second fact, reported
+    (back,) = findings(path, "lane-link-not-reciprocal")
+    assert (back.lane, back.section_s) == (-1, 50.0) and "lane -1's successor is lane -1" in back.message
+    for name in ("fail.xodr", "fail_opposite.xodr"):
+        assert len(findings(fixture(RULE, name), RULE)) == 2
+        assert findings(fixture(RULE, name), "lane-border-gap") == []
