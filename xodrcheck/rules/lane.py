@@ -255,7 +255,8 @@ def lane_not_continued(ctx: Context):
             if ctx.zero_width_at(mine.road, mine.index, lane.id, mine.end) is not False:
                 continue  # zero width there (a lane opening or closing), or no width at all
             width = ctx.width_at_end(mine.road, mine.index, lane.id, mine.end)
-            across = "the next lane section" if mine.road is other.road else f"road {other.road.id}"
+            before = "previous" if mine.end is ContactPoint.START else "next"
+            across = f"the {before} lane section" if mine.road is other.road else f"road {other.road.id}"
             yield lane_not_continued.finding(
                 f"{mine.describe()}: lane {lane.id} ({lane.type.value}, {width:.2f} m wide at its "
                 f"{mine.end.value}) has no {WORD[mine.end]} in {across}; link it, or let it "

@@ -295,7 +295,8 @@ def lane_border_discontinuous(ctx: Context):
     (Annex F ``road.lane.link.multiple_connections``); the lane and the band they cover together must meet. Where a
     lane is linked to only one of the lanes it splits into (the jump is closed by unlinked lanes beside the linked one),
     the finding names that rule. (Its second sentence, non-zero width where lanes connect, is
-    ``zero-width-lane-linked``'s.)
+    ``zero-width-lane-linked``'s: a link from or to a lane of zero width at the boundary, an opening or closing lane,
+    is reported there once, not again as a border jump here.)
 
     Passes (lane -1 keeps 3.5 m across the boundary at s=50)::
 
@@ -329,6 +330,9 @@ def lane_border_discontinuous(ctx: Context):
                 and a in old.t
                 and b in new.t  # a missing lane is lane-link-missing-lane's
                 and not _opposed_in_road(road, sections[i - 1], a, sections[i], b)
+                # a lane linked where it has zero width (opening or closing) is zero-width-lane-linked's finding
+                and not ctx.zero_width_at(road, i - 1, a, ContactPoint.END)
+                and not ctx.zero_width_at(road, i, b, ContactPoint.START)
             }
             for group, line in link_groups(usable_pairs):
                 yield from _boundary_finding(

@@ -39,3 +39,14 @@ def test_border_lanes_filed_on_the_wrong_side_are_no_crash(tmp_path):
     path.write_bytes(etree.tostring(root))
     assert check(path).findings
     assert [f for f in check(path).findings if f.code == "X900"] == []
+
+
+def test_a_link_to_an_opening_lane_is_not_also_a_border_jump():
+    """Lane -1 continues as lane -2 but names the lane opening inside it (lane -1 at s=50): one finding here, not
+    also lane-border-discontinuous's 3.5 m jump of lane -1 into lane -1 (before: both)."""
+    path = fixture(RULE, "fail_opens_inside.xodr")
+    (f,) = findings(path, RULE)
+    assert (f.road, f.lane) == ("2", -1) and "which has zero width there (it opens)" in f.message
+    assert findings(path, "lane-border-discontinuous") == []
+    (unlinked,) = findings(path, "lane-not-continued")
+    assert "has no predecessor in the previous lane section" in unlinked.message
