@@ -14,11 +14,7 @@ read() never, or the reverse, or neither (Town01 measured at 1.75 to 2.34 so). `
 glibc told to keep freed memory (``MALLOC_TRIM_THRESHOLD_`` and ``MALLOC_MMAP_THRESHOLD_``): neither side faults,
 and the ratio is that of the work done alone.
 
-The reader builds its model with the compiled fast path when ``xodrcheck-speedups`` is installed (scripts/setup
-builds it); the first line printed says whether it is on. ``--pure`` measures the pure-Python reader instead
-(Town01 2.13 with ``--no-trim`` when last measured, 1.3-1.7 with the fast path, 2026-11-27).
-
-    python benchmarks/bench_read.py [--repeats 5] [--corpus DIR] [--no-trim] [--pure]
+    python benchmarks/bench_read.py [--repeats 5] [--corpus DIR] [--no-trim]
 
 The corpus folder defaults to ``$XODR_CORPUS``, else ``../shared/corpus`` beside the checkout.
 """
@@ -37,7 +33,7 @@ from pathlib import Path
 from lxml import etree
 
 from xodrcheck.lanes import RoadGeometry
-from xodrcheck.reader import fast, read
+from xodrcheck.reader import read
 from xodrcheck.sample import sample_lanes
 
 REPO = Path(__file__).resolve().parents[1]
@@ -101,11 +97,7 @@ def main() -> None:
     default_corpus = Path(os.environ.get("XODR_CORPUS", REPO.parent / "shared" / "corpus"))
     parser.add_argument("--corpus", type=Path, default=default_corpus)
     parser.add_argument("--no-trim", action="store_true", help="glibc keeps freed memory: no page faults either side")
-    parser.add_argument("--pure", action="store_true", help="the pure-Python reader, without the compiled fast path")
     args = parser.parse_args()
-    if args.pure:
-        fast.plan_view = fast.profile = fast.lanes = None
-        fast.UNAVAILABLE = "--pure"
     if args.no_trim and any(os.environ.get(k) != v for k, v in NO_TRIM.items()):
         # glibc reads these at start-up: run again under them
         os.execve(sys.executable, [sys.executable, *sys.argv], {**os.environ, **NO_TRIM})
@@ -118,7 +110,6 @@ def main() -> None:
         f"{'map':<8} {'MB':>5} {'lxml ms':>8} {'faults':>7} {'read ms':>8} {'faults':>7} {'ratio':>6} {'<=':>4} "
         f"{'borders ms':>10} {'points':>8} {'target':>8}"
     )
-    print(f"reader: {'compiled fast path on' if not fast.UNAVAILABLE else 'pure Python: ' + fast.UNAVAILABLE}")
     print(f"median of {args.repeats} runs; borders: inner and outer border of every lane every {STEP} m")
     trim = "glibc keeps freed memory (--no-trim)" if args.no_trim else "glibc as configured (it may trim its heap)"
     print(f"faults: minor page faults per call; {trim}")

@@ -8,10 +8,9 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
-
-from xodrcheck.classcache import dataclass
 
 from .errors import InputError, JunctionArtError, ParamsError
 

@@ -10,8 +10,7 @@ direction and solid within :data:`SOLID_NEAR_JUNCTION` of a junction, solid whit
 from __future__ import annotations
 
 import math
-
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
 
 from .intersections.model import Layout, RoadPlan
 from .lanegeom import forward_side, lane_id, taper_length

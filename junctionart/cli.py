@@ -9,14 +9,11 @@ from __future__ import annotations
 
 import argparse
 import enum
-import importlib
 import sys
 import time
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import Any, NamedTuple, NoReturn
-
-from xodrcheck import startup
 
 from .errors import JunctionArtError, OutputError, ParamsError
 from .params import size_check
@@ -223,23 +220,8 @@ def _params(args: argparse.Namespace):
     return Params.create(args.profile, **values)
 
 
-#: What ``generate`` runs: the stages of the generator, numpy's random generators and the writer.
-_GENERATOR_MODULES = (
-    "numpy.random",
-    "junctionart.network",
-    "junctionart.lanes",
-    "junctionart.intersections",
-    "junctionart.cleanup",
-    "junctionart.writer",
-)
-
-
 def _generate(args: argparse.Namespace) -> int:
     from . import STAGES, controllines, generate_layout, write
-
-    for module in _GENERATOR_MODULES:  # imported now, while the collector is paused (xodrcheck.startup)
-        importlib.import_module(module)
-    startup.imports_done()
 
     params = _params(args)
     if args.count < 1:
@@ -401,7 +383,6 @@ class _Parser(argparse.ArgumentParser):
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    startup.begin(argv)  # before numpy loads: one BLAS thread; the collector paused while the command imports
     parser = _Parser(prog="junctionart", description="Procedural OpenDRIVE road networks.")
     sub = parser.add_subparsers(dest="command", required=True)
     chosen = _chosen(argv)
@@ -433,7 +414,6 @@ def main(argv: Sequence[str] | None = None) -> int:
 def _command(args: argparse.Namespace) -> int:
     if args.command == "generate":
         return _generate(args)
-    startup.imports_done()
     if args.command == "era":
         from .era_cli import run as _era
 

@@ -17,13 +17,12 @@ from __future__ import annotations
 
 import itertools
 import math
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import shapely
-
-from xodrcheck.classcache import dataclass
 
 from .errors import InputError
 from .params import MAX_SIDE, Params

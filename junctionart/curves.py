@@ -10,10 +10,9 @@ from __future__ import annotations
 import functools
 import itertools
 import math
+from dataclasses import dataclass
 
 import numpy as np
-
-from xodrcheck.classcache import dataclass
 
 from .opendrive import Arc, Geometry, Line, ParamPoly3
 

@@ -30,11 +30,9 @@ import os
 import time
 import traceback
 from collections.abc import Callable, Iterable
-from dataclasses import field
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
-
-from xodrcheck.classcache import dataclass
 
 from .era_executors import Dask as _Dask
 from .era_executors import Local as _Local

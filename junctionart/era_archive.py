@@ -12,12 +12,11 @@ from __future__ import annotations
 import csv
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
-
-from xodrcheck.classcache import dataclass
 
 from .errors import ParamsError
 from .extras import pyplot

@@ -8,12 +8,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
 from xodrcheck.atomic import atomic_file
-from xodrcheck.classcache import dataclass
 
 from .extras import pyplot
 

@@ -24,10 +24,8 @@ from __future__ import annotations
 
 import json
 import math
-from dataclasses import fields
+from dataclasses import dataclass, fields
 from typing import Any
-
-from xodrcheck.classcache import dataclass
 
 from .errors import ParamsError
 from .lanes import LaneConfig, LanedNetwork

@@ -6,9 +6,9 @@ Counts are per travel direction along the chain: ``forward`` lanes travel from i
 
 from __future__ import annotations
 
-import numpy as np
+from dataclasses import dataclass
 
-from xodrcheck.classcache import dataclass
+import numpy as np
 
 from .controllines import ControlLines
 from .errors import GenerationError

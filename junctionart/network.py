@@ -8,11 +8,10 @@ from __future__ import annotations
 
 import itertools
 import math
+from dataclasses import dataclass
 
 import numpy as np
 from shapely import LineString, STRtree
-
-from xodrcheck.classcache import dataclass
 
 from .controllines import ControlLine, ControlLines
 from .grade_separation import GradeSeparation

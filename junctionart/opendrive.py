@@ -7,7 +7,7 @@ here cannot be hidden by a shared data type. Only what the generator writes is m
 
 from __future__ import annotations
 
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
 
 
 @dataclass(frozen=True)

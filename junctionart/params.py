@@ -8,10 +8,8 @@ from __future__ import annotations
 
 import enum
 import math
-from dataclasses import field, fields, replace
+from dataclasses import dataclass, field, fields, replace
 from typing import Any
-
-from xodrcheck.classcache import dataclass
 
 from .errors import ParamsError
 

@@ -15,10 +15,10 @@ import os
 import re
 import sys
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from typing import Any
 
 from xodrcheck.check import Report, check
-from xodrcheck.classcache import dataclass
 from xodrcheck.config import Config
 from xodrcheck.findings import ReadError, XodrError
 

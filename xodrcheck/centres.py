@@ -13,12 +13,12 @@ border line plus ``0.5 * (inner + outer) - inner`` (jets of ``t``), and its curv
 from __future__ import annotations
 
 from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
 from xodrcheck import roadpass
 from xodrcheck.arrays import batches, ranges
-from xodrcheck.classcache import dataclass
 from xodrcheck.geometry.pose import Pose
 from xodrcheck.roadpass_lines import lateral_lines
 from xodrcheck.roadpass_pose import poses

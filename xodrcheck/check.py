@@ -18,10 +18,10 @@ import re
 import time
 import zlib
 from collections.abc import Iterable, Iterator, Sequence
+from dataclasses import dataclass
 from pathlib import Path
 
 from xodrcheck import memory
-from xodrcheck.classcache import dataclass
 from xodrcheck.config import Config, ConfigError
 from xodrcheck.filebytes import FileBytes
 from xodrcheck.findings import Finding, OutOfTime, Severity

@@ -9,11 +9,10 @@ from __future__ import annotations
 import dataclasses
 import math
 import sys
-from dataclasses import field
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import XodrError
 
 __all__ = ["PROFILES", "SEVERITY_NAMES", "Config", "ConfigError", "Tolerances", "load_config"]

@@ -7,10 +7,10 @@ Exact, not sampled: each record's extremes of z and of the grade lie at its ends
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.model import ContactPoint, Document, ElementType, Profile, Road
 
 

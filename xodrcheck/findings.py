@@ -3,8 +3,7 @@
 from __future__ import annotations
 
 import enum
-
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
 
 __all__ = ["Category", "Finding", "OutOfTime", "ReadError", "Severity", "XodrError"]
 

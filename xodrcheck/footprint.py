@@ -13,12 +13,12 @@ the point, or the nearest one for points on a border).
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
 import shapely
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import OutOfTime
 from xodrcheck.mesh import LaneSurfaces, cached_per_chord, surfaces_of
 from xodrcheck.model import DRIVABLE_LANE_TYPES, Document, ElementType, JunctionType, LaneKey

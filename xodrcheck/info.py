@@ -7,12 +7,11 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Iterable, Mapping
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.arrays import unique
-from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Finding, Severity
 from xodrcheck.lanes import RoadGeometry, geometry_of
@@ -159,7 +158,7 @@ def _reference_s(rg: RoadGeometry, tolerances: Tolerances) -> np.ndarray:
     """Samples of a road without lane sections: element starts, the road end, and steps of at most ``max_step``."""
     length = max(rg.road.length, 0.0)
     count = int(step_counts(np.array([length]), tolerances.max_step, tolerances.max_samples_per_section)[0]) + 1
-    return unique(np.concatenate([np.linspace(0.0, length, count), rg.reference_line.breakpoints]))
+    return np.unique(np.concatenate([np.linspace(0.0, length, count), rg.reference_line.breakpoints]))
 
 
 def bounding_box(document: Document, tolerances: Tolerances | None = None) -> BoundingBox | None:

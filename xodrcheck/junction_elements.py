@@ -14,11 +14,11 @@ by local name (``{*}tag``). A boundary segment's ``sStart``/``sEnd``/``contactPo
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from lxml import etree
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.xmlvalues import integer, local, number, numbers
 
 if TYPE_CHECKING:  # pragma: no cover

@@ -28,9 +28,10 @@ four points. Points outside every complete square (four corners present) have no
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.junction_elements import ElevationGrid
 
 #: The constant matrix ``A`` of 12.11.1 (cubic Hermite basis: value and tangent at 0 and 1 -> coefficients).

@@ -11,11 +11,11 @@ plan-view points with heading, curvature and speed along the offset curve (:func
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 
 import numpy as np
 
 from xodrcheck.budget import array_bytes
-from xodrcheck.classcache import dataclass
 from xodrcheck.geometry import profile
 from xodrcheck.geometry.jet import Jet
 from xodrcheck.geometry.planview import ReferenceLine

@@ -16,12 +16,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Callable, Collection, Mapping
+from dataclasses import dataclass
 from functools import cached_property
 
 import numpy as np
 
 from xodrcheck.arrays import batches, ranges
-from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import XodrError
 from xodrcheck.lanes import RoadGeometry, geometry_of

@@ -55,11 +55,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping
+from dataclasses import dataclass
 
 import numpy as np
 import shapely
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.footprint import area_and_conflict, overlap_index
 from xodrcheck.lanes import RoadGeometry, geometry_of

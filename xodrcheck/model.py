@@ -16,10 +16,8 @@ the
 from __future__ import annotations
 
 import enum
-from dataclasses import field, replace
+from dataclasses import dataclass, field, replace
 from functools import cached_property
-
-from xodrcheck.classcache import dataclass
 
 __all__ = [
     "DIRECTED_LANE_TYPES",

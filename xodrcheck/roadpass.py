@@ -29,10 +29,10 @@ The reference-line poses are :mod:`xodrcheck.roadpass_pose`'s, the profiles and 
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.geometry import profile
 from xodrcheck.lanes import RoadGeometry
 from xodrcheck.roadpass_lines import Laws, bend, lateral_lines

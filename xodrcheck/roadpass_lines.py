@@ -7,11 +7,11 @@ by lane outward over all sections and sides (:func:`lateral_lines`), with their 
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
 from xodrcheck.arrays import ranges
-from xodrcheck.classcache import dataclass
 from xodrcheck.geometry import profile
 from xodrcheck.geometry.pose import Pose
 from xodrcheck.roadpass_pose import Entry

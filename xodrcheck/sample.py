@@ -7,10 +7,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator, Mapping, Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.lanes import RoadGeometry, geometry_of
 from xodrcheck.model import Document, lane_type_name

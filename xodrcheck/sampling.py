@@ -24,7 +24,6 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.arrays import unique
 from xodrcheck.geometry import profile
 
 if TYPE_CHECKING:
@@ -61,7 +60,7 @@ def _knots(geometry: RoadGeometry, section_index: int) -> np.ndarray:
     for side in geometry.side_lanes(section_index):
         candidates.extend(law.starts for law in side.laws if law is not None)
     points = np.concatenate(candidates)
-    return unique(points[(points >= s0) & (points <= s1)])
+    return np.unique(points[(points >= s0) & (points <= s1)])
 
 
 def _subdivide(starts: np.ndarray, lengths: np.ndarray, counts: np.ndarray) -> np.ndarray:
@@ -119,4 +118,4 @@ def sample_section(
     ratio = np.divide(8.0 * chord, bending, out=np.full_like(bending, np.inf), where=bending != 0)
     allowed = np.maximum(np.sqrt(ratio), 2.0 * chord)
     fine = _subdivide(coarse, steps, step_counts(steps, allowed, budget))
-    return unique(np.append(fine, cuts[-1]))
+    return np.unique(np.append(fine, cuts[-1]))

@@ -25,11 +25,11 @@ import pickle
 import sys
 import threading
 from collections.abc import Iterator
+from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
 from xodrcheck import packagedata, usercache
-from xodrcheck.classcache import dataclass
 
 #: (revMajor, revMinor) -> (folder under the package data ``xodrcheck.schemas``, main file).
 SCHEMA_FOLDERS: dict[tuple[int, int], tuple[str, str]] = {

@@ -15,9 +15,9 @@ road.object: outline ids, borders), whose messages say more than a schema error 
 from __future__ import annotations
 
 import re
+from dataclasses import dataclass
 from importlib import resources
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import XodrError
 
 

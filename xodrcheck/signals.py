@@ -11,10 +11,10 @@ absent) so that a rule can tell a missing attribute from a wrong one. Nothing he
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 
 from lxml import etree
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.xmlvalues import integer, local, number
 
 

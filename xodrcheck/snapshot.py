@@ -22,13 +22,12 @@ import hashlib
 import math
 from collections import Counter
 from collections.abc import Iterator, Mapping
-from dataclasses import fields
+from dataclasses import dataclass, fields
 from pathlib import Path
 
 import numpy as np
 
 from xodrcheck.check import check
-from xodrcheck.classcache import dataclass
 from xodrcheck.config import Config, Tolerances
 from xodrcheck.findings import XodrError
 from xodrcheck.info import bounding_box, junction_legs

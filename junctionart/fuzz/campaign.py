@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 from collections import Counter
 from collections.abc import Callable
+from dataclasses import dataclass
 from typing import Any
 
 from hypothesis import given, settings
@@ -18,7 +19,6 @@ from junctionart.fuzz import properties as P
 from junctionart.fuzz.mutations import DEFECTS, damaged_documents, defective_documents
 from junctionart.fuzz.profiles import tolerated
 from junctionart.fuzz.transform import move_and_rotate, renumber_roads, road_ids
-from xodrcheck.classcache import dataclass
 
 #: Examples each run has checked in this process.
 TRIED: Counter = Counter()

@@ -15,13 +15,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 from hypothesis import assume
 from hypothesis import strategies as st
 from hypothesis.errors import InvalidArgument
 from lxml import etree
-
-from xodrcheck.classcache import dataclass
 
 __all__ = [
     "BAD_VALUES",

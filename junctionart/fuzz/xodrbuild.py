@@ -10,12 +10,10 @@ hidden by this one).
 from __future__ import annotations
 
 import math
-from dataclasses import field
+from dataclasses import dataclass, field
 
 import numpy as np
 from lxml import etree
-
-from xodrcheck.classcache import dataclass
 
 _GL_X, _GL_W = np.polynomial.legendre.leggauss(48)
 _PANELS = 16

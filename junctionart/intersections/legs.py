@@ -10,9 +10,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 from typing import NamedTuple
-
-from xodrcheck.classcache import dataclass
 
 MAX_LEGS = 7  #: most legs a junction may have (the paper builds three- to seven-way intersections)
 

@@ -10,10 +10,9 @@ of one road merge, every incoming lane reaches an outgoing lane, and one road's 
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
-
-from xodrcheck.classcache import dataclass
 
 from ..curves import wrap
 from ..params import Params, SplitStrategy, TrafficRule

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
 
 from ..lanes import LaneConfig
 from ..opendrive import Geometry

@@ -12,13 +12,12 @@ from __future__ import annotations
 
 import itertools
 import math
+from dataclasses import dataclass
 from enum import Enum
 from typing import NamedTuple
 
 import numpy as np
 import shapely
-
-from xodrcheck.classcache import dataclass
 
 from ..curves import end_pose, fillet_chain, sample, unit_tangents, wrap
 from ..lanegeom import border_point, inner_offset, lane_id, min_curve_radius, side_width

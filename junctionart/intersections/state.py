@@ -7,12 +7,10 @@ line in ``repairs`` saying what was changed and why.
 from __future__ import annotations
 
 import math
-from dataclasses import field
+from dataclasses import dataclass, field
 
 import numpy as np
 import shapely
-
-from xodrcheck.classcache import dataclass
 
 from ..graph import Chain
 from ..lanes import LaneConfig

@@ -8,8 +8,7 @@ are read from the state each time, because opening exits changes them within the
 from __future__ import annotations
 
 import math
-
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
 
 from ..graph import Chain, chains
 from ..lanes import LaneConfig

@@ -11,11 +11,10 @@ junction already feeds is used, never a tighter turn.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
 import shapely
-
-from xodrcheck.classcache import dataclass
 
 from ..lanegeom import border_point
 from ..opendrive import Arc

@@ -14,7 +14,7 @@ Another country is one more :class:`Catalogue` entry in :data:`COUNTRIES`.
 
 from __future__ import annotations
 
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
 
 
 @dataclass(frozen=True)

@@ -16,11 +16,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterable
+from dataclasses import dataclass
 
 import numpy as np
 import shapely
-
-from xodrcheck.classcache import dataclass
 
 from ..curves import sample
 from ..lanegeom import side_width

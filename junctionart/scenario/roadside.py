@@ -15,10 +15,9 @@ the corner is a Hermite curve of its own from kerb to kerb.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 import numpy as np
-
-from xodrcheck.classcache import dataclass
 
 from ..curves import HermiteFit, connection_geometry, fit_connections, local_target
 from ..lanegeom import border_point

@@ -27,10 +27,9 @@ from __future__ import annotations
 
 import dataclasses
 from collections.abc import Callable
+from dataclasses import dataclass
 
 import numpy as np
-
-from xodrcheck.classcache import dataclass
 
 from ..opendrive import (
     Controller,

@@ -21,13 +21,11 @@ from __future__ import annotations
 
 import pickle
 from collections.abc import Callable
-from dataclasses import field
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 import numpy as np
-
-from xodrcheck.classcache import dataclass
 
 from ..errors import ParamsError
 from .measure import INFEASIBLE, METRICS, NAMES, Evaluation, evaluate

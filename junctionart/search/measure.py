@@ -33,11 +33,10 @@ less paved area (infeasible candidates score -1 and never enter the archive).
 from __future__ import annotations
 
 import hashlib
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-
-from xodrcheck.classcache import dataclass
 
 #: name -> (low, high, default cells) of each metric used as a descriptor.
 METRICS: dict[str, tuple[float, float, int]] = {

@@ -21,13 +21,11 @@ import csv
 import json
 import math
 from collections.abc import Callable
-from dataclasses import replace
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
 import numpy as np
-
-from xodrcheck.classcache import dataclass
 
 from ..intersection import IntersectionSpec
 from ..lanes import LaneConfig, LanedNetwork

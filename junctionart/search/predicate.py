@@ -14,8 +14,7 @@ from __future__ import annotations
 import ast
 import operator
 from collections.abc import Callable, Iterable, Mapping
-
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
 
 from ..errors import ParamsError
 

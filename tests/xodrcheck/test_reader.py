@@ -2,9 +2,7 @@
 
 from __future__ import annotations
 
-import dataclasses
 import gzip
-import inspect
 import os
 
 import pytest
@@ -25,7 +23,6 @@ from tests.xodrcheck.readerdocs import (
 from xodrcheck import model as m
 from xodrcheck.findings import ReadError, Severity
 from xodrcheck.reader import KNOWN_VERSIONS, read
-from xodrcheck.reader.construct import CONSTRUCTORS
 from xodrcheck.rules import xml as R
 
 
@@ -116,7 +113,7 @@ def test_a_file_that_grew_after_its_stat_is_read_whole(tmp_path, monkeypatch):
 
 @pytest.mark.parametrize("enabled", [True, False])
 def test_reading_leaves_the_garbage_collector_as_it_was(enabled):
-    """The reader pauses the cyclic collector while it builds the model, and restores the caller's setting."""
+    """Reading leaves the cyclic collector as the caller set it."""
     import gc
 
     was = gc.isenabled()
@@ -554,20 +551,6 @@ def test_every_finding_names_its_location():
 
 
 # ------------------------------------------------------------------------------------------------------------ internals
-@pytest.mark.parametrize("cls", list(CONSTRUCTORS), ids=lambda c: c.__name__)
-def test_fast_constructors_build_what_the_class_builds(cls):
-    fields = dataclasses.fields(cls)
-    required = [f for f in fields if f.default is dataclasses.MISSING]
-    values = [f"v{i}" for i, _ in enumerate(fields)]
-    make = CONSTRUCTORS[cls]
-    assert make(*values) == cls(*values)
-    assert type(make(*values)) is cls
-    assert make(*values[: len(required)]) == cls(*values[: len(required)])
-    assert inspect.signature(make).parameters.keys() == inspect.signature(cls).parameters.keys()
-    with pytest.raises(TypeError):
-        make(*values[: len(required) - 1])
-
-
 def test_a_short_file_of_many_lines_is_parsed_again_with_its_text_nodes():
     """A file under the size from which lines are counted before the parse (1 MiB) can still have 65,535 lines (blank
     ones, here): the parse without text nodes shows it by its last element's line and is done again with them, so the

@@ -14,8 +14,6 @@ import importlib
 import sys
 from types import ModuleType
 
-from xodrcheck import startup
-
 #: Subcommands in the order ``--help`` lists them, with their one-line help (each module's ``HELP``; a test keeps them
 #: equal). The table lets ``xodrcheck --help`` and ``xodrcheck COMMAND`` import no subcommand module but the one used.
 COMMANDS = {
@@ -64,12 +62,11 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
         if only is None or name == only:
             module = command_module(name)
             module.add_arguments(p)
-            p.set_defaults(_run=module.run, _preload=getattr(module, "preload", None))
+            p.set_defaults(_run=module.run)
     return parser
 
 
 def main(argv: list[str] | None = None) -> int:
-    startup.begin(argv)  # before numpy loads: one BLAS thread; the collector paused while the command imports
     parser = build_parser(only=_chosen(argv) or "")
     args = parser.parse_args(argv)
     from xodrcheck.atomic import EXIT_INTERRUPTED, EXIT_TERMINATED, Terminated, signals_raise
@@ -85,15 +82,12 @@ def main(argv: list[str] | None = None) -> int:
         return EXIT_TERMINATED
     except BrokenPipeError:
         return EXIT_OK
-    return startup.finish(code)  # the process's own command line ends here, without the interpreter's teardown
+    return code
 
 
 def _run(args: argparse.Namespace) -> int:
     import numpy as np  # here: `xodrcheck --help` and usage errors load no numpy
 
-    if args._preload is not None:
-        args._preload()  # the command's modules, imported with the collector paused (xodrcheck.startup)
-    startup.imports_done()
     # Damaged numbers (1e308 widths, say) overflow to inf/nan, which the rules report as findings; numpy's
     # floating-point warnings would only repeat that as noise on stderr. IEEE results are the same either way.
     with np.errstate(all="ignore"):

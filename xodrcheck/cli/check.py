@@ -127,14 +127,6 @@ def _expand(files: list[str]) -> list[str]:
     return out
 
 
-def preload() -> None:
-    """Import what :func:`run` needs, the engine and every rule (the command line calls it before its work)."""
-    import xodrcheck.batch  # noqa: F401
-    from xodrcheck.rules import load_rules
-
-    load_rules()
-
-
 def run(args: argparse.Namespace) -> int:
     from xodrcheck.batch import BatchError, check_files
     from xodrcheck.check import Selection

@@ -14,9 +14,9 @@ quadrature to measure it), or the measured residual already is.
 
 from __future__ import annotations
 
-import numpy as np
+from dataclasses import dataclass
 
-from xodrcheck.classcache import dataclass
+import numpy as np
 
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(16)
 _UNIT_NODES = 0.5 * (_NODES + 1.0)  # the nodes on [0, 1]

@@ -6,9 +6,9 @@ derivatives along exactly gives lane headings and offset-curve curvatures withou
 
 from __future__ import annotations
 
-import numpy as np
+from dataclasses import dataclass
 
-from xodrcheck.classcache import dataclass
+import numpy as np
 
 
 @dataclass(frozen=True, slots=True)

@@ -13,7 +13,6 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
-from xodrcheck.arrays import unique
 from xodrcheck.geometry import arc, line, parampoly3, poly3, spiral
 from xodrcheck.geometry.pose import Pose, as_array
 from xodrcheck.model import Arc, Geometry, Line, ParamPoly3, Poly3, Spiral
@@ -78,7 +77,7 @@ class ReferenceLine:
             for lo, hi in zip(bounds[:-1].tolist(), bounds[1:].tolist()):
                 pose.assign(slice(lo, hi), evaluate_element(self.elements[index[lo]], ds[lo:hi]))
             return pose
-        for i in unique(index):
+        for i in np.unique(index):
             mask = index == i
             pose.assign(mask, evaluate_element(self.elements[i], ds[mask]))
         return pose

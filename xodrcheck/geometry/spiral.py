@@ -7,10 +7,9 @@ position is ``(x0, y0) + ds * exp(i hdg) * I(k0 ds, c ds^2 / 2)`` where
 
 is evaluated exactly (to double precision) in one of two ways, chosen per point by the conditioning of the first:
 
-* Fresnel integrals (:func:`xodrcheck.geometry.fresnel.fresnel`, our own: scipy is not imported) after completing the
-  square. This is the classic clothoid formula. Its rounding error grows like ``eps * (a^2 / (4|b|) + 2 / sqrt|b|)``
-  when the Fresnel values are right to about an ulp (ours are: at most 1.1e-16 absolute against mpmath, where
-  ``scipy.special.fresnel``, used before, errs by up to 6e-16), so the estimate needs no extra factor: harmless for
+* Fresnel integrals (``scipy.special.fresnel``) after completing the square. This is the classic clothoid formula.
+  Its rounding error grows like ``u * (a^2 / (4|b|) + 2 / sqrt|b|)`` where ``u`` is the Fresnel values' own error
+  (scipy's: up to about 3 ulp, 6.7e-16 absolute against mpmath, hence :data:`_FRESNEL_ULPS`): harmless for
   ordinary spirals, catastrophic when the curvature change is tiny (nearly an arc: ``b -> 0``) or the spiral starts far
   from curvature 0 (``a^2 / b`` large), because the formula then subtracts two large, nearly equal Fresnel values and
   rotates by a huge angle.
@@ -28,13 +27,14 @@ import math
 
 import numpy as np
 
-from xodrcheck.geometry.fresnel import fresnel
 from xodrcheck.geometry.pose import Pose, as_array
 from xodrcheck.model import Spiral
 
 _EPS = float(np.finfo(float).eps)
 #: Largest estimated relative rounding error accepted on the Fresnel path (1e-14: 1e-10 m over 10 km).
 _FRESNEL_BUDGET = 1e-14
+#: The Fresnel values' error in units of eps, rounded up (scipy.special.fresnel: at most 6.7e-16 absolute).
+_FRESNEL_ULPS = 4
 _J_TERMS, _N_TERMS = 17, 14  # series truncation for |a'| <= 0.5, |b'| <= 0.25: remainder below 1e-19
 _J = np.arange(_J_TERMS)
 _N = np.arange(_N_TERMS)
@@ -76,7 +76,7 @@ def phase_integral(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     out[~finite] = complex(math.nan, math.nan)
     abs_b = np.abs(b)
     with np.errstate(divide="ignore", invalid="ignore"):
-        error = _EPS * (a * a / (4.0 * abs_b) + 2.0 / np.sqrt(abs_b))
+        error = _FRESNEL_ULPS * _EPS * (a * a / (4.0 * abs_b) + 2.0 / np.sqrt(abs_b))
     use_fresnel = finite & (abs_b > 0) & (error <= _FRESNEL_BUDGET)
     if use_fresnel.any():
         out[use_fresnel] = _by_fresnel(a[use_fresnel], b[use_fresnel])
@@ -113,6 +113,8 @@ def _by_moments(a: np.ndarray, b: np.ndarray) -> np.ndarray:
 
 
 def _by_fresnel(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    from scipy.special import fresnel  # here: only maps with spirals need scipy
+
     # For b < 0 use I(a, b) = conj(I(-a, -b)), so that the quadratic coefficient is positive.
     negative = b < 0
     a = np.where(negative, -a, a)

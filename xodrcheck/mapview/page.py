@@ -16,12 +16,11 @@ import math
 import re
 from collections import Counter
 from collections.abc import Sequence
-from dataclasses import fields
+from dataclasses import dataclass, fields
 from functools import cache
 from html import escape
 from importlib import resources
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Finding, Severity
 
 #: Script files, in the order they run (one inline script).

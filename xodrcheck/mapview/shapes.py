@@ -13,12 +13,10 @@ further than :data:`MAX_EXTENT` from the map's other points is left out and name
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import field, replace
+from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from xodrcheck.arrays import unique
-from xodrcheck.classcache import dataclass
 from xodrcheck.lanes import RoadGeometry, SideLanes, geometry_of
 from xodrcheck.model import Document, Lane, Road, RoadMark, lane_type_name
 
@@ -118,7 +116,7 @@ def _section(road: Road, index: int, rg: RoadGeometry, chord: float, max_step: f
     s = rg.sample_s(index, chord=chord, max_step=max_step)
     mark_s = [start for _, lane, origin in marked for start, _ in _mark_starts(lane, origin)]
     extra = np.array([v for v in mark_s if s0 < v < s1], dtype=float)
-    s = unique(np.concatenate([s, extra]))
+    s = np.unique(np.concatenate([s, extra]))
     if len(s) < 2:
         return None
     left, right = rg.side_lanes(index)

@@ -8,7 +8,8 @@ counted even when their numbers do not parse: an outline's :attr:`Outline.points
 
 from __future__ import annotations
 
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
+
 from xodrcheck.model import Arc, Cubic, LaneLayer, Line, ParamPoly3
 from xodrcheck.objects.kinds import CORNER_LOCAL as CORNER_LOCAL  # the element names, named here as before
 from xodrcheck.objects.kinds import CORNER_ROAD as CORNER_ROAD

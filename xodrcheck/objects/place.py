@@ -20,11 +20,11 @@ crosswalk of length 10 at ``s`` = 10 runs from ``s`` = 5 to 15; a tree's crown t
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.objects.model import RoadObject
 from xodrcheck.quantities import metres
 

@@ -7,31 +7,26 @@ Only input that cannot be opened at all (a missing file, a directory, more bytes
 
 Gzip-compressed files (``.xodrz``, the standard's compressed form) are decompressed first, within the same size limit.
 
-The model is built in Python (:mod:`.document`, :mod:`.roads`, :mod:`.lanes`); where the optional compiled module is
-installed, :mod:`.fast` builds the plan views, profiles and lanes that read without a finding, the same values faster.
+The model is built by :mod:`.document`, :mod:`.roads` and :mod:`.lanes`.
 """
 
 from __future__ import annotations
 
-import gc
 import io
 import os
 import stat
 import zlib
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Finding, ReadError, Severity
 from xodrcheck.model import Document
-from xodrcheck.reader import fast
 from xodrcheck.reader.context import Context
 from xodrcheck.reader.document import KNOWN_VERSIONS, build_document
 from xodrcheck.reader.xmlsafe import parse
 from xodrcheck.rules import xml as R
-
-fast.load()  # the compiled fast path, when it is installed (the model is the same without it)
 
 if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree
@@ -121,20 +116,6 @@ def _gunzip(data: bytes, limit: int, findings: list[Finding], path: str | None) 
     return out
 
 
-def _build_without_collecting(ctx: Context, root: etree._Element, path: str | None) -> Document | None:
-    """:func:`build_document` with Python's cyclic garbage collector paused: the model is tens of thousands of tuples
-    and frozen records made in one go and none of them garbage, so the collections their allocation triggers (each
-    older generation scanning everything built so far) only cost time: about a tenth of the build on a CARLA town.
-    The collector runs as before once the model is built (left off if the caller had turned it off)."""
-    if not gc.isenabled():
-        return build_document(ctx, root, path)
-    gc.disable()
-    try:
-        return build_document(ctx, root, path)
-    finally:
-        gc.enable()
-
-
 def read(source: str | os.PathLike[str] | bytes, *, max_bytes: int | None = None) -> ReadResult:
     """Read an OpenDRIVE file (a path, or the file's bytes).
 
@@ -184,7 +165,7 @@ def _read(
         # the tree of the rules: parsed without recovering (no X101), its tags as written (no default namespace on
         # the root, which the reader strips from every tag)
         shared = None not in root.nsmap and not any(f.code == R.NOT_WELL_FORMED.code for f in parse_findings)
-        document = _build_without_collecting(Context(findings), root, path)
+        document = build_document(Context(findings), root, path)
         if keep_tree and shared and document is not None:
             tree = etree.ElementTree(root)
     return ReadResult(document, tuple(findings), path), tree

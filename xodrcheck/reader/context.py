@@ -13,11 +13,10 @@ from typing import TypeVar
 
 from lxml import etree
 
+from xodrcheck import model
 from xodrcheck.findings import Finding, Severity
 from xodrcheck.model import Cubic, Profile
 from xodrcheck.quantities import metres
-from xodrcheck.reader import fast
-from xodrcheck.reader.construct import make_cubic
 from xodrcheck.rules import xml as R
 from xodrcheck.rules.registry import NO_UID, Rule
 
@@ -301,17 +300,13 @@ def cubic(ctx: Context, el: etree._Element, offset: bool = False) -> Cubic | Non
         pass
     else:
         if s >= 0.0:
-            return make_cubic(s, a, b, c, d, el.sourceline)
+            return model.Cubic(s, a, b, c, d, el.sourceline)
     v = ctx.floats_slowly(el, _OFFSET_CUBIC if offset else _CUBIC, _FIRST, SKIP_RECORD)
-    return None if v is None else make_cubic(v[0], v[1], v[2], v[3], v[4], el.sourceline)
+    return None if v is None else model.Cubic(v[0], v[1], v[2], v[3], v[4], el.sourceline)
 
 
 def cubics(ctx: Context, parent: etree._Element, tag: str, uid: str | None = None) -> Profile:
     """The ``<tag s a b c d>`` records under ``parent``, checked for order (``uid``: the Annex F rule on the order)."""
-    if fast.profile is not None:
-        built = fast.profile(parent, ctx.numbers, tag)
-        if built is not None:
-            return built
     out = []
     for rec in parent:
         if rec.tag == tag:

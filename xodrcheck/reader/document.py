@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from lxml import etree
 
+from xodrcheck import model
 from xodrcheck.model import (
     Document,
     Header,
@@ -13,7 +14,6 @@ from xodrcheck.model import (
     LaneLayer,
     Offset,
 )
-from xodrcheck.reader.construct import make_connection, make_lane_link
 from xodrcheck.reader.context import Context, describe
 from xodrcheck.reader.lanes import LAYERS, layered
 from xodrcheck.reader.roads import CONTACT_POINTS, build_road
@@ -76,13 +76,13 @@ def _lane_links(ctx: Context, el: etree._Element) -> tuple[tuple[JunctionLaneLin
     with_layers = layered(ctx)
     for ll in el.iterchildren("laneLink"):
         try:
-            link = make_lane_link(int(ll.get("from")), int(ll.get("to")), ll.sourceline)
+            link = model.JunctionLaneLink(int(ll.get("from")), int(ll.get("to")), ll.sourceline)
         except (TypeError, ValueError):
             for name in ("from", "to"):  # report whichever is missing or not an integer
                 ctx.integer(ll, name, "the lane link is ignored")
             continue
         if with_layers and (ll.get("fromLayer") is not None or ll.get("toLayer") is not None):
-            link = make_lane_link(
+            link = model.JunctionLaneLink(
                 link.from_lane, link.to_lane, link.line, _layer(ctx, ll, "fromLayer"), _layer(ctx, ll, "toLayer")
             )
             if LaneLayer.TEMPORARY in (link.from_layer, link.to_layer):
@@ -119,7 +119,7 @@ def build_junction(ctx: Context, el: etree._Element) -> Junction | None:
                 contact = ctx.choice(c, "contactPoint", CONTACT_POINTS, "read as absent")
             links, temporary_links = _lane_links(ctx, c)
             connections.append(
-                make_connection(
+                model.Connection(
                     connection_id,
                     get("incomingRoad"),
                     get("connectingRoad"),

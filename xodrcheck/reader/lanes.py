@@ -13,6 +13,7 @@ from __future__ import annotations
 
 from lxml import etree
 
+from xodrcheck import model
 from xodrcheck.model import (
     Cubic,
     Lane,
@@ -25,14 +26,6 @@ from xodrcheck.model import (
     RoadMark,
     Speed,
     TemporaryLanes,
-)
-from xodrcheck.reader import fast
-from xodrcheck.reader.construct import (
-    make_lane,
-    make_lane_height,
-    make_lane_section,
-    make_road_mark,
-    make_speed,
 )
 from xodrcheck.reader.context import SKIP_RECORD, Context, cubic, describe
 from xodrcheck.rules import lane_uids as U
@@ -127,17 +120,17 @@ def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
                 raise ValueError
         except ValueError:
             width = ctx.number(el, "width", "the width is read as absent", nonneg=True)
-    return make_road_mark(s, kind, get("weight"), get("color"), width, get("laneChange"), el.sourceline)
+    return model.RoadMark(s, kind, get("weight"), get("color"), width, get("laneChange"), el.sourceline)
 
 
 def _speed(ctx: Context, el: etree._Element) -> Speed | None:
     v = ctx.floats(el, _SPEED, (0, 1), SKIP_RECORD)
-    return None if v is None else make_speed(v[0], v[1], el.get("unit"), el.sourceline)
+    return None if v is None else model.Speed(v[0], v[1], el.get("unit"), el.sourceline)
 
 
 def _height(ctx: Context, el: etree._Element) -> LaneHeight | None:
     v = ctx.floats(el, _HEIGHT, (0,), SKIP_RECORD)
-    return None if v is None else make_lane_height(v[0], v[1], v[2], el.sourceline)
+    return None if v is None else model.LaneHeight(v[0], v[1], v[2], el.sourceline)
 
 
 def _centre_type_optional(ctx: Context, el: etree._Element) -> bool:
@@ -237,7 +230,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         ctx.check_order(speeds, "<speed>", el, U.SPEED_ORDER)
     if len(heights) > 1:
         ctx.check_order(heights, "<height>", el, U.HEIGHT_ORDER)
-    return make_lane(
+    return model.Lane(
         lane_id,
         lane_type,
         level,
@@ -310,15 +303,11 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
             uid=_missing_centre_uid(ctx, el, "center" in seen),
         )
     ctx.section_s = None
-    return make_lane_section(s, single_side, left, center, right, el.sourceline, length)
+    return model.LaneSection(s, single_side, left, center, right, el.sourceline, length)
 
 
 def build_lanes(ctx: Context, el: etree._Element) -> tuple[Profile, tuple[LaneSection, ...]]:
     """The laneOffset profile and the lane sections of a road's ``<lanes>``."""
-    if fast.lanes is not None:
-        built = fast.lanes(el, ctx.numbers, layered(ctx))
-        if built is not None:
-            return built
     offsets = []
     sections = []
     seen = False

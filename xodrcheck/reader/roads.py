@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from lxml import etree
 
+from xodrcheck import model
 from xodrcheck.findings import Severity
 from xodrcheck.model import (
     ContactPoint,
@@ -22,16 +23,6 @@ from xodrcheck.model import (
     TrafficRule,
 )
 from xodrcheck.quantities import metres
-from xodrcheck.reader import fast
-from xodrcheck.reader.construct import (
-    make_arc,
-    make_line,
-    make_param_poly3,
-    make_poly3,
-    make_road,
-    make_road_link,
-    make_spiral,
-)
 from xodrcheck.reader.context import Context, cubics, describe
 from xodrcheck.reader.lanes import build_layers
 from xodrcheck.rules import road_uids as RU
@@ -58,22 +49,22 @@ SKIP_GEOMETRY = "the geometry is skipped"
 
 # ---------------------------------------------------------------------------------------------------------- plan view
 def _line(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
-    return make_line(head[0], head[1], head[2], head[3], head[4], line)
+    return model.Line(head[0], head[1], head[2], head[3], head[4], line)
 
 
 def _arc(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
     k = ctx.number(kind, "curvature", SKIP_GEOMETRY)
-    return None if k is None else make_arc(head[0], head[1], head[2], head[3], head[4], k, line)
+    return None if k is None else model.Arc(head[0], head[1], head[2], head[3], head[4], k, line)
 
 
 def _spiral(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
     k = ctx.floats(kind, _SPIRAL, _NONE, SKIP_GEOMETRY)
-    return None if k is None else make_spiral(head[0], head[1], head[2], head[3], head[4], k[0], k[1], line)
+    return None if k is None else model.Spiral(head[0], head[1], head[2], head[3], head[4], k[0], k[1], line)
 
 
 def _poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
     c = ctx.floats(kind, _POLY3, _NONE, SKIP_GEOMETRY)
-    return None if c is None else make_poly3(head[0], head[1], head[2], head[3], head[4], c[0], c[1], c[2], c[3], line)
+    return None if c is None else model.Poly3(head[0], head[1], head[2], head[3], head[4], c[0], c[1], c[2], c[3], line)
 
 
 def _param_poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
@@ -96,7 +87,9 @@ def _param_poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], li
         if chosen is None:
             return None
         p_range = chosen
-    return make_param_poly3(head[0], head[1], head[2], head[3], head[4], *c, p_range=p_range, line=line)
+    return model.ParamPoly3(
+        head[0], head[1], head[2], head[3], head[4], c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], p_range, line
+    )
 
 
 _KINDS = {"line": _line, "arc": _arc, "spiral": _spiral, "poly3": _poly3, "paramPoly3": _param_poly3}
@@ -140,10 +133,6 @@ def _geometry(ctx: Context, el: etree._Element) -> Geometry | None:
 
 
 def _plan_view(ctx: Context, el: etree._Element) -> tuple[Geometry, ...]:
-    if fast.plan_view is not None:
-        built = fast.plan_view(el, ctx.numbers)
-        if built is not None:
-            return built
     out = []
     seen = False
     for g in el:
@@ -185,7 +174,7 @@ def _road_link(ctx: Context, el: etree._Element) -> RoadLink | None:
         element_s = ctx.number(el, "elementS", "read as absent", nonneg=True)
     if el.get("elementDir") is not None:
         element_dir = ctx.choice(el, "elementDir", _ELEMENT_DIRS, "read as absent")
-    return make_road_link(element_type, element_id, contact, element_s, element_dir, el.sourceline)
+    return model.RoadLink(element_type, element_id, contact, element_s, element_dir, el.sourceline)
 
 
 def _links(ctx: Context, el: etree._Element) -> tuple[RoadLink | None, RoadLink | None]:
@@ -319,7 +308,7 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
 
     objects = first.get("objects")
     signals = first.get("signals")
-    return make_road(
+    return model.Road(
         road_id,
         length,
         junction,

@@ -10,10 +10,10 @@ import dataclasses
 import math
 import time
 from collections.abc import Callable, Iterator, Mapping
+from dataclasses import dataclass
 from functools import cached_property
 from typing import TYPE_CHECKING, Any, TypeVar
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.config import Config, Tolerances
 from xodrcheck.findings import Finding, XodrError
 from xodrcheck.model import (

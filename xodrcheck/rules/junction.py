@@ -10,8 +10,8 @@ Whether connection lanes meet or cross in the plane is geometry (``J1xx``, :mod:
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import (
     Connection,

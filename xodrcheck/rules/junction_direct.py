@@ -20,8 +20,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from dataclasses import dataclass
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Connection, ContactPoint, Junction, JunctionType, Road
 from xodrcheck.rules import junction_uids as U

@@ -24,11 +24,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import ContactPoint, Road
 from xodrcheck.quantities import metres

@@ -17,11 +17,11 @@ traffic enters the junction are followed (``junction-lane-link-outbound`` report
 
 from __future__ import annotations
 
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Connection, ContactPoint, JunctionType, Road
 from xodrcheck.rules.context import Context, placed_lane_ids, travel_direction

@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
 from xodrcheck.quantities import metres

@@ -16,12 +16,11 @@ order follows on from the segment before it (the file does not say which).
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.arrays import unique
-from xodrcheck.classcache import dataclass
 from xodrcheck.lanes import RoadGeometry
 from xodrcheck.model import Road
 from xodrcheck.rules.context import Context
@@ -86,7 +85,7 @@ def _lane_piece(ctx: Context, seg: LaneSegment) -> np.ndarray | None:
         if end < lo or start > hi or (end == lo and index + 1 < len(road.lane_sections)):
             continue
         s = section_lines(ctx, road, index).s
-        s = unique(np.concatenate(([max(lo, start)], s[(s > lo) & (s < hi)], [min(hi, left_of(end))])))
+        s = np.unique(np.concatenate(([max(lo, start)], s[(s > lo) & (s < hi)], [min(hi, left_of(end))])))
         try:
             points = geometry.lane_points(index, seg.lane, s, where="outer")
         except KeyError:
@@ -293,7 +292,7 @@ def strip(ctx: Context, road: Road, lane: int | None, lo: float, hi: float):
         if end < lo or start > hi:
             continue
         s = section_lines(ctx, road, index).s
-        s = unique(np.concatenate(([max(lo, start)], s[(s > lo) & (s < hi)], [min(hi, left_of(end))])))
+        s = np.unique(np.concatenate(([max(lo, start)], s[(s > lo) & (s < hi)], [min(hi, left_of(end))])))
         if lane is None:
             left, right = geometry.side_lanes(index)
             ids = (left.lanes[-1].id if left.lanes else 0, right.lanes[-1].id if right.lanes else 0)

@@ -10,8 +10,8 @@ joints like any other. The lane-link rules of :mod:`.lane`, :mod:`.lane_attribut
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context, link_at, travel_direction

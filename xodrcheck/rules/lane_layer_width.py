@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import numpy as np
 
-from xodrcheck.arrays import unique
 from xodrcheck.findings import Category, Severity
 from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
@@ -62,7 +61,7 @@ def temporary_layer_wider(ctx: Context):
             if not e > a:
                 continue
             count = int(min(np.ceil((e - a) / step), ctx.tolerances.max_samples_per_section))
-            s = unique(np.concatenate([np.linspace(a, e, count + 1), knots(layer, j)]))
+            s = np.unique(np.concatenate([np.linspace(a, e, count + 1), knots(layer, j)]))
             s = s[(s >= a) & (s <= e)]
             yield from _compare(temporary_layer_wider, road, layer, j, section, permanent, s, tol)
 
@@ -73,7 +72,7 @@ def _compare(rule_, road, layer, j, section, permanent, s, tol):
     temp_left, temp_right = _edges(layer, j, s)
     reach = {"left": np.full(len(s), -np.inf), "right": np.full(len(s), -np.inf)}
     index = permanent.section_index(s)
-    for i in unique(index):
+    for i in np.unique(index):
         if i < 0:
             continue
         here = index == i

@@ -11,10 +11,10 @@ by local name (``{*}tag``, :func:`local`): 1.1/1.2 files may put their elements 
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 
 from lxml import etree
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context
 from xodrcheck.xmlvalues import integer, local, number

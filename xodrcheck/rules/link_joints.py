@@ -10,9 +10,8 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from dataclasses import field
+from dataclasses import dataclass, field
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, Road
 from xodrcheck.rules import junction_uids as JU

@@ -10,11 +10,11 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
 from xodrcheck.quantities import metres
 from xodrcheck.rules import object_uids as U

@@ -22,10 +22,9 @@ from __future__ import annotations
 
 from collections import defaultdict
 from collections.abc import Iterator
-from dataclasses import field
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
 from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as JU

@@ -18,10 +18,9 @@ from __future__ import annotations
 
 import inspect
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import field
+from dataclasses import dataclass, field
 from types import MappingProxyType
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Finding, Severity
 
 CheckFn = Callable[..., Iterable[Finding]]

@@ -11,11 +11,11 @@ from __future__ import annotations
 
 import math
 import weakref
+from dataclasses import dataclass
 
 import numpy as np
 
 from xodrcheck.arrays import batches
-from xodrcheck.classcache import dataclass
 from xodrcheck.lanes import LanePoints, RoadGeometry
 from xodrcheck.model import ContactPoint, Road
 from xodrcheck.rules.context import Context

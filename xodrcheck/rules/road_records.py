@@ -7,7 +7,8 @@ the tree.
 
 from __future__ import annotations
 
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
+
 from xodrcheck.rules.context import Context
 from xodrcheck.xmlvalues import number
 

@@ -15,12 +15,12 @@ from __future__ import annotations
 import math
 import weakref
 from collections.abc import Iterator
+from dataclasses import dataclass
 
 import numpy as np
 
 from xodrcheck.arrays import batches
 from xodrcheck.budget import ByteBudget, array_bytes
-from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Severity
 from xodrcheck.lanes import LanePoints, RoadGeometry

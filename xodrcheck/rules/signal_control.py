@@ -24,11 +24,11 @@ further on), control nothing here; a lane with several lane links across a lane 
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
 from xodrcheck.rules.context import Context, link_at, travel_direction

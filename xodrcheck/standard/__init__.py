@@ -19,9 +19,9 @@ from __future__ import annotations
 import fnmatch
 import functools
 import re
+from dataclasses import dataclass
 
 from xodrcheck import packagedata
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Severity
 
 #: Where the annex is published (each UID's section number is given beside it).

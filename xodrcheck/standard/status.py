@@ -8,8 +8,8 @@ says what it leaves out), and *not enforced* otherwise; :data:`NOT_ENFORCED` giv
 from __future__ import annotations
 
 from collections.abc import Mapping
+from dataclasses import dataclass
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import Severity
 from xodrcheck.rules.registry import Rule
 from xodrcheck.standard import annex_rules
