@@ -14,6 +14,13 @@ junctionart.fuzz --minutes N [--profile long]``, which repeats every run until t
 Profiles, example budgets, the example database and the explicit regressions are in :mod:`junctionart.fuzz.profiles`.
 """
 
+try:
+    import hypothesis  # noqa: F401
+except ImportError:  # pragma: no cover - the fuzz extra is missing
+    raise ImportError(
+        "junctionart.fuzz needs Hypothesis, which is not installed: pip install 'junctionart[fuzz]'"
+    ) from None
+
 from junctionart.fuzz.documents import document_specs, opendrive_documents
 from junctionart.fuzz.mutations import (
     DAMAGE,
