@@ -24,7 +24,7 @@ from pathlib import Path
 from xodrcheck import memory
 from xodrcheck.config import Config, ConfigError
 from xodrcheck.filebytes import FileBytes
-from xodrcheck.findings import Finding, OutOfTime, Severity
+from xodrcheck.findings import Basis, Finding, OutOfTime, Severity
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.internal import ENGINE_CODES as _ENGINE_CODES
@@ -293,14 +293,15 @@ def check(
 
 def _by_version(findings: Iterable[Finding], document, rules: dict[str, Rule]) -> Iterator[Finding]:
     """Drop the findings of Annex F rules that do not apply to the file's version; a rule that runs on every version
-    keeps its finding there without claiming the UID."""
+    keeps its finding there without claiming the UID, resting on the rule's declared basis (by default
+    ``plausibility``: the checker applies what the standard wrote down only later)."""
     version = None if document is None else document.version
     for f in findings:
         if f.rule_uid is not None and not applies(f.rule_uid, version):
             rule = rules.get(f.code)
             if rule is None or not rule.every_version:
                 continue
-            f = dataclasses.replace(f, rule_uid=None)
+            f = dataclasses.replace(f, rule_uid=None, basis=rule.basis or Basis.PLAUSIBILITY)
         yield f
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
-__all__ = ["Category", "Finding", "OutOfTime", "ReadError", "Severity", "XodrError"]
+__all__ = ["Basis", "Category", "Finding", "OutOfTime", "ReadError", "Severity", "XodrError"]
 
 
 class Severity(enum.IntEnum):
@@ -40,6 +40,27 @@ class Category(enum.Enum):
         return self.value
 
 
+class Basis:
+    """What a finding rests on (:attr:`Finding.basis`) when it names no Annex F rule; one that does rests on its UID.
+
+    * ``schema``: the XSD of the file's declared OpenDRIVE version (an element or attribute it requires or forbids);
+    * ``reading``: the file cannot be read as OpenDRIVE as it is written (not well-formed XML, a value that is not a
+      number, a root that is not ``<OpenDRIVE>``, ...);
+    * ``plausibility``: the checker's own judgement, which the standard does not state (a minimum radius, the
+      JunctionArt paper's junction rules, overlaps the standard does not forbid, an Annex F rule applied to a file
+      older than the rule): a warning at most under the default profile;
+    * ``incomplete``: the check itself did not run to its end (a rule crashed or ran out of time), so the file is
+      not known to be right.
+    """
+
+    SCHEMA = "schema"
+    READING = "reading"
+    PLAUSIBILITY = "plausibility"
+    INCOMPLETE = "incomplete"
+    #: Every basis a finding without a UID can have.
+    ALL = (SCHEMA, READING, PLAUSIBILITY, INCOMPLETE)
+
+
 @dataclass(frozen=True, slots=True)
 class Finding:
     """One problem found in a file.
@@ -47,7 +68,9 @@ class Finding:
     ``code`` is stable (e.g. ``X101``); ``name`` is its kebab-case name. ``road``/``lane``/``s``/``x``/``y``/``z`` say
     where on the map, ``line`` where in the file; each is ``None`` where it does not apply. ``lane`` is the lane id;
     with ``section_s`` it completes the :class:`~xodrcheck.model.LaneKey`. ``rule_uid`` names the rule of the
-    standard's Annex F that the finding enforces, where there is one.
+    standard's Annex F that the finding enforces, where there is one; ``basis`` says what the finding rests on: that
+    UID, or one of :class:`Basis` (``schema``, ``reading``, ``plausibility``, ``incomplete``). The engine fills it in
+    from the rule's declaration (:meth:`xodrcheck.rules.registry.Rule.finding`).
     """
 
     code: str
@@ -66,6 +89,18 @@ class Finding:
     #: ``asam.net:xodr:1.7.0:road.lane.link.zero_width_at_start``); ``None`` for the project's own rules.
     rule_uid: str | None = None
     z: float | None = None
+    #: What the finding rests on: its ``rule_uid`` when it has one, else a :class:`Basis` value. Given empty, it is
+    #: the UID, or ``plausibility`` for a finding built by hand without one.
+    basis: str = ""
+
+    def __post_init__(self) -> None:
+        if self.rule_uid is not None:
+            if self.basis != self.rule_uid:
+                object.__setattr__(self, "basis", self.rule_uid)
+        elif not self.basis:
+            object.__setattr__(self, "basis", Basis.PLAUSIBILITY)
+        elif self.basis not in Basis.ALL:
+            raise ValueError(f"a finding without a UID rests on one of {', '.join(Basis.ALL)}, not {self.basis!r}")
 
 
 class XodrError(Exception):

@@ -105,7 +105,9 @@ def test_json_shape(reports):
             "z",
             "line",
             "rule_uid",
+            "basis",
         ]
+        assert finding["basis"] == (finding["rule_uid"] or "plausibility"), finding
     assert doc["files"][1]["findings"] == []
     summary = doc["summary"]
     assert summary["files"] == 2 and summary["errors"] == len(first["findings"]) and summary["ok"] is False

@@ -2,9 +2,10 @@
 
 ``complete`` is false when a rule did not run to its end (X900, X901): such a file is never ``ok``.
 
-Every finding has the keys ``code name category severity message road lane s x y z line rule_uid`` (``null`` where a
-key does not apply), so consumers can rely on the shape. ``rule_uid`` names the checker rule of the standard (ASAM
-OpenDRIVE Annex F) that the finding enforces.
+Every finding has the keys ``code name category severity message road lane s x y z line rule_uid basis`` (``null``
+where a key does not apply), so consumers can rely on the shape. ``rule_uid`` names the checker rule of the standard
+(ASAM OpenDRIVE Annex F) that the finding enforces; ``basis`` what the finding rests on: that UID, or ``schema``,
+``reading``, ``plausibility`` or ``incomplete`` (:class:`~xodrcheck.findings.Basis`), never ``null``.
 """
 
 from __future__ import annotations
@@ -36,6 +37,7 @@ def finding_dict(f: Finding) -> dict:
         "z": _number(f.z),
         "line": f.line,
         "rule_uid": f.rule_uid,
+        "basis": f.basis,
     }
 
 

@@ -25,7 +25,7 @@ import math
 
 import numpy as np
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context, placed_lane_ids
@@ -64,7 +64,7 @@ def _tightest(curvature: np.ndarray, bound: float) -> int | None:
     return i if len(k) and k[i] > bound else None
 
 
-@rule("C001", "lane-radius-too-small", Category.CURVATURE, Severity.ERROR)
+@rule("C001", "lane-radius-too-small", Category.CURVATURE, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def lane_radius_too_small(ctx: Context):
     """The centre line of a drivable lane curves tighter than ``min_radius`` (5 m by default).
 
@@ -152,7 +152,7 @@ def _centre_hits(ctx: Context, bound: float) -> dict[tuple[str, int], dict[int, 
     return out
 
 
-@rule("C002", "reference-radius-too-small", Category.CURVATURE, Severity.ERROR)
+@rule("C002", "reference-radius-too-small", Category.CURVATURE, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def reference_radius_too_small(ctx: Context):
     """The lane-0 line curves tighter than ``min_radius`` where it borders a drivable lane.
 
@@ -184,7 +184,7 @@ def reference_radius_too_small(ctx: Context):
         )
 
 
-@rule("C003", "border-folds", Category.CURVATURE, Severity.ERROR)
+@rule("C003", "border-folds", Category.CURVATURE, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def border_folds(ctx: Context):
     """A lane border reaches the centre of curvature of the reference line and folds back (``t * k >= 1``).
 

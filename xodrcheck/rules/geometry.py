@@ -18,7 +18,7 @@ from typing import Any
 import numpy as np
 
 from xodrcheck.config import Tolerances
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.geometry import profile
 from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
 from xodrcheck.model import Cubic, Geometry, Road, Spiral
@@ -59,7 +59,15 @@ def _at(road: Road, element) -> dict:
     return {"road": road.id, "s": element.s, "x": element.x, "y": element.y, "line": element.line or road.line or None}
 
 
-@rule("G001", "plan-view-gap", Category.GEOMETRY, Severity.ERROR, uids=(U.GEOMETRY_NO_GAPS,), every_version=True)
+@rule(
+    "G001",
+    "plan-view-gap",
+    Category.GEOMETRY,
+    Severity.ERROR,
+    uids=(U.GEOMETRY_NO_GAPS,),
+    every_version=True,
+    basis=Basis.PLAUSIBILITY,
+)
 def plan_view_gap(ctx: Context):
     """A plan-view element does not start where the previous one ends: the reference line has a gap.
 
@@ -95,7 +103,15 @@ def plan_view_gap(ctx: Context):
                 )
 
 
-@rule("G002", "plan-view-kink", Category.GEOMETRY, Severity.ERROR, uids=(U.GEOMETRY_NO_KINKS,), every_version=True)
+@rule(
+    "G002",
+    "plan-view-kink",
+    Category.GEOMETRY,
+    Severity.ERROR,
+    uids=(U.GEOMETRY_NO_KINKS,),
+    every_version=True,
+    basis=Basis.PLAUSIBILITY,
+)
 def plan_view_kink(ctx: Context):
     """A plan-view element does not start in the direction the previous one ends: the reference line has a kink.
 
@@ -222,7 +238,7 @@ def road_length_mismatch(ctx: Context):
             )
 
 
-@rule("G006", "degenerate-geometry", Category.GEOMETRY, Severity.ERROR)
+@rule("G006", "degenerate-geometry", Category.GEOMETRY, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def degenerate_geometry(ctx: Context):
     """A plan-view element has no length: zero or negative (an error), or shorter than ``length_abs`` (a warning).
 
@@ -297,6 +313,7 @@ def spiral_constant_curvature(ctx: Context):
     Severity.WARNING,
     uids=(SECTION_VALID_LENGTH,),
     every_version=True,
+    basis=Basis.PLAUSIBILITY,
 )
 def short_lane_section(ctx: Context):
     """A lane section is shorter than ``min_section_length`` (1 cm by default), or has no length at all.
@@ -334,7 +351,7 @@ def short_lane_section(ctx: Context):
                 )
 
 
-@rule("G013", "sampling-capped", Category.GEOMETRY, Severity.WARNING)
+@rule("G013", "sampling-capped", Category.GEOMETRY, Severity.WARNING, basis=Basis.INCOMPLETE)
 def sampling_capped(ctx: Context):
     """A lane section is too long to sample at the geometric rules' step within ``max_samples_per_section``.
 
@@ -397,7 +414,7 @@ def profile_steps(road: Road, tolerances: Tolerances) -> list[tuple[str, str, Cu
     return out
 
 
-@rule("G014", "profile-step", Category.GEOMETRY, Severity.ERROR)
+@rule("G014", "profile-step", Category.GEOMETRY, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def profile_step(ctx: Context):
     """The elevation, superelevation or laneOffset of a road jumps where a record starts: the surface steps.
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.rules.registry import declare
 
 RULE_CRASHED = declare(
@@ -20,6 +20,7 @@ RULE_CRASHED = declare(
 
     Failing example: a file that makes a rule raise (there is none known; each such file is a bug to fix).
     """,
+    basis=Basis.INCOMPLETE,
 )
 
 RULE_OUT_OF_TIME = declare(
@@ -39,6 +40,7 @@ RULE_OUT_OF_TIME = declare(
 
     Failing example: a map of several hundred megabytes checked with ``--tolerance time_budget=1``.
     """,
+    basis=Basis.INCOMPLETE,
 )
 
 #: Codes of the engine's own findings: a report with one of them is incomplete.

@@ -12,7 +12,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 from dataclasses import dataclass
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import (
     Connection,
     ContactPoint,
@@ -24,6 +24,7 @@ from xodrcheck.model import (
     Road,
 )
 from xodrcheck.rules import junction_uids as U
+from xodrcheck.rules import road_uids as RU
 from xodrcheck.rules.context import Context, link_at, travel_direction
 from xodrcheck.rules.registry import NO_UID, rule
 
@@ -80,12 +81,21 @@ def _lanes_of(r: Resolved, ll: JunctionLaneLink, ctx: Context):
     return a, b
 
 
-@rule("J001", "junction-incoming-not-linked", Category.JUNCTION, Severity.ERROR)
+@rule(
+    "J001",
+    "junction-incoming-not-linked",
+    Category.JUNCTION,
+    Severity.ERROR,
+    uids=(RU.LINKAGE_BOTH_SIDES,),
+    every_version=True,
+)
 def junction_incoming_not_linked(ctx: Context):
     """A connection's incoming road does not link to the junction.
 
     Neither its predecessor nor its successor names the junction; in a direct junction the linked road must link to
-    it too.
+    it too. The junction's connection is one side of the linkage, the road's link the other: Annex F
+    ``road.linkage.both_sides_consistency`` (1.9: "shall be defined at both sides of the road linkage and shall be
+    consistent"); older files are checked too, as plausibility.
 
     Readers that walk from a road into its junction never find this connection.
 
@@ -137,6 +147,7 @@ def _describe(link) -> str:
     Severity.ERROR,
     uids=(U.CONNECTION_START_ALONG, U.CONNECTION_END_OPPOSITE),
     every_version=True,
+    basis=Basis.PLAUSIBILITY,
 )
 def connection_contact_point(ctx: Context):
     """A connection's ``contactPoint`` does not match the connecting road's links.
@@ -205,7 +216,7 @@ def connection_contact_point(ctx: Context):
             )
 
 
-@rule("J003", "junction-lane-link-direction", Category.JUNCTION, Severity.ERROR)
+@rule("J003", "junction-lane-link-direction", Category.JUNCTION, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def junction_lane_link_direction(ctx: Context):
     """A junction ``laneLink`` joins lanes whose traffic runs in opposite directions.
 
@@ -256,6 +267,7 @@ def junction_lane_link_direction(ctx: Context):
     Severity.WARNING,
     uids=(U.CONNECTION_ONE_LINK,),
     every_version=True,
+    basis=Basis.PLAUSIBILITY,
 )
 def junction_lane_link_outbound(ctx: Context):
     """A junction ``laneLink`` starts at a lane whose traffic leaves the junction.
@@ -311,7 +323,7 @@ def junction_lane_link_outbound(ctx: Context):
             )
 
 
-@rule("J005", "incoming-lane-unconnected", Category.JUNCTION, Severity.ERROR)
+@rule("J005", "incoming-lane-unconnected", Category.JUNCTION, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def incoming_lane_unconnected(ctx: Context):
     """A drivable lane that travels into a junction has no ``laneLink`` in it: its traffic reaches a dead end.
 
@@ -381,7 +393,7 @@ def incoming_lane_unconnected(ctx: Context):
                 )
 
 
-@rule("J006", "junction-merge", Category.JUNCTION, Severity.ERROR)
+@rule("J006", "junction-merge", Category.JUNCTION, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def junction_merge(ctx: Context):
     """Two different incoming lanes are linked into the same lane of a connecting road at the same end.
 
@@ -427,6 +439,7 @@ def junction_merge(ctx: Context):
     Severity.ERROR,
     uids=(U.CONNECTION_ONE_LINK,),
     every_version=True,
+    basis=Basis.PLAUSIBILITY,
 )
 def connection_duplicate(ctx: Context):
     """A connecting road appears in more than one connection from the same incoming road.

@@ -22,7 +22,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import Connection, ContactPoint, JunctionType, Road
 from xodrcheck.rules.context import Context, placed_lane_ids, travel_direction
 from xodrcheck.rules.registry import rule
@@ -226,7 +226,7 @@ def _describe(p: _Path) -> str:
     return f"lane {p.from_lane} -> road {p.road.id} lane {p.lane} (connection {p.connection.id})"
 
 
-@rule("J101", "connection-lanes-cross", Category.JUNCTION, Severity.ERROR)
+@rule("J101", "connection-lanes-cross", Category.JUNCTION, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def connection_lanes_cross(ctx: Context):
     """Two connection lanes leaving one incoming road cross (or meet) inside the junction.
 
@@ -286,7 +286,7 @@ def _order_pairs(ctx: Context, incoming: Road, end: ContactPoint, connected: _Co
     return out
 
 
-@rule("J102", "junction-lane-links-crossed", Category.JUNCTION, Severity.ERROR)
+@rule("J102", "junction-lane-links-crossed", Category.JUNCTION, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def junction_lane_links_crossed(ctx: Context):
     """Two laneLinks of one connection swap the lanes' order: the left incoming lane enters the right lane.
 

@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.findings import Category, Finding, Severity
+from xodrcheck.findings import Basis, Category, Finding, Severity
 from xodrcheck.lanes import RoadGeometry
 from xodrcheck.model import ContactPoint, ElementType, Road
 from xodrcheck.quantities import metres
@@ -91,6 +91,7 @@ def _lane_gap(
     Severity.ERROR,
     uids=(U.VIRTUAL_HEADING, U.VIRTUAL_SMOOTH),
     xml=True,
+    basis=Basis.PLAUSIBILITY,
 )
 def virtual_junction_joint(ctx: Context) -> Iterator[Finding]:
     """A connecting road of a virtual junction does not join its main road smoothly at ``elementS``.

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, Lane, LaneType
 from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
@@ -212,7 +212,7 @@ def _continuity_severity(lane: Lane) -> Severity:
     return Severity.WARNING if lane.type in _OTHER_TRAFFIC else Severity.INFO
 
 
-@rule("L010", "lane-not-continued", Category.LANE, Severity.ERROR)
+@rule("L010", "lane-not-continued", Category.LANE, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def lane_not_continued(ctx: Context):
     """A lane of non-zero width ends at a joint without a lane link to the other side.
 
@@ -312,7 +312,7 @@ def lane_link_not_reciprocal(ctx: Context):
                 )
 
 
-@rule("L012", "lane-link-direction", Category.LANE, Severity.ERROR)
+@rule("L012", "lane-link-direction", Category.LANE, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def lane_link_direction(ctx: Context):
     """A lane link joins lanes whose traffic runs in opposite directions.
 

@@ -3,7 +3,7 @@ other or the road."""
 
 from __future__ import annotations
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import DRIVABLE_LANE_TYPES as DRIVABLE
 from xodrcheck.model import LaneType
 from xodrcheck.quantities import metres
@@ -48,7 +48,7 @@ def lane_level_one_side(ctx: Context):
                         )
 
 
-@rule("L015", "lane-level-changes", Category.LANE, Severity.WARNING)
+@rule("L015", "lane-level-changes", Category.LANE, Severity.WARNING, basis=Basis.PLAUSIBILITY)
 def lane_level_changes(ctx: Context):
     """Two linked lanes of consecutive lane sections of a road differ in ``level``: the surface steps at the joint.
 

@@ -31,7 +31,7 @@ from __future__ import annotations
 
 import math
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, LaneSection, Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as JU
@@ -64,7 +64,15 @@ from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.rules.sampled import angle_between, reference_end, road_end, section_lines, usable, warning_note
 
 
-@rule("K101", "link-gap", Category.LINK, Severity.ERROR, uids=(RU.GEOMETRY_CONTACT_POINT,), every_version=True)
+@rule(
+    "K101",
+    "link-gap",
+    Category.LINK,
+    Severity.ERROR,
+    uids=(RU.GEOMETRY_CONTACT_POINT,),
+    every_version=True,
+    basis=Basis.PLAUSIBILITY,
+)
 def link_gap(ctx: Context):
     """Two roads linked outside a junction do not meet: their reference lines are apart at the contact points.
 
@@ -112,6 +120,7 @@ def link_gap(ctx: Context):
     Severity.ERROR,
     uids=(JU.CONNECTION_SMOOTH_FIT, JU.DIRECT_HEADING),
     every_version=True,
+    basis=Basis.PLAUSIBILITY,
 )
 def link_kink(ctx: Context):
     """Two linked roads meet at an angle: the heading changes abruptly at the contact (a kink, with or without a gap).
@@ -159,6 +168,7 @@ def link_kink(ctx: Context):
     Severity.ERROR,
     uids=(JU.CONNECTION_SMOOTH_FIT, JU.DIRECT_SMOOTH),
     every_version=True,
+    basis=Basis.PLAUSIBILITY,
 )
 def lane_border_gap(ctx: Context):
     """Two lanes linked across a road link or a junction connection do not meet: their borders are apart.
@@ -225,6 +235,7 @@ def _opposed_at_link(ctx: Context, road: Road, end: ContactPoint, lane_id: int, 
     Severity.ERROR,
     uids=(JU.CONNECTION_SMOOTH_FIT, JU.DIRECT_SMOOTH),
     every_version=True,
+    basis=Basis.PLAUSIBILITY,
 )
 def link_step(ctx: Context):
     """Two linked roads or lanes do not meet in height: the road surface steps up or down at the contact.
@@ -277,6 +288,7 @@ def link_step(ctx: Context):
     Severity.ERROR,
     uids=(U.LINK_MULTIPLE,),
     every_version=True,
+    basis=Basis.PLAUSIBILITY,
 )
 def lane_border_discontinuous(ctx: Context):
     """Lanes linked across a lane-section boundary inside a road do not meet: a border jumps at the boundary.

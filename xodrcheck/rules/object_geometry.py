@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.quantities import metres
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
@@ -352,7 +352,15 @@ def _loose_touch(own: np.ndarray, lines: tuple[int, ...], other: tuple[np.ndarra
     return None
 
 
-@rule("B019", "inner-outline-touch", Category.OBJECT, Severity.ERROR, uids=(U.INNER_TOUCHES_OUTER,), xml=True)
+@rule(
+    "B019",
+    "inner-outline-touch",
+    Category.OBJECT,
+    Severity.ERROR,
+    uids=(U.INNER_TOUCHES_OUTER,),
+    xml=True,
+    basis=Basis.PLAUSIBILITY,
+)
 def inner_outline_touch(ctx: Context):
     """An inner outline touches the outer outline at a point only one of them has, or lies outside it.
 

@@ -16,9 +16,10 @@ from typing import TYPE_CHECKING
 from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
+from xodrcheck.rules.feature_uids import ONLY_REF_DEFINED_IDS
 from xodrcheck.rules.object_attributes import all_objects, at, label
 from xodrcheck.rules.object_outlines import name_of
-from xodrcheck.rules.registry import NO_UID, rule
+from xodrcheck.rules.registry import rule
 
 if TYPE_CHECKING:
     from xodrcheck.objects import Marking, Outline, RoadObject
@@ -220,7 +221,7 @@ def _order_problem(positions: list[int], n: int, closed: bool) -> str | None:
     "marking-corner-references",
     Category.OBJECT,
     Severity.ERROR,
-    uids=(*_COUNT_UIDS, U.KEEP_ID_ORDERED, U.ENCLOSED_OUTLINE_MARKING),
+    uids=(*_COUNT_UIDS, U.KEEP_ID_ORDERED, U.ENCLOSED_OUTLINE_MARKING, ONLY_REF_DEFINED_IDS),
     xml=True,
 )
 def marking_corner_references(ctx: Context):
@@ -235,7 +236,8 @@ def marking_corner_references(ctx: Context):
     default for every object type, 13.14) the marking may run across the closing edge from the last point to the
     first. A marking that encloses the object on a closed outline names one point twice, first and last
     (``.object_marking.enclosed_outline_marking``): a repeated point anywhere else, or on an open outline, is no
-    such marking.
+    such marking. Before 1.9, a marking naming points no outline of the object has references undefined ids
+    (``ids.only_ref_defined_ids``; from 1.9 ``marking-placement`` says so).
 
     Passes (a closed outline of points 0-3)::
 
@@ -267,7 +269,7 @@ def marking_corner_references(ctx: Context):
                 yield marking_corner_references.finding(
                     f"{label(obj)}: the <marking> at line {marking.line} references corners no outline of the "
                     "object has",
-                    uid=NO_UID,
+                    uid=ONLY_REF_DEFINED_IDS,
                     **where,
                 )
             continue

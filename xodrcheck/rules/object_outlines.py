@@ -13,10 +13,11 @@ import itertools
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.objects.kinds import CORNER_LOCAL, CORNER_ROAD, CURVE_LOCAL
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
+from xodrcheck.rules.feature_uids import ONLY_REF_DEFINED_IDS
 from xodrcheck.rules.object_attributes import all_objects, at, label
 from xodrcheck.rules.registry import NO_UID, rule
 
@@ -263,13 +264,14 @@ def outline_id_duplicate(ctx: Context):
                 )
 
 
-@rule("B015", "border-outline-missing", Category.OBJECT, Severity.ERROR, xml=True)
+@rule("B015", "border-outline-missing", Category.OBJECT, Severity.ERROR, uids=(ONLY_REF_DEFINED_IDS,), xml=True)
 def border_outline_missing(ctx: Context):
     """A ``<border>`` names an outline its object does not have.
 
     A border runs along the outline whose id its ``outlineId`` gives (13.9); an id no outline of the object has
-    leaves the border nowhere to go (the official 1.8.1 and 1.9.0 schemas mean to say so with a key reference that
-    selects nothing, see ``schemas/NOTICE.md``).
+    leaves the border nowhere to go: Annex F ``ids.only_ref_defined_ids`` (only defined IDs may be referenced; the
+    official 1.8.1 and 1.9.0 schemas mean to say so with a key reference that selects nothing, see
+    ``schemas/NOTICE.md``).
 
     Passes::
 
@@ -292,13 +294,22 @@ def border_outline_missing(ctx: Context):
             )
 
 
-@rule("B016", "border-corner-references", Category.OBJECT, Severity.ERROR, uids=(U.BORDERS_COMPLETE_OUTLINE,), xml=True)
+@rule(
+    "B016",
+    "border-corner-references",
+    Category.OBJECT,
+    Severity.ERROR,
+    uids=(U.BORDERS_COMPLETE_OUTLINE, ONLY_REF_DEFINED_IDS),
+    xml=True,
+    basis=Basis.READING,
+)
 def border_corner_references(ctx: Context):
     """A ``<border>``'s corner references do not match its ``useCompleteOutline``.
 
     A border along its whole outline (``useCompleteOutline`` true, the default) shall have no ``<cornerReference>``
     (Annex F ``road.object.borders.useCompleteOutline_true``, 13.9); one along part of it (``false``) needs at least
-    two (13.9, no UID), and each names a corner of the outline (no UID).
+    two (13.9, no UID: without them the border's stretch cannot be read), and each names a corner of the outline
+    (``ids.only_ref_defined_ids``).
 
     Passes::
 
@@ -319,13 +330,14 @@ def border_corner_references(ctx: Context):
                     f"{name} runs along the complete outline (useCompleteOutline "
                     f"{'true' if border.use_complete_outline else 'not given: true'}) but has {len(refs)} "
                     '<cornerReference>: remove them, or set useCompleteOutline="false" for a partial border',
+                    uid=U.BORDERS_COMPLETE_OUTLINE,
                     **at(ctx, obj, refs[0].line),
                 )
             elif border.use_complete_outline is False and len(refs) < 2:
                 yield border_corner_references.finding(
                     f'{name} has useCompleteOutline="false" and {len(refs)} <cornerReference>: a partial border '
                     "names at least two corners of its outline",
-                    uid=NO_UID,
+                    uid=NO_UID,  # 13.9 in words: the border's stretch cannot be read
                     **at(ctx, obj, border.line),
                 )
             outline = None if border.outline_id is None else by_id.get(border.outline_id)
@@ -336,7 +348,7 @@ def border_corner_references(ctx: Context):
                 if ref.id is not None and ref.id not in known:
                     yield border_corner_references.finding(
                         f"{name} references corner {ref.id}, which the outline does not have",
-                        uid=NO_UID,
+                        uid=ONLY_REF_DEFINED_IDS,
                         **at(ctx, obj, ref.line),
                     )
 

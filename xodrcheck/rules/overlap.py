@@ -25,7 +25,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as JU
 from xodrcheck.rules import road_uids as U
@@ -292,7 +292,7 @@ def connection_overlap(ctx: Context):
     yield from _findings(ctx, connection_overlap, True, True, "connecting ")
 
 
-@rule("O004", "roadside-overlap", Category.OVERLAP, Severity.WARNING)
+@rule("O004", "roadside-overlap", Category.OVERLAP, Severity.WARNING, basis=Basis.PLAUSIBILITY)
 def roadside_overlap(ctx: Context):
     """Roadside lanes (no drivable lane on either side) of two unrelated roads overlap at the same height.
 

@@ -9,10 +9,11 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, LaneSection, Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules import feature_uids as F
+from xodrcheck.rules import junction_uids as JU
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, link_at
 from xodrcheck.rules.registry import NO_UID, Rule, rule
@@ -203,6 +204,7 @@ def road_link_target_missing(ctx: Context):
     Severity.ERROR,
     uids=(F.ONLY_REF_DEFINED_IDS,),
     every_version=True,
+    basis=Basis.READING,
 )
 def connection_road_missing(ctx: Context):
     """A junction connection names an incoming, connecting or linked road that does not exist, or lacks one.
@@ -312,11 +314,21 @@ def junction_lane_link_missing_lane(ctx: Context):
                     )
 
 
-@rule("R013", "connecting-road-outside-junction", Category.REFERENCE, Severity.ERROR)
+@rule(
+    "R013",
+    "connecting-road-outside-junction",
+    Category.REFERENCE,
+    Severity.ERROR,
+    uids=(JU.CROSS_PATH_JUNCTION_ID,),
+    every_version=True,
+)
 def connecting_road_outside_junction(ctx: Context):
     """A connection's connecting road does not belong to the connection's junction.
 
-    Its ``junction`` attribute names another junction, or ``-1``.
+    Its ``junction`` attribute names another junction, or ``-1``. Annex F ``junctions.cross_path.correct_junction_id``
+    (1.8, listed with cross paths but worded for every road): "The @junction attribute shall contain the id of the
+    junction to which a road belongs"; a connecting road belongs to the junction whose connection names it. Older
+    files are checked too, as plausibility (a warning unless a profile asks for more).
 
     Passes::
 

@@ -12,6 +12,11 @@ enforces by their UIDs. A UID applies to a file only from the standard version i
 UID that does not apply to the file is dropped, and a rule none of whose UIDs applies is not run, unless the rule is
 marked ``every_version`` (the project's own rule, which the annex later wrote down: it keeps checking older files,
 without claiming the UID there).
+
+Every finding states its basis (:attr:`Finding.basis <xodrcheck.findings.Finding.basis>`): the UID it enforces, or,
+for a finding without one, the ``basis`` its rule declares (:class:`~xodrcheck.findings.Basis`: ``schema``,
+``reading`` or ``plausibility``). A rule that can give a finding without a UID (it has none, passes :data:`NO_UID`,
+or runs on files older than its UIDs) declares it; one whose findings always name a UID needs none.
 """
 
 from __future__ import annotations
@@ -21,7 +26,7 @@ from collections.abc import Callable, Iterable, Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
 
-from xodrcheck.findings import Category, Finding, Severity
+from xodrcheck.findings import Basis, Category, Finding, Severity
 
 CheckFn = Callable[..., Iterable[Finding]]
 
@@ -49,6 +54,13 @@ class Rule:
     #: Reads the file's XML (``ctx.tree`` or a view built from it: objects, signals, lane or junction elements). Such
     #: rules run first; the tree is then dropped before the geometry rules (:meth:`Context.release_tree`).
     xml: bool = False
+    #: What the rule's findings without a UID rest on (:class:`~xodrcheck.findings.Basis`); ``None`` for a rule whose
+    #: findings always name a UID.
+    basis: str | None = None
+
+    def __post_init__(self) -> None:
+        if self.basis is not None and self.basis not in Basis.ALL:
+            raise ValueError(f"rule {self.code}: basis {self.basis!r} is not one of {', '.join(Basis.ALL)}")
 
     @property
     def summary(self) -> str:
@@ -60,7 +72,7 @@ class Rule:
     def finding(self, message: str, *, severity: Severity | None = None, uid: str | None = None, **where) -> Finding:
         """A finding of this rule; ``where`` takes the :class:`Finding` location fields (road, lane, section_s, s,
         x, y, line). ``uid`` is the Annex F rule the finding enforces; it defaults to the rule's only UID
-        (:data:`NO_UID`: none)."""
+        (:data:`NO_UID`: none). The finding's basis is its UID, else the rule's declared :attr:`basis`."""
         if uid == NO_UID:
             uid = None
         elif uid is None and len(self.uids) == 1:
@@ -74,8 +86,16 @@ class Rule:
             severity=self.severity if severity is None else severity,
             message=message,
             rule_uid=uid,
+            basis=uid if uid is not None else self.unnamed_basis(),
             **where,
         )
+
+    def unnamed_basis(self) -> str:
+        """The basis of this rule's findings that name no UID (its declared :attr:`basis`); a rule that gives such a
+        finding without declaring one is a mistake in the checker."""
+        if self.basis is None:
+            raise ValueError(f"rule {self.code} gives a finding without a UID but declares no basis")
+        return self.basis
 
     def runs_on(self, version: tuple[int, int] | None) -> bool:
         """Whether the rule applies to a file of this OpenDRIVE version (see the module's version rule)."""
@@ -110,8 +130,9 @@ def declare(
     uids: Iterable[str] = (),
     partial: Mapping[str, str] | None = None,
     every_version: bool = False,
+    basis: str | None = None,
 ) -> Rule:
-    """Register a reader rule (emitted while reading) and return it."""
+    """Register a reader rule (emitted while reading) and return it; the keywords are :func:`rule`'s."""
     return _register(
         Rule(
             code,
@@ -123,6 +144,7 @@ def declare(
             _uids(uids, partial),
             MappingProxyType(dict(partial or {})),
             every_version,
+            basis=basis,
         )
     )
 
@@ -137,12 +159,15 @@ def rule(
     partial: Mapping[str, str] | None = None,
     every_version: bool = False,
     xml: bool = False,
+    basis: str | None = None,
 ) -> Callable[[CheckFn], Rule]:
     """Decorator registering a check function as a rule; its docstring is the rule's documentation.
 
     ``uids`` are the Annex F rules it enforces; ``partial`` maps those it enforces only in part to what it leaves out
     (they are enforced UIDs too); ``every_version`` keeps it running on files older than its UIDs; ``xml`` declares
-    that it reads the XML tree (``ctx.tree``, directly or through a view of it): it runs before the tree is dropped.
+    that it reads the XML tree (``ctx.tree``, directly or through a view of it): it runs before the tree is dropped;
+    ``basis`` is what its findings without a UID rest on (``schema``, ``reading``, ``plausibility``: see
+    :class:`~xodrcheck.findings.Basis`).
     """
 
     def wrap(fn: CheckFn) -> Rule:
@@ -158,6 +183,7 @@ def rule(
                 MappingProxyType(dict(partial or {})),
                 every_version,
                 xml,
+                basis,
             )
         )
 

@@ -6,7 +6,7 @@ import re
 from collections.abc import Iterable, Iterator
 
 from xodrcheck import schema
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 
@@ -46,7 +46,7 @@ def one_per_cause(errors: Iterable[schema.SchemaError]) -> Iterator[schema.Schem
     return iter(kept.values())
 
 
-@rule("S001", "schema-invalid", Category.SCHEMA, Severity.ERROR, xml=True)
+@rule("S001", "schema-invalid", Category.SCHEMA, Severity.ERROR, xml=True, basis=Basis.SCHEMA)
 def schema_invalid(ctx: Context):
     """The file does not validate against the XSD of the OpenDRIVE version its header declares.
 
@@ -94,7 +94,7 @@ def schema_invalid(ctx: Context):
         )
 
 
-@rule("S002", "schema-not-validated", Category.SCHEMA, Severity.INFO, xml=True)
+@rule("S002", "schema-not-validated", Category.SCHEMA, Severity.INFO, xml=True, basis=Basis.SCHEMA)
 def schema_not_validated(ctx: Context):
     """The file could not be validated: its header declares no OpenDRIVE version that has a schema (1.1 to 1.9).
 

@@ -29,7 +29,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
 from xodrcheck.rules.context import Context, link_at, travel_direction
 from xodrcheck.rules.junction_geometry import _centre_path, _parted
@@ -240,7 +240,14 @@ def _lights(placed: list[Placement]) -> str:
     return " and ".join([placed[0].describe(), *others]) + (" release" if others else " releases")
 
 
-@rule("V001", "conflicting-signals-same-controller", Category.SIGNAL_CONTROL, Severity.WARNING, xml=True)
+@rule(
+    "V001",
+    "conflicting-signals-same-controller",
+    Category.SIGNAL_CONTROL,
+    Severity.WARNING,
+    xml=True,
+    basis=Basis.PLAUSIBILITY,
+)
 def conflicting_signals_same_controller(ctx: Context):
     """Two traffic lights of one controller release junction movements that cross: they always show green together.
 

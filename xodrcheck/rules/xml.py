@@ -9,7 +9,7 @@ absent, used the standard's default).
 
 from __future__ import annotations
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules import road_uids as RU
 from xodrcheck.rules.registry import declare
@@ -35,6 +35,7 @@ NOT_WELL_FORMED = declare(
 
         <OpenDRIVE><header revMajor="1" revMinor="8"/><road id="1" length="10" junction="-1">
     """,
+    basis=Basis.READING,
 )
 
 DOCTYPE = declare(
@@ -63,6 +64,7 @@ DOCTYPE = declare(
         <!DOCTYPE OpenDRIVE [<!ENTITY secret SYSTEM "file:///etc/passwd">]>
         <OpenDRIVE><header name="&secret;" revMajor="1" revMinor="6"/></OpenDRIVE>
     """,
+    basis=Basis.READING,
 )
 
 CONTENT_BEFORE_DECLARATION = declare(
@@ -88,6 +90,7 @@ CONTENT_BEFORE_DECLARATION = declare(
         <?xml version="1.0" encoding="UTF-8"?>
         <OpenDRIVE>...</OpenDRIVE>
     """,
+    basis=Basis.READING,
 )
 
 ENCODING = declare(
@@ -112,6 +115,7 @@ ENCODING = declare(
         <?xml version="1.0" encoding="UTF-16"?>
         <OpenDRIVE>...</OpenDRIVE>
     """,
+    basis=Basis.PLAUSIBILITY,
 )
 
 WRONG_ROOT = declare(
@@ -130,6 +134,7 @@ WRONG_ROOT = declare(
 
         <OpenSCENARIO><FileHeader revMajor="1" revMinor="1"/></OpenSCENARIO>
     """,
+    basis=Basis.READING,
 )
 
 UNKNOWN_VERSION = declare(
@@ -151,6 +156,7 @@ UNKNOWN_VERSION = declare(
 
         <header revMajor="2" revMinor="0"/>
     """,
+    basis=Basis.READING,
 )
 
 MISSING_ELEMENT = declare(
@@ -191,6 +197,7 @@ MISSING_ELEMENT = declare(
         RU.GEOMETRY_REFLINE_EXISTS,
     ),
     every_version=True,
+    basis=Basis.SCHEMA,
 )
 
 REPEATED_ELEMENT = declare(
@@ -215,6 +222,7 @@ REPEATED_ELEMENT = declare(
     """,
     uids=(U.CENTER_ELEM_DEFINITION, U.LAYER_LIMITS, RU.GEOMETRY_ONLY_ONE_REFLINE),
     every_version=True,
+    basis=Basis.SCHEMA,
 )
 
 MISSING_ATTRIBUTE = declare(
@@ -237,6 +245,7 @@ MISSING_ATTRIBUTE = declare(
     """,
     uids=(U.S_ATTR_VALUE,),
     every_version=True,
+    basis=Basis.SCHEMA,
 )
 
 INVALID_ATTRIBUTE = declare(
@@ -257,6 +266,7 @@ INVALID_ATTRIBUTE = declare(
 
         <road id="1" length="-25.5" junction="-1">
     """,
+    basis=Basis.READING,
 )
 
 UNKNOWN_GEOMETRY = declare(
@@ -280,6 +290,7 @@ UNKNOWN_GEOMETRY = declare(
     """,
     uids=(RU.GEOMETRY_ONE_ELEMENT,),
     every_version=True,
+    basis=Basis.SCHEMA,
 )
 
 UNKNOWN_LANE_TYPE = declare(
@@ -299,6 +310,7 @@ UNKNOWN_LANE_TYPE = declare(
 
         <lane id="-1" type="carriageway">
     """,
+    basis=Basis.SCHEMA,
 )
 
 OUT_OF_ORDER = declare(
@@ -336,6 +348,7 @@ OUT_OF_ORDER = declare(
         RU.SUPERELEVATION_ORDER,
     ),
     every_version=True,
+    basis=Basis.SCHEMA,
 )
 
 #: Every reader rule, in code order.

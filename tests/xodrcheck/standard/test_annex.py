@@ -121,7 +121,7 @@ def test_findings_of_a_newer_rule_are_dropped_or_lose_their_uid(every_version):
     old, new = SimpleNamespace(version=(1, 7)), SimpleNamespace(version=(1, 8))
     assert list(_by_version([finding], new, {"T999": rule})) == [finding]
     kept = list(_by_version([finding], old, {"T999": rule}))
-    assert kept == ([] if not every_version else [dataclasses.replace(finding, rule_uid=None)])
+    assert kept == ([] if not every_version else [dataclasses.replace(finding, rule_uid=None, basis="plausibility")])
     assert rule.runs_on((1, 7)) is every_version and rule.runs_on((1, 8)) and rule.runs_on(None)
 
 
