@@ -12,25 +12,25 @@ opened at all) and :class:`~xodrcheck.config.ConfigError` (a selector names no r
 
 from __future__ import annotations
 
-import dataclasses
 import io
 import re
 import time
 import zlib
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
 from xodrcheck import memory
 from xodrcheck.config import Config, ConfigError
 from xodrcheck.filebytes import FileBytes
-from xodrcheck.findings import Basis, Finding, OutOfTime, Severity
+from xodrcheck.findings import Finding, OutOfTime, Severity
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.internal import ENGINE_CODES as _ENGINE_CODES
 from xodrcheck.rules.internal import RULE_CRASHED, RULE_OUT_OF_TIME
 from xodrcheck.rules.registry import Rule
-from xodrcheck.standard import annex_rules, applies, is_uid, uid_matches
+from xodrcheck.standard import annex_rules, is_uid, uid_matches
+from xodrcheck.verdict import judge
 
 __all__ = ["Report", "Selection", "check", "is_valid", "is_valid_reason", "run_rules", "validate_selectors"]
 
@@ -47,6 +47,8 @@ class Report:
     #: Codes of the rules applied (reader rules included), in the order they ran.
     rules_run: tuple[str, ...]
     strict: bool = False
+    #: The profile that judged the findings (:data:`xodrcheck.config.PROFILES`).
+    profile: str = "default"
 
     @property
     def complete(self) -> bool:
@@ -149,8 +151,10 @@ class Selection:
                 return False
         return True
 
-    def wants_finding(self, finding: Finding) -> bool:
-        if (self.severities and finding.severity not in self.severities) or finding.severity in self.ignored_severities:
+    def wants_finding(self, finding: Finding, severity: Severity | None = None) -> bool:
+        """Whether the finding is selected; ``severity`` is the one it is judged to have (default: its own)."""
+        severity = finding.severity if severity is None else severity
+        if (self.severities and severity not in self.severities) or severity in self.ignored_severities:
             return False
         if self.select and not any(_finding_matches(t, finding) for t in self.select):
             return False
@@ -257,7 +261,8 @@ def check(
     # one parse: the reader's tree is the XML rules' tree (when the file is well-formed), dropped after them
     result, tree = read_keeping_tree(source, max_bytes=config.tolerances.max_file_bytes)
     data = _data(source, result.path, shared=tree is not None, limit=config.tolerances.max_file_bytes)
-    findings = [f for f in result.findings if selection.wants_finding(f)]
+    judging = _Judging(None if result.document is None else result.document.version, selection, config)
+    findings = judging.kept(result.findings)
     run = [
         r.code
         for r in selection.rules.values()
@@ -279,30 +284,35 @@ def check(
             del tree  # the context holds it until the XML rules have run
             version = _version_text(ctx.version)
             more, ran = run_rules(ctx, selection)
-            findings.extend(f for f in more if selection.wants_finding(f) or f.code in _ENGINE_CODES)
+            findings.extend(judging.kept(more))
             findings = ctx.locate_all(findings)  # x, y, z of every finding naming a road and an s
         run.extend(ran)
     return Report(
         path=result.path,
         version=version,
-        findings=tuple(sorted(_by_version(findings, result.document, selection.rules), key=_sort_key)),
+        findings=tuple(sorted(findings, key=_sort_key)),
         rules_run=tuple(run),
         strict=config.strict,
+        profile=config.profile,
     )
 
 
-def _by_version(findings: Iterable[Finding], document, rules: dict[str, Rule]) -> Iterator[Finding]:
-    """Drop the findings of Annex F rules that do not apply to the file's version; a rule that runs on every version
-    keeps its finding there without claiming the UID, resting on the rule's declared basis (by default
-    ``plausibility``: the checker applies what the standard wrote down only later)."""
-    version = None if document is None else document.version
-    for f in findings:
-        if f.rule_uid is not None and not applies(f.rule_uid, version):
-            rule = rules.get(f.code)
-            if rule is None or not rule.every_version:
-                continue
-            f = dataclasses.replace(f, rule_uid=None, basis=rule.basis or Basis.PLAUSIBILITY)
-        yield f
+class _Judging:
+    """Each finding judged once (:func:`xodrcheck.verdict.judge`: the file's version, the profile's bounds), then
+    selected: by rule and UID as the rule gave it, by severity as judged. The engine's own findings are always kept."""
+
+    def __init__(self, version: tuple[int, int] | None, selection: Selection, config: Config) -> None:
+        self.version, self.selection, self.profile = version, selection, config.profile_spec
+
+    def kept(self, findings: Iterable[Finding]) -> list[Finding]:
+        out = []
+        for f in findings:
+            judged = judge(f, self.version, self.selection.rules, self.profile)
+            if judged is not None and (
+                f.code in _ENGINE_CODES or self.selection.wants_finding(f, severity=judged.severity)
+            ):
+                out.append(judged)
+        return out
 
 
 def _deadline(started: float, budget: float) -> float | None:

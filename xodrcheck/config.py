@@ -1,7 +1,8 @@
-"""Tolerances and bounds: the one place they live.
+"""Tolerances, bounds and profiles: the one place they live.
 
 Defaults are here; a project overrides them in ``[tool.xodrcheck]`` of its ``pyproject.toml`` or in an
-``xodrcheck.toml`` (same keys at top level), and command-line flags override both.
+``xodrcheck.toml`` (same keys at top level), and command-line flags override both. A profile (:data:`PROFILES`) is a
+named way of judging: ``default`` gives the standard's verdicts, ``strict`` and ``generator`` every rule's own.
 """
 
 from __future__ import annotations
@@ -15,7 +16,7 @@ from typing import Any
 
 from xodrcheck.findings import XodrError
 
-__all__ = ["PROFILES", "SEVERITY_NAMES", "Config", "ConfigError", "Tolerances", "load_config"]
+__all__ = ["PROFILES", "SEVERITY_NAMES", "Config", "ConfigError", "Profile", "Tolerances", "load_config"]
 
 
 def _toml(text: str) -> dict[str, Any]:
@@ -216,25 +217,87 @@ class Tolerances:
         return Severity.ERROR if deviation > error else Severity.WARNING
 
 
-#: Named sets of tolerance values (``--profile``, key ``profile``), applied before the configured tolerances and the
-#: ``--tolerance`` flags. ``strict``: every deviation over the strict values is an error, as before issue 18.
-PROFILES: dict[str, dict[str, float]] = {
-    "default": {},
-    "strict": {"gap": Tolerances.position, "kink": Tolerances.heading, "junction_start": 0.05},
+@dataclass(frozen=True)
+class Profile:
+    """A named way of judging a file: tolerance values, and whether the standard's words bound the severities.
+
+    With ``capped`` (the ``default`` profile) a finding is at most what the standard's words make it: one enforcing an
+    Annex F rule worded "should" is at most a warning, "may" at most an info, and a ``plausibility`` finding (the
+    checker's own judgement) at most a warning; "shall" rules, the schema and what cannot be read keep the rule's
+    severity. Without it every rule gives the severity it declares.
+    """
+
+    name: str
+    #: What the profile is for, in a sentence or two (``--help``, ``xodrcheck rules --tolerances``).
+    doc: str
+    #: Tolerance name -> value, over the defaults (the configured tolerances and ``--tolerance`` come on top).
+    tolerances: tuple[tuple[str, float], ...] = ()
+    #: Bound severities by the standard's words (see above).
+    capped: bool = True
+
+    def tolerance_values(self, base: Tolerances | None = None) -> Tolerances:
+        """``base`` (the defaults) with this profile's values."""
+        return _tolerances_from(dict(self.tolerances), base or Tolerances())
+
+
+#: The named profiles (``--profile``, key ``profile``, ``Config(profile=...)``).
+PROFILES: dict[str, Profile] = {
+    p.name: p
+    for p in (
+        Profile(
+            "default",
+            "the standard: errors only where an Annex F rule worded 'shall', the schema of the file's version or "
+            "the reading of the file is violated; 'should' rules and the checker's own plausibility checks (minimum "
+            "radius, the JunctionArt paper's junction rules, ...) give warnings, 'may' rules infos",
+        ),
+        Profile(
+            "strict",
+            "every rule at the severity it declares, plausibility checks as errors too, and deviations over the "
+            "strict values (1 mm, 1 mrad; 5 cm where connection lanes part) errors",
+            (("gap", Tolerances.position), ("kink", Tolerances.heading), ("junction_start", 0.05)),
+            capped=False,
+        ),
+        Profile(
+            "generator",
+            "the invariants junctionart guarantees for the maps it writes: every rule at the severity it declares "
+            "(no crossing or merging connection lanes of one road, the minimum radius, ... are errors) with the "
+            "default tolerances; junctionart's own checks and tests use it",
+            capped=False,
+        ),
+    )
 }
+
+#: ``Config.tolerances`` when none are given: the profile's values are used.
+_PROFILE_TOLERANCES = Tolerances()
 
 
 @dataclass(frozen=True)
 class Config:
-    """The checker's configuration: tolerances, rule selection, strictness and what a report shows."""
+    """The checker's configuration: profile, tolerances, rule selection, strictness and what a report shows.
 
-    tolerances: Tolerances = field(default_factory=Tolerances)
+    ``profile`` names one of :data:`PROFILES` (``default``: the standard's verdicts); ``tolerances`` default to that
+    profile's values, so ``check(path, Config(profile="strict"))`` is ``--profile strict``.
+    """
+
+    tolerances: Tolerances = _PROFILE_TOLERANCES
     select: tuple[str, ...] = ()  # rule codes or categories; empty: all
     ignore: tuple[str, ...] = ()
     strict: bool = False  # warnings fail too
     #: Least severity a report shows (``info``, ``warning``, ``error``); ``None``: the format's default (text and
     #: github: warning; json, sarif, junit, xqar: info). Findings not shown still count for the exit code.
     min_severity: str | None = None
+    profile: str = "default"
+
+    def __post_init__(self) -> None:
+        if self.profile not in PROFILES:
+            raise ConfigError(f"unknown profile {self.profile!r}; known: {', '.join(PROFILES)}")
+        if self.tolerances is _PROFILE_TOLERANCES and PROFILES[self.profile].tolerances:
+            object.__setattr__(self, "tolerances", PROFILES[self.profile].tolerance_values())
+
+    @property
+    def profile_spec(self) -> Profile:
+        """The :class:`Profile` named by :attr:`profile`."""
+        return PROFILES[self.profile]
 
 
 class ConfigError(XodrError, ValueError):
@@ -260,9 +323,9 @@ def _tolerances_from(mapping: dict, base: Tolerances) -> Tolerances:
 
 def load_config(start: Path | None = None, overrides: dict | None = None, profile: str | None = None) -> Config:
     """Read ``xodrcheck.toml`` or ``[tool.xodrcheck]`` of the nearest ``pyproject.toml`` from ``start`` upwards,
-    then apply ``overrides`` (tolerance name -> value, e.g. from flags). Tolerances come from the defaults, then the
-    ``profile`` (the argument, else the file's ``profile`` key; see :data:`PROFILES`), then the file's ``tolerances``
-    table, then ``overrides``."""
+    then apply ``overrides`` (tolerance name -> value, e.g. from flags). The ``profile`` is the argument, else the
+    file's ``profile`` key, else ``default`` (see :data:`PROFILES`); tolerances come from the defaults, then the
+    profile's values, then the file's ``tolerances`` table, then ``overrides``."""
     table: dict = {}
     here = (start or Path.cwd()).resolve()
     for folder in (here, *here.parents):
@@ -277,9 +340,9 @@ def load_config(start: Path | None = None, overrides: dict | None = None, profil
                 table = data["tool"]["xodrcheck"]
                 break
     name = profile if profile is not None else table.get("profile", "default")
-    if name not in PROFILES:
+    if not isinstance(name, str) or name not in PROFILES:
         raise ConfigError(f"unknown profile {name!r}; known: {', '.join(PROFILES)}")
-    tolerances = _tolerances_from(table.get("tolerances", {}), _tolerances_from(PROFILES[name], Tolerances()))
+    tolerances = _tolerances_from(table.get("tolerances", {}), PROFILES[name].tolerance_values())
     if overrides:
         tolerances = _tolerances_from(overrides, tolerances)
     return Config(
@@ -288,6 +351,7 @@ def load_config(start: Path | None = None, overrides: dict | None = None, profil
         ignore=tuple(table.get("ignore", ())),
         strict=bool(table.get("strict", False)),
         min_severity=_severity_name(table.get("min_severity")),
+        profile=name,
     )
 
 

@@ -16,7 +16,7 @@ from xodrcheck.rules import load_rules
 from xodrcheck.rules.registry import RULES
 
 CLEAN = fixture("link-not-reciprocal", "pass_junction.xodr")
-BROKEN = fixture("road-link-target-missing", "fail.xodr")  # R010 error plus a K001 error
+BROKEN = fixture("road-link-target-missing", "fail.xodr")  # R010 error plus K001 (1.9 rule, 1.7 file: plausibility)
 WARNING_ONLY = fixture("short-lane-section", "fail.xodr")  # one G012 warning
 
 
@@ -42,7 +42,8 @@ def test_findings_are_sorted_by_line_then_code():
     report = check(BROKEN)
     keys = [(f.line or 0, f.code) for f in report.findings]
     assert keys == sorted(keys) and len(keys) >= 2
-    assert not report.ok and report.errors == len(report.findings)
+    assert not report.ok and report.errors == 1 and report.warnings == 1
+    assert check(BROKEN, Config(profile="generator")).errors == len(report.findings)  # no bound: both errors
 
 
 def test_strict_fails_on_warnings():

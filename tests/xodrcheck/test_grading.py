@@ -1,6 +1,9 @@
 """Gaps, steps and kinks are graded by two tolerances (issue 18): nothing up to the strict value (``position`` 1 mm,
 ``heading`` 1 mrad), a warning up to the error threshold (``gap`` 1 cm, ``kink`` 0.01 rad), an error above it; the
-``strict`` profile makes errors of everything over the strict values (the verdicts before issue 18).
+``strict`` profile makes errors of everything over the strict values (the verdicts before issue 18). Above the error
+threshold the finding names its Annex F rule where there is one: under the default profile an error only where that
+rule says "shall" (issue 26), a warning for a "should" rule or the checker's own plausibility check; the generator
+profile keeps every rule's own error.
 
 Each case takes a rule's fail fixture and writes the defect at three sizes: under the strict value, between, above."""
 
@@ -15,16 +18,18 @@ from xodrcheck.check import check
 from xodrcheck.config import PROFILES, ConfigError, Tolerances, load_config
 from xodrcheck.findings import Severity
 
-#: rule, fixture, text to replace, and the replacements for a defect of (under, between, over) the thresholds.
+E, W = Severity.ERROR, Severity.WARNING
+#: rule, fixture, text to replace, the replacements for a defect of (under, between, over) the thresholds, and the
+#: default profile's severity over the error threshold (an error for a "shall" rule of the standard).
 CASES = [
-    ("plan-view-gap", "fail.xodr", 'x="50.05"', ('x="50.0005"', 'x="50.005"', 'x="50.05"')),
-    ("plan-view-kink", "fail.xodr", 'hdg="0.1"', ('hdg="0.0005"', 'hdg="0.005"', 'hdg="0.05"')),
-    ("link-gap", "fail.xodr", 'x="100.05"', ('x="100.0005"', 'x="100.005"', 'x="100.05"')),
-    ("link-kink", "fail.xodr", 'hdg="0.1"', ('hdg="0.0005"', 'hdg="0.005"', 'hdg="0.05"')),
-    ("lane-border-gap", "fail.xodr", 'a="3.0"', ('a="3.4995"', 'a="3.495"', 'a="3.45"')),
-    ("lane-border-discontinuous", "fail.xodr", 'a="2.5"', ('a="3.4995"', 'a="3.495"', 'a="3.45"')),
-    ("link-step", "fail-elevation.xodr", 'a="5.0"', ('a="0.0005"', 'a="0.005"', 'a="0.05"')),
-    ("profile-step", "fail_elevation.xodr", 'a="1.05"', ('a="1.0005"', 'a="1.005"', 'a="1.05"')),
+    ("plan-view-gap", "fail.xodr", 'x="50.05"', ('x="50.0005"', 'x="50.005"', 'x="50.05"'), E),  # refline_no_gaps
+    ("plan-view-kink", "fail.xodr", 'hdg="0.1"', ('hdg="0.0005"', 'hdg="0.005"', 'hdg="0.05"'), W),  # a "should"
+    ("link-gap", "fail.xodr", 'x="100.05"', ('x="100.0005"', 'x="100.005"', 'x="100.05"'), E),  # contact_point
+    ("link-kink", "fail.xodr", 'hdg="0.1"', ('hdg="0.0005"', 'hdg="0.005"', 'hdg="0.05"'), W),  # no UID: plausibility
+    ("lane-border-gap", "fail.xodr", 'a="3.0"', ('a="3.4995"', 'a="3.495"', 'a="3.45"'), W),
+    ("lane-border-discontinuous", "fail.xodr", 'a="2.5"', ('a="3.4995"', 'a="3.495"', 'a="3.45"'), W),
+    ("link-step", "fail-elevation.xodr", 'a="5.0"', ('a="0.0005"', 'a="0.005"', 'a="0.05"'), W),
+    ("profile-step", "fail_elevation.xodr", 'a="1.05"', ('a="1.0005"', 'a="1.005"', 'a="1.05"'), W),
 ]
 
 
@@ -42,12 +47,14 @@ def _severities(path: Path, rule: str, profile: str = "default") -> list[Severit
     return [f.severity for f in report.findings if f.code == code]
 
 
-@pytest.mark.parametrize("rule, name, old, sizes", CASES, ids=[c[0] for c in CASES])
-def test_under_between_and_over_the_thresholds(tmp_path, rule, name, old, sizes):
+@pytest.mark.parametrize("rule, name, old, sizes, standard", CASES, ids=[c[0] for c in CASES])
+def test_under_between_and_over_the_thresholds(tmp_path, rule, name, old, sizes, standard):
     under, between, over = (_variant(tmp_path, rule, name, old, new) for new in sizes)
     assert _severities(under, rule) == []
     assert set(_severities(between, rule)) == {Severity.WARNING}
-    assert set(_severities(over, rule)) == {Severity.ERROR}
+    assert set(_severities(over, rule)) == {standard}
+    assert set(_severities(over, rule, "generator")) == {Severity.ERROR}  # the rule's own verdict
+    assert set(_severities(between, rule, "generator")) == {Severity.WARNING}  # with the default tolerances
     assert set(_severities(between, rule, "strict")) == {Severity.ERROR}  # one option away: the old verdict
     assert _severities(under, rule, "strict") == []
 
@@ -84,4 +91,7 @@ def test_profiles_and_precedence(tmp_path):
     assert load_config(tmp_path, profile="default").tolerances.gap == 0.01
     with pytest.raises(ConfigError, match="unknown profile 'lax'"):
         load_config(tmp_path, profile="lax")
-    assert set(PROFILES) == {"default", "strict"}
+    assert set(PROFILES) == {"default", "strict", "generator"}
+    generator = load_config(tmp_path, profile="generator").tolerances  # the default values, then the file's
+    assert (generator.gap, generator.kink, generator.junction_start) == (0.01, 0.004, 1.0)
+    assert load_config(tmp_path, profile="generator").profile == "generator"

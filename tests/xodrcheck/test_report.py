@@ -27,7 +27,8 @@ TEXT_LINE = re.compile(
 
 @pytest.fixture(scope="module")
 def reports() -> list[Report]:
-    return [check(BROKEN), check(CLEAN)]
+    # the generator profile keeps K001 (a 1.9 rule on this 1.7 file: plausibility) an error beside R010
+    return [check(BROKEN, Config(profile="generator")), check(CLEAN)]
 
 
 def odd_report() -> Report:

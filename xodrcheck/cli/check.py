@@ -8,8 +8,9 @@ exit 2 here: that is what the check reports (X101, exit 1).
 
 Configuration comes from ``xodrcheck.toml`` or ``[tool.xodrcheck]`` in the nearest ``pyproject.toml`` (keys
 ``select``, ``ignore``, ``strict``, ``profile``, ``min_severity`` and a ``tolerances`` table); ``--select``/``--ignore``
-replace the configured lists, ``--profile`` the profile, ``--tolerance`` overrides single tolerances. A directory
-argument stands for the ``*.xodr`` files under it.
+replace the configured lists, ``--profile`` the profile (``default``: the standard's verdicts; ``strict``,
+``generator``: every rule's own severity, see :data:`xodrcheck.config.PROFILES`), ``--tolerance`` overrides single
+tolerances. A directory argument stands for the ``*.xodr`` files under it.
 
 ``--min-severity`` limits what the report shows (text and github: warnings and errors by default, with one line per
 code of the infos left out; json, sarif, junit, xqar: everything). Findings that fail the check are always shown; the
@@ -63,8 +64,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--profile",
         choices=tuple(PROFILES),
-        help="tolerance profile: default (gaps over 1 cm and kinks over 0.01 rad are errors, from 1 mm and 1 mrad "
-        "warnings) or strict (errors from 1 mm and 1 mrad); `xodrcheck rules --tolerances` lists the values",
+        help="how findings are judged: default (the standard's verdicts: errors only for Annex F 'shall' rules, "
+        "the schema and unreadable content; 'should' rules and the checker's own plausibility checks are warnings, "
+        "gaps from 1 cm and kinks from 0.01 rad), strict (every rule's own severity, errors from 1 mm and 1 mrad) or "
+        "generator (every rule's own severity with the default tolerances: what junctionart guarantees); "
+        "`xodrcheck rules --tolerances` lists the values",
     )
     parser.add_argument("--strict", action="store_true", default=None, help="warnings fail the check too")
     parser.add_argument("--format", choices=FORMATS, default="text", help="report format (default: text)")

@@ -92,13 +92,14 @@ def tolerance_rows() -> list[dict]:
     from xodrcheck.config import PROFILES, Tolerances
 
     rows = []
+    strict = PROFILES["strict"].tolerance_values()
     for f in dataclasses.fields(Tolerances):
         default = getattr(Tolerances, f.name)
         rows.append(
             {
                 "name": f.name,
                 "default": default,
-                "strict": PROFILES["strict"].get(f.name, default),
+                "strict": getattr(strict, f.name),
                 "unit": f.metadata.get("unit", ""),
                 "rules": list(f.metadata.get("rules", ())),
                 "doc": f.metadata.get("doc", ""),
@@ -135,7 +136,17 @@ def _tolerances(fmt: str) -> int:
         "Override in [tool.xodrcheck.tolerances] of pyproject.toml, in xodrcheck.toml or with --tolerance NAME=VALUE; "
         "--profile strict applies the strict column."
     )
+    print(profiles_text())
     return 0
+
+
+def profiles_text() -> str:
+    """What each profile does, one paragraph each (``--profile``, key ``profile``)."""
+    from xodrcheck.config import PROFILES
+
+    lines = ["Profiles (--profile NAME, or profile = NAME in the configuration):"]
+    lines += [f"  {p.name}: {p.doc}" for p in PROFILES.values()]
+    return "\n".join(lines)
 
 
 def run(args: argparse.Namespace) -> int:

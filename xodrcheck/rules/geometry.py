@@ -116,10 +116,10 @@ def plan_view_kink(ctx: Context):
     """A plan-view element does not start in the direction the previous one ends: the reference line has a kink.
 
     The heading at the end of each ``<geometry>`` must be the next one's ``hdg`` (modulo 2 pi) (Annex F
-    ``road.geometry.refline_no_kinks``, a "should": its errors deviate, see ``SEVERITY_DEVIATIONS``). Graded: a kink
-    over ``kink`` (0.01 rad, 0.57 deg) is an error, one over ``heading`` (1 mrad) a warning (naming no rule of the
-    standard). A kink without a gap is
-    invisible to position checks but makes every lane border jump.
+    ``road.geometry.refline_no_kinks``, a "should": a warning under the default profile). Graded: a kink over ``kink``
+    (0.01 rad, 0.57 deg) names the UID, an error under ``--profile strict`` or ``generator``; one over ``heading``
+    (1 mrad) is a warning naming no rule of the standard. A kink without a gap is invisible to position checks but
+    makes every lane border jump (a gap on the outside of the turn, an overlap on the inside, w * angle wide).
 
     Passes::
 
@@ -200,7 +200,9 @@ def road_length_mismatch(ctx: Context):
 
     The last element's ``s + length``, and the sum of the elements' lengths, must equal the road's ``length`` within
     ``length_abs + length_rel * length``: lanes, objects and links are placed by ``s`` up to the road's length (Annex F
-    ``road.length_sum_geometries``, 1.9: a "should", reported as an error all the same, see ``SEVERITY_DEVIATIONS``).
+    ``road.length_sum_geometries``, 1.9: a "should", so a warning under the default profile; an error under
+    ``--profile strict`` or ``generator``, as where the road's end is not where its geometry ends, links join where
+    there is no road).
 
     Passes::
 

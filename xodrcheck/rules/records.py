@@ -59,8 +59,8 @@ def redundant_record(ctx: Context):
     unchanged, a line that continues the previous line's heading, a road ``<type>`` equal to the previous one, or a
     lane section that continues the previous one unchanged (the same lanes with the same types, levels, lane links
     from each lane to itself, widths continuing the previous section's, the same road marks and speeds, nothing else
-    recorded on its lanes). Annex F ``performance.avoid_redundant_info`` (a "should"; reported as information, see
-    ``SEVERITY_DEVIATIONS``).
+    recorded on its lanes). Annex F ``performance.avoid_redundant_info`` (a "should"; reported as information, below
+    what the wording allows, see ``SEVERITY_DEVIATIONS``).
 
     Delete the second record (or, for lines and lane sections, merge the two). Equal means equal up to floating-point
     noise.

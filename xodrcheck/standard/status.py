@@ -108,22 +108,10 @@ NOT_ENFORCED.update(
     }
 )
 
-#: Findings take the severity the standard's wording gives (shall -> error, should -> warning, may -> info), except
-#: for these UIDs: UID -> (severity, why).
+#: Under the default profile a finding is at most as severe as the standard's wording makes it (shall -> error,
+#: should -> warning, may -> info: :mod:`xodrcheck.verdict`). These UIDs' findings are less severe still: UID ->
+#: (severity, why). (The strict and generator profiles give every rule its own severity: G002's and G004's errors.)
 SEVERITY_DEVIATIONS: dict[str, tuple[Severity, str]] = {
-    "asam.net:xodr:1.4.0:road.geometry.refline_no_kinks": (
-        Severity.ERROR,
-        "a kink in a reference line tears every lane border at it (a gap on the outside of the turn, an overlap on "
-        "the inside, w * angle wide), the same defect as a lane border that jumps between lane sections (L101), "
-        "which the standard forbids; G002 has been an error for every version (kinks under the kink tolerance, 0.01 "
-        "rad, are warnings that name no UID)",
-    ),
-    "asam.net:xodr:1.9.0:road.length_sum_geometries": (
-        Severity.ERROR,
-        "lanes, objects, signals and links are placed by s up to the road's length: where it differs from the "
-        "reference line's, the road's end (where links join) is not where its geometry ends, and readers place what "
-        "lies beyond differently; G004 has been an error for every version",
-    ),
     "asam.net:xodr:1.8.1:performance.avoid_redundant_info": (
         Severity.INFO,
         "a redundant record changes nothing any reader computes (the map means the same with it or without it); the "
@@ -134,7 +122,7 @@ SEVERITY_DEVIATIONS: dict[str, tuple[Severity, str]] = {
 
 
 def expected_severity(uid: str) -> Severity:
-    """The severity of a finding that enforces ``uid``."""
+    """The severity of a finding that enforces ``uid`` under the default profile."""
     if uid in SEVERITY_DEVIATIONS:
         return SEVERITY_DEVIATIONS[uid][0]
     return annex_rules()[uid].severity

@@ -12,7 +12,7 @@ from tests.xodrcheck.rules.helpers import fixture
 from xodrcheck.cli import main
 
 CLEAN = fixture("link-not-reciprocal", "pass.xodr")
-BROKEN = fixture("road-link-target-missing", "fail.xodr")  # R010 + K001 errors
+BROKEN = fixture("road-link-target-missing", "fail.xodr")  # an R010 error + K001 (plausibility on 1.7: a warning)
 WARNING_ONLY = fixture("short-lane-section", "fail.xodr")  # one G012 warning
 
 
@@ -118,10 +118,12 @@ def test_bad_tolerance_is_a_usage_error(capsys, value, message):
 
 
 def test_good_tolerance_is_used(capsys):
-    """A zero-width threshold of 5 m makes every lane "zero width", so the appearing full-width lane is accepted."""
+    """A zero-width threshold of 5 m makes every lane "zero width", so the appearing full-width lane is accepted (L010
+    is plausibility: the generator profile makes it an error)."""
     path = fixture("lane-not-continued", "fail.xodr")
-    assert run(capsys, path, "--select", "L010")[0] == 1
-    assert run(capsys, path, "--select", "L010", "--tolerance", "zero_width=5", "--tolerance", "position=0.01")[0] == 0
+    assert run(capsys, path, "--select", "L010", "--profile", "generator")[0] == 1
+    widened = ("--tolerance", "zero_width=5", "--tolerance", "position=0.01")
+    assert run(capsys, path, "--select", "L010", "--profile", "generator", *widened)[0] == 0
 
 
 def test_output_file_is_written_whole_and_atomically(capsys, tmp_path):
@@ -130,7 +132,7 @@ def test_output_file_is_written_whole_and_atomically(capsys, tmp_path):
     target.write_text("old content", encoding="utf-8")
     code, out, _ = run(capsys, BROKEN, "--format", "json", "-o", target)
     assert code == 1 and out == ""
-    assert json.loads(target.read_text(encoding="utf-8"))["summary"]["errors"] == 2
+    assert json.loads(target.read_text(encoding="utf-8"))["summary"]["errors"] == 1
     assert sorted(p.name for p in target.parent.iterdir()) == ["report.json"]  # no temporary file left
 
 
@@ -212,7 +214,7 @@ def test_min_severity_error_keeps_what_fails_and_the_exit_code(capsys):
     code, out, _ = run(capsys, WARNING_ONLY, "--min-severity", "error", "--strict")
     assert code == 1 and " G012 warning " in out  # a finding that fails the check is always shown
     doc = json.loads(run(capsys, BROKEN, "--format", "json", "--min-severity", "error")[1])
-    assert {f["code"] for f in doc["files"][0]["findings"]} == {"R010", "K001"}
+    assert {f["code"] for f in doc["files"][0]["findings"]} == {"R010"}
 
 
 def test_min_severity_from_the_configuration_and_bad_values(capsys):

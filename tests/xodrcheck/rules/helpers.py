@@ -5,6 +5,7 @@ from __future__ import annotations
 from pathlib import Path
 
 from xodrcheck.check import check
+from xodrcheck.config import Config
 from xodrcheck.findings import Finding
 from xodrcheck.rules import load_rules
 
@@ -30,10 +31,11 @@ def code_of(rule_name: str) -> str:
     return code
 
 
-def findings(path: Path, rule_name: str) -> list[Finding]:
-    """The findings of one rule on one file (only that rule is run)."""
+def findings(path: Path, rule_name: str, profile: str = "default") -> list[Finding]:
+    """The findings of one rule on one file (only that rule is run), judged by ``profile`` (``default``: the
+    standard's verdicts; ``generator``: the rule's own severity)."""
     code = code_of(rule_name)
-    report = check(path, select=(code,))
+    report = check(path, Config(profile=profile), select=(code,))
     assert not [f for f in report.findings if f.code == "X900"], report.findings
     return [f for f in report.findings if f.code == code]
 

@@ -10,7 +10,8 @@ def test_full_width_lane_appearing_at_a_road_link():
     path = fixture(RULE, "fail.xodr")
     (f,) = findings(path, RULE)
     assert (f.road, f.lane, f.s) == ("2", -2, 0.0)
-    assert f.severity is Severity.ERROR
+    assert f.severity is Severity.WARNING and f.basis == "plausibility"  # 11.1 in words, no Annex F rule
+    assert [g.severity for g in findings(path, RULE, "generator")] == [Severity.ERROR]
     assert f.line == line_of(path, '<lane id="-2"')
     assert "3.50 m wide" in f.message and "no predecessor in road 1" in f.message
 
@@ -28,5 +29,6 @@ def test_connecting_lane_without_predecessor_is_not_excused_by_the_junction_lane
     path = fixture(RULE, "fail_junction.xodr")
     (f,) = findings(path, RULE)
     assert (f.road, f.lane, f.s) == ("10", -1, 0.0)
-    assert f.severity is Severity.ERROR
+    assert f.severity is Severity.WARNING
+    assert [g.severity for g in findings(path, RULE, "generator")] == [Severity.ERROR]
     assert "no predecessor in road 1" in f.message

@@ -13,7 +13,8 @@ RULE = "link-step"
 def test_five_metre_step_in_elevation():
     path = fixture(RULE, "fail-elevation.xodr")
     (f,) = findings(path, RULE)
-    assert (f.road, f.lane, f.severity) == ("1", None, Severity.ERROR)  # at the lane-0 line: everything steps alike
+    assert (f.road, f.lane, f.severity) == ("1", None, Severity.WARNING)  # at the lane-0 line: everything steps alike
+    assert f.basis == "plausibility" and findings(path, RULE, "generator")[0].severity is Severity.ERROR
     assert f.line == line_of(path, '<successor elementType="road" elementId="2"')
     assert "steps by 5 m" in f.message and "4 linked lane pair(s) step" in f.message
     assert (f.x, f.y, f.z) == pytest.approx((100.0, 0.0, 5.0))

@@ -19,7 +19,8 @@ RULE = "profile-step"
 def test_a_record_starting_off_the_previous_one(name, element, size):
     path = fixture(RULE, name)
     (f,) = findings(path, RULE)
-    assert (f.road, f.severity) == ("1", Severity.ERROR)
+    assert (f.road, f.severity, f.basis) == ("1", Severity.WARNING, "plausibility")  # Annex D in words, no UID
+    assert [g.severity for g in findings(path, RULE, "generator")] == [Severity.ERROR]
     assert f"the {element} jumps by {size}" in f.message
     assert f.line == line_of(path, f"<{element} s=", 2)
 

@@ -111,17 +111,21 @@ def _rule(every_version: bool):
 
 @pytest.mark.parametrize("every_version", [False, True])
 def test_findings_of_a_newer_rule_are_dropped_or_lose_their_uid(every_version):
-    from types import SimpleNamespace
-
-    from xodrcheck.check import _by_version
+    from xodrcheck.config import PROFILES
+    from xodrcheck.verdict import judged
 
     rule = _rule(every_version)
     finding = rule.finding("two high-priority roads")
     assert finding.rule_uid == rule.uids[0]
-    old, new = SimpleNamespace(version=(1, 7)), SimpleNamespace(version=(1, 8))
-    assert list(_by_version([finding], new, {"T999": rule})) == [finding]
-    kept = list(_by_version([finding], old, {"T999": rule}))
+    generator, default = PROFILES["generator"], PROFILES["default"]
+    assert list(judged([finding], (1, 8), {"T999": rule}, generator)) == [finding]
+    assert list(judged([finding], (1, 8), {"T999": rule}, default)) == [finding]  # a "shall" rule: still an error
+    kept = list(judged([finding], (1, 7), {"T999": rule}, generator))
     assert kept == ([] if not every_version else [dataclasses.replace(finding, rule_uid=None, basis="plausibility")])
+    bounded = list(judged([finding], (1, 7), {"T999": rule}, default))  # plausibility: at most a warning
+    assert [(f.severity, f.basis) for f in bounded] == (
+        [] if not every_version else [(Severity.WARNING, "plausibility")]
+    )
     assert rule.runs_on((1, 7)) is every_version and rule.runs_on((1, 8)) and rule.runs_on(None)
 
 
