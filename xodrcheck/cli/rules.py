@@ -1,9 +1,13 @@
 """``xodrcheck rules [CODE]``: list the rules, or print one rule's documentation with its examples.
 
 ``CODE`` may be a code (``R010``) or a name (``road-link-target-missing``). JSON (``--format json``) gives a list of
-``{"code", "name", "category", "severity", "summary", "uids"}`` objects, or for one rule that object plus ``"doc"``.
-Text is plain (the docstrings' reStructuredText markup taken out); ``summary`` is the documentation's first sentence,
-whole.
+``{"code", "name", "category", "severity", "default_severity", "basis", "summary", "uids"}`` objects, or for one
+rule that object plus ``"doc"``, ``"tolerances"`` and ``"standard"`` (per UID: uid, section, level and the annex's
+description). Text is plain (the docstrings' reStructuredText markup taken out); ``summary`` is the documentation's
+first sentence, whole. ``basis`` says what the rule's findings rest on: ``annex-f`` (each names the Annex F rule it
+enforces), ``schema``, ``reading``, ``plausibility`` (the checker's own judgement), ``incomplete``, or ``annex-f`` and
+one of these for a rule whose findings do not all name a UID; ``default_severity`` is the most severe a finding of
+the rule is under the default profile (the standard's words bound it).
 
 ``xodrcheck rules --tolerances`` lists every tolerance: name, default, the ``strict`` profile's value, unit, the rules
 it bounds, and what it bounds (JSON: a list of objects with those keys).
@@ -19,12 +23,16 @@ import argparse
 import json
 
 from xodrcheck.cli._common import error
+from xodrcheck.findings import Severity
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.plaintext import plain
 from xodrcheck.rules.registry import Rule
 
 NAME = "rules"
-HELP = "List the checker's rules (code, name, category, severity, summary), or show one rule in full."
+HELP = (
+    "List the checker's rules (code, name, category, severity, basis, summary), or show one rule in full with the "
+    "sentences of the standard it enforces."
+)
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -44,19 +52,83 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
+def basis_label(rule: Rule) -> str:
+    """What the rule's findings rest on, in a word or two (module docstring)."""
+    if not rule.uids:
+        return rule.basis or "-"
+    return "annex-f" if rule.basis is None else f"annex-f, {rule.basis}"
+
+
+def default_severity(rule: Rule) -> Severity:
+    """The most severe a finding of ``rule`` is under the default profile: its severity, bounded by the level of each
+    UID it names and by the basis of its findings without one."""
+    from xodrcheck.findings import Finding
+    from xodrcheck.verdict import bound
+
+    kinds = [Finding(rule.code, rule.name, rule.category, rule.severity, "", rule_uid=uid) for uid in rule.uids]
+    if rule.basis is not None or not rule.uids or rule.every_version:
+        kinds.append(Finding(rule.code, rule.name, rule.category, rule.severity, "", basis=rule.basis or ""))
+    return max(min(rule.severity, bound(f) or rule.severity) for f in kinds)
+
+
+_BASIS_WORDS = {
+    "schema": "the XSD schema of the file's declared OpenDRIVE version",
+    "reading": "the file cannot be read as OpenDRIVE as it is written",
+    "plausibility": (
+        "the checker's own judgement, which the standard does not state: at most a warning under the default profile; "
+        "--profile strict or generator gives the rule's own severity"
+    ),
+    "incomplete": "the check did not run to its end, so the file is not known to be right",
+}
+
+
+def _standard_rows(rule: Rule) -> list[dict]:
+    from xodrcheck.standard import annex_rules
+
+    annex = annex_rules()
+    return [
+        {"uid": uid, "section": annex[uid].section, "level": annex[uid].level, "description": annex[uid].description}
+        for uid in rule.uids
+    ]
+
+
 def _as_dict(rule: Rule, full: bool = False) -> dict:
-    d = {
+    d: dict[str, object] = {
         "code": rule.code,
         "name": rule.name,
         "category": rule.category.value,
         "severity": str(rule.severity),
+        "default_severity": str(default_severity(rule)),
+        "basis": basis_label(rule),
         "summary": rule.summary,
         "uids": list(rule.uids),
     }
     if full:
         d["doc"] = rule.doc
         d["tolerances"] = rule_tolerances(rule.code)
+        d["standard"] = _standard_rows(rule)
     return d
+
+
+def _describe(rule: Rule) -> str:
+    """``xodrcheck rules CODE`` in text: the heading, the basis, each UID with the standard's words, the tolerances,
+    then the documentation."""
+    most = default_severity(rule)
+    under = f"; default profile: {most}" if most != rule.severity else ""
+    lines = [f"{rule.code} {rule.name} ({rule.category.value}, {rule.severity}{under})", ""]
+    if rule.uids:
+        lines.append("basis: Annex F (each finding names the rule of the standard it enforces)")
+    if rule.basis is not None:
+        lead = "findings naming no UID rest on" if rule.uids else "basis:"
+        lines.append(f"{lead} {rule.basis} ({_BASIS_WORDS[rule.basis]})")
+    for row in _standard_rows(rule):
+        part = f"; in part: {rule.partial[row['uid']]}" if row["uid"] in rule.partial else ""
+        lines.append(f"enforces {row['uid']} ({row['section']}, {row['level']}{part})")
+        lines.append(f"  {row['description']}")
+    tolerances = rule_tolerances(rule.code)
+    if tolerances:
+        lines.append(f"tolerances (xodrcheck rules --tolerances): {'; '.join(tolerances)}")
+    return "\n".join(lines) + "\n\n" + plain(rule.doc)
 
 
 def _standard(fmt: str) -> int:
@@ -171,23 +243,17 @@ def run(args: argparse.Namespace) -> int:
             error(f"rules: no rule {wanted!r} (run `xodrcheck rules` for the list)")
             return 2
         rule = found[0]
-        if args.format == "json":
-            print(json.dumps(_as_dict(rule, full=True), indent=2))
-        else:
-            print(f"{rule.code} {rule.name} ({rule.category.value}, {rule.severity})\n")
-            for uid in rule.uids:
-                part = f" (in part: {rule.partial[uid]})" if uid in rule.partial else ""
-                print(f"enforces {uid}{part}")
-            tolerances = rule_tolerances(rule.code)
-            if tolerances:
-                print(f"tolerances (xodrcheck rules --tolerances): {'; '.join(tolerances)}")
-            print(("\n" if rule.uids or tolerances else "") + plain(rule.doc))
+        print(json.dumps(_as_dict(rule, full=True), indent=2) if args.format == "json" else _describe(rule))
         return 0
     if args.format == "json":
         print(json.dumps([_as_dict(r) for r in rules], indent=2))
         return 0
     width = max((len(r.name) for r in rules), default=0)
     kind = max((len(r.category.value) for r in rules), default=0)
+    bases = max((len(basis_label(r)) for r in rules), default=0)
     for r in rules:
-        print(f"{r.code}  {r.name:<{width}}  {r.category.value:<{kind}}  {r.severity!s:<7}  {r.summary}")
+        print(
+            f"{r.code}  {r.name:<{width}}  {r.category.value:<{kind}}  {r.severity!s:<7}  {basis_label(r):<{bases}}  "
+            f"{r.summary}"
+        )
     return 0

@@ -71,6 +71,10 @@ def lane_radius_too_small(ctx: Context):
     Reported once per lane and lane section, at the tightest sampled point. A lane whose inner or outer border folds
     in the section (``border-folds``: the curve is too tight for the lane) is reported there only, once for one cause.
 
+    Plausibility: the standard sets no minimum radius; 5 m is this checker's bound for a lane a vehicle can follow
+    (the JunctionArt generator keeps every lane above it). A warning under the default profile, an error under
+    ``--profile strict`` or ``generator``.
+
     Passes (an arc of radius 50 m)::
 
         <geometry ... length="20"><arc curvature="0.02"/></geometry>
@@ -159,6 +163,9 @@ def reference_radius_too_small(ctx: Context):
     The lane-0 line is the reference line shifted by the laneOffset; it bounds lane 1 and lane -1, and is checked
     where one of them is drivable (see the module's decisions).
 
+    Plausibility: the standard sets no minimum radius (see ``lane-radius-too-small``); a warning under the default
+    profile, an error under ``--profile strict`` or ``generator``.
+
     Passes (radius 50 m, driving lanes on both sides)::
 
         <geometry ... length="20"><arc curvature="0.02"/></geometry>
@@ -191,6 +198,10 @@ def border_folds(ctx: Context):
     A border at lateral offset ``t`` on the inner side of a curve of curvature ``k`` shrinks to a point where
     ``t k = 1`` and runs backwards beyond: the lane turns inside out. Equivalently, the width outside a tight curve's
     centre is more than the radius. Any lane type.
+
+    Plausibility: the standard has no checker rule for a border folding at the centre of curvature (the overlap it
+    makes is ``lane-fold``'s, ``road.no_overlap_self``); a warning under the default profile, an error under
+    ``--profile strict`` or ``generator``.
 
     Passes (radius 50 m, lanes 3.5 m wide)::
 

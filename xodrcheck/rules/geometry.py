@@ -246,6 +246,10 @@ def degenerate_geometry(ctx: Context):
 
     Such an element has no direction of its own; readers divide by its length.
 
+    Plausibility: from 1.7 the schema requires a length above zero (``schema-invalid`` reports that); an element
+    shorter than ``length_abs`` is valid but has no direction worth the name. A warning under the default profile,
+    the rule's error under ``--profile strict`` or ``generator``.
+
     Passes::
 
         <geometry s="0" x="0" y="0" hdg="0" length="10"><line/></geometry>
@@ -427,6 +431,9 @@ def profile_step(ctx: Context):
     warning; superelevation (an angle) likewise with ``kink`` (0.01 rad) and ``heading`` (1 mrad). Where a
     lane section starts, the laneOffset may jump with the lanes (their borders are checked by
     ``lane-border-discontinuous``).
+
+    Plausibility: Annex D says so in words, but Annex F gives it no checker rule, so a warning under the default
+    profile; ``--profile strict`` or ``generator`` makes steps over ``gap`` errors.
 
     Passes (the second record starts at 0 + 0.02 * 50 = 1 m)::
 

@@ -158,6 +158,9 @@ def connection_contact_point(ctx: Context):
     link at the contact point names the junction. A connection without ``contactPoint`` is reported too (naming no
     rule of the standard: which end it would be is unknown).
 
+    A missing contactPoint is plausibility: the schema makes it optional and the connecting road's links still say
+    which end meets the incoming road; a warning under the default profile.
+
     Passes::
 
         <road id="10" junction="100"><link><predecessor elementType="road" elementId="1" contactPoint="end"/>...
@@ -225,6 +228,9 @@ def junction_lane_link_direction(ctx: Context):
     side and its road's traffic rule (``RHT``: right lanes along s), turned round by ``direction="reversed"`` (1.8).
     A link that joins a lane without one direction of traffic (a sidewalk, shoulder, border, curb, median or ``none``
     lane, or one open both ways: ``direction="both"``, type ``bidirectional``) has no direction to contradict.
+
+    Plausibility: the standard states no rule on the direction of a junction's linked lanes; a warning under the
+    default profile, the rule's error under ``--profile strict`` or ``generator``.
 
     Passes (road 1 ends at the junction; road 10 starts there)::
 
@@ -333,6 +339,9 @@ def incoming_lane_unconnected(ctx: Context):
     zero width at the junction and lanes open both ways (``bidirectional``, ``direction="both"``: shared centre
     lanes that often end at a junction).
 
+    Plausibility: the standard does not require every incoming lane to be linked; a warning under the default
+    profile, an error under ``--profile strict`` or ``generator`` (a JunctionArt invariant).
+
     Passes::
 
         <road id="1"> <link><successor elementType="junction" elementId="100"/></link>
@@ -402,6 +411,9 @@ def junction_merge(ctx: Context):
     junction's priorities, and is not reported. Connecting lanes of one approach that meet inside the junction are
     a geometric matter, for the junction geometry rules.)
 
+    Plausibility: the standard states no rule against it; a warning under the default profile, an error under
+    ``--profile strict`` or ``generator`` (the JunctionArt paper's rule: connection lanes of one road do not merge).
+
     Passes::
 
         <connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"><laneLink from="-1" to="-1"/>
@@ -451,6 +463,9 @@ def connection_duplicate(ctx: Context):
     (``one_connection_element``). Readers keep one of the duplicates and lose the other's lane links. (The second
     sentence of ``one_link_to_incoming``, lane links only from lanes that enter the junction, is
     ``junction-lane-link-outbound``'s.)
+
+    The 1.7 rule is not in the 1.9 annex: on 1.7 files the finding is plausibility, a warning under the default
+    profile.
 
     Passes::
 

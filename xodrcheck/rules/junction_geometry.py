@@ -234,6 +234,9 @@ def connection_lanes_cross(ctx: Context):
     start together (turns from the same lane part there). A left turn from the right lane crossing the straight-on
     path from the left lane, or two laneLinks in crossed order, make vehicles of one approach collide.
 
+    Plausibility: the JunctionArt paper's rule for the connection lanes of one road, not the standard's; a warning
+    under the default profile, an error under ``--profile generator`` (what junctionart guarantees) or ``strict``.
+
     Passes (lane -1 goes straight on, lane -2 turns right: the paths part and stay apart)::
 
         <connection incomingRoad="1" connectingRoad="10" contactPoint="start"><laneLink from="-1" to="-1"/>
@@ -292,6 +295,9 @@ def junction_lane_links_crossed(ctx: Context):
 
     At the contact point, the incoming lanes' centres and the connecting lanes' centres are ordered across the road;
     the laneLinks of a connection must keep that order.
+
+    Plausibility: the JunctionArt paper's rule (connection lanes of one road do not cross), not the standard's; a
+    warning under the default profile, an error under ``--profile generator`` or ``strict``.
 
     Passes::
 

@@ -228,6 +228,10 @@ def lane_not_continued(ctx: Context):
     drivable lanes, a warning for sidewalks, bike, tram, rail and parking lanes, an info for the rest (``none``,
     ``border``, ``shoulder``...), which carry no traffic.
 
+    Plausibility: 11.1 says drivable lanes must be continuous, but Annex F gives no checker rule for a lane that
+    appears or vanishes at full width, so a warning under the default profile; ``--profile strict`` or ``generator``
+    gives the severities above.
+
     Passes (lane -2 opens from zero width)::
 
         <laneSection s="0"><right><lane id="-1" ...><link><successor id="-1"/></link>...</lane></right></laneSection>
@@ -322,6 +326,9 @@ def lane_link_direction(ctx: Context):
     ``direction="reversed"`` (1.8) turns one lane round. Only lanes with one direction of travel count (vehicle lanes
     and ``biking``; not ``bidirectional`` or ``direction="both"``): a sidewalk, shoulder, median or ``none`` lane may
     continue on the other side of lane 0 (CARLA moves lane 0 to a road's edge that way).
+
+    Plausibility: the standard states no rule on the direction of linked lanes, so a warning under the default
+    profile; the rule's error under ``--profile strict`` or ``generator``.
 
     Passes (road 2 starts at road 1's start)::
 

@@ -52,6 +52,8 @@ def lane_level_one_side(ctx: Context):
 def lane_level_changes(ctx: Context):
     """Two linked lanes of consecutive lane sections of a road differ in ``level``: the surface steps at the joint.
 
+    Plausibility: the standard states no rule on the level of linked lanes; a warning whatever the profile.
+
     Passes::
 
         <laneSection s="0">  ... <lane id="-1" level="true"><link><successor id="-1"/></link>...

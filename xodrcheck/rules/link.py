@@ -133,6 +133,10 @@ def link_kink(ctx: Context):
     smoothly, no kink); at a direct junction ``junctions.direct.road_ramp_heading`` (the junction lies where the
     headings of road and ramp are identical).
 
+    Outside junctions Annex F has no checker rule for a kink between linked roads (``road.geometry.contact_point``
+    asks only that they meet): plausibility, a warning under the default profile, the rule's error under ``--profile
+    strict`` or ``generator``.
+
     Passes (road 2 continues road 1 straight on)::
 
         <road id="1"> ... <geometry s="0" x="0" y="0" hdg="0" length="100"><line/></geometry>
@@ -182,6 +186,10 @@ def lane_border_gap(ctx: Context):
     are an error, over ``position`` (1 mm) a warning. An error at a junction connection enforces
     ``junctions.connection.smooth_fit`` (1.9) or, in a direct junction, ``junctions.direct.linked_lane_smoothness``:
     the linked lanes fit smoothly as described for roads (10.3).
+
+    Elsewhere (road links outside junctions) Annex F has no checker rule for it (11.1 says in words that drivable
+    lanes are continuous): plausibility, a warning under the default profile, the rule's error under ``--profile
+    strict`` or ``generator``.
 
     Passes (lane -1 of both roads is 3.5 m wide and the roads meet)::
 
@@ -249,6 +257,10 @@ def link_step(ctx: Context):
     and ``lane-border-gap``. At a junction connection an error enforces ``junctions.connection.smooth_fit`` (1.9) or
     ``junctions.direct.linked_lane_smoothness`` (direct junctions), as ``lane-border-gap``'s.
 
+    Elsewhere (road links outside junctions) Annex F has no checker rule for it (11.1 says in words that drivable
+    lanes are continuous): plausibility, a warning under the default profile, the rule's error under ``--profile
+    strict`` or ``generator``.
+
     Passes (both roads at 0 m where they meet)::
 
         <road id="1" length="100"> ... <elevation s="0" a="0" b="0" c="0" d="0"/>
@@ -309,6 +321,10 @@ def lane_border_discontinuous(ctx: Context):
     the finding names that rule. (Its second sentence, non-zero width where lanes connect, is
     ``zero-width-lane-linked``'s: a link from or to a lane of zero width at the boundary, an opening or closing lane,
     is reported there once, not again as a border jump here.)
+
+    Apart from that rule, Annex F has no checker rule for lanes that jump between lane sections (11.1 says in words
+    that drivable lanes are continuous): plausibility, a warning under the default profile, the rule's error under
+    ``--profile strict`` or ``generator``.
 
     Passes (lane -1 keeps 3.5 m across the boundary at s=50)::
 

@@ -369,6 +369,9 @@ def inner_outline_touch(ctx: Context):
     on the other within the ``position`` tolerance is a corner of the other too. Inner outlines lie fully inside the
     outer one (13.2; no UID). Compared in the object's plan view.
 
+    That inner outlines lie inside the outer one is 13.2's wording without a checker rule: plausibility, a warning
+    under the default profile (the rule's error under ``--profile strict`` or ``generator``).
+
     Passes (the inner triangle shares the outer square's corner 0,0)::
 
         <outline id="0" outer="true"><cornerLocal u="0" v="0" .../><cornerLocal u="4" v="0" .../>

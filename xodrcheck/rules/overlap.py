@@ -301,6 +301,9 @@ def roadside_overlap(ctx: Context):
     sidewalks drawn across each other at a corner, or a road of roadside lanes laid over another. Two roads whose
     drivable lanes overlap too are ``road-overlap``'s or ``connection-overlap``'s, whose one finding says so.
 
+    Plausibility: roadside lanes drawn across each other are common and not what
+    ``road.no_overlap_outside_junction`` is written for; a warning whatever the profile.
+
     Passes (two sidewalk roads side by side, 1 m apart).
 
     Fails (two sidewalk-only roads crossing at one height)::

@@ -259,6 +259,9 @@ def conflicting_signals_same_controller(ctx: Context):
     controllers, or give the conflicting turn its own light. A permissive left turn (green together with the
     oncoming traffic it yields to) is reported too: where that is intended, deselect the rule.
 
+    Plausibility: the standard states no rule on which movements a controller may release together; a warning
+    whatever the profile.
+
     Passes (the two opposite straight-on approaches in one group, the crossing left turn in another)::
 
         <controller id="1"><control signalId="11"/><control signalId="12"/></controller>

@@ -105,6 +105,9 @@ ENCODING = declare(
     UTF-8 will misread or reject it. A file that declares ``ISO-8859-1`` but contains only ASCII is byte for byte UTF-8
     and passes.
 
+    Plausibility: neither XML nor OpenDRIVE requires UTF-8 (the standard names no encoding), so a warning whatever
+    the profile.
+
     Passes::
 
         <?xml version="1.0" encoding="UTF-8"?>

@@ -4,8 +4,8 @@ Every checker rule of the annex has a UID such as ``asam.net:xodr:1.7.0:road.lan
 who declares it, the standard, the version of the standard in which the rule first applies, and the rule's dotted
 name. xodrcheck's rules say which UIDs they enforce (``Rule.uids``); each finding names the UID it enforces
 (``Finding.rule_uid``). This module holds the annex's list (``annex_f.tsv``, generated from the annex by
-``scripts/annex_uids.py``: UIDs, section numbers and normative levels only, not the standard's text) and the version
-arithmetic.
+``scripts/annex_uids.py``: UIDs, section numbers, normative levels and each rule's description, the sentences a
+finding enforces) and the version arithmetic.
 
 Version rule: a UID applies to a file whose header declares OpenDRIVE ``major.minor`` at least the UID's
 ``major.minor`` (a 1.8.2 rule applies to every 1.8 file: the header has no patch level). 1.4.0 is the annex's oldest
@@ -38,12 +38,14 @@ _LEVEL_SEVERITY = {"shall": Severity.ERROR, "should": Severity.WARNING, "may": S
 
 @dataclass(frozen=True, slots=True)
 class AnnexRule:
-    """One checker rule of Annex F: its UID, its section in the annex and its normative level."""
+    """One checker rule of Annex F: its UID, its section in the annex, its normative level and its description."""
 
     uid: str
     section: str
     #: ``shall`` (a requirement), ``should`` (a recommendation) or ``may`` (a permission or a plain statement).
     level: str
+    #: The annex's words for the rule (plain text): what a finding that names the UID enforces.
+    description: str = ""
 
     @property
     def name(self) -> str:
@@ -67,8 +69,8 @@ def annex_rules() -> dict[str, AnnexRule]:
     out: dict[str, AnnexRule] = {}
     for row in text.splitlines():
         if row and not row.startswith("#"):
-            uid, section, level = row.split("\t")
-            out[uid] = AnnexRule(uid, section, level)
+            uid, section, level, description = row.split("\t")
+            out[uid] = AnnexRule(uid, section, level, description)
     return out
 
 

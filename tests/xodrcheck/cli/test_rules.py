@@ -8,24 +8,33 @@ import pytest
 
 from xodrcheck.cli import main
 from xodrcheck.rules import load_rules
+from xodrcheck.standard import annex_rules
 
 
-def test_lists_every_rule_with_code_name_category_severity_summary(capsys):
+def test_lists_every_rule_with_code_name_category_severity_basis_summary(capsys):
     assert main(["rules"]) == 0
     lines = capsys.readouterr().out.splitlines()
     rules = load_rules()
     assert len(lines) == len(rules)
     for line in lines:
-        code, name, category, severity, *summary = line.split()
+        code, name, category, severity, basis, *summary = line.split()
         rule = rules[code]
         assert (name, category, severity) == (rule.name, rule.category.value, str(rule.severity)) and summary
+        assert basis.rstrip(",") == ("annex-f" if rule.uids else rule.basis)
+    by_code = {line.split()[0]: line for line in lines}
+    assert "  plausibility  " in by_code["C001"] and "  annex-f  " in by_code["R010"]
+    assert "  annex-f, plausibility  " in by_code["K101"] and "  schema  " in by_code["S001"]
 
 
 def test_json_list(capsys):
     assert main(["rules", "--format", "json"]) == 0
     items = json.loads(capsys.readouterr().out)
     assert {i["code"] for i in items} == set(load_rules())
-    assert all(set(i) == {"code", "name", "category", "severity", "summary", "uids"} for i in items)
+    keys = {"code", "name", "category", "severity", "default_severity", "basis", "summary", "uids"}
+    assert all(set(i) == keys for i in items)
+    by_code = {i["code"]: i for i in items}
+    assert (by_code["C001"]["severity"], by_code["C001"]["default_severity"]) == ("error", "warning")
+    assert (by_code["G002"]["default_severity"], by_code["R010"]["default_severity"]) == ("warning", "error")
 
 
 @pytest.mark.parametrize("which", ["R010", "r010", "road-link-target-missing"])
@@ -66,6 +75,44 @@ def test_one_rule_as_json(capsys):
     assert main(["rules", "J006", "--format", "json"]) == 0
     item = json.loads(capsys.readouterr().out)
     assert item["name"] == "junction-merge" and "Fails" in item["doc"]
+    assert (item["basis"], item["standard"]) == ("plausibility", [])
+    assert main(["rules", "G001", "--format", "json"]) == 0
+    (row,) = json.loads(capsys.readouterr().out)["standard"]
+    assert row == {
+        "uid": "asam.net:xodr:1.4.0:road.geometry.refline_no_gaps",
+        "section": annex_rules()[row["uid"]].section,
+        "level": "shall",
+        "description": "A road reference line shall have no gaps.",
+    }
+
+
+def test_one_rule_quotes_the_standard_for_each_uid(capsys):
+    assert main(["rules", "K001"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("K001 link-not-reciprocal (link, error)\n")
+    assert "enforces asam.net:xodr:1.9.0:road.linkage.both_sides_consistency (F.6.15.1, shall)" in out
+    assert (
+        "\n  <predecessor> and/or <successor> shall be defined at both sides of the road linkage and shall be " in out
+    )
+    assert main(["rules", "G002"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith("G002 plan-view-kink (geometry, error; default profile: warning)")
+    assert "(F.6.11.7, should)\n  A road reference line should have no kinks.\n" in out
+    assert "findings naming no UID rest on plausibility" in out
+
+
+def test_one_plausibility_rule_says_so_and_which_profile_makes_it_an_error(capsys):
+    assert main(["rules", "J101"]) == 0
+    out = capsys.readouterr().out
+    assert out.startswith(
+        "J101 connection-lanes-cross (junction, error; default profile: warning)\n\nbasis: plausibility"
+    )
+    assert "enforces" not in out and "--profile generator" in out and "JunctionArt paper" in out
+
+
+@pytest.mark.parametrize("rule", [r for r in load_rules().values() if r.basis == "plausibility" and not r.uids])
+def test_every_plausibility_rule_says_why_in_its_doc(rule):
+    assert "Plausibility:" in rule.doc or "plausibility" in rule.doc, rule.code
 
 
 def test_unknown_rule_exits_2(capsys):

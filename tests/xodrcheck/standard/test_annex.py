@@ -144,3 +144,22 @@ def test_uid_selectors_pick_findings_by_uid(tmp_path):
     ignored = check(path, ignore=("asam.net:xodr:*:road.lane.lanes_numbered_correctly",))
     assert not [f for f in ignored.findings if f.rule_uid and f.rule_uid.endswith("lanes_numbered_correctly")]
     assert "L001" in ignored.rules_run  # the rule still runs for its other UIDs
+
+
+def test_packaged_table_is_what_the_script_makes_of_the_annex(corpus_dir):
+    """``annex_f.tsv`` is ``scripts/annex_uids.py``'s output (levels, the standard's words): regenerated, not edited."""
+    import importlib.util
+    from pathlib import Path
+
+    script = Path(__file__).resolve().parents[3] / "scripts" / "annex_uids.py"
+    spec = importlib.util.spec_from_file_location("annex_uids", script)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    markdown = (corpus_dir.parent / "reference" / "opendrive-1.9" / "map-rules.md").read_text(encoding="utf-8")
+    rows = module.parse(markdown)
+    assert [(r.uid, r.section, r.level, r.description) for r in annex_rules().values()] == rows
+    by_uid = {r[0]: r[3] for r in rows}
+    assert by_uid["asam.net:xodr:1.4.0:road.lane.link.no_link"] == (
+        "The <link> element shall be omitted if the lane starts or ends in a junction or has no link."
+    )
+    assert all(description and "`" not in description and "](" not in description for description in by_uid.values())
