@@ -1,7 +1,8 @@
 """The properties the fuzzers check, as plain functions (used by ``tests/fuzz`` and by ``python -m junctionart.fuzz``).
 
 Each raises :class:`AssertionError` with a readable message when the property fails and counts what it checked in
-:data:`STATS`.
+:data:`STATS`. Maps are judged by the checker's ``generator`` profile: every rule at its own severity, so what the
+generator guarantees (the JunctionArt paper's junction rules, the minimum radius, ...) stays an error.
 """
 
 from __future__ import annotations
@@ -23,6 +24,7 @@ from xodrcheck.geometry.planview import ReferenceLine
 from xodrcheck.reader import read
 
 __all__ = [
+    "GENERATOR",
     "HANG_SECONDS",
     "ROUND_TRIP_TOLERANCE",
     "STATS",
@@ -45,6 +47,8 @@ HANG_SECONDS = 60.0
 #: Largest distance (m) between the generator's curve and the reader's at the same s.
 ROUND_TRIP_TOLERANCE = 1e-9
 _ENGINE = ("X900", "X901")
+#: How the checker judges what the fuzzers give it (see the module docstring).
+GENERATOR = Config(profile="generator")
 
 
 def errors(report: Report) -> list[str]:
@@ -52,11 +56,12 @@ def errors(report: Report) -> list[str]:
 
 
 def checked(data: bytes, config: Config | None = None, tolerated: frozenset[str] = frozenset()) -> Report:
-    """Check ``data`` and assert the checker itself behaved: no exception, no rule crashed, bounded time. A crash
-    whose message contains one of ``tolerated`` (open known faults) is counted in ``STATS["tolerated"]`` instead."""
+    """Check ``data`` (by ``config``, the :data:`GENERATOR` profile unless given) and assert the checker itself
+    behaved: no exception, no rule crashed, bounded time. A crash whose message contains one of ``tolerated`` (open
+    known faults) is counted in ``STATS["tolerated"]`` instead."""
     started = time.monotonic()
     try:
-        report = check(data, config)
+        report = check(data, config or GENERATOR)
     except ReadError:  # the one clear error check() may raise (input cannot be opened at all)
         STATS["read-errors"] += 1
         raise
@@ -109,7 +114,7 @@ def generated_map_is_valid(params: ja.Params, seed: int, lines=None, tolerated: 
     data = ja.to_bytes(doc, params.version)
     STATS["maps"] += 1
     bound = min(Tolerances().min_radius, params.min_turn_radius)
-    report = checked(data, Config(tolerances=Tolerances(min_radius=bound)))
+    report = checked(data, Config(tolerances=Tolerances(min_radius=bound), profile="generator"))
     found = errors(report)
     left = [e for e in found if e.split(" ", 1)[0] not in tolerated]
     STATS["tolerated"] += len(found) - len(left)

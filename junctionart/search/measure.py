@@ -104,8 +104,10 @@ def _failed(note: str, errors: int = -1, digest: str = "") -> Evaluation:
 
 
 def evaluate(genome: list[float]) -> Evaluation:
-    """Decode, build, write, check, read back and measure one candidate (runs in a worker)."""
+    """Decode, build, write, check (the checker's ``generator`` profile: what junctionart guarantees), read back and
+    measure one candidate (runs in a worker)."""
     from xodrcheck.check import check
+    from xodrcheck.config import Config
     from xodrcheck.findings import Severity
     from xodrcheck.reader import read
 
@@ -120,7 +122,7 @@ def evaluate(genome: list[float]) -> Evaluation:
     except JunctionArtError as exc:
         return _failed(f"generator: {exc}")
     digest = hashlib.sha256(data).hexdigest()
-    errors = [f for f in check(data).findings if f.severity >= Severity.ERROR]
+    errors = [f for f in check(data, Config(profile="generator")).findings if f.severity >= Severity.ERROR]
     document = read(data).document
     if document is None or len(document.junctions) != 1:
         return _failed("the map read back has no single junction", len(errors), digest)

@@ -153,9 +153,11 @@ def build_map(spec: IntersectionSpec, seed: int) -> tuple[bytes, int] | None:
 def place(
     spec: IntersectionSpec, target: Callable[[dict[str, float]], bool], seed: int = 0, attempts: int = 8
 ) -> Placed | None:
-    """The first of seeds ``seed``, ``seed + 1``, ... (at most ``attempts``) whose map has no error-level finding and
-    a junction meeting ``target`` (module docstring); None when none does."""
+    """The first of seeds ``seed``, ``seed + 1``, ... (at most ``attempts``) whose map has no error-level finding
+    (the checker's ``generator`` profile: what junctionart guarantees) and a junction meeting ``target`` (module
+    docstring); None when none does."""
     from xodrcheck.check import check
+    from xodrcheck.config import Config
     from xodrcheck.findings import Severity
     from xodrcheck.reader import read
 
@@ -170,7 +172,7 @@ def place(
         if built is None:
             continue
         data = built[0]
-        if any(f.severity >= Severity.ERROR for f in check(data).findings):
+        if any(f.severity >= Severity.ERROR for f in check(data, Config(profile="generator")).findings):
             continue
         document = read(data).document
         if document is None:

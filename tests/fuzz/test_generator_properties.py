@@ -127,7 +127,7 @@ def test_min_turn_radius_regressions(entry):
 
     params = ja.Params.create(**{k: tuple(v) if isinstance(v, list) else v for k, v in entry["params"].items()})
     data = ja.to_bytes(ja.generate(params, entry["seed"]), params.version)
-    report = check(data, Config(tolerances=Tolerances(min_radius=params.min_turn_radius)))
+    report = check(data, Config(tolerances=Tolerances(min_radius=params.min_turn_radius), profile="generator"))
     tight = [f.message for f in report.findings if f.code in ("C001", "C002")]
     if entry.get("known_fault"):
         _known_fault(entry, still_there=bool(tight))

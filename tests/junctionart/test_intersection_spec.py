@@ -9,9 +9,13 @@ import pytest
 from junctionart.cli import main
 from junctionart.intersection import IntersectionSpec, LegSpec, build, from_dict, to_dict
 from xodrcheck.check import check
+from xodrcheck.config import Config
 from xodrcheck.findings import Severity
 from xodrcheck.metrics import junction_legs, map_metrics, smallest_leg_angle
 from xodrcheck.reader import read
+
+#: Generated maps are judged as junctionart guarantees them: every rule at its own severity.
+GENERATOR = Config(profile="generator")
 
 
 def _measure(path):
@@ -22,7 +26,7 @@ def _measure(path):
 
 
 def _errors(path) -> list[str]:
-    return [f"{f.code} {f.message}" for f in check(path).findings if f.severity >= Severity.ERROR]
+    return [f"{f.code} {f.message}" for f in check(path, GENERATOR).findings if f.severity >= Severity.ERROR]
 
 
 @pytest.mark.parametrize(

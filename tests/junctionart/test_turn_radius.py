@@ -37,7 +37,9 @@ LANES = {
 
 def _curvature_findings(params: Params, seed: int) -> list[str]:
     data = ja.to_bytes(ja.generate(params, seed), params.version)
-    report = check(data, Config(tolerances=Tolerances(min_radius=params.min_turn_radius)), select=CURVATURE)
+    report = check(
+        data, Config(tolerances=Tolerances(min_radius=params.min_turn_radius), profile="generator"), select=CURVATURE
+    )
     return [f"{f.code} {f.message}" for f in report.findings if f.code in CURVATURE]
 
 
