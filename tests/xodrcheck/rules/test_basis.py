@@ -180,3 +180,9 @@ def test_a_uid_the_file_predates_leaves_the_rule_s_basis():
     """K001 enforces a 1.9 rule; on a 1.7 file it keeps checking without claiming the UID: plausibility."""
     (f,) = [f for f in check(fixture("road-link-target-missing", "fail.xodr")).findings if f.code == "K001"]
     assert f.rule_uid is None and f.basis == Basis.PLAUSIBILITY
+
+
+def test_incomplete_basis_from_a_fixture():
+    """A check the budget made coarser says so; it is no judgement of the map, and no profile lowers it."""
+    (f,) = findings(fixture("sampling-capped", "fail.xodr"), "sampling-capped")
+    assert (f.rule_uid, f.basis, f.severity) == (None, Basis.INCOMPLETE, Severity.WARNING)
