@@ -20,7 +20,8 @@ COMMANDS = {
     "info": "Summarise OpenDRIVE files: version, roads, junctions, lanes, geometry, extent and reader findings.",
     "sample": "Sample every lane's centre line (and borders) at a fixed step, as CSV or GeoJSON.",
     "check": "Check OpenDRIVE files against the conformance rules (exit 1 when an error is found).",
-    "rules": "List the checker's rules (code, name, category, severity, summary), or show one rule in full.",
+    "rules": "List the checker's rules (code, name, category, severity, basis, summary), or show one rule in full "
+    "with the sentences of the standard it enforces.",
     "mesh": "Write the lane surfaces as a 3D mesh (.glb, .obj or .ply), coloured by lane type.",
     "view": "Write the map of a file as one self-contained HTML page (pan, zoom, hover a lane for its name and s).",
     "metrics": "Expressive-range metrics of every junction: FOV, maxCurvature, cornerDeviation, complexity, area, "
