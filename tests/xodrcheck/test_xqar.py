@@ -18,7 +18,7 @@ from lxml import etree
 from tests.interop.asam_harness import AsamUnavailable, asam_python
 from xodrcheck.check import check
 from xodrcheck.cli import main
-from xodrcheck.report import render
+from xodrcheck.report import basis, render
 from xodrcheck.report.xqar import conform_uid, issue_uid, own_uid
 from xodrcheck.rules import load_rules
 
@@ -110,3 +110,37 @@ def test_every_own_rule_uid_matches_the_frameworks_pattern():
     rules = load_rules().values()
     bad = [uid for r in rules if not pattern.match(uid := own_uid(r.name, r.category.value))]
     assert not bad, bad
+
+
+_BASES = """
+import json, sys
+from qc_baselib import Result
+result = Result()
+result.load_from_file(sys.argv[1])
+out = []
+for bundle in result.get_checker_bundle_results():
+    for checker in bundle.checkers:
+        meta = {m.key: m.value for m in checker.metadata}
+        for issue in checker.issues:
+            infos = result.get_domain_specific_info(bundle.name, checker.checker_id, issue.issue_id)
+            bases = [e.get("value") for info in infos if info.name == "xodrcheck" for e in info.content]
+            out.append([issue.rule_uid, bases, meta.get("basis", "")])
+print(json.dumps(out))
+"""
+
+
+def test_baselib_reads_each_issues_basis(corpus_dir, asam_python, tmp_path):
+    """Issue 26: the basis (an Annex F UID, or schema, reading, plausibility) reaches ASAM's library intact, in each
+    issue's domain-specific info and its checker's metadata."""
+    path = corpus_dir / MAPS[1]
+    report = check(path)
+    out = tmp_path / "basis.xqar"
+    out.write_text(render("xqar", [report]), encoding="utf-8")
+    done = subprocess.run([str(asam_python), "-c", _BASES, str(out)], capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stderr[-2000:]
+    loaded = json.loads(done.stdout)
+    expected = Counter((issue_uid(f), basis(f)) for f in report.findings)
+    assert Counter((uid, bases[0]) for uid, bases, _ in loaded) == expected
+    assert all(len(bases) == 1 and bases[0] in meta.split() for _, bases, meta in loaded)
+    kinds = {b.startswith("asam.net:") for _, b in expected}
+    assert kinds == {True, False}, "the map is chosen to have findings with and without a UID"

@@ -15,6 +15,11 @@ tolerances. A directory argument stands for the ``*.xodr`` files under it.
 ``--min-severity`` limits what the report shows (text and github: warnings and errors by default, with one line per
 code of the infos left out; json, sarif, junit, xqar: everything). Findings that fail the check are always shown; the
 exit code does not depend on what is shown.
+
+The text report starts with the verdict (``FAIL: 3 errors of 2 rules in 1 of 4 files; 12 warnings``, see
+:mod:`xodrcheck.report.verdict`) and ends with a tally per rule (``--statistics``; by default when more than 20
+findings are shown) and, over several files, the files that fail. The verdict is also printed on stderr, unless the
+text report itself is on the terminal; with ``-o FILE`` stderr says ``wrote FILE (N findings, SIZE)``.
 """
 
 from __future__ import annotations
@@ -28,8 +33,8 @@ from xodrcheck.atomic import OutputError
 from xodrcheck.cli._common import error, output, target_ok
 from xodrcheck.config import PROFILES, SEVERITY_NAMES, ConfigError, load_config
 from xodrcheck.findings import ReadError, Severity
-from xodrcheck.report import FORMATS, least_severity, render, shown, summary
-from xodrcheck.report.text import not_shown
+from xodrcheck.report import FORMATS, least_severity, render, shown
+from xodrcheck.report.verdict import count, verdict
 from xodrcheck.rules.internal import ENGINE_CODES
 
 NAME = "check"
@@ -72,6 +77,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--strict", action="store_true", default=None, help="warnings fail the check too")
     parser.add_argument("--format", choices=FORMATS, default="text", help="report format (default: text)")
+    parser.add_argument(
+        "--statistics",
+        action=argparse.BooleanOptionalAction,
+        default=None,
+        help="end the text report with the findings shown counted per rule (count, code, severity, name, basis); "
+        "by default when more than 20 findings are shown",
+    )
     parser.add_argument(
         "-o", "--output", metavar="FILE", help="write the report to FILE (atomically) instead of stdout"
     )
@@ -156,7 +168,7 @@ def run(args: argparse.Namespace) -> int:
     if not target_ok(args.output):
         return 2
     reports = []
-    unreadable = False  # a file that could not be checked: exit 2
+    unreadable: list[str] = []  # files that could not be checked: exit 2
     try:
         files = _expand(args.files)
     except ReadError as exc:
@@ -174,23 +186,30 @@ def run(args: argparse.Namespace) -> int:
             reports.append(outcome.report)
         else:
             error(outcome.error or f"cannot check {outcome.path}")
-            unreadable = True
-    if unreadable and args.output not in (None, "-"):
+            unreadable.append(outcome.path)
+    to_file = args.output not in (None, "-")
+    if unreadable and to_file:
         if reports:  # the others could be: say why their findings are not in the file either
             error(f"nothing written to {args.output}: a file could not be checked")
         return 2
-    visible, hidden = shown(reports, least_severity(config.min_severity, args.format))
+    least = least_severity(config.min_severity, args.format)
+    visible = shown(reports, least)[0]
+    if args.format == "text":  # shows its own verdict, what it left out and the failing files: it takes every report
+        text = render("text", reports, least=least, statistics=args.statistics, unreadable=unreadable)
+    else:
+        text = render(args.format, visible)
     try:
         with output(args.output) as stream:
-            stream.write(render(args.format, visible))
-            if args.format == "text":
-                stream.write(not_shown(hidden))
+            stream.write(text)
     except OutputError as exc:
         error(str(exc))
         return 2
-    if args.format == "text" and reports:
-        print(_summary_line(reports), file=sys.stderr)
-    return exit_code(reports, unreadable)
+    if to_file or args.format != "text" or not sys.stdout.isatty():  # else the terminal shows it on the first line
+        print(verdict(reports, len(unreadable)), file=sys.stderr)
+    if to_file:
+        written = count(sum(len(r.findings) for r in visible), "finding")
+        print(f"wrote {args.output} ({written}, {_size(Path(args.output))})", file=sys.stderr)
+    return exit_code(reports, bool(unreadable))
 
 
 def exit_code(reports: list, unreadable: bool = False) -> int:
@@ -210,13 +229,8 @@ def _fails_only_for_incompleteness(report) -> bool:
     return all(f.code in ENGINE_CODES for f in report.findings if f.severity >= worst)
 
 
-def _summary_line(reports: list) -> str:
-    s = summary(reports)
-    line = f"{s['files']} file(s) checked: {s['errors']} error(s), {s['warnings']} warning(s), {s['infos']} info"
-    if s["files_incomplete"]:
-        stopped = sum(1 for r in reports for f in r.findings if f.code in ENGINE_CODES)
-        line += (
-            f"; INCOMPLETE: {stopped} rule(s) did not run to their end in {s['files_incomplete']} file(s) "
-            "(X900/X901): the verdict is not known"
-        )
-    return line
+def _size(path: Path) -> str:
+    size = path.stat().st_size
+    if size < 1024:
+        return f"{size} B"
+    return f"{size / 1024:.1f} KiB" if size < 1024**2 else f"{size / 1024**2:.1f} MiB"

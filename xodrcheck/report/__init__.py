@@ -16,15 +16,26 @@ from __future__ import annotations
 import dataclasses
 import importlib
 from collections import Counter
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from typing import TYPE_CHECKING
 
-from xodrcheck.findings import Severity
+from xodrcheck.findings import Finding, Severity
 
 if TYPE_CHECKING:  # pragma: no cover
     from xodrcheck.check import Report
+    from xodrcheck.rules.registry import Rule
 
-__all__ = ["DEFAULT_MIN_SEVERITY", "FORMATS", "Hidden", "least_severity", "render", "shown", "summary"]
+__all__ = [
+    "DEFAULT_MIN_SEVERITY",
+    "FORMATS",
+    "Hidden",
+    "basis",
+    "least_severity",
+    "render",
+    "rule_bases",
+    "shown",
+    "summary",
+]
 
 
 FORMATS = ("text", "json", "junit", "sarif", "github", "xqar", "html")
@@ -58,18 +69,35 @@ def shown(reports: Sequence[Report], least: Severity) -> tuple[list[Report], Hid
     return out, {key: (findings[key], files[key]) for key in sorted(findings)}
 
 
-def render(name: str, reports: Sequence[Report]) -> str:
-    """Render reports in the format ``name`` (one of :data:`FORMATS`)."""
+def render(name: str, reports: Sequence[Report], **options: object) -> str:
+    """Render reports in the format ``name`` (one of :data:`FORMATS`); ``options`` go to that format's ``render``
+    (``text`` takes ``least``, ``statistics`` and ``unreadable``)."""
     if name not in FORMATS:
         raise ValueError(f"unknown format {name!r}; choose one of {', '.join(FORMATS)}")
     module = importlib.import_module(f"{__name__}.{name}")
-    return module.render(reports)
+    return module.render(reports, **options)
+
+
+def basis(f: Finding) -> str:
+    """What a finding rests on: the Annex F UID it enforces, or ``schema``, ``reading``, ``plausibility``."""
+    return getattr(f, "basis", "") or f.rule_uid or "plausibility"
+
+
+def rule_bases(rule: Rule | None, findings: Iterable[Finding] = ()) -> list[str]:
+    """What a rule's findings rest on: the UIDs it enforces, then what its findings without one rest on (declared
+    by the rule), then any other basis of ``findings``; each once, in that order."""
+    out = list(rule.uids) if rule is not None else []
+    declared = getattr(rule, "basis", None)
+    if declared:
+        out.append(declared)
+    for f in findings:
+        if basis(f) not in out:
+            out.append(basis(f))
+    return out
 
 
 def summary(reports: Sequence[Report]) -> dict:
     """Counts over all reports: files, findings by severity and by code, and whether all are ok."""
-    from xodrcheck.findings import Severity
-
     by_code: dict[str, int] = {}
     for report in reports:
         for f in report.findings:

@@ -1,7 +1,8 @@
-"""GitHub Actions workflow commands: ``::error file=PATH,line=N,title=CODE name::message``.
+"""GitHub Actions workflow commands: ``::error file=PATH,line=N,title=CODE name::message [place] (basis)``.
 
 Errors become ``::error``, warnings ``::warning``, infos ``::notice``; GitHub shows them as annotations on the
-pull request. Values are escaped as the workflow-command syntax requires.
+pull request. The message ends with the place and the basis, as a text line does. Values are escaped as the
+workflow-command syntax requires.
 """
 
 from __future__ import annotations
@@ -9,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from xodrcheck.findings import Finding, Severity
+from xodrcheck.report import basis
 from xodrcheck.report.text import where
 
 COMMANDS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
@@ -27,7 +29,7 @@ def command(path: str | None, f: Finding) -> str:
     if f.line:
         props.append(f"line={f.line}")
     props.append(f"title={_property(f'{f.code} {f.name}')}")
-    return f"::{COMMANDS[f.severity]} {','.join(props)}::{_data(f.message + where(f))}"
+    return f"::{COMMANDS[f.severity]} {','.join(props)}::{_data(f'{f.message}{where(f)} ({basis(f)})')}"
 
 
 def render(reports: Sequence) -> str:

@@ -1,7 +1,9 @@
 """JUnit XML: one ``<testsuite>`` per file, one ``<testcase>`` per rule applied to it.
 
 A rule's test case fails (``<failure>``) when it gave a finding that fails the check (an error; a warning too in
-strict mode); its other findings are listed in the case's ``<system-out>``. CI systems show the result as a test view.
+strict mode); its other findings are listed in the case's ``<system-out>``, one text line each (ending with its basis).
+A case with findings has the property ``basis``: what they rest on (Annex F UIDs, ``schema``, ``reading``,
+``plausibility``). CI systems show the result as a test view.
 """
 
 from __future__ import annotations
@@ -11,6 +13,7 @@ from collections.abc import Sequence
 from lxml import etree
 
 from xodrcheck.findings import Severity
+from xodrcheck.report import basis
 from xodrcheck.report.text import line
 from xodrcheck.rules import load_rules
 
@@ -32,6 +35,9 @@ def render(reports: Sequence) -> str:
             name = rule.name if rule else by_code[code][0].name
             case = etree.SubElement(suite, "testcase", classname=report.path or "-", name=f"{code} {name}")
             found = by_code.get(code, [])
+            if found:
+                properties = etree.SubElement(case, "properties")
+                etree.SubElement(properties, "property", name="basis", value=" ".join(dict.fromkeys(map(basis, found))))
             failing = [f for f in found if f.severity >= worst]
             if failing:
                 suite_failures += 1

@@ -10,7 +10,11 @@ The layout is the framework's report format (``CheckerResults`` > ``CheckerBundl
 * one issue per finding: level 1 error, 2 warning, 3 information; ``ruleUID`` the Annex F UID the finding enforces,
   else the framework's own UID where xodrcheck's rule is the same check as ASAM's (``xml.valid_schema``, ...), else
   a UID of xodrcheck's own (``xodrcheck.local:xodr:1.4.0:<category>.<rule_name>``); locations: the file row, the
-  XPath of the element that starts on that row, and the inertial x, y, z where the finding has a place.
+  XPath of the element that starts on that row, and the inertial x, y, z where the finding has a place;
+* the basis, in the two places the format leaves to a checker: each issue's ``DomainSpecificInfo name="xodrcheck"``
+  holds ``<Basis value="..."/>`` (the Annex F UID the finding enforces, or ``schema``, ``reading``,
+  ``plausibility``: the framework's ``ruleUID`` cannot say that a check is the checker's own judgement), and each
+  checker with issues a ``Metadata key="basis"`` listing what they rest on.
 
 Two UIDs of the annex are not in the form the framework's schema accepts (``1.x.0`` is no version, and
 ``s-value_sum`` has a hyphen); they are written as ``1.9.0`` and ``s_value_sum``.
@@ -30,6 +34,7 @@ from pathlib import Path
 from lxml import etree
 
 from xodrcheck.findings import Finding, Severity
+from xodrcheck.report import basis
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.registry import Rule
 
@@ -109,6 +114,8 @@ def _issue(checker: etree._Element, f: Finding, issue_id: int, xpaths: dict[int,
         locations = etree.SubElement(issue, "Locations", description=f.message)
         for tag, attributes in where:
             etree.SubElement(locations, tag, attributes)
+    info = etree.SubElement(issue, "DomainSpecificInfo", name="xodrcheck")
+    etree.SubElement(info, "Basis", value=basis(f))
 
 
 def _checker(bundle: etree._Element, code: str, rule: Rule | None, found: list[Finding]) -> etree._Element:
@@ -132,6 +139,13 @@ def _checker(bundle: etree._Element, code: str, rule: Rule | None, found: list[F
     for uid in addressed:
         etree.SubElement(checker, "AddressedRule", ruleUID=uid)
     return checker
+
+
+def _metadata(checker: etree._Element, found: list[Finding]) -> None:
+    """What the issues of a checker with issues rest on, after them (as the framework's library writes it)."""
+    if found:
+        value = " ".join(dict.fromkeys(map(basis, found)))
+        etree.SubElement(checker, "Metadata", key="basis", value=value, description="what the issues rest on")
 
 
 def document(reports: Sequence) -> etree._Element:
@@ -164,6 +178,7 @@ def document(reports: Sequence) -> etree._Element:
             for f in found:
                 _issue(checker, f, issue_id, xpaths)
                 issue_id += 1
+            _metadata(checker, found)
     return root
 
 

@@ -31,15 +31,18 @@ def _no_project_config(tmp_path, monkeypatch):
 
 
 def test_exit_0_on_a_clean_map(capsys):
+    """The report of a clean map is its verdict alone (issue 26: it was empty); stderr repeats it when stdout is not
+    the terminal."""
     code, out, err = run(capsys, CLEAN)
-    assert code == 0 and out == ""
-    assert "0 error(s)" in err
+    assert code == 0 and out == "PASS: 0 errors\n"
+    assert err == "PASS: 0 errors\n"
 
 
 def test_exit_1_on_an_error_and_one_line_per_finding(capsys):
     code, out, err = run(capsys, BROKEN)
     assert code == 1
-    lines = out.splitlines()
+    verdict, *lines = out.splitlines()
+    assert verdict == "FAIL: 2 errors of 2 rules"
     assert [line.split()[1] for line in lines] == ["R010", "K001"]  # by line
     assert all(line.startswith(f"{BROKEN}:") for line in lines)
     assert "Traceback" not in err
@@ -130,9 +133,10 @@ def test_output_file_is_written_whole_and_atomically(capsys, tmp_path):
     target = tmp_path / "out" / "report.json"
     target.parent.mkdir()
     target.write_text("old content", encoding="utf-8")
-    code, out, _ = run(capsys, BROKEN, "--format", "json", "-o", target)
+    code, out, err = run(capsys, BROKEN, "--format", "json", "-o", target)
     assert code == 1 and out == ""
     assert json.loads(target.read_text(encoding="utf-8"))["summary"]["errors"] == 1
+    assert err.splitlines()[-1].startswith(f"wrote {target} (2 findings, ")
     assert sorted(p.name for p in target.parent.iterdir()) == ["report.json"]  # no temporary file left
 
 
@@ -199,7 +203,8 @@ def test_text_and_github_hide_infos_by_default_with_one_line_per_code(capsys):
     one line per code what it left out; github emits no notice; machine formats keep everything."""
     code, out, _ = run(capsys, INFOS)
     hidden = [line for line in out.splitlines() if line.startswith("(not shown)")]
-    assert code == 0 and hidden and len(hidden) == len(out.splitlines())
+    assert code == 0 and hidden and len(hidden) == len(out.splitlines()) - 1  # all but the verdict
+    assert out.startswith("PASS: 0 errors; ") and " info\n" in out.splitlines(keepends=True)[0]
     assert hidden[0].startswith("(not shown) G901 redundant-record: ") and "--min-severity info lists them" in hidden[0]
     assert "::notice" not in run(capsys, INFOS, "--format", "github")[1]
     shown_all = run(capsys, INFOS, "--min-severity", "info")[1]
@@ -210,7 +215,7 @@ def test_text_and_github_hide_infos_by_default_with_one_line_per_code(capsys):
 
 def test_min_severity_error_keeps_what_fails_and_the_exit_code(capsys):
     code, out, _ = run(capsys, WARNING_ONLY, "--min-severity", "error")
-    assert code == 0 and out.startswith("(not shown) G012 short-lane-section: 1 warning finding(s)")
+    assert code == 0 and out.splitlines()[1].startswith("(not shown) G012 short-lane-section: 1 warning finding(s)")
     code, out, _ = run(capsys, WARNING_ONLY, "--min-severity", "error", "--strict")
     assert code == 1 and " G012 warning " in out  # a finding that fails the check is always shown
     doc = json.loads(run(capsys, BROKEN, "--format", "json", "--min-severity", "error")[1])
