@@ -3,10 +3,15 @@ and the findings list, a summary on top and an index when there are several file
 
 The page's DOM contract (tools and tests rely on it): each finding is an element ``.xc-row`` with ``data-code``,
 ``data-severity``, ``data-category``, ``data-road``, ``data-lane``, ``data-section-s``, ``data-s``, ``data-x``,
-``data-y`` and ``data-line`` (empty where the finding has no such value; any further field of
-:class:`~xodrcheck.findings.Finding` becomes a ``data-*`` attribute too); each map is an element ``.xc-map`` whose
-``data-center-x``/``data-center-y`` give the world coordinates of its view centre, updated on every pan and zoom, and
-``data-ready="true"`` once it has been drawn.
+``data-y``, ``data-line``, ``data-rule-uid`` and ``data-basis`` (empty where the finding has no such value; any
+further field of :class:`~xodrcheck.findings.Finding` becomes a ``data-*`` attribute too); each map is an element
+``.xc-map`` whose ``data-center-x``/``data-center-y`` give the world coordinates of its view centre, updated on every
+pan and zoom, and ``data-ready="true"`` once it has been drawn. The verdict of a report is an element ``.xc-verdict``
+with ``data-verdict`` PASS, FAIL or INCOMPLETE (one on top for the whole report, one per file).
+
+Info markers are off on the map by default (a CARLA town has over a thousand: they hid the errors): the map's
+``info markers`` box (``[data-tool=info-markers]``) draws them; the list shows infos unless their severity box is
+unticked, and an info chosen in the list is drawn on the map either way.
 """
 
 from __future__ import annotations
@@ -22,11 +27,15 @@ from html import escape
 from importlib import resources
 
 from xodrcheck.findings import Finding, Severity
+from xodrcheck.report import basis
 
 #: Script files, in the order they run (one inline script).
 SCRIPTS = ("decode.js", "map.js", "render.js", "report.js")
 _SEVERITIES = (Severity.ERROR, Severity.WARNING, Severity.INFO)
-_KNOWN = ("code", "name", "category", "severity", "message", "road", "lane", "section_s", "s", "x", "y", "z", "line")
+_KNOWN = (
+    *("code", "name", "category", "severity", "message", "road", "lane", "section_s", "s", "x", "y", "z", "line"),
+    *("rule_uid", "basis"),
+)
 
 
 @dataclass(frozen=True)
@@ -39,6 +48,8 @@ class FilePage:
     map_data: dict | None
     #: Why there is no map, or what it leaves out.
     note: str | None = None
+    #: The file's verdict line (:func:`xodrcheck.report.verdict.verdict`); ``None`` for a map alone.
+    verdict: str | None = None
 
 
 def tool_version() -> str:
@@ -82,8 +93,20 @@ def _categories(findings: Sequence[Finding]) -> str:
     return "".join(f'<span class="xc-chip">{escape(c)} {n}</span>' for c, n in sorted(by.items()))
 
 
-def _summary(files: Sequence[FilePage], title: str) -> str:
+def _verdict(line: str | None, tag: str = "span") -> str:
+    """The verdict line with its word as a coloured chip: ``FAIL`` and the reason."""
+    if line is None:
+        return ""
+    word, _, why = line.partition(": ")
+    return (
+        f'<{tag} class="xc-verdict" data-verdict="{_attr(word)}"><span class="xc-chip {word.lower()}">{escape(word)}'
+        f"</span> {escape(why)}</{tag}>"
+    )
+
+
+def _summary(files: Sequence[FilePage], title: str, verdict: str | None) -> str:
     parts = [f"<h1>{escape(title)}</h1>", f'<span class="xc-tool-version">xodrcheck {escape(tool_version())}</span>']
+    parts.append(_verdict(verdict))
     checked = [f for f in files if f.findings is not None]
     if checked:
         every = [x for f in checked for x in f.findings or ()]
@@ -100,14 +123,17 @@ def _index(files: Sequence[FilePage]) -> str:
     for k, f in enumerate(files):
         by = Counter(x.severity for x in f.findings or ())
         cells = "".join(f'<td class="n">{by[sev]}</td>' for sev in _SEVERITIES)
+        word = (f.verdict or "").partition(":")[0]
+        chip = f'<span class="xc-chip {word.lower()}">{escape(word)}</span>' if word else ""
         rows.append(
-            f'<tr><td><a href="#file-{k}">{escape(f.path or "(bytes)")}</a></td><td>{escape(f.version or "?")}</td>'
-            f"{cells}</tr>"
+            f'<tr><td>{chip}</td><td><a href="#file-{k}">{escape(f.path or "(bytes)")}</a></td>'
+            f"<td>{escape(f.version or '?')}</td>{cells}</tr>"
         )
     head = "".join(f"<th>{sev}</th>" for sev in ("errors", "warnings", "info"))
     return (
         '<nav class="xc-index" id="xc-index" aria-label="files"><table>'
-        f"<thead><tr><th>file</th><th>OpenDRIVE</th>{head}</tr></thead><tbody>{''.join(rows)}</tbody></table></nav>"
+        f"<thead><tr><th>verdict</th><th>file</th><th>OpenDRIVE</th>{head}</tr></thead><tbody>{''.join(rows)}</tbody>"
+        "</table></nav>"
     )
 
 
@@ -156,6 +182,8 @@ def _row(i: int, f: Finding) -> str:
         "y": f.y if f.x is not None else None,
         "line": f.line or None,
         "z": getattr(f, "z", None),
+        "rule-uid": f.rule_uid,
+        "basis": basis(f),
     }
     extra = _extra(f)
     attrs.update({re.sub(r"[^a-z0-9]+", "-", k.lower()): v for k, v in extra.items()})
@@ -164,8 +192,27 @@ def _row(i: int, f: Finding) -> str:
         f'<li class="xc-row" tabindex="0" {data}>'
         f'<span class="xc-code">{escape(f.code)}</span> <span class="xc-name">{escape(f.name)}</span>'
         f'<button class="xc-doc" type="button" data-code="{_attr(f.code)}" title="rule documentation">?</button>'
+        f"{_basis_tag(basis(f))}"
         f'<div class="xc-msg">{escape(f.message)}</div><div class="xc-where">{_where(f, extra)}</div></li>'
     )
+
+
+def _basis_tag(text: str) -> str:
+    """The basis as a small tag: an Annex F UID by its rule name (the whole UID in the tooltip), else its word."""
+    uid = text.count(":") == 3
+    short = text.rsplit(":", 1)[-1] if uid else text
+    kind = "annex-f" if uid else text
+    title = f"Annex F rule {text}" if uid else _BASIS_WORDS.get(text, text)
+    return f'<span class="xc-basis {_attr(kind)}" title="{_attr(title)}">{escape(short)}</span>'
+
+
+#: What a basis that is not an Annex F UID means, for the tag's tooltip.
+_BASIS_WORDS = {
+    "schema": "the XSD of the file's OpenDRIVE version",
+    "reading": "the file cannot be read as OpenDRIVE as written",
+    "plausibility": "the checker's own judgement: the standard does not state it",
+    "incomplete": "the check did not run to its end",
+}
 
 
 def _filters(findings: Sequence[Finding]) -> str:
@@ -197,15 +244,27 @@ def _map(f: FilePage) -> str:
         '<div class="xc-tools"><button type="button" data-tool="zoom-in" title="zoom in">+</button>'
         '<button type="button" data-tool="zoom-out" title="zoom out">&minus;</button>'
         '<button type="button" data-tool="fit" title="whole map">fit</button>'
-        '<label><input type="checkbox" data-tool="reference"> reference lines</label></div>'
+        '<label><input type="checkbox" data-tool="reference"> reference lines</label>'
+        f"{_info_box(f.findings or ())}</div>"
         '<div class="xc-legend"></div><div class="xc-tip" hidden></div>'
         f'<script type="application/json" class="xc-map-data">{json_script(f.map_data)}</script></div>'
     )
 
 
+def _info_box(findings: Sequence[Finding]) -> str:
+    """The box that draws the info markers, off by default; none when no info has a place on the map."""
+    placed = sum(1 for x in findings if x.severity is Severity.INFO and x.x is not None and x.y is not None)
+    if not placed:
+        return ""
+    title = "info markers are off by default so that errors and warnings stand out; the list shows every info"
+    return f'<label title="{title}"><input type="checkbox" data-tool="info-markers"> info markers ({placed})</label>'
+
+
 def _file_section(k: int, f: FilePage, indexed: bool = False) -> str:
+    """One file's heading, map and list; its verdict where there are several (one file's is the page's)."""
     meta = [f"OpenDRIVE {escape(f.version or '?')}"]
     if f.findings is not None:
+        meta = [_verdict(f.verdict), *meta] if f.verdict and indexed else meta
         meta += [part for part in (_counts(f.findings), _categories(f.findings)) if part]
     if f.note and f.map_data is not None:
         meta.append(f"<span>{escape(f.note)}</span>")
@@ -225,26 +284,37 @@ def _file_section(k: int, f: FilePage, indexed: bool = False) -> str:
 
 
 def _docs(files: Sequence[FilePage]) -> dict[str, dict[str, str]]:
-    """The documentation of every rule with a finding on the page."""
+    """The documentation of every rule with a finding on the page, rendered as HTML, with what its findings rest
+    on."""
+    from xodrcheck.report import rule_bases
     from xodrcheck.rules import load_rules
+    from xodrcheck.rules.docformat import html
 
     rules = load_rules()
-    codes = sorted({x.code for f in files for x in f.findings or ()})
+    found: dict[str, list[Finding]] = {}
+    for x in (x for f in files for x in f.findings or ()):
+        found.setdefault(x.code, []).append(x)
     return {
-        c: {"name": r.name, "category": str(r.category), "severity": str(r.severity), "doc": r.doc}
-        for c in codes
+        c: {
+            "name": r.name,
+            "category": str(r.category),
+            "severity": str(r.severity),
+            "basis": ", ".join(rule_bases(r, found[c])),
+            "html": html(r.doc),
+        }
+        for c in sorted(found)
         if (r := rules.get(c)) is not None
     }
 
 
-def render_page(files: Sequence[FilePage], title: str) -> str:
-    """The whole page (see the module docstring)."""
+def render_page(files: Sequence[FilePage], title: str, verdict: str | None = None) -> str:
+    """The whole page (see the module docstring); ``verdict`` is the report's verdict line, shown on top."""
     script = "\n".join(asset(name) for name in SCRIPTS)
     parts = {
         "version": escape(tool_version()),
         "title": escape(title),
         "css": asset("style.css"),
-        "summary": _summary(files, title),
+        "summary": _summary(files, title, verdict),
         "index": _index(files),
         "files": "\n".join(_file_section(k, f, len(files) > 1) for k, f in enumerate(files)),
         "docs": json_script(_docs(files)),

@@ -14,6 +14,7 @@ import pytest
 from xodrcheck.check import check
 from xodrcheck.cli import main
 from xodrcheck.report import render
+from xodrcheck.report.verdict import verdict
 
 pytestmark = [pytest.mark.corpus, pytest.mark.slow]
 
@@ -231,4 +232,56 @@ def test_several_files_give_one_page_with_an_index(page, corpus_dir, tmp_path, a
     page.screenshot(path=str(artefacts / "report_two_files.png"), full_page=True)
     page.locator("#file-1 .xc-back").click()
     assert page.evaluate("document.getElementById('xc-index').getBoundingClientRect().top") < 5
+    assert_clean(opened)
+
+
+INFO_PIXELS = """() => { const c = document.querySelector('.xc-map canvas:not(.xc-base)');
+  const d = c.getContext('2d').getImageData(0, 0, c.width, c.height).data; let n = 0;
+  for (let i = 0; i < d.length; i += 4)  // the info colour, #2e86de
+    if (Math.abs(d[i] - 0x2e) < 12 && Math.abs(d[i + 1] - 0x86) < 12 && Math.abs(d[i + 2] - 0xde) < 12) n++;
+  return n; }"""
+
+
+def test_town03_report_says_fail_renders_help_and_keeps_info_markers_off(page, corpus_dir, tmp_path, artefacts):
+    """Issue 26 on CARLA's Town03: the verdict on top, the basis on each row, the rule help rendered (no ``::`` or
+    double backquotes), and its info markers off the map until asked for (they buried the junctions), while the list
+    still shows the infos and a chosen info is drawn."""
+    report = check(corpus_dir / "carla-towns/OpenDrive/Town03.xodr")
+    html = tmp_path / "town03.html"
+    html.write_text(render("html", [report]), encoding="utf-8")
+    opened = open_page(page, html)
+    top = page.locator(".xc-top .xc-verdict")
+    assert top.get_attribute("data-verdict") == ("PASS" if report.ok else "FAIL")
+    assert " ".join(top.inner_text().split()) == verdict([report]).replace(": ", " ", 1)
+    assert page.locator(".xc-row .xc-basis").count() == len(report.findings)
+
+    infos = [f for f in report.findings if str(f.severity) == "info" and f.x is not None]
+    assert len(infos) > 100, "Town03 is chosen for its many info markers"
+    drawn = "XC.views[0].map.markers.filter(m => m.severity === 'info' && !m.muted && !m.hidden).length"
+    assert page.evaluate(drawn) == 0
+    assert page.evaluate(INFO_PIXELS) == 0
+    assert len(opened.row_data(visible=True)) == len(report.findings)  # the list shows them all
+    page.screenshot(path=str(artefacts / "report_town03.png"))
+
+    page.check("input[data-tool=info-markers]")
+    page.wait_for_timeout(200)
+    assert page.evaluate(drawn) == len(infos) and page.evaluate(INFO_PIXELS) > 1000
+    page.screenshot(path=str(artefacts / "report_town03_infos.png"))
+    page.uncheck("input[data-tool=info-markers]")
+    page.wait_for_timeout(200)
+    assert page.evaluate(INFO_PIXELS) == 0
+
+    row = page.locator(".xc-row[data-severity=info]:not([data-x=''])").first
+    row.scroll_into_view_if_needed()
+    row.locator(".xc-msg").click()
+    page.wait_for_timeout(200)
+    assert page.evaluate(INFO_PIXELS) > 20  # the chosen info is drawn though info markers are off
+
+    page.locator(".xc-row .xc-doc").first.click()
+    text = page.locator("#xc-doc .xc-doc-text")
+    assert text.locator("p").count() >= 2 and text.locator("pre").count() >= 1 and text.locator("code").count() >= 1
+    shown = text.inner_text()
+    assert "``" not in shown and "::" not in shown
+    assert "basis: " in page.locator("#xc-doc .xc-doc-meta").inner_text()
+    page.screenshot(path=str(artefacts / "report_town03_help.png"))
     assert_clean(opened)

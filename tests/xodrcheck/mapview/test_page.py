@@ -86,16 +86,35 @@ def test_page_is_self_contained_and_rows_follow_the_contract():
     assert "<b>" not in page_text.split("<body", 1)[1].split("<script", 1)[0]  # the message is escaped
 
 
-def test_finding_fields_beyond_the_known_ones_become_data_attributes():
-    """A field the page does not know by name (rule_uid, added to Finding after the page) reaches the row as a data-*
-    attribute and in the row's text, without changing the page code."""
-    finding = odd_finding(road="1", rule_uid="asam.net:xodr:1.7.0:road.lane.link.zero_width_at_start", z=2.5, x=1, y=2)
+def test_rule_uid_and_basis_are_data_attributes_and_a_tag(monkeypatch):
+    """Issue 26: each row shows what the finding rests on, a UID by its rule name (the whole UID in the tooltip)."""
+    uid = "asam.net:xodr:1.7.0:road.lane.link.zero_width_at_start"
+    finding = odd_finding(road="1", rule_uid=uid, z=2.5, x=1, y=2)
+    plain = odd_finding(road="1")
+    page_text = render_page([FilePage("a.xodr", "1.7", (finding, plain), None, None)], "t")
+    first, second = rows(parse(page_text))
+    assert first["data-rule-uid"] == uid and first["data-basis"] == uid
+    assert second["data-rule-uid"] == "" and second["data-basis"] == "plausibility"
+    tags = [a for t, a in parse(page_text).tags if "xc-basis" in (a.get("class") or "")]
+    assert [(a["class"], a["title"]) for a in tags] == [
+        ("xc-basis annex-f", f"Annex F rule {uid}"),
+        ("xc-basis plausibility", "the checker's own judgement: the standard does not state it"),
+    ]
+    assert ">road.lane.link.zero_width_at_start</span>" in page_text and ">plausibility</span>" in page_text
+    assert "x 1.00, y 2.00, z 2.50" in page_text
+
+
+def test_finding_fields_beyond_the_known_ones_become_data_attributes(monkeypatch):
+    """A field the page does not know by name (as rule_uid was, added to Finding after the page) reaches the row as a
+    data-* attribute and in the row's text, without changing the page code."""
+    from xodrcheck.mapview import page
+
+    monkeypatch.setattr(page, "_extra_fields", lambda: ("rule_uid",))
+    finding = odd_finding(road="1", rule_uid="asam.net:xodr:1.7.0:road.lane.link.zero_width_at_start")
     page_text = render_page([FilePage("a.xodr", "1.7", (finding,), None, None)], "t")
     (row,) = rows(parse(page_text))
     assert row["data-rule-uid"] == "asam.net:xodr:1.7.0:road.lane.link.zero_width_at_start"
-    assert row["data-z"] == "2.5"
     assert "rule uid asam.net:xodr:1.7.0:road.lane.link.zero_width_at_start" in page_text
-    assert "x 1.00, y 2.00, z 2.50" in page_text
 
 
 def test_rows_list_the_worst_first_and_docs_cover_every_code():
@@ -110,7 +129,12 @@ def test_rows_list_the_worst_first_and_docs_cover_every_code():
         assert ranks == sorted(ranks)
     docs = json.loads(next(s for (t, a), s in zip(_scripts(page), page.scripts) if a.get("id") == "xc-rule-docs"))
     assert set(docs) == {r["data-code"] for r in found}
-    assert all(d["doc"].strip() for d in docs.values())
+    for doc in docs.values():  # rendered (issue 26: the dialog showed ``literal`` and ``::``), with the basis
+        prose = re.sub(r"<(pre|code)>.*?</\1>", "", doc["html"], flags=re.DOTALL)
+        assert prose.startswith("<p>") and "``" not in prose and "::" not in prose
+        assert doc["basis"]
+    assert "<pre>&lt;" in docs["R010"]["html"] and "<code>" in docs["R010"]["html"]
+    assert docs["R010"]["basis"].startswith("asam.net:xodr:")
     sections = [a for t, a in page.tags if t == "section"]
     assert [a["id"] for a in sections] == ["file-0", "file-1"]
     links = [a["href"] for t, a in page.tags if t == "a"]
@@ -172,3 +196,38 @@ def test_view_to_an_unwritable_place_exits_2(tmp_path: Path, capsys):
 def test_page_mentions_the_tool_version():
     page_text = render_page([FilePage("a.xodr", "1.7", (), None, None)], "t")
     assert re.search(r'<meta name="generator" content="xodrcheck [^"]+">', page_text)
+
+
+def verdicts(page: Elements) -> list[tuple[str | None, str]]:
+    return [(a.get("data-verdict"), t) for t, a in page.tags if "xc-verdict" in (a.get("class") or "").split()]
+
+
+def test_the_page_says_pass_or_fail_on_top_and_per_file():
+    one = parse(render("html", [check(BROKEN)]))
+    assert verdicts(one) == [("FAIL", "span")]  # one file: the page's verdict is the file's
+    text = render("html", [check(BROKEN), check(CLEAN)])
+    assert verdicts(parse(text)) == [("FAIL", "span"), ("FAIL", "span"), ("PASS", "span")]
+    assert "FAIL</span> 2 errors of 2 rules in 1 of 2 files</span>" in text
+    index = text.split('id="xc-index"', 1)[1].split("</nav>", 1)[0]
+    assert index.count('class="xc-chip fail"') == 1 and index.count('class="xc-chip pass"') == 1
+    assert verdicts(parse(render_page([FilePage("a.xodr", "1.7", None, None, None)], "t"))) == []  # a map alone
+
+
+def test_info_markers_are_off_on_the_map_by_default():
+    """Issue 26: a CARLA town's 1,534 info markers buried its junctions. The map's box draws them, unticked; the list's
+    info box stays ticked."""
+    infos = tuple(
+        Finding("G901", "redundant-record", Category.GEOMETRY, Severity.INFO, "m", road="1", x=float(k), y=0.0)
+        for k in range(3)
+    )
+    unplaced = Finding("G901", "redundant-record", Category.GEOMETRY, Severity.INFO, "m")
+    data = {"bounds": [0, 0, 1, 1]}
+    page = parse(render_page([FilePage("a.xodr", "1.7", (*infos, unplaced), data, None)], "t"))
+    (box,) = [a for t, a in page.tags if a.get("data-tool") == "info-markers"]
+    assert box["type"] == "checkbox" and "checked" not in box
+    assert "info markers (3)</label>" in render_page([FilePage("a.xodr", "1.7", (*infos, unplaced), data, None)], "t")
+    (listed,) = [a for t, a in page.tags if a.get("data-filter") == "severity" and a.get("value") == "info"]
+    assert "checked" in listed
+    errors = (odd_finding(x=1.0, y=2.0),)
+    page = parse(render_page([FilePage("a.xodr", "1.7", errors, data, None)], "t"))
+    assert not [a for t, a in page.tags if a.get("data-tool") == "info-markers"]  # no info on the map: no box

@@ -202,7 +202,7 @@ P.markerAt = function (px, py) {
   var best = -1, bestD = 81;
   for (var i = 0; i < this.markers.length; i++) {
     var m = this.markers[i];
-    if (m.hidden) continue;
+    if (m.hidden || (m.muted && m.index !== this.selected)) continue;
     var p = this.toScreen(m.x - this.origin[0], m.y - this.origin[1]), d = (p[0] - px) * (p[0] - px) + (p[1] - py) * (p[1] - py);
     if (d <= bestD) { bestD = d; best = i; }
   }

@@ -238,7 +238,8 @@ P.renderMarkers = function () {  // one path per severity: thousands of markers 
     if (m.hidden) return;
     var p = self.toScreen(m.x - self.origin[0], m.y - self.origin[1]);
     if (p[0] < -10 || p[1] < -10 || p[0] > self.width + 10 || p[1] > self.height + 10) return;
-    if (m.index === self.selected) { chosen = { p: p, m: m }; return; }
+    if (m.index === self.selected) { chosen = { p: p, m: m }; return; }  // drawn even when muted: it was chosen
+    if (m.muted) return;
     var path = paths[m.severity] || (paths[m.severity] = new Path2D());
     var r = m.severity === "info" ? 4 : 5;
     path.moveTo(p[0] + r, p[1]);

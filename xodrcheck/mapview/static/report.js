@@ -30,9 +30,11 @@ F.startMap = function () {
   this.map = new XC.MapView(this.mapBox, data, {
     onMarker: function (marker) { self.choose(marker.index, true); }
   });
+  var infoBox = this.root.querySelector("[data-tool=info-markers]"), showInfo = !!(infoBox && infoBox.checked);
   this.map.setMarkers(this.findings.filter(function (f) { return f.x !== null && f.y !== null; }).map(function (f) {
     var row = self.rows[f.index];
     return { index: f.index, x: f.x, y: f.y, severity: f.severity, hidden: row.hidden,
+             muted: f.severity === "info" && !showInfo,  // off the map until "info markers" is ticked
              label: f.code + " " + row.querySelector(".xc-name").textContent };
   }));
   this.legend(data);
@@ -64,6 +66,11 @@ F.bindTools = function () {
   on("fit", function () { map.fit(); });
   var ref = root.querySelector("[data-tool=reference]");
   if (ref) ref.addEventListener("change", function () { map.showReference = ref.checked; map.request("full"); });
+  var info = root.querySelector("[data-tool=info-markers]");
+  if (info) info.addEventListener("change", function () {
+    map.markers.forEach(function (m) { if (m.severity === "info") m.muted = !info.checked; });
+    map.request("overlay");
+  });
 };
 
 F.bindFilters = function () {
@@ -132,8 +139,11 @@ XC.showDoc = function (code) {
   var docs = XC.ruleDocs || {}, rule = docs[code], dialog = document.getElementById("xc-doc");
   if (!dialog) return;
   dialog.querySelector(".xc-doc-title").textContent = rule ? code + " " + rule.name : code;
-  dialog.querySelector(".xc-doc-meta").textContent = rule ? rule.category + " · " + rule.severity : "";
-  dialog.querySelector(".xc-doc-text").textContent = rule ? rule.doc : "No documentation for this code.";
+  dialog.querySelector(".xc-doc-meta").textContent =
+    rule ? rule.category + " · " + rule.severity + (rule.basis ? " · basis: " + rule.basis : "") : "";
+  var text = dialog.querySelector(".xc-doc-text");
+  if (rule) text.innerHTML = rule.html;  // rendered and escaped by the page's writer (xodrcheck.rules.docformat)
+  else text.textContent = "No documentation for this code.";
   if (dialog.showModal) dialog.showModal(); else dialog.setAttribute("open", "");
 };
 
