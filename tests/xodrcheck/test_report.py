@@ -13,7 +13,7 @@ from tests.xodrcheck.rules.helpers import fixture
 from xodrcheck.check import Report, check
 from xodrcheck.config import Config
 from xodrcheck.findings import Category, Finding, Severity
-from xodrcheck.report import FORMATS, basis, render
+from xodrcheck.report import FORMATS, render
 from xodrcheck.report.text import line
 
 BROKEN = fixture("road-link-target-missing", "fail.xodr")
@@ -71,7 +71,7 @@ def test_text_one_line_per_finding(reports):
         assert m, text_line
         assert (m["path"], int(m["line"]), m["code"], m["severity"]) == (str(BROKEN), f.line, f.code, str(f.severity))
         assert m["road"] == f.road
-        assert m["basis"] == basis(f) == (f.rule_uid or m["basis"])  # the Annex F rule it enforces, where it has one
+        assert m["basis"] == f.basis == (f.rule_uid or m["basis"])  # the Annex F rule it enforces, where it has one
         assert (float(m["x"]), float(m["y"])) == pytest.approx((f.x, f.y), abs=5e-4)  # every place has coordinates
 
 
@@ -262,11 +262,11 @@ def test_xqar_issues_carry_their_basis_as_domain_specific_info(reports):
     assert len(issues) == sum(len(r.findings) for r in reports)
     for issue, f in zip(issues, [f for r in reports for f in r.findings]):
         (info,) = issue.findall("DomainSpecificInfo")
-        assert info.get("name") == "xodrcheck" and info.find("Basis").get("value") == basis(f)
+        assert info.get("name") == "xodrcheck" and info.find("Basis").get("value") == f.basis
         assert list(issue)[-1] is info  # after the locations, as the framework's schema orders them
         checker = issue.getparent()
         (meta,) = checker.findall("Metadata")
-        assert meta.get("key") == "basis" and basis(f) in meta.get("value").split()
+        assert meta.get("key") == "basis" and f.basis in meta.get("value").split()
         assert list(checker)[-1] is meta
     assert all(not c.findall("Metadata") for c in root.iter("Checker") if not c.findall("Issue"))
 

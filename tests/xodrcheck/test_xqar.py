@@ -18,7 +18,7 @@ from lxml import etree
 from tests.interop.asam_harness import AsamUnavailable, asam_python
 from xodrcheck.check import check
 from xodrcheck.cli import main
-from xodrcheck.report import basis, render
+from xodrcheck.report import render
 from xodrcheck.report.xqar import conform_uid, issue_uid, own_uid
 from xodrcheck.rules import load_rules
 
@@ -139,7 +139,7 @@ def test_baselib_reads_each_issues_basis(corpus_dir, asam_python, tmp_path):
     done = subprocess.run([str(asam_python), "-c", _BASES, str(out)], capture_output=True, text=True, check=False)
     assert done.returncode == 0, done.stderr[-2000:]
     loaded = json.loads(done.stdout)
-    expected = Counter((issue_uid(f), basis(f)) for f in report.findings)
+    expected = Counter((issue_uid(f), f.basis) for f in report.findings)
     assert Counter((uid, bases[0]) for uid, bases, _ in loaded) == expected
     assert all(len(bases) == 1 and bases[0] in meta.split() for _, bases, meta in loaded)
     kinds = {b.startswith("asam.net:") for _, b in expected}

@@ -27,7 +27,6 @@ from html import escape
 from importlib import resources
 
 from xodrcheck.findings import Finding, Severity
-from xodrcheck.report import basis
 
 #: Script files, in the order they run (one inline script).
 SCRIPTS = ("decode.js", "map.js", "render.js", "report.js")
@@ -183,7 +182,7 @@ def _row(i: int, f: Finding) -> str:
         "line": f.line or None,
         "z": getattr(f, "z", None),
         "rule-uid": f.rule_uid,
-        "basis": basis(f),
+        "basis": f.basis,
     }
     extra = _extra(f)
     attrs.update({re.sub(r"[^a-z0-9]+", "-", k.lower()): v for k, v in extra.items()})
@@ -192,7 +191,7 @@ def _row(i: int, f: Finding) -> str:
         f'<li class="xc-row" tabindex="0" {data}>'
         f'<span class="xc-code">{escape(f.code)}</span> <span class="xc-name">{escape(f.name)}</span>'
         f'<button class="xc-doc" type="button" data-code="{_attr(f.code)}" title="rule documentation">?</button>'
-        f"{_basis_tag(basis(f))}"
+        f"{_basis_tag(f.basis)}"
         f'<div class="xc-msg">{escape(f.message)}</div><div class="xc-where">{_where(f, extra)}</div></li>'
     )
 

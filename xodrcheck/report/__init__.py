@@ -29,7 +29,6 @@ __all__ = [
     "DEFAULT_MIN_SEVERITY",
     "FORMATS",
     "Hidden",
-    "basis",
     "least_severity",
     "render",
     "rule_bases",
@@ -78,21 +77,15 @@ def render(name: str, reports: Sequence[Report], **options: object) -> str:
     return module.render(reports, **options)
 
 
-def basis(f: Finding) -> str:
-    """What a finding rests on: the Annex F UID it enforces, or ``schema``, ``reading``, ``plausibility``."""
-    return getattr(f, "basis", "") or f.rule_uid or "plausibility"
-
-
 def rule_bases(rule: Rule | None, findings: Iterable[Finding] = ()) -> list[str]:
     """What a rule's findings rest on: the UIDs it enforces, then what its findings without one rest on (declared
     by the rule), then any other basis of ``findings``; each once, in that order."""
     out = list(rule.uids) if rule is not None else []
-    declared = getattr(rule, "basis", None)
-    if declared:
-        out.append(declared)
+    if rule is not None and rule.basis is not None:
+        out.append(rule.basis)
     for f in findings:
-        if basis(f) not in out:
-            out.append(basis(f))
+        if f.basis not in out:
+            out.append(f.basis)
     return out
 
 

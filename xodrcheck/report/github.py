@@ -10,7 +10,6 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 from xodrcheck.findings import Finding, Severity
-from xodrcheck.report import basis
 from xodrcheck.report.text import where
 
 COMMANDS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
@@ -29,7 +28,7 @@ def command(path: str | None, f: Finding) -> str:
     if f.line:
         props.append(f"line={f.line}")
     props.append(f"title={_property(f'{f.code} {f.name}')}")
-    return f"::{COMMANDS[f.severity]} {','.join(props)}::{_data(f'{f.message}{where(f)} ({basis(f)})')}"
+    return f"::{COMMANDS[f.severity]} {','.join(props)}::{_data(f'{f.message}{where(f)} ({f.basis})')}"
 
 
 def render(reports: Sequence) -> str:

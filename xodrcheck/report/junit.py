@@ -13,7 +13,6 @@ from collections.abc import Sequence
 from lxml import etree
 
 from xodrcheck.findings import Severity
-from xodrcheck.report import basis
 from xodrcheck.report.text import line
 from xodrcheck.rules import load_rules
 
@@ -37,7 +36,9 @@ def render(reports: Sequence) -> str:
             found = by_code.get(code, [])
             if found:
                 properties = etree.SubElement(case, "properties")
-                etree.SubElement(properties, "property", name="basis", value=" ".join(dict.fromkeys(map(basis, found))))
+                etree.SubElement(
+                    properties, "property", name="basis", value=" ".join(dict.fromkeys(f.basis for f in found))
+                )
             failing = [f for f in found if f.severity >= worst]
             if failing:
                 suite_failures += 1

@@ -17,7 +17,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from xodrcheck.findings import Finding, Severity
-from xodrcheck.report import basis, rule_bases
+from xodrcheck.report import rule_bases
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.docformat import markdown
 from xodrcheck.rules.plaintext import plain
@@ -63,7 +63,7 @@ def _result(f: Finding, uri: str, index: int) -> dict:
         ("y", f.y),
         ("z", f.z),
         ("rule_uid", f.rule_uid),
-        ("basis", basis(f)),
+        ("basis", f.basis),
     )
     where = {k: v for k, v in fields if v is not None and not (isinstance(v, float) and not math.isfinite(v))}
     if where:

@@ -24,7 +24,7 @@ from collections.abc import Mapping, Sequence
 from typing import TypeGuard
 
 from xodrcheck.findings import Finding, Severity
-from xodrcheck.report import basis, shown
+from xodrcheck.report import shown
 from xodrcheck.report.verdict import count, failing, stopped, verdict
 
 #: More findings shown than this, and the tally per rule is on unless ``--no-statistics``.
@@ -50,7 +50,7 @@ def where(f: Finding) -> str:
 
 def line(path: str | None, f: Finding) -> str:
     message = " ".join(f.message.split())  # one line, whatever the message holds
-    return f"{path or '-'}:{f.line or 0}: {f.code} {f.severity} {message}{where(f)} ({basis(f)})"
+    return f"{path or '-'}:{f.line or 0}: {f.code} {f.severity} {message}{where(f)} ({f.basis})"
 
 
 def render(
@@ -95,7 +95,7 @@ def tally(reports: Sequence) -> str:
             counts[key] += 1
             here.add(key)
             names.setdefault(f.code, f.name)
-            bases.setdefault(key, Counter())[basis(f)] += 1
+            bases.setdefault(key, Counter())[f.basis] += 1
         files.update(here)
     if not counts:
         return ""

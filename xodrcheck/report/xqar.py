@@ -34,7 +34,6 @@ from pathlib import Path
 from lxml import etree
 
 from xodrcheck.findings import Finding, Severity
-from xodrcheck.report import basis
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.registry import Rule
 
@@ -115,7 +114,7 @@ def _issue(checker: etree._Element, f: Finding, issue_id: int, xpaths: dict[int,
         for tag, attributes in where:
             etree.SubElement(locations, tag, attributes)
     info = etree.SubElement(issue, "DomainSpecificInfo", name="xodrcheck")
-    etree.SubElement(info, "Basis", value=basis(f))
+    etree.SubElement(info, "Basis", value=f.basis)
 
 
 def _checker(bundle: etree._Element, code: str, rule: Rule | None, found: list[Finding]) -> etree._Element:
@@ -144,7 +143,7 @@ def _checker(bundle: etree._Element, code: str, rule: Rule | None, found: list[F
 def _metadata(checker: etree._Element, found: list[Finding]) -> None:
     """What the issues of a checker with issues rest on, after them (as the framework's library writes it)."""
     if found:
-        value = " ".join(dict.fromkeys(map(basis, found)))
+        value = " ".join(dict.fromkeys(f.basis for f in found))
         etree.SubElement(checker, "Metadata", key="basis", value=value, description="what the issues rest on")
 
 
