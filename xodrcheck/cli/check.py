@@ -18,8 +18,9 @@ exit code does not depend on what is shown.
 
 The text report starts with the verdict (``FAIL: 3 errors of 2 rules in 1 of 4 files; 12 warnings``, see
 :mod:`xodrcheck.report.verdict`) and ends with a tally per rule (``--statistics``; by default when more than 20
-findings are shown) and, over several files, the files that fail. The verdict is also printed on stderr, unless the
-text report itself is on the terminal; with ``-o FILE`` stderr says ``wrote FILE (N findings, SIZE)``.
+findings are shown) and, over several files, the files that fail. The verdict is also printed on stderr, last, unless
+the text report is on a terminal and fits it (its first line is in sight); with ``-o FILE`` stderr says ``wrote FILE
+(N findings, SIZE)``.
 """
 
 from __future__ import annotations
@@ -204,7 +205,7 @@ def run(args: argparse.Namespace) -> int:
     except OutputError as exc:
         error(str(exc))
         return 2
-    if to_file or args.format != "text" or not sys.stdout.isatty():  # else the terminal shows it on the first line
+    if not (args.format == "text" and not to_file and _in_sight(text)):
         print(verdict(reports, len(unreadable)), file=sys.stderr)
     if to_file:
         written = count(sum(len(r.findings) for r in visible), "finding")
@@ -227,6 +228,13 @@ def exit_code(reports: list, unreadable: bool = False) -> int:
 def _fails_only_for_incompleteness(report) -> bool:
     worst = Severity.WARNING if report.strict else Severity.ERROR
     return all(f.code in ENGINE_CODES for f in report.findings if f.severity >= worst)
+
+
+def _in_sight(text: str) -> bool:
+    """Whether ``text``, printed on a terminal, leaves its first line in sight (it fits the window)."""
+    import shutil
+
+    return sys.stdout.isatty() and text.count("\n") < shutil.get_terminal_size().lines
 
 
 def _size(path: Path) -> str:

@@ -3,7 +3,9 @@ files of a run over several, and what ``-o`` says on stderr."""
 
 from __future__ import annotations
 
+import os
 import re
+import shutil
 import sys
 
 import pytest
@@ -79,10 +81,14 @@ def test_an_incomplete_check_says_so_first(capsys):
     )
 
 
-def test_the_verdict_stays_off_stderr_when_the_terminal_shows_the_report(capsys, monkeypatch):
+def test_the_verdict_stays_off_stderr_when_the_terminal_shows_the_whole_report(capsys, monkeypatch, many):
+    """On a 24-line terminal a 3-line report keeps its verdict in sight; a longer one has it repeated last."""
     monkeypatch.setattr(sys.stdout, "isatty", lambda: True)
+    monkeypatch.setattr(shutil, "get_terminal_size", lambda *a, **k: os.terminal_size((80, 24)))
     code, out, err = run(capsys, BROKEN)
     assert code == 1 and out.startswith("FAIL: 2 errors of 2 rules\n") and err == ""
+    code, out, err = run(capsys, many, "--select", "R010")
+    assert out.count("\n") > 24 and err == out.splitlines()[0] + "\n" == "FAIL: 23 errors of 1 rule\n"
 
 
 @pytest.mark.parametrize("fmt", ["json", "sarif", "github"])
