@@ -126,7 +126,7 @@ def _namespace_words(namespace: str | None) -> str:
     return "in no namespace" if namespace is None else f"in namespace '{namespace}'"
 
 
-@rule("S003", "schema-namespace-assumed", Category.SCHEMA, Severity.INFO, xml=True)
+@rule("S003", "schema-namespace-assumed", Category.SCHEMA, Severity.INFO, basis=Basis.SCHEMA, xml=True)
 def schema_namespace_assumed(ctx: Context):
     """The file's elements are not in the namespace the schema of its version declares: they were validated as if
     they were.

@@ -42,7 +42,7 @@ def test_exit_1_on_an_error_and_one_line_per_finding(capsys):
     code, out, err = run(capsys, BROKEN)
     assert code == 1
     verdict, *lines = out.splitlines()
-    assert verdict == "FAIL: 2 errors of 2 rules"
+    assert verdict == "FAIL: 1 error of 1 rule; 1 warning"
     assert [line.split()[1] for line in lines] == ["R010", "K001"]  # by line
     assert all(line.startswith(f"{BROKEN}:") for line in lines)
     assert "Traceback" not in err

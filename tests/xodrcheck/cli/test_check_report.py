@@ -15,7 +15,7 @@ from tests.xodrcheck.rules.helpers import fixture
 from xodrcheck.cli import main
 
 CLEAN = fixture("link-not-reciprocal", "pass.xodr")
-BROKEN = fixture("road-link-target-missing", "fail.xodr")  # R010 + K001 errors
+BROKEN = fixture("road-link-target-missing", "fail.xodr")  # an R010 error; K001, a plausibility warning by default
 WARNING_ONLY = fixture("short-lane-section", "fail.xodr")  # one G012 warning, one G901 info
 MISSING = "a successor that does not exist"
 
@@ -49,9 +49,9 @@ def many(tmp_path):
     [
         ([CLEAN], [], "PASS: 0 errors", 0),
         ([WARNING_ONLY], [], "PASS: 0 errors; 1 warning, 1 info", 0),
-        ([BROKEN], [], "FAIL: 2 errors of 2 rules", 1),
+        ([BROKEN], [], "FAIL: 1 error of 1 rule; 1 warning", 1),
         ([CLEAN, WARNING_ONLY], [], "PASS: 0 errors in 2 files; 1 warning, 1 info", 0),
-        ([BROKEN, CLEAN, WARNING_ONLY, CLEAN], [], "FAIL: 2 errors of 2 rules in 1 of 4 files; 1 warning, 1 info", 1),
+        ([BROKEN, CLEAN, WARNING_ONLY, CLEAN], [], "FAIL: 1 error of 1 rule in 1 of 4 files; 2 warnings, 1 info", 1),
         ([BROKEN, WARNING_ONLY], ["--select", "R010"], "FAIL: 1 error of 1 rule in 1 of 2 files", 1),
         ([WARNING_ONLY], ["--strict"], "FAIL: 1 warning of 1 rule (strict); 1 info", 1),
         ([CLEAN], ["--strict"], "PASS: 0 errors, 0 warnings (strict)", 0),
@@ -86,7 +86,7 @@ def test_the_verdict_stays_off_stderr_when_the_terminal_shows_the_whole_report(c
     monkeypatch.setattr(sys.stdout, "isatty", lambda: True)
     monkeypatch.setattr(shutil, "get_terminal_size", lambda *a, **k: os.terminal_size((80, 24)))
     code, out, err = run(capsys, BROKEN)
-    assert code == 1 and out.startswith("FAIL: 2 errors of 2 rules\n") and err == ""
+    assert code == 1 and out.startswith("FAIL: 1 error of 1 rule; 1 warning\n") and err == ""
     code, out, err = run(capsys, many, "--select", "R010")
     assert out.count("\n") > 24 and err == out.splitlines()[0] + "\n" == "FAIL: 23 errors of 1 rule\n"
 
@@ -94,7 +94,7 @@ def test_the_verdict_stays_off_stderr_when_the_terminal_shows_the_whole_report(c
 @pytest.mark.parametrize("fmt", ["json", "sarif", "github"])
 def test_machine_formats_keep_stdout_and_give_the_verdict_on_stderr(capsys, fmt):
     code, out, err = run(capsys, BROKEN, "--format", fmt)
-    assert code == 1 and not out.startswith("FAIL") and err == "FAIL: 2 errors of 2 rules\n"
+    assert code == 1 and not out.startswith("FAIL") and err == "FAIL: 1 error of 1 rule; 1 warning\n"
 
 
 # ------------------------------------------------------------------------------------------------------ statistics
@@ -121,12 +121,13 @@ def test_statistics_are_off_by_default_for_few_findings_and_can_be_forced(capsys
     rows = tally(run(capsys, BROKEN, CLEAN, "--statistics")[1])
     assert rows[0] == ["count", "files", "code", "severity", "name", "basis"]
     assert sorted(row[2] for row in rows[1:]) == ["K001", "R010"]
-    assert all(row[:2] == ["1", "1"] and row[3] == "error" for row in rows[1:])
+    assert all(row[:2] == ["1", "1"] for row in rows[1:])
+    assert sorted((row[2], row[3]) for row in rows[1:]) == [("K001", "warning"), ("R010", "error")]
 
 
 def test_statistics_count_what_is_shown_and_the_worst_first(capsys):
     rows = tally(run(capsys, WARNING_ONLY, BROKEN, "--statistics")[1])
-    assert [row[3] for row in rows[1:]] == ["error", "error", "warning"]  # the info is not shown: not counted
+    assert [row[3] for row in rows[1:]] == ["error", "warning", "warning"]  # the info is not shown: not counted
     rows = tally(run(capsys, WARNING_ONLY, "--statistics", "--min-severity", "info")[1])
     assert [(row[1], row[2]) for row in rows[1:]] == [("G012", "warning"), ("G901", "info")]
 
@@ -141,9 +142,9 @@ def test_a_run_over_several_files_ends_with_the_failing_ones(capsys, tmp_path):
     missing = tmp_path / "nope.xodr"
     code, out, _ = run(capsys, CLEAN, BROKEN, WARNING_ONLY, missing)
     assert code == 2
-    assert failing(out) == ("(2 of 4)", [f"  {BROKEN}: 2 errors", f"  {missing}: could not be checked"])
+    assert failing(out) == ("(2 of 4)", [f"  {BROKEN}: 1 error", f"  {missing}: could not be checked"])
     code, out, _ = run(capsys, CLEAN, WARNING_ONLY, BROKEN, "--strict")
-    assert failing(out) == ("(2 of 3)", [f"  {WARNING_ONLY}: 0 errors, 1 warning", f"  {BROKEN}: 2 errors, 0 warnings"])
+    assert failing(out) == ("(2 of 3)", [f"  {WARNING_ONLY}: 0 errors, 1 warning", f"  {BROKEN}: 1 error, 1 warning"])
 
 
 def test_no_failing_files_list_for_one_file_or_when_all_pass(capsys):
@@ -158,7 +159,7 @@ def test_output_file_is_named_on_stderr_and_stdout_stays_empty(capsys, tmp_path,
     code, out, err = run(capsys, BROKEN, WARNING_ONLY, "--format", fmt, "-o", target)
     assert code == 1 and out == ""
     verdict, wrote = err.splitlines()
-    assert verdict == "FAIL: 2 errors of 2 rules in 1 of 2 files; 1 warning, 1 info"
+    assert verdict == "FAIL: 1 error of 1 rule in 1 of 2 files; 2 warnings, 1 info"
     shown = 3 if fmt == "text" else 4  # text leaves the info out by default
     assert re.fullmatch(rf"wrote {re.escape(str(target))} \({shown} findings, \d+(\.\d)? (B|KiB|MiB)\)", wrote), wrote
     if fmt == "text":

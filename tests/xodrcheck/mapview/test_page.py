@@ -207,7 +207,7 @@ def test_the_page_says_pass_or_fail_on_top_and_per_file():
     assert verdicts(one) == [("FAIL", "span")]  # one file: the page's verdict is the file's
     text = render("html", [check(BROKEN), check(CLEAN)])
     assert verdicts(parse(text)) == [("FAIL", "span"), ("FAIL", "span"), ("PASS", "span")]
-    assert "FAIL</span> 2 errors of 2 rules in 1 of 2 files</span>" in text
+    assert "FAIL</span> 1 error of 1 rule in 1 of 2 files; 1 warning</span>" in text
     index = text.split('id="xc-index"', 1)[1].split("</nav>", 1)[0]
     assert index.count('class="xc-chip fail"') == 1 and index.count('class="xc-chip pass"') == 1
     assert verdicts(parse(render_page([FilePage("a.xodr", "1.7", None, None, None)], "t"))) == []  # a map alone
