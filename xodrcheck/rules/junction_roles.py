@@ -449,7 +449,8 @@ def junction_unneeded(ctx: Context):
     more possible predecessors or successors (``junctions.common.when_to_use``, 12.2, an error). A common or direct
     junction whose connections lead every road to at most one other road, and every road from at most one, has no
     such ambiguity: link the roads (through a connecting road of its own, if need be) instead. Junctions should not be
-    used where only two roads meet (``junctions.common.not_only_two``, 1.9, a warning). Virtual junctions and
+    used where only two roads meet (``junctions.common.not_only_two``, 1.9, a warning; where those two could be
+    linked directly the error above is the one finding). Virtual junctions and
     crossings do not change which road follows which, and are not reported.
 
     Passes: a T junction (road 1 can continue on road 2 or road 3).
@@ -464,16 +465,6 @@ def junction_unneeded(ctx: Context):
         if junction.type not in (JunctionType.DEFAULT, JunctionType.DIRECT) or not junction.connections:
             continue
         name = _describe(parts.get(junction.id), junction)
-        touching = legs(ctx, junction)
-        if len(touching) + len(_both_ends(ctx, junction)) <= 2:
-            roads = " and ".join(f"road {r}" for r in touching) or "no road"
-            yield junction_unneeded.finding(
-                f"{name}: only {roads} meet in it; where two roads meet, link them directly (junctions are for "
-                "three or more)",
-                uid=U.COMMON_NOT_ONLY_TWO,
-                severity=Severity.WARNING,
-                line=junction.line or None,
-            )
         paths = reachable(ctx, junction)
         if paths and all(len(targets) <= 1 for targets in paths.values()):
             pairs = sorted({tuple(sorted((a[0], b[0]))) for a, targets in paths.items() for b in targets})
@@ -482,5 +473,16 @@ def junction_unneeded(ctx: Context):
                 f"{name} leads each road to one other road only ({shown}): no road has two possible successors or "
                 "predecessors, so the roads can be linked directly; a junction is only for that ambiguity",
                 uid=U.COMMON_WHEN_TO_USE,
+                line=junction.line or None,
+            )
+            continue  # the error says it: not also the warning that only two roads meet
+        touching = legs(ctx, junction)
+        if len(touching) + len(_both_ends(ctx, junction)) <= 2:
+            roads = " and ".join(f"road {r}" for r in touching) or "no road"
+            yield junction_unneeded.finding(
+                f"{name}: only {roads} meet in it; where two roads meet, link them directly (junctions are for "
+                "three or more)",
+                uid=U.COMMON_NOT_ONLY_TWO,
+                severity=Severity.WARNING,
                 line=junction.line or None,
             )

@@ -11,11 +11,12 @@ from __future__ import annotations
 from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import Document, JunctionType
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.registry import rule
+from xodrcheck.rules.registry import NO_UID, rule
+from xodrcheck.standard import applies
 
 if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree
@@ -56,37 +57,48 @@ def _main_roads(ctx: Context) -> dict[str, str]:
     Category.LINK,
     Severity.ERROR,
     uids=_USAGE,
+    basis=Basis.PLAUSIBILITY,
     xml=True,
 )
 def link_attribute_usage(ctx: Context):
     """A road's ``<predecessor>`` or ``<successor>`` does not use the attribute set of what it links to.
 
     Annex F (10.3): a link to a road names ``elementType="road"`` (``road.linkage.road_link_attribute_usage``; its
-    ``contactPoint`` is ``K002``'s); a link to a junction uses ``elementType="junction"`` and ``elementId`` only, no
-    ``contactPoint``, ``elementS`` or ``elementDir`` (``.junc_link_attribute_usage``); a connecting road of a virtual
+    ``contactPoint`` is ``K002``'s); a link to a junction uses ``elementType="junction"`` and ``elementId``
+    (``.junc_link_attribute_usage``); a connecting road of a virtual
     junction joins the junction's main road inside it with ``elementType``, ``elementId``, ``elementS`` and
     ``elementDir``, which go together (``.virtjunc_link_attribute_usage``, 12.7). ``elementS`` "shall only be used for
     elementType road" (Table 24), so a link to the virtual junction itself takes the junction's attribute set.
+
+    A link to a junction that also carries ``contactPoint``, ``elementS`` or ``elementDir`` is a plausibility warning,
+    not an error: the UID asks for ``elementType`` and ``elementId`` and does not forbid more, and only Table 24's text
+    restricts ``elementS``/``elementDir`` to roads (a junction has no contact point; readers ignore it).
 
     Passes::
 
         <successor elementType="junction" elementId="100"/>
 
-    Fails (a junction has no contact point)::
+    Fails (junction 100 named without its elementType)::
 
-        <successor elementType="junction" elementId="100" contactPoint="start"/>
+        <successor elementId="100"/>
     """
     document = ctx.document
     main_roads = _main_roads(ctx)
+    junction_rule = applies(U.LINKAGE_JUNCTION_ATTRIBUTES, ctx.version)
     for road_id, junction_id, el in _links(ctx):
         for message, uid in _misuses(document, main_roads, road_id, junction_id, el):
-            yield link_attribute_usage.finding(message, uid=uid, road=road_id, line=el.sourceline)
+            if uid is None and not junction_rule:
+                continue  # as the junction attribute rule: from OpenDRIVE 1.7 on
+            yield link_attribute_usage.finding(
+                message, uid=NO_UID if uid is None else uid, road=road_id, line=el.sourceline
+            )
 
 
 def _misuses(
     document: Document, main_roads: dict[str, str], road_id: str, junction_id: str | None, el: etree._Element
-) -> Iterator[tuple[str, str]]:
-    """What road ``road_id``'s link ``el`` gets wrong: (message, the Annex F UID it breaks)."""
+) -> Iterator[tuple[str, str | None]]:
+    """What road ``road_id``'s link ``el`` gets wrong: (message, the Annex F UID it breaks, or None: no UID's words
+    forbid it, a plausibility finding)."""
     kind = el.get("elementType")
     target = el.get("elementId")
     tag = el.tag.rsplit("}", 1)[-1]
@@ -110,8 +122,8 @@ def _misuses(
             what = f"{junction.type.value} junction" if junction is not None else "junction"
             yield (
                 f"{mine} links to a {what} with {', '.join(extra)}: a junction is linked by elementType and "
-                f"elementId only; remove {', '.join(extra)}",
-                U.LINKAGE_JUNCTION_ATTRIBUTES,
+                f"elementId; {', '.join(extra)} mean nothing there (readers ignore them): remove them",
+                None,
             )
         return
     if kind != "road":
