@@ -17,7 +17,7 @@ import pytest
 from tests.interop.carla_graph import carla_walk
 from xodrcheck.graph import lane_graph
 from xodrcheck.graph.lengths import node_lengths
-from xodrcheck.graph.reach import shortest_from
+from xodrcheck.graph.paths import shortest_from
 from xodrcheck.graph.routes import Place, route
 from xodrcheck.model import Document
 from xodrcheck.reader import read

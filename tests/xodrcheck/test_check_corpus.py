@@ -39,8 +39,10 @@ EXPECTED = {
     # link (L011); road 69 lane 1 (driving) into junction 793 has no laneLink (J005). Road 69's left sidewalk and
     # shoulders continue road 70's right ones end-to-start: no direction of travel, no L012. Junction 825 joins only
     # roads 23 and 24 (connecting road 827 one way, 828 the other): no road has two possible successors there, so a
-    # junction is not needed (J019, when_to_use).
-    "carla-towns/OpenDrive/Town03.xodr": {"G901", "J005", "J019", "K001", "L010", "L011"},
+    # junction is not needed (J019, when_to_use). No route reaches two driving lanes (L041): road 69 lane -1, out of
+    # junction 793, which has no connection with road 69 at all, and road 84 lane 6 (road 84 is 1.3 mm long), which no
+    # connecting road of junction 268 leads into.
+    "carla-towns/OpenDrive/Town03.xodr": {"G901", "J005", "J019", "K001", "L010", "L011", "L041"},
     # Connection 2: incoming 103, connecting 151 contactPoint "start", but 151 starts at road 101 (J002); lane 1 of
     # section s=0.1 of road 103 narrows to 1.5 m and has no successor (L010); lanes link across road ends that have no
     # road link (R015, Annex F road.lane.link.no_link); <geoReference> stands beside <header>, 1.4 wants it inside

@@ -18,10 +18,10 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Iterable
+from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.graph import marks, topology
 from xodrcheck.graph.direction import leaving, travels
 from xodrcheck.model import (

@@ -8,7 +8,8 @@ drive along the reference line (increasing s) and the left lanes against it; ``L
 
 from __future__ import annotations
 
-from xodrcheck.model import ContactPoint, Lane, LaneDirection, LaneType, Road, TrafficRule
+from xodrcheck.model import ContactPoint, Lane, Road
+from xodrcheck.rules.context import travel_direction
 
 __all__ = ["entering", "leaving", "travels"]
 
@@ -17,15 +18,13 @@ ALONG, AGAINST = 1, -1
 
 def travels(road: Road, lane: Lane) -> tuple[int, ...]:
     """The directions traffic may drive on ``lane`` of ``road``: ``(1,)``, ``(-1,)``, ``(1, -1)`` for both ways;
-    ``()`` for the centre lane 0."""
+    ``()`` for the centre lane 0. The one direction is :func:`xodrcheck.rules.context.travel_direction`'s (side,
+    traffic rule, ``reversed``); a lane open both ways (``both``, type ``bidirectional``) or of a type that carries no
+    directed traffic (a sidewalk, say, in a graph asked to hold one) is driven both ways."""
     if lane.id == 0:
         return ()
-    if lane.direction is LaneDirection.BOTH or lane.type is LaneType.BIDIRECTIONAL:
-        return (ALONG, AGAINST)
-    along = (lane.id < 0) == (road.rule is TrafficRule.RHT)
-    if lane.direction is LaneDirection.REVERSED:
-        along = not along
-    return (ALONG,) if along else (AGAINST,)
+    one = travel_direction(road, lane)
+    return (ALONG, AGAINST) if one is None else (one,)
 
 
 def leaving(travel: int) -> ContactPoint:

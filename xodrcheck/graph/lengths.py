@@ -3,9 +3,10 @@ tolerance as ``xodrcheck sample`` and the snapshots' lane length are) and their 
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.config import Tolerances
 from xodrcheck.graph.build import LaneGraph
 from xodrcheck.lanes import geometry_of

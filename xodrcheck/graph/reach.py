@@ -1,176 +1,156 @@
-"""What the lane graph can reach, with :mod:`scipy.sparse.csgraph`.
+"""What the lane graph can reach.
 
 * *Entries* are the nodes whose traffic comes in at an open edge of the map (a road end without a link), *exits* the
   nodes whose traffic leaves the map there.
-* A *circuit* is a strongly connected part where traffic can go round: a link runs inside it (lanes joined only by
-  lane changes are not one); the *main part* is the largest strongly connected part (ties: the first). The lanes a
-  route *reaches* are those reachable from an entry or a circuit: only a lane nothing leads into, and what only it
-  leads to, is not. The lanes a route *leaves* are those from which an exit or a circuit is reachable.
-* A *trap* is a strongly connected part with a cycle that traffic enters from outside and never leaves: no edge leads
-  out of it and it holds no exit (on a closed map the main part is the map, not a trap).
+* A lane is *entered* when it is an entry, a link leads into it, or traffic can change into it from a lane that is.
+  A lane that is not is where a stretch no route reaches begins (:func:`unentered`); everything past it is reached
+  only through it.
+* A lane *goes on* when it is an exit, a link leads on from it, or traffic can change from it into a lane that does
+  (:func:`goes_on`); one that does not is a dead end.
+* A *trap* is a strongly connected part with a cycle of links that traffic enters from outside and never leaves: no
+  edge leads out of it and it holds no exit (on a closed map, without entries or exits, the largest part is the map,
+  not a trap).
+
+A check runs these on every file, so the common answers need no graph library: :func:`reached` is a breadth-first
+search over the edge arrays in numpy (loading :mod:`scipy.sparse.csgraph` costs a check about 0.3 s of CPU), and
+:func:`traps` asks :mod:`scipy.sparse.csgraph` for strongly connected parts only when some lane cannot reach an exit
+(or, on a closed map, the map is not strongly connected). :func:`components` and :mod:`.paths` use it directly.
 """
 
 from __future__ import annotations
 
-import weakref
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable
+from dataclasses import dataclass
 
 import numpy as np
-from scipy.sparse import csgraph, csr_matrix
 
-from xodrcheck.classcache import dataclass
+from xodrcheck.arrays import ranges
 from xodrcheck.graph.build import LaneGraph
-from xodrcheck.model import Document
 
-__all__ = ["Reachability", "best_partial", "reachability", "reached", "shortest_from", "unwind"]
+__all__ = ["Reachability", "components", "entries", "exits", "goes_on", "reachability", "reached", "traps", "unentered"]
 
 
-def matrix(graph: LaneGraph, weights: np.ndarray | None = None, reverse: bool = False) -> csr_matrix:
-    """The graph as a sparse matrix: one entry per (source, target), the least weight of the edges joining them
-    (1 without ``weights``); transposed with ``reverse``."""
-    n = len(graph.nodes)
-    w = np.ones(len(graph.source)) if weights is None else np.asarray(weights, dtype=float)
-    src, dst = (graph.target, graph.source) if reverse else (graph.source, graph.target)
-    order = np.lexsort((w, dst, src))
-    src, dst, w = src[order], dst[order], w[order]
-    first = np.ones(len(src), dtype=bool)
-    first[1:] = (src[1:] != src[:-1]) | (dst[1:] != dst[:-1])
-    return csr_matrix((w[first], (src[first], dst[first])), shape=(n, n))
+def entries(graph: LaneGraph) -> np.ndarray:
+    return np.array(sorted(graph.starts_open), dtype=np.int64)
+
+
+def exits(graph: LaneGraph) -> np.ndarray:
+    return np.array(sorted(i for i in graph.stops if graph.ends_open(i)), dtype=np.int64)
 
 
 def reached(graph: LaneGraph, sources: Iterable[int], reverse: bool = False) -> np.ndarray:
-    """Which nodes a route from any of ``sources`` reaches (with ``reverse``: from which nodes one of them is
-    reached), the sources included."""
+    """Which nodes a route from any of ``sources`` reaches, the sources included (with ``reverse``: from which nodes
+    one of them is reached): a breadth-first search, a frontier of nodes at a time."""
     n = len(graph.nodes)
-    out = np.zeros(n, dtype=bool)
-    starts = np.fromiter(sources, dtype=np.int64)
-    if not starts.size:
-        return out
     src, dst = (graph.target, graph.source) if reverse else (graph.source, graph.target)
-    # one search from an extra node joined to every source
-    rows = np.concatenate([src, np.full(starts.size, n)])
-    cols = np.concatenate([dst, starts])
-    m = csr_matrix((np.ones(rows.size), (rows, cols)), shape=(n + 1, n + 1))
-    order = csgraph.breadth_first_order(m, n, directed=True, return_predecessors=False)
-    out[order[order < n]] = True
-    return out
+    order = np.argsort(src, kind="stable")
+    heads = dst[order]
+    first = np.searchsorted(src[order], np.arange(n + 1))
+    seen = np.zeros(n, dtype=bool)
+    frontier = np.unique(np.fromiter(sources, dtype=np.int64))
+    seen[frontier] = True
+    while frontier.size:
+        following = heads[ranges(first[frontier], first[frontier + 1] - first[frontier])]
+        frontier = np.unique(following[~seen[following]])
+        seen[frontier] = True
+    return seen
 
 
-def shortest_from(graph: LaneGraph, weights: np.ndarray, start: int) -> tuple[np.ndarray, np.ndarray]:
-    """Distances from ``start`` to every node (inf where none) and the predecessors of the shortest paths."""
-    dist, pred = csgraph.dijkstra(matrix(graph, weights), directed=True, indices=start, return_predecessors=True)
-    return dist, pred
+def _spread(graph: LaneGraph, marked: np.ndarray, reverse: bool) -> np.ndarray:
+    """``marked`` spread along lane changes (backwards with ``reverse``) until nothing changes: a lane section has a
+    handful of lanes, so a few passes."""
+    changes = graph.kind == 1
+    a, b = (graph.target[changes], graph.source[changes]) if reverse else (graph.source[changes], graph.target[changes])
+    while True:
+        more = marked.copy()
+        more[b[marked[a]]] = True
+        if np.array_equal(more, marked):
+            return marked
+        marked = more
 
 
-def unwind(pred: np.ndarray, start: int, goal: int) -> list[int]:
-    """The nodes of the shortest path from ``start`` to ``goal`` (which ``pred`` reaches)."""
-    path = [goal]
-    while path[-1] != start:
-        path.append(int(pred[path[-1]]))
-    return path[::-1]
+def unentered(graph: LaneGraph) -> np.ndarray:
+    """Per node: whether nothing enters it (see the module docstring)."""
+    entered = np.zeros(len(graph.nodes), dtype=bool)
+    entered[graph.target[graph.kind == 0]] = True
+    entered[list(graph.starts_open)] = True
+    return ~_spread(graph, entered, reverse=False)
 
 
-@dataclass(frozen=True, eq=False)
-class Reachability:
-    """Strongly connected parts (``labels``, ``count``; ``main`` the label of the largest), entries, exits, which
-    nodes a route reaches and leaves (boolean per node), and the traps (labels)."""
-
-    labels: np.ndarray
-    count: int
-    main: int
-    entries: tuple[int, ...]
-    exits: tuple[int, ...]
-    reached: np.ndarray
-    leaves: np.ndarray
-    traps: tuple[int, ...]
-
-    def members(self, label: int) -> np.ndarray:
-        return np.flatnonzero(self.labels == label)
+def goes_on(graph: LaneGraph) -> np.ndarray:
+    """Per node: whether its traffic goes on (see the module docstring)."""
+    on = np.zeros(len(graph.nodes), dtype=bool)
+    on[graph.source[graph.kind == 0]] = True
+    on[exits(graph)] = True
+    return _spread(graph, on, reverse=True)
 
 
-_CACHE: weakref.WeakKeyDictionary[LaneGraph, Reachability] = weakref.WeakKeyDictionary()
+def components(graph: LaneGraph) -> tuple[int, np.ndarray]:
+    """The strongly connected parts: their number and each node's label."""
+    from scipy.sparse import csgraph  # here: a check that needs no components loads no scipy
 
+    from xodrcheck.graph.paths import matrix
 
-def reachability(graph: LaneGraph) -> Reachability:
-    """The reachability of ``graph`` (cached while the graph lives)."""
-    found = _CACHE.get(graph)
-    if found is None:
-        found = _CACHE[graph] = _reachability(graph)
-    return found
-
-
-def _reachability(graph: LaneGraph) -> Reachability:
-    n = len(graph.nodes)
-    if n == 0:
-        empty = np.zeros(0, dtype=bool)
-        return Reachability(np.zeros(0, dtype=np.int64), 0, -1, (), (), empty, empty, ())
     count, labels = csgraph.connected_components(matrix(graph), directed=True, connection="strong")
-    sizes = np.bincount(labels, minlength=count)
-    main = int(np.argmax(sizes))
-    entries = tuple(sorted(graph.starts_open))
-    exits = tuple(i for i in range(n) if graph.ends_open(i))
-    circuits = _circuits(graph, labels, count)
-    core = np.flatnonzero(circuits[labels]).tolist()
-    reached_ = reached(graph, [*entries, *core])
-    leaves = reached(graph, [*exits, *core], reverse=True)
-    traps = tuple(k for k in _traps(graph, labels, circuits, exits) if exits or k != main)
-    return Reachability(labels, count, main, entries, exits, reached_, leaves, traps)
+    return int(count), labels
 
 
-def _circuits(graph: LaneGraph, labels: np.ndarray, count: int) -> np.ndarray:
-    """Which strongly connected parts are circuits: those a link edge runs inside (every edge inside such a part lies
-    on a cycle). Lanes joined only by lane changes, back and forth beside each other, go round nothing."""
+def _needs_components(graph: LaneGraph, outs: np.ndarray, ins: np.ndarray) -> bool:
+    """Whether the map may have a trap: some lane reaches no exit (or, on a closed map, the map is not strongly
+    connected)."""
+    n = len(graph.nodes)
+    if not n:
+        return False
+    if outs.size:
+        return not bool(reached(graph, outs, reverse=True).all())
+    if ins.size:
+        return True  # traffic comes in and never leaves the map
+    return not (bool(reached(graph, [0]).all()) and bool(reached(graph, [0], reverse=True).all()))
+
+
+def traps(graph: LaneGraph) -> list[np.ndarray]:
+    """The traps (see the module docstring), each as its nodes."""
+    outs, ins = exits(graph), entries(graph)
+    if not _needs_components(graph, outs, ins):
+        return []
+    count, labels = components(graph)
     a, b = labels[graph.source], labels[graph.target]
-    out = np.zeros(count, dtype=bool)
-    out[a[(a == b) & (graph.kind == 0)]] = True
-    return out
-
-
-def _traps(graph: LaneGraph, labels: np.ndarray, cyclic: np.ndarray, exits: Sequence[int]) -> tuple[int, ...]:
-    count = len(cyclic)
-    a, b = labels[graph.source], labels[graph.target]
+    circuit = np.zeros(count, dtype=bool)
+    circuit[a[(a == b) & (graph.kind == 0)]] = True  # every edge inside a strongly connected part lies on a cycle
     leaving = np.zeros(count, dtype=bool)
     leaving[a[a != b]] = True
     entered = np.zeros(count, dtype=bool)
     entered[b[a != b]] = True
     with_exit = np.zeros(count, dtype=bool)
-    with_exit[labels[list(exits)]] = True
-    return tuple(int(k) for k in np.flatnonzero(cyclic & entered & ~leaving & ~with_exit))
+    with_exit[labels[outs]] = True
+    main = int(np.argmax(np.bincount(labels, minlength=count)))
+    found = np.flatnonzero(circuit & entered & ~leaving & ~with_exit)
+    return [np.flatnonzero(labels == k) for k in found.tolist() if ins.size or outs.size or k != main]
 
 
-def best_partial(document: Document, graph: LaneGraph, start: int, goals: Sequence[int]) -> tuple[list[int], str]:
-    """When no route leads from ``start`` to any of ``goals``: the path to the reachable node nearest the first
-    goal (in plan view, lane centre to lane centre) and why the route stops there, in words."""
-    from xodrcheck.graph.lengths import centre_line, node_lengths  # geometry only for the command line's answer
+@dataclass(frozen=True, eq=False)
+class Reachability:
+    """A map's reachability in numbers: strongly connected parts, the largest one's size, entries, exits, lanes
+    nothing enters, dead ends, traps."""
 
-    weights = node_lengths(document, graph) + 1e-9
-    dist, pred = shortest_from(graph, weights[graph.source], start)
-    candidates = np.flatnonzero(np.isfinite(dist))
-    goal = graph.nodes[goals[0]]
-    target = centre_line(document, goal.road, goal.index, goal.lane)
-    gap = np.full(len(candidates), np.inf)
-    if len(target.x):
-        for k, i in enumerate(candidates.tolist()):
-            node = graph.nodes[i]
-            line = centre_line(document, node.road, node.index, node.lane)
-            if len(line.x):
-                gap[k] = np.min(np.hypot(line.x[:, None] - target.x[None, :], line.y[:, None] - target.y[None, :]))
-    best = int(candidates[int(np.argmin(gap))]) if np.isfinite(gap).any() else start
-    path = unwind(pred, start, best)
-    near = f", {float(np.min(gap)):.1f} m from the destination" if np.isfinite(gap).any() else ""
-    return path, _why(graph, best, goals, len(candidates), near)
+    components: int
+    largest: int
+    entries: np.ndarray
+    exits: np.ndarray
+    unentered: np.ndarray
+    dead_ends: np.ndarray
+    traps: list[np.ndarray]
 
 
-def _why(graph: LaneGraph, best: int, goals: Sequence[int], from_start: int, near: str) -> str:
-    node = graph.nodes[best]
-    stop = graph.stops.get(best)
-    if stop is not None and not graph.out_edges(best).size:
-        return f"the route gets nearest at {node.describe()}{near}, and stops there: {stop.why}"
-    into = reached(graph, goals, reverse=True)
-    goal = graph.nodes[goals[0]]
-    if int(into.sum()) == len(set(goals)):
-        return f"no lane leads into {goal.describe()}; the nearest the route gets is {node.describe()}{near}"
-    return (
-        f"the {from_start} lanes a route from the start reaches and the {int(into.sum())} lanes that lead to the "
-        f"destination do not meet; the nearest the route gets is {node.describe()}{near}"
+def reachability(graph: LaneGraph) -> Reachability:
+    count, labels = components(graph) if graph.nodes else (0, np.zeros(0, dtype=np.int64))
+    largest = int(np.bincount(labels).max()) if count else 0
+    return Reachability(
+        count,
+        largest,
+        entries(graph),
+        exits(graph),
+        np.flatnonzero(unentered(graph)),
+        np.flatnonzero(~goes_on(graph)),
+        traps(graph),
     )

@@ -15,12 +15,12 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import XodrError
-from xodrcheck.graph import reach
+from xodrcheck.graph import paths
 from xodrcheck.graph.build import LANE_CHANGE, LINK, LaneGraph, Node
 from xodrcheck.graph.lengths import CentreLine, centre_line, node_lengths
 from xodrcheck.model import Document
@@ -151,7 +151,7 @@ def route(document: Document, graph: LaneGraph, origin: Place, destination: Plac
     weights = _weights(document, graph)
     best: tuple[float, list[int], float, float] | None = None
     for start, s0 in starts:
-        dist, pred = reach.shortest_from(graph, weights, start)
+        dist, pred = paths.shortest_from(graph, weights, start)
         for goal, s1 in goals:
             path = _path_to(graph, weights, dist, pred, start, goal, s0, s1)
             if path is not None and (best is None or path[0] < best[0]):
@@ -160,7 +160,7 @@ def route(document: Document, graph: LaneGraph, origin: Place, destination: Plac
         _, nodes, s0, s1 = best
         return _made(document, graph, origin, destination, nodes, s0, s1, True, "")
     start, s0 = starts[0]
-    nodes, why = reach.best_partial(document, graph, start, [g for g, _ in goals])
+    nodes, why = paths.best_partial(document, graph, start, [g for g, _ in goals])
     last = graph.nodes[nodes[-1]]
     end = _travel_end(document, last)
     return _made(document, graph, origin, destination, nodes, s0, end, False, why)
@@ -177,10 +177,10 @@ def _path_to(graph, weights, dist, pred, start, goal, s0, s1) -> tuple[float, li
             return None
         k = into[np.argmin(dist[graph.source[into]] + weights[into])]
         cost = float(dist[graph.source[k]] + weights[k])
-        return cost, [*reach.unwind(pred, start, int(graph.source[k])), start]
+        return cost, [*paths.unwind(pred, start, int(graph.source[k])), start]
     if not np.isfinite(dist[goal]):
         return None
-    return float(dist[goal]), reach.unwind(pred, start, goal)
+    return float(dist[goal]), paths.unwind(pred, start, goal)
 
 
 # ------------------------------------------------------------------------------------------------------ polyline

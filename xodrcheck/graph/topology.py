@@ -20,7 +20,8 @@ Traffic entering a road at one end drives away from it (``direction.entering``);
 
 from __future__ import annotations
 
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
+
 from xodrcheck.graph.direction import entering, leaving
 from xodrcheck.model import (
     Connection,

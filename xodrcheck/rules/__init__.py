@@ -14,7 +14,7 @@ prefix    category    codes
 ``K``     link        ``K0xx`` road-link topology (:mod:`.link_topology`, :mod:`.link_usage`); ``K1xx`` positions at
                       contacts (:mod:`.link`)
 ``L``     lane        ``L0xx`` lane topology (:mod:`.lane`, :mod:`.lane_attributes`), road marks
-                      (:mod:`.lane_marks`); ``L1xx`` lane geometry
+                      (:mod:`.lane_marks`); ``L04x`` where traffic can go (:mod:`.reach`); ``L1xx`` lane geometry
 ``G``     geometry    ``G0xx``-``G8xx`` plan view and profiles (:mod:`.geometry`, :mod:`.elements`), lane shapes
                       (:mod:`.lane_shape`),
                       road types, shapes and country codes (:mod:`.road_attributes`), object outlines of curves
@@ -28,7 +28,8 @@ prefix    category    codes
                       zones in plan view (:mod:`.junction_area`), entries and exits of an elevation grid
                       (:mod:`.junction_entries`), virtual junctions' joints (:mod:`.junction_virtual`),
                       cross paths' placement (:mod:`.junction_paths`), crossing traffic in direct junctions
-                      (:mod:`.junction_direct`); ``J1xx`` junction geometry
+                      (:mod:`.junction_direct`); ``J040`` approaches with no way through (:mod:`.reach`); ``J1xx``
+                      junction geometry
                       (:mod:`.junction_geometry`)
 ``O``     overlap     ``O0xx`` (:mod:`.overlap`)
 ``H``     header      ``H0xx`` header, default regulations, whole-file recommendations (:mod:`.header`)
@@ -93,6 +94,7 @@ FAMILIES = (
     "junction_virtual",
     "junction_paths",
     "junction_direct",
+    "reach",
     "junction_geometry",
     "overlap",
     "header",
