@@ -29,6 +29,8 @@ COMMANDS = {
     "snapshot": "Write the invariants of a map as JSON: counts of roads, junctions and lanes, legs, lane length, lane "
     "graph hash, bounding box and findings.",
     "diff": "Compare a map with its snapshot (from 'xodrcheck snapshot'): print what changed, exit 1 if anything did.",
+    "graph": "Write the lane graph of a map (lanes, links, lane changes) as JSON, Graphviz DOT or GeoJSON.",
+    "route": "Find the shortest route between two lanes (ROAD:LANE[:S]): its length, lanes and polyline.",
 }
 SUBCOMMANDS = tuple(COMMANDS)
 EXIT_OK, EXIT_USAGE, EXIT_INCOMPLETE = 0, 2, 3

@@ -58,6 +58,9 @@ DATA_COMMANDS = {
     "metrics-stdout": lambda src, out, tmp: ["metrics", src],
     "snapshot": lambda src, out, tmp: ["snapshot", src, "-o", out + ".json"],
     "diff": lambda src, out, tmp: ["diff", str(_snapshot(tmp)), src],
+    "graph": lambda src, out, tmp: ["graph", src, "-o", out + ".json"],
+    "graph-stdout": lambda src, out, tmp: ["graph", src, "--format", "dot"],
+    "route": lambda src, out, tmp: ["route", src, "--from", "1:-1", "--to", "2:-1", "-o", out + ".txt"],
 }
 
 
@@ -97,6 +100,8 @@ WRITERS = {
     "view": lambda src, out: ["view", src, "-o", out],
     "metrics": lambda src, out: ["metrics", src, "-o", out],
     "snapshot": lambda src, out: ["snapshot", src, "-o", out],
+    "graph": lambda src, out: ["graph", src, "-o", out],
+    "route": lambda src, out: ["route", src, "--from", "1:-1", "--to", "2:-1", "-o", out],
 }
 SUFFIX = {"mesh": ".glb"}
 
