@@ -4,7 +4,8 @@ A road whose lane count differs between its middle and one end (a merge before a
 nobody feeds) gets a taper section at that end: the extra lanes, always the outermost of their side, go from full width
 to zero (or from zero to full) with a smooth cubic, and link only to lanes that exist on the other side of the
 section boundary. Markings: solid yellow centre line (solid white on one-way roads), broken white between lanes of one
-direction and solid within :data:`SOLID_NEAR_JUNCTION` of a junction, solid white road edges, none inside junctions.
+direction and solid within :data:`SOLID_NEAR_JUNCTION` of a junction (but broken beside a taper, which traffic
+crosses to enter or leave the lane that opens or closes), solid white road edges, none inside junctions.
 """
 
 from __future__ import annotations
@@ -69,10 +70,13 @@ def _spans(rp: RoadPlan, params: Params) -> list[_Span]:
     return spans
 
 
-def _marks(kind: str, color: str, s0: float, s1: float, rp: RoadPlan) -> tuple[RoadMark, ...]:
-    """Marks of one border over [s0, s1): ``kind`` in the open, solid within reach of a junction."""
+def _marks(kind: str, color: str, s0: float, s1: float, rp: RoadPlan, taper: bool = False) -> tuple[RoadMark, ...]:
+    """Marks of one border over [s0, s1): ``kind`` in the open, solid within reach of a junction, except beside a
+    lane that opens or closes there (``taper``): its traffic crosses that line to enter or leave it."""
     if kind == "solid":
         return (RoadMark(0.0, "solid", color, lane_change="none"),)
+    if taper:
+        return (RoadMark(0.0, kind, color, lane_change="both"),)
     cuts: list[tuple[float, str]] = []
     near0 = SOLID_NEAR_JUNCTION if rp.start_junction is not None else 0.0
     near1 = rp.length - SOLID_NEAR_JUNCTION if rp.end_junction is not None else rp.length
@@ -94,6 +98,7 @@ def _section(rp: RoadPlan, span: _Span, params: Params, prev: _Span | None, nxt:
     for forward, idx in ((True, 0), (False, 1)):
         a, b = span.start[idx], span.end[idx]
         n = max(a, b)
+        changing = {k for k in range(1, n + 1) if (k <= a) != (k <= b)}  # lanes that open or close in this span
         for k in range(1, n + 1):
             lid = lane_id(forward, k, median, rule)
             wa, wb = (w if k <= a else 0.0), (w if k <= b else 0.0)
@@ -101,7 +106,7 @@ def _section(rp: RoadPlan, span: _Span, params: Params, prev: _Span | None, nxt:
             succ = lid if nxt is not None and k <= max(nxt.start[idx], nxt.end[idx]) and wb > 0 else None
             outer = k == n
             kind = "solid" if outer else "broken"
-            marks = _marks(kind, "standard", span.s0, span.s1, rp)
+            marks = _marks(kind, "standard", span.s0, span.s1, rp, taper=k + 1 in changing)
             lanes_by_side[1 if lid > 0 else -1].append(Lane(lid, "driving", (_taper(wa, wb, L),), marks, pred, succ))
     if median:
         has_prev, has_next = prev is not None, nxt is not None

@@ -34,6 +34,7 @@ __all__ = [
     "document_is_valid",
     "errors",
     "finding_keys",
+    "generated_map_is_connected",
     "generated_map_is_valid",
     "invalid_input_refused",
     "round_trip_exact",
@@ -119,7 +120,49 @@ def generated_map_is_valid(params: ja.Params, seed: int, lines=None, tolerated: 
     left = [e for e in found if e.split(" ", 1)[0] not in tolerated]
     STATS["tolerated"] += len(found) - len(left)
     assert not left, f"generated map (seed {seed}) has errors:\n" + "\n".join(left[:20])
+    generated_map_is_connected(data, report, seed, tolerated)
     return data
+
+
+#: The checker's rules over the lane graph (:mod:`xodrcheck.rules.reach`): warnings, which a generated map has none of.
+REACH_RULES = ("L040", "L041", "L042", "J040")
+
+
+def generated_map_is_connected(
+    data: bytes, report: Report | None = None, seed: int | None = None, tolerated: frozenset[str] = frozenset()
+) -> None:
+    """A generated map is strongly connected at lane level through its open edges: every drivable lane (driven
+    each way it may be) is reached from a lane where traffic enters the map and reaches one where it leaves (on a
+    map without open edges: from and to every other lane), and the lane-graph rules find nothing (no dead end, no
+    lane nothing enters, no trap, no junction approach without a way through). No parameter allows a dead end: the
+    generator links every lane it draws, marks a line crossable beside every lane that opens or closes, gives a
+    one-way road a lane back where the network would otherwise have a part without a way out, and lets a road that
+    loops back to its junction turn off it. A finding with a code in ``tolerated`` (an open known fault of
+    :data:`fuzz.profiles.REGRESSIONS`) is counted in ``STATS["tolerated"]``, and the lanes it strands are not held
+    against the map."""
+    from xodrcheck.graph import lane_graph
+    from xodrcheck.graph.reach import entries, exits, reached
+
+    STATS["connected"] += 1
+    where = "" if seed is None else f" (seed {seed})"
+    report = report if report is not None else checked(data)
+    found = [f"{f.code} {f.name}: {f.message}" for f in report.findings if f.code in REACH_RULES]
+    known = [f for f in found if f.split(" ", 1)[0] in tolerated]
+    STATS["tolerated"] += len(known)
+    found = [f for f in found if f not in known]
+    assert not found, f"generated map{where} is not connected:\n" + "\n".join(found[:20])
+    if known:
+        return
+    result = read(data)
+    assert result.document is not None
+    graph = lane_graph(result.document)
+    if not graph.nodes:
+        return
+    ins, outs = entries(graph), exits(graph)
+    for label, sources, reverse in (("reached from an entry", ins, False), ("leading to an exit", outs, True)):
+        hit = reached(graph, sources if len(sources) else [0], reverse=reverse)
+        missed = [graph.nodes[i].describe() for i in np.flatnonzero(~hit)]
+        assert not missed, f"generated map{where}: lanes not {label}: {', '.join(missed[:10])}"
 
 
 def invalid_input_refused(action, tmp_file=None) -> str:

@@ -32,6 +32,7 @@ class Leg:
     n_in: int  #: lanes travelling into the node
     n_out: int  #: lanes travelling away from the node
     median: bool
+    road: int = -1  #: the road (chain) the leg belongs to: two legs of one road are a loop back to the junction
 
 
 class Gap(NamedTuple):

@@ -38,12 +38,15 @@ def turn(legs: list[Leg], i: int, j: int) -> float:
 
 def _targets(legs: list[Leg], rule: TrafficRule) -> list[list[int]]:
     """Per incoming leg, the legs it feeds, in enumeration order. Turns sharper than SHARPEST_TURN are left out, unless
-    a leg would then have no exit at all, or an outgoing leg no feeder (it is then fed by the least sharp turn)."""
+    a leg would then have no exit at all, or only its own road's other end (a road looping back to the junction: its
+    traffic would go round the loop for ever), or an outgoing leg no feeder (it is then fed by the least sharp turn)."""
     n = len(legs)
     out: list[list[int]] = []
     for i in range(n):
         others = [j for j in range(n) if j != i and legs[j].n_out > 0] if legs[i].n_in else []
-        out.append([j for j in others if abs(turn(legs, i, j)) <= SHARPEST_TURN] or others)
+        gentle = [j for j in others if abs(turn(legs, i, j)) <= SHARPEST_TURN]
+        loop = all(legs[j].road == legs[i].road != -1 for j in gentle)
+        out.append(others if loop else gentle)
     for j in range(n):
         if legs[j].n_out and not any(j in t for t in out):
             feeders = [i for i in range(n) if i != j and legs[i].n_in]

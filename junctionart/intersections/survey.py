@@ -95,7 +95,8 @@ class Survey:
         else:
             node, a, b = ch.nodes[-1], nodes[ch.nodes[-1]], nodes[ch.nodes[-2]]
             n_in, n_out = cfg.forward, cfg.backward
-        return Leg((node, self.leg_edge(key)), math.atan2(b[1] - a[1], b[0] - a[0]), n_in, n_out, cfg.median)
+        angle = math.atan2(b[1] - a[1], b[0] - a[0])
+        return Leg((node, self.leg_edge(key)), angle, n_in, n_out, cfg.median, key.chain)
 
     def drop_leg(self, node: int, keys: list[LegKey], prefer: list[int], why: str) -> None:
         """Remove the edge of one leg at ``node``: the first of ``prefer`` (indexes into ``keys``) whose removal keeps

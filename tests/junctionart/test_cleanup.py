@@ -65,7 +65,7 @@ def _right(sec):
 
 
 def test_markings(maps):
-    solid_near = broken = 0
+    solid_near = broken = beside_taper = 0
     for result in maps:
         for road in result.document.roads:
             for sec in road.sections:
@@ -84,6 +84,10 @@ def test_markings(maps):
                         kinds = [m.type for m in lane.marks]
                         if k == len(driving) - 1:
                             assert kinds == ["solid"], "road edge is solid"
+                        elif any(w.c or w.d for w in driving[k + 1].widths):
+                            # the lane outside opens or closes here: its traffic crosses this line, near a junction too
+                            assert [(m.type, m.lane_change) for m in lane.marks] == [("broken", "both")]
+                            beside_taper += 1
                         elif "broken" in kinds:
                             broken += 1
                             if road.successor is not None and road.sections[-1] is sec:
@@ -92,7 +96,7 @@ def test_markings(maps):
                                 end = road.length - sec.s
                                 assert end - last.s == pytest.approx(SOLID_NEAR_JUNCTION) or last.s == 0.0
                                 solid_near += 1
-    assert broken > 0 and solid_near > 0
+    assert broken > 0 and solid_near > 0 and beside_taper > 0
 
 
 def test_turn_lanes_appear_before_junctions(maps):

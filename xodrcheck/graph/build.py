@@ -1,7 +1,8 @@
 """The lane graph of a document: a node per lane of a lane section and direction of travel, an edge per way on.
 
 Nodes are the lanes of every road's lane sections (the permanent lane layer) whose type is among ``lane_types``
-(default: the types a motor vehicle drives on, :data:`~xodrcheck.model.DRIVABLE_LANE_TYPES`), once per direction
+(default: the types a motor vehicle drives on, :data:`~xodrcheck.model.DRIVABLE_LANE_TYPES`) and that have a width
+somewhere (:func:`zero_wide`: a lane whose width records are all zero carries no traffic), once per direction
 traffic drives on them (:func:`~xodrcheck.graph.direction.travels`: twice for a lane used both ways). Edges:
 
 * ``link``: traffic leaves the lane at its end and enters the lane a link names (:mod:`.topology`), when that lane is a
@@ -37,7 +38,7 @@ from xodrcheck.model import (
     lane_type_name,
 )
 
-__all__ = ["LANE_CHANGE", "LINK", "LaneGraph", "Node", "Stop", "lane_graph"]
+__all__ = ["LANE_CHANGE", "LINK", "LaneGraph", "Node", "Stop", "lane_graph", "zero_wide"]
 
 LINK, LANE_CHANGE = "link", "lane_change"
 #: Edge kinds by their code in :attr:`LaneGraph.kind`.
@@ -119,12 +120,18 @@ def lane_graph(
     return found
 
 
+def zero_wide(lane: Lane) -> bool:
+    """Whether a lane is zero wide all along its section by its records alone: no ``<border>`` and every ``<width>``
+    polynomial zero (or none at all). No vehicle drives on it; it is no node."""
+    return not lane.borders and all(w.a == 0 and w.b == 0 and w.c == 0 and w.d == 0 for w in lane.widths)
+
+
 def _nodes(document: Document, types: frozenset[LaneType]) -> list[tuple[Node, Road, Lane]]:
     out = []
     for road_id, road in document.road_by_id.items():
         for index, section in enumerate(road.lane_sections):
             for lane in section.lanes:
-                if lane.type not in types:
+                if lane.type not in types or zero_wide(lane):
                     continue
                 key = LaneKey(road_id, section.s, lane.id)
                 for travel in travels(road, lane):
