@@ -10,7 +10,10 @@ writes the map (``xodrcheck snapshot``, ``xodrcheck diff``, the ``xodr_snapshot`
   links and every junction laneLink, as unordered pairs of lanes named ``road/section index/lane id``; see
   :func:`lane_links`), so a dropped, added or re-targeted link changes the hash whatever the order of the file;
 * the bounding box of the lane borders (:func:`xodrcheck.info.bounding_box`);
-* the findings of a full check, counted by code.
+* the findings of a full check, counted by code;
+* reachability (:mod:`xodrcheck.graph.invariants`): the lane graph's strongly connected parts, the entries and exits
+  at the map's open edges and the (entry, exit) pairs no route joins, so that ``diff`` names a route that vanished
+  (snapshots written before these were kept compare without them).
 
 Lengths and coordinates are stored rounded to the millimetre and compared with the position and length tolerances
 (:class:`xodrcheck.config.Tolerances`), so numerical noise between platforms is no change.
@@ -24,12 +27,15 @@ from collections import Counter
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass, fields
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from xodrcheck.check import check
 from xodrcheck.config import Config, Tolerances
 from xodrcheck.findings import XodrError
+from xodrcheck.graph.invariants import KEYS as REACH_KEYS
+from xodrcheck.graph.invariants import reach_differences, reach_invariants
 from xodrcheck.info import bounding_box, junction_legs
 from xodrcheck.lanes import geometry_of
 from xodrcheck.model import ContactPoint, Document, ElementType, Road, lane_type_name
@@ -74,13 +80,22 @@ class Snapshot:
     topology: str
     bbox: tuple[float, float, float, float] | None
     findings: Mapping[str, int]
+    #: reachability invariants (:data:`xodrcheck.graph.invariants.KEYS`); ``None`` in an older snapshot
+    strong_components: int | None = None
+    entries: tuple[str, ...] | None = None
+    exits: tuple[str, ...] | None = None
+    unroutable: tuple[tuple[str, str], ...] | None = None
 
     def to_json(self) -> dict:
         data: dict[str, object] = {"format": FORMAT}
         for f in fields(self):
             value = getattr(self, f.name)
             data[f.name] = (
-                list(value) if isinstance(value, tuple) else dict(value) if isinstance(value, Mapping) else value
+                [list(v) if isinstance(v, tuple) else v for v in value]
+                if isinstance(value, tuple)
+                else dict(value)
+                if isinstance(value, Mapping)
+                else value
             )
         return data
 
@@ -91,12 +106,13 @@ class Snapshot:
             raise SnapshotError("a snapshot is a JSON object")
         if data.get("format") != FORMAT:
             raise SnapshotError(f"snapshot format {data.get('format')!r}, this xodrcheck reads format {FORMAT}")
+        optional = set(REACH_KEYS)
         names = [f.name for f in fields(cls)]
-        missing = [n for n in names if n not in data]
+        missing = [n for n in names if n not in data and n not in optional]
         if missing:
             raise SnapshotError(f"snapshot lacks {', '.join(missing)}")
         try:
-            values = {n: data[n] for n in names}
+            values: dict[str, Any] = {n: data.get(n) for n in names}
             for n in ("junctions_by_type", "legs", "lanes_by_type", "findings"):
                 values[n] = {str(k): int(v) for k, v in sorted(dict(values[n]).items())}
             for n in ("roads", "junction_roads", "junctions", "lane_sections", "lanes", "lane_links"):
@@ -107,6 +123,11 @@ class Snapshot:
             values["bbox"] = None if box is None else tuple(float(v) for v in box)
             if values["bbox"] is not None and len(values["bbox"]) != 4:
                 raise ValueError("bbox needs four numbers")
+            if values["entries"] is not None:
+                values["strong_components"] = int(values["strong_components"])
+                values["entries"] = tuple(str(v) for v in values["entries"])
+                values["exits"] = tuple(str(v) for v in values["exits"])
+                values["unroutable"] = tuple((str(a), str(b)) for a, b in values["unroutable"])
         except (TypeError, ValueError, AttributeError) as exc:
             raise SnapshotError(f"malformed snapshot: {exc}") from None
         return cls(**values)
@@ -242,6 +263,7 @@ def snapshot_of(source: str | Path | bytes, config: Config | None = None) -> Sna
         if box is None
         else (_rounded(box.min_x), _rounded(box.min_y), _rounded(box.max_x), _rounded(box.max_y)),
         findings=dict(sorted(Counter(f.code for f in report.findings).items())),
+        **reach_invariants(doc),
     )
 
 
@@ -283,6 +305,7 @@ def differences(old: Snapshot, new: Snapshot, tolerances: Tolerances | None = No
         yield f"total lane length: {old.lane_length:.3f} m -> {new.lane_length:.3f} m"
     if old.topology != new.topology:
         yield f"lane graph topology changed (hash {old.topology} -> {new.topology})"
+    yield from reach_differences({k: getattr(old, k) for k in REACH_KEYS}, {k: getattr(new, k) for k in REACH_KEYS})
     if (old.bbox is None) != (new.bbox is None):
         yield f"bounding box: {_box(old.bbox)} -> {_box(new.bbox)}"
     elif old.bbox is not None and new.bbox is not None:

@@ -87,6 +87,44 @@ def test_differences_are_readable_and_tolerant():
     assert any(line.startswith("bounding box: x 0.000..120.000") for line in lines)
 
 
+T_JUNCTION = Path(__file__).resolve().parents[2] / "examples" / "t-junction.xodr"
+
+
+def test_snapshots_keep_where_traffic_enters_and_leaves_and_which_routes_there_are():
+    """The README's T junction: every road's outer end is open; all nine entry-exit pairs route but the three
+    U-turns (no connection turns back)."""
+    snap = snapshot_of(T_JUNCTION)
+    assert snap.entries == ("1:-1:start", "2:1:end", "3:-1:start")
+    assert snap.exits == ("1:1:start", "2:-1:end", "3:1:start")
+    assert snap.unroutable == (("1:-1:start", "1:1:start"), ("2:1:end", "2:-1:end"), ("3:-1:start", "3:1:start"))
+    assert snap.strong_components == 12
+
+
+def test_diff_names_a_route_that_vanished(tmp_path):
+    """Without connection 2 (west to south) and connecting lane 102/-1's predecessor, no route leads from road 1's
+    start to road 3's start any more (either alone still does: the graph follows a link either side states)."""
+    text = T_JUNCTION.read_text(encoding="utf-8")
+    start = text.index('<connection id="2"')
+    end = text.index("</connection>", start) + len("</connection>")
+    text = text[:start] + text[end:]
+    road = text.index('<road id="102"')
+    text = text[:road] + text[road:].replace('<predecessor id="-1"/><successor id="1"/>', '<successor id="1"/>', 1)
+    cut = tmp_path / "no-turn.xodr"
+    cut.write_text(text, encoding="utf-8")
+    lines = list(differences(snapshot_of(T_JUNCTION), snapshot_of(cut)))
+    assert "route from 1:-1:start to 3:1:start vanished" in lines
+    assert not [line for line in lines if "appeared" in line or " is gone" in line]
+
+
+def test_a_snapshot_without_reachability_still_compares():
+    """Snapshots written before issue 30 have no reachability keys: they load, and compare on the rest."""
+    data = snapshot_of(JUNCTION).to_json()
+    for key in ("strong_components", "entries", "exits", "unroutable"):
+        del data[key]
+    old = Snapshot.from_json(data)
+    assert old.entries is None and list(differences(old, snapshot_of(JUNCTION))) == []
+
+
 @pytest.mark.parametrize("data", [[], {"format": 99}, {"format": 1, "roads": 1}, {"format": 1, "roads": "x"}])
 def test_malformed_snapshots_are_refused(data):
     with pytest.raises(SnapshotError):
