@@ -27,7 +27,19 @@ import numpy as np
 from xodrcheck.arrays import ranges
 from xodrcheck.graph.build import LaneGraph
 
-__all__ = ["Reachability", "components", "entries", "exits", "goes_on", "reachability", "reached", "traps", "unentered"]
+__all__ = [
+    "Reachability",
+    "components",
+    "entries",
+    "exits",
+    "goes_on",
+    "on_circuits",
+    "reachability",
+    "reached",
+    "traps",
+    "unentered",
+    "unreached",
+]
 
 
 def entries(graph: LaneGraph) -> np.ndarray:
@@ -95,6 +107,26 @@ def components(graph: LaneGraph) -> tuple[int, np.ndarray]:
     return int(count), labels
 
 
+def on_circuits(graph: LaneGraph) -> np.ndarray:
+    """Per node: whether it lies in a circuit (a strongly connected part a link runs inside)."""
+    if not graph.nodes:
+        return np.zeros(0, dtype=bool)
+    count, labels = components(graph)
+    a, b = labels[graph.source], labels[graph.target]
+    circuit = np.zeros(count, dtype=bool)
+    circuit[a[(a == b) & (graph.kind == 0)]] = True  # every edge inside a strongly connected part lies on a cycle
+    return circuit[labels]
+
+
+def unreached(graph: LaneGraph) -> np.ndarray:
+    """Per node: whether no route reaches it, from an entry or a circuit: the lanes nothing enters (:func:`unentered`)
+    and what only they lead to. Strongly connected parts are computed only when some lane is unentered."""
+    if not unentered(graph).any():
+        return np.zeros(len(graph.nodes), dtype=bool)
+    sources = np.flatnonzero(on_circuits(graph)).tolist() + entries(graph).tolist()
+    return ~reached(graph, sources)
+
+
 def _needs_components(graph: LaneGraph, outs: np.ndarray, ins: np.ndarray) -> bool:
     """Whether the map may have a trap: some lane reaches no exit (or, on a closed map, the map is not strongly
     connected)."""
@@ -116,7 +148,7 @@ def traps(graph: LaneGraph) -> list[np.ndarray]:
     count, labels = components(graph)
     a, b = labels[graph.source], labels[graph.target]
     circuit = np.zeros(count, dtype=bool)
-    circuit[a[(a == b) & (graph.kind == 0)]] = True  # every edge inside a strongly connected part lies on a cycle
+    circuit[a[(a == b) & (graph.kind == 0)]] = True  # as on_circuits, per part
     leaving = np.zeros(count, dtype=bool)
     leaving[a[a != b]] = True
     entered = np.zeros(count, dtype=bool)

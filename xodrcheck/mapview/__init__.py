@@ -19,6 +19,7 @@ if TYPE_CHECKING:  # pragma: no cover
 def map_data(document: Document, chord: float = CHORD) -> tuple[dict, str | None]:
     """The encoded map of a document and a note naming the roads it leaves out (``None`` when it draws them all)."""
     from xodrcheck.mapview.encode import encode
+    from xodrcheck.mapview.routes import graph_data
     from xodrcheck.mapview.shapes import map_shapes
 
     shapes = map_shapes(document, chord=chord)
@@ -26,7 +27,9 @@ def map_data(document: Document, chord: float = CHORD) -> tuple[dict, str | None
     if shapes.skipped:
         shown = ", ".join(shapes.skipped[:10]) + (" ..." if len(shapes.skipped) > 10 else "")
         note = f"{len(shapes.skipped)} road(s) not drawn (geometry not evaluable or not finite): {shown}"
-    return encode(shapes), note
+    data = encode(shapes)
+    data["graph"] = graph_data(document, shapes.roads)  # routes between clicked lanes, unreachable lanes shaded
+    return data, note
 
 
 def file_map_data(source: str | Path, chord: float = CHORD) -> tuple[dict | None, str | None]:

@@ -29,7 +29,7 @@ from importlib import resources
 from xodrcheck.findings import Finding, Severity
 
 #: Script files, in the order they run (one inline script).
-SCRIPTS = ("decode.js", "map.js", "render.js", "report.js")
+SCRIPTS = ("decode.js", "map.js", "render.js", "route.js", "report.js")
 _SEVERITIES = (Severity.ERROR, Severity.WARNING, Severity.INFO)
 _KNOWN = (
     *("code", "name", "category", "severity", "message", "road", "lane", "section_s", "s", "x", "y", "z", "line"),

@@ -39,6 +39,7 @@ F.startMap = function () {
   }));
   this.legend(data);
   this.bindTools();
+  XC.attachRoutes(this.map, data);  // route.js: routes between clicked lanes, unreachable lanes shaded
 };
 
 F.legend = function () {
