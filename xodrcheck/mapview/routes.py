@@ -21,7 +21,7 @@ def graph_data(document: Document, roads: Sequence[tuple]) -> dict:
     """The payload for a map whose ``roads`` (id first) the page draws; nodes on roads it does not draw are left out,
     with their edges."""
     graph = lane_graph(document)
-    index = {}
+    index: dict[str, int] = {}
     for k, road in enumerate(roads):
         index.setdefault(road[0], k)
     keep = np.array([n.road in index for n in graph.nodes], dtype=bool)
