@@ -37,6 +37,7 @@ from xodrcheck.model import (
     document_cache,
     lane_type_name,
 )
+from xodrcheck.quantities import metres
 
 __all__ = ["LANE_CHANGE", "LINK", "LaneGraph", "Node", "Stop", "lane_graph", "zero_wide"]
 
@@ -68,7 +69,7 @@ class Node:
         return self.key.lane
 
     def describe(self) -> str:
-        return f"road {self.key.road} lane {self.key.lane} (lane section s={self.key.section_s:g})"
+        return f"road {self.key.road} lane {self.key.lane} (lane section s={metres(self.key.section_s)})"
 
 
 @dataclass(frozen=True, slots=True)

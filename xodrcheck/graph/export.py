@@ -19,6 +19,7 @@ from xodrcheck.graph.build import KINDS, LaneGraph, Node
 from xodrcheck.graph.lengths import centre_line, node_lengths
 from xodrcheck.graph.routes import Route
 from xodrcheck.model import Document
+from xodrcheck.quantities import metres
 
 __all__ = ["graph_dot", "graph_geojson", "graph_json", "route_geojson", "route_json", "route_text"]
 
@@ -71,7 +72,7 @@ def _dot_text(text: str) -> str:
 
 def _dot_id(node: Node) -> str:
     suffix = "" if node.travel > 0 else "<"
-    return json.dumps(f"{node.road}/{node.key.section_s:g}/{node.lane}{suffix}")
+    return json.dumps(f"{node.road}/{metres(node.key.section_s)}/{node.lane}{suffix}")
 
 
 def graph_dot(graph: LaneGraph, stream: IO[str]) -> None:
@@ -80,7 +81,8 @@ def graph_dot(graph: LaneGraph, stream: IO[str]) -> None:
     stream.write("digraph lanes {\n  node [shape=box, fontsize=10];\n")
     for node in graph.nodes:
         label = "\\n".join(
-            _dot_text(part) for part in (f"road {node.road} lane {node.lane}", f"s={node.key.section_s:g} {node.type}")
+            _dot_text(part)
+            for part in (f"road {node.road} lane {node.lane}", f"s={metres(node.key.section_s)} {node.type}")
         )
         stream.write(f'  {_dot_id(node)} [label="{label}"];\n')
     for a, b, kind in zip(graph.source.tolist(), graph.target.tolist(), graph.kind.tolist()):
@@ -177,6 +179,6 @@ def route_text(route: Route, stream: IO[str]) -> None:
     for step in route.steps:
         node = step.node
         stream.write(
-            f"  road {node.road} lane {node.lane} (lane section s={node.key.section_s:g}, {node.type}): "
+            f"  road {node.road} lane {node.lane} (lane section s={metres(node.key.section_s)}, {node.type}): "
             f"s {step.s_from:.3f} -> {step.s_to:.3f}, {step.entered}\n"
         )

@@ -24,6 +24,7 @@ from xodrcheck.graph import paths
 from xodrcheck.graph.build import LANE_CHANGE, LINK, LaneGraph, Node
 from xodrcheck.graph.lengths import CentreLine, centre_line, node_lengths
 from xodrcheck.model import Document
+from xodrcheck.quantities import metres
 
 __all__ = ["Place", "PlaceError", "Route", "RouteStep", "parse_place", "route"]
 
@@ -46,7 +47,7 @@ class Place:
     s: float | None = None
 
     def __str__(self) -> str:
-        return f"{self.road}:{self.lane}" + ("" if self.s is None else f":{self.s:g}")
+        return f"{self.road}:{self.lane}" + ("" if self.s is None else f":{metres(self.s)}")
 
 
 def parse_place(text: str) -> Place:
@@ -113,7 +114,7 @@ def _candidates(document: Document, graph: LaneGraph, place: Place, origin: bool
     for travel in (1, -1):
         if place.s is not None:
             if not (0.0 <= place.s <= road.length):
-                raise PlaceError(f"s={place.s:g} is not on road {place.road} (0 to {road.length:g})")
+                raise PlaceError(f"s={metres(place.s)} is not on road {place.road} (0 to {metres(road.length)})")
             k = _section_holding(document, place.road, place.s)
             node = graph.index.get((place.road, k, place.lane, travel))
             if node is not None:
@@ -128,7 +129,7 @@ def _candidates(document: Document, graph: LaneGraph, place: Place, origin: bool
                 out.append((node, (start if travel > 0 else end) if origin else (end if travel > 0 else start)))
                 break
     if not out:
-        where = "" if place.s is None else f" at s={place.s:g}"
+        where = "" if place.s is None else f" at s={metres(place.s)}"
         raise PlaceError(f"road {place.road} has no lane {place.lane}{where} in the lane graph (a drivable lane)")
     return out
 

@@ -34,6 +34,7 @@ from xodrcheck.model import (
     Road,
     RoadLink,
 )
+from xodrcheck.quantities import metres
 
 __all__ = ["BROKEN", "JUNCTION", "OPEN", "ROAD", "SECTION", "UNFOLLOWED", "Onward", "Target", "Topology"]
 
@@ -136,7 +137,7 @@ class Topology:
         ids = dict.fromkeys(links_across(lane, end))
         ids.update((v.id, None) for v in other.lanes if v.id != 0 and lane.id in links_across(v, back_end))
         targets = tuple(Target(road, j, i, travel) for i in ids)
-        why = "" if targets else f"lane {lane.id} names no {_word(end)} in the lane section at s={other.s:g}"
+        why = "" if targets else f"lane {lane.id} names no {_word(end)} in the lane section at s={metres(other.s)}"
         return Onward(targets, SECTION, why)
 
     # ------------------------------------------------------------------------------------------------ road links
