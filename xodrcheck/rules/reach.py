@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from xodrcheck.findings import Category, Severity
+from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.graph import build, topology
 from xodrcheck.graph.build import LaneGraph, Node, lane_graph
 from xodrcheck.graph.direction import leaving
@@ -52,7 +52,7 @@ def _unlinked_with_width(ctx: Context, road: Road, node: Node, kind: str, end: C
     return ctx.zero_width_at(road, node.index, node.lane, end) is False
 
 
-@rule("L040", "lane-dead-end", Category.LANE, Severity.WARNING)
+@rule("L040", "lane-dead-end", Category.LANE, Severity.WARNING, basis=Basis.PLAUSIBILITY)
 def lane_dead_end(ctx: Context):
     """Traffic on a drivable lane can go no further, away from any open edge of the map.
 
@@ -61,6 +61,9 @@ def lane_dead_end(ctx: Context):
     drives (a parking lane, a shoulder). Lanes that end where their road ends without a link leave the map there and
     are fine. Missing, reversed and dangling links are the lane-level rules' (``lane-not-continued``,
     ``incoming-lane-unconnected``, ``lane-link-direction``...); this rule reports what is left.
+
+    Plausibility: no rule of the standard says that a lane must lead somewhere (11.1 asks drivable lanes to be
+    continuous, with no UID); a warning by default, the rule's own severity under ``--profile strict``.
 
     Passes (lane -2 closes at zero width; the broken line lets its traffic move into lane -1)::
 
@@ -93,7 +96,7 @@ def lane_dead_end(ctx: Context):
         )
 
 
-@rule("L041", "lane-unreachable", Category.LANE, Severity.WARNING)
+@rule("L041", "lane-unreachable", Category.LANE, Severity.WARNING, basis=Basis.PLAUSIBILITY)
 def lane_unreachable(ctx: Context):
     """No route reaches a drivable lane: no link leads into it and no road mark lets traffic change into it.
 
@@ -102,6 +105,9 @@ def lane_unreachable(ctx: Context):
     reached only through it. A lane that appears beside another behind a solid line, or a connecting lane no
     junction ``laneLink`` leads into, is such a lane. A full-width lane without a link at its start is
     ``lane-not-continued``'s.
+
+    Plausibility: no rule of the standard says that every lane must be reachable; a warning by default, the rule's
+    own severity under ``--profile strict``.
 
     Passes (lane -2 opens from zero width at s=50; the broken line lets lane -1's traffic move into it)::
 
@@ -170,13 +176,16 @@ def _entry_words(behind: topology.Onward) -> str:
     return "no lane links into it and no road mark lets traffic change into it"
 
 
-@rule("L042", "lanes-trapped", Category.LANE, Severity.WARNING)
+@rule("L042", "lanes-trapped", Category.LANE, Severity.WARNING, basis=Basis.PLAUSIBILITY)
 def lanes_trapped(ctx: Context):
     """Traffic that enters a part of the map can never leave it: its lanes lead only among themselves.
 
     The part has a way round (traffic can circle in it) but no link leads out of it, back to the rest of the map or to
     an open edge: a one-way loop with an entry and no exit, say. Reported once per part, where traffic enters it. On
     a map without open edges the main part (the largest strongly connected one) is the map itself and is not reported.
+
+    Plausibility: no rule of the standard forbids a part of a map that traffic cannot leave; a warning by default,
+    the rule's own severity under ``--profile strict``.
 
     Passes (road 2, a loop, leads back into itself through connecting road 11 and out to road 3 through 12)::
 
@@ -213,7 +222,7 @@ def _natural(road_id: str) -> tuple:
     return (0, int(road_id), "") if road_id.isdigit() else (1, 0, road_id)
 
 
-@rule("J040", "junction-no-way-through", Category.JUNCTION, Severity.WARNING)
+@rule("J040", "junction-no-way-through", Category.JUNCTION, Severity.WARNING, basis=Basis.PLAUSIBILITY)
 def junction_no_way_through(ctx: Context):
     """A lane enters a junction, but no way leads through it: every connecting lane its laneLinks lead into stops
     inside the junction.
@@ -222,6 +231,9 @@ def junction_no_way_through(ctx: Context):
     lanes that do, leaves the approach without an exit; one that reaches an open edge of the map leaves the map (a
     lane with no laneLink at all is ``incoming-lane-unconnected``'s; the dead end itself is reported where it is, by
     ``lane-not-continued`` or ``lane-dead-end``: this rule says which approach it leaves without a way through).
+
+    Plausibility: the standard states no rule that every approach must have a way through a junction; a warning by
+    default, the rule's own severity under ``--profile strict``.
 
     Passes (connecting road 10 continues into road 2)::
 
