@@ -1,7 +1,9 @@
-"""Defect injection: each defect, written into a clean corpus map with lxml, yields a new error-level finding.
+"""Defect injection: each defect, written into a clean corpus map with lxml, yields a new finding.
 
-For every kind of defect, the map is checked before and after the edit with the rules of the expected category only;
-the injected map must have an error-level finding of that category whose (code, road) the clean map did not have.
+For every kind of defect, the map is checked before and after the edit with the rules of the expected category only.
+Under the ``generator`` profile (every rule at its own severity) the injected map must have an error of that category
+whose (code, road) the clean map did not have; under the default profile the same defect must still be reported (at
+least a warning), and a finding whose basis is the project's plausibility is never an error there.
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from lxml import etree
 
 from tests.conftest import corpus_root
 from xodrcheck.check import check
+from xodrcheck.config import Config
 from xodrcheck.findings import Severity
 
 pytestmark = [pytest.mark.corpus, pytest.mark.slow]
@@ -264,10 +267,10 @@ DEFECTS = [
 ]
 
 
-def _errors(data: bytes, category: str) -> set[tuple[str, str | None]]:
-    report = check(data, select=(category,))
+def _findings(data: bytes, category: str, profile: str, least: Severity) -> set[tuple[str, str | None, Severity, str]]:
+    report = check(data, config=Config(profile=profile), select=(category,))
     assert not [f for f in report.findings if f.code in ("X900", "X901")], report.findings
-    return {(f.code, f.road) for f in report.findings if f.severity >= Severity.ERROR}
+    return {(f.code, f.road, f.severity, str(f.basis)) for f in report.findings if f.severity >= least}
 
 
 def test_at_least_fifteen_kinds_on_four_maps():
@@ -282,5 +285,11 @@ def test_injected_defect_gives_a_new_error(corpus_dir, defect):
     tree = etree.ElementTree(etree.fromstring(source, parser))
     defect.inject(tree)
     injected = etree.tostring(tree, xml_declaration=True, encoding="UTF-8")
-    new = _errors(injected, defect.category) - _errors(source, defect.category)
-    assert new, f"{defect.name} in {defect.map}: no new {defect.category} error"
+    def new(profile: str, least: Severity):
+        return _findings(injected, defect.category, profile, least) - _findings(source, defect.category, profile, least)
+
+    assert new("generator", Severity.ERROR), f"{defect.name} in {defect.map}: no new {defect.category} error"
+    reported = new("default", Severity.WARNING)
+    assert reported, f"{defect.name} in {defect.map}: not reported under the default profile"
+    assert not [f for f in reported if f[3] == "plausibility" and f[2] >= Severity.ERROR], reported
+
