@@ -19,13 +19,17 @@ from functools import cached_property
 import numpy as np
 import shapely
 
+from xodrcheck import work
+from xodrcheck.config import Tolerances
 from xodrcheck.findings import OutOfTime
 from xodrcheck.mesh import LaneSurfaces, cached_per_chord, surfaces_of
 from xodrcheck.model import DRIVABLE_LANE_TYPES, Document, ElementType, JunctionType, LaneKey
 
 DRIVABLE_TYPE_NAMES = frozenset(t.value for t in DRIVABLE_LANE_TYPES)
-#: Triangles united in one GEOS call when a lane strip's outline is not a simple polygon.
+#: Pieces united in one GEOS call when a lane strip's outline is not a simple polygon.
 _UNION_BLOCK = 256
+#: Most quads of one piece of such a strip (:meth:`Footprints.pieces`).
+_PIECE = 64
 #: Most points of an overlap polygon's outline sampled for heights (plus its representative point).
 _HEIGHT_POINTS = 24
 #: Lane-strip pairs intersected at a time by :meth:`OverlapIndex.overlaps` (bounds its temporary geometries).
@@ -52,18 +56,55 @@ def _outlines(surfaces: LaneSurfaces) -> np.ndarray:
     return polygons
 
 
-class Footprints:
-    """Lane footprints of one document with a spatial index (build with :func:`footprints_of`)."""
+def _run_outlines(inner: np.ndarray, outer: np.ndarray, runs: np.ndarray) -> np.ndarray:
+    """Plan-view outline polygons of runs ``(a, b)`` of quads of one strip (its border rows ``inner`` and ``outer``):
+    the inner row from ``a`` to ``b``, then the outer row back."""
+    size = runs[:, 1] - runs[:, 0] + 1
+    owner = np.repeat(np.arange(len(runs)), 2 * size)
+    j = np.arange(owner.size) - np.repeat(np.concatenate([[0], np.cumsum(2 * size)[:-1]]), 2 * size)
+    a, n = runs[owner, 0], size[owner]
+    last = len(inner) - 1
+    xy = np.where((j < n)[:, None], inner[np.clip(a + j, 0, last)], outer[np.clip(a + 2 * n - 1 - j, 0, last)])
+    return shapely.polygons(shapely.linearrings(xy, indices=owner))
 
-    def __init__(self, surfaces: LaneSurfaces, out_of_time: Callable[[], bool] | None = None):
+
+def _turns(xy: np.ndarray) -> float:
+    """Full circles the heading of a polyline sweeps: the range of its unwrapped heading over 2 pi (steps of no
+    length, where a border passes a centre of curvature, are left out)."""
+    steps = np.diff(xy, axis=0)
+    steps = steps[(steps[:, 0] != 0) | (steps[:, 1] != 0)]
+    if len(steps) < 2:
+        return 0.0
+    heading = np.unwrap(np.arctan2(steps[:, 1], steps[:, 0]))
+    return float((heading.max() - heading.min()) / (2 * np.pi))
+
+
+class Footprints:
+    """Lane footprints of one document with a spatial index (build with :func:`footprints_of`).
+
+    A strip whose outline is not a simple polygon and whose border turns through more than ``max_turns`` full circles
+    (:attr:`winding`) winds round itself: its footprint is left empty instead of united (the union's cost grows with
+    every turn, and a road wound round a 0.5 m circle a thousand times is no road), and ``lane-fold`` says so."""
+
+    def __init__(
+        self, surfaces: LaneSurfaces, out_of_time: Callable[[], bool] | None = None, max_turns: float | None = None
+    ):
         self.surfaces = surfaces
         self._out_of_time = out_of_time
         self._near: np.ndarray | None = None
+        most = Tolerances().max_turns if max_turns is None else max_turns
         polygons = _outlines(surfaces)
         invalid = np.flatnonzero(~shapely.is_valid(polygons))
+        #: Strips that wind round themselves -> the full turns their inner border sweeps (see the class docstring).
+        self.winding: dict[int, float] = {}
         for i in invalid:
-            polygons[i] = self._triangle_union(int(i))
-        #: One (multi)polygon per lane strip of :attr:`surfaces`.
+            turns = _turns(surfaces.rows(int(i))[0][:, :2])
+            if turns > most:
+                self.winding[int(i)] = turns
+                polygons[i] = shapely.Polygon()
+            else:
+                polygons[i] = self._union(int(i))
+        #: One (multi)polygon per lane strip of :attr:`surfaces` (empty for a strip that winds round itself).
         self.polygons = polygons
         #: Lane strips whose outline is not a simple polygon (their footprint is the union of their triangles).
         self.invalid = invalid
@@ -75,13 +116,36 @@ class Footprints:
         faces = s.faces[s.lane_faces[lane] : s.lane_faces[lane + 1]]
         return s.vertices[faces][..., :2]
 
-    def _triangle_union(self, lane: int):
-        """Union of a lane strip's triangles, in blocks of :data:`_UNION_BLOCK` merged pairwise, so that a strip
-        winding over itself thousands of times (a damaged 1e9 m spiral) can be stopped between two GEOS calls when the
-        time budget is spent (:class:`OutOfTime`)."""
-        tris = self.triangles(lane)
-        polys = shapely.polygons(np.concatenate([tris, tris[:, :1]], axis=1))
-        polys = polys[shapely.area(polys) > 0]
+    def pieces(self, lane: int) -> np.ndarray:
+        """Polygons whose union is the lane strip's union of triangles: runs of at most :data:`_PIECE` quads whose
+        outline is a simple polygon and whose triangles all lie the right way up (such a run's outline is exactly the
+        union of its triangles: they cover it once), other runs halved until they are, down to single triangles."""
+        s = self.surfaces
+        inner, outer = (row[:, :2] for row in s.rows(lane))
+        # flipped[2 k]: faces lying upside down among the first k quads' (a fold)
+        flipped = np.concatenate([[0], np.cumsum(s.plan_areas[s.lane_faces[lane] : s.lane_faces[lane + 1]] < 0)])
+        quads = len(inner) - 1
+        runs = np.array([(a, min(a + _PIECE, quads)) for a in range(0, quads, _PIECE)], dtype=np.int64).reshape(-1, 2)
+        out = []
+        while len(runs):
+            polys = _run_outlines(inner, outer, runs)
+            ok = shapely.is_valid(polys) & (flipped[2 * runs[:, 1]] == flipped[2 * runs[:, 0]])
+            out.append(polys[ok])
+            single = runs[~ok & (runs[:, 1] - runs[:, 0] == 1)]
+            if len(single):
+                tris = self.triangles(lane)[np.concatenate([2 * single[:, 0], 2 * single[:, 0] + 1])]
+                polys = shapely.polygons(np.concatenate([tris, tris[:, :1]], axis=1))
+                out.append(polys[shapely.area(polys) > 0])
+            split = runs[~ok & (runs[:, 1] - runs[:, 0] > 1)]
+            middle = (split[:, 0] + split[:, 1]) // 2
+            runs = np.concatenate([np.column_stack([split[:, 0], middle]), np.column_stack([middle, split[:, 1]])])
+        return np.concatenate(out) if out else np.empty(0, dtype=object)
+
+    def _union(self, lane: int):
+        """Union of a lane strip's :meth:`pieces`, in blocks of :data:`_UNION_BLOCK` merged pairwise, so that the time
+        budget can stop it between two GEOS calls (:class:`OutOfTime`)."""
+        polys = self.pieces(lane)
+        work.add("union coordinates", int(shapely.get_num_coordinates(polys).sum()))
         parts = []
         for k in range(0, len(polys), _UNION_BLOCK):
             self._check_time()
@@ -243,9 +307,15 @@ class Relations:
 class OverlapIndex:
     """Footprints plus the road relations of one document."""
 
-    def __init__(self, document: Document, chord: float | None = None, out_of_time: Callable[[], bool] | None = None):
+    def __init__(
+        self,
+        document: Document,
+        chord: float | None = None,
+        out_of_time: Callable[[], bool] | None = None,
+        max_turns: float | None = None,
+    ):
         self.document = document
-        self.footprints = Footprints(surfaces_of(document, chord), out_of_time)
+        self.footprints = Footprints(surfaces_of(document, chord), out_of_time, max_turns)
         self.relations = Relations(document)
 
     @property
@@ -334,11 +404,17 @@ class OverlapIndex:
 
 
 def overlap_index(
-    document: Document, chord: float | None = None, out_of_time: Callable[[], bool] | None = None
+    document: Document,
+    chord: float | None = None,
+    out_of_time: Callable[[], bool] | None = None,
+    max_turns: float | None = None,
 ) -> OverlapIndex:
-    """:class:`OverlapIndex` of a document, cached for its lifetime (per chord). ``out_of_time`` is polled while the
-    footprints are built; when it says so, :class:`OutOfTime` is raised and nothing is cached."""
-    return cached_per_chord("overlap index", document, chord, lambda d, c: OverlapIndex(d, c, out_of_time))
+    """:class:`OverlapIndex` of a document, cached for its lifetime (per chord and ``max_turns``). ``out_of_time`` is
+    polled while the footprints are built; when it says so, :class:`OutOfTime` is raised and nothing is cached."""
+    most = Tolerances().max_turns if max_turns is None else float(max_turns)
+    return cached_per_chord(
+        f"overlap index within {most!r} turns", document, chord, lambda d, c: OverlapIndex(d, c, out_of_time, most)
+    )
 
 
 # ------------------------------------------------------------------------------------------------------ metrics
