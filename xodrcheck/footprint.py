@@ -19,7 +19,7 @@ from functools import cached_property
 import numpy as np
 import shapely
 
-from xodrcheck import work
+from xodrcheck import strip_shapes, work
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import OutOfTime
 from xodrcheck.mesh import LaneSurfaces, cached_per_chord, surfaces_of
@@ -28,8 +28,6 @@ from xodrcheck.model import DRIVABLE_LANE_TYPES, Document, ElementType, Junction
 DRIVABLE_TYPE_NAMES = frozenset(t.value for t in DRIVABLE_LANE_TYPES)
 #: Pieces united in one GEOS call when a lane strip's outline is not a simple polygon.
 _UNION_BLOCK = 256
-#: Most quads of one piece of such a strip (:meth:`Footprints.pieces`).
-_PIECE = 64
 #: Most points of an overlap polygon's outline sampled for heights (plus its representative point).
 _HEIGHT_POINTS = 24
 #: Lane-strip pairs intersected at a time by :meth:`OverlapIndex.overlaps` (bounds its temporary geometries).
@@ -56,29 +54,6 @@ def _outlines(surfaces: LaneSurfaces) -> np.ndarray:
     return polygons
 
 
-def _run_outlines(inner: np.ndarray, outer: np.ndarray, runs: np.ndarray) -> np.ndarray:
-    """Plan-view outline polygons of runs ``(a, b)`` of quads of one strip (its border rows ``inner`` and ``outer``):
-    the inner row from ``a`` to ``b``, then the outer row back."""
-    size = runs[:, 1] - runs[:, 0] + 1
-    owner = np.repeat(np.arange(len(runs)), 2 * size)
-    j = np.arange(owner.size) - np.repeat(np.concatenate([[0], np.cumsum(2 * size)[:-1]]), 2 * size)
-    a, n = runs[owner, 0], size[owner]
-    last = len(inner) - 1
-    xy = np.where((j < n)[:, None], inner[np.clip(a + j, 0, last)], outer[np.clip(a + 2 * n - 1 - j, 0, last)])
-    return shapely.polygons(shapely.linearrings(xy, indices=owner))
-
-
-def _turns(xy: np.ndarray) -> float:
-    """Full circles the heading of a polyline sweeps: the range of its unwrapped heading over 2 pi (steps of no
-    length, where a border passes a centre of curvature, are left out)."""
-    steps = np.diff(xy, axis=0)
-    steps = steps[(steps[:, 0] != 0) | (steps[:, 1] != 0)]
-    if len(steps) < 2:
-        return 0.0
-    heading = np.unwrap(np.arctan2(steps[:, 1], steps[:, 0]))
-    return float((heading.max() - heading.min()) / (2 * np.pi))
-
-
 class Footprints:
     """Lane footprints of one document with a spatial index (build with :func:`footprints_of`).
 
@@ -98,7 +73,7 @@ class Footprints:
         #: Strips that wind round themselves -> the full turns their inner border sweeps (see the class docstring).
         self.winding: dict[int, float] = {}
         for i in invalid:
-            turns = _turns(surfaces.rows(int(i))[0][:, :2])
+            turns = strip_shapes.turns(surfaces.rows(int(i))[0][:, :2])
             if turns > most:
                 self.winding[int(i)] = turns
                 polygons[i] = shapely.Polygon()
@@ -116,35 +91,11 @@ class Footprints:
         faces = s.faces[s.lane_faces[lane] : s.lane_faces[lane + 1]]
         return s.vertices[faces][..., :2]
 
-    def pieces(self, lane: int) -> np.ndarray:
-        """Polygons whose union is the lane strip's union of triangles: runs of at most :data:`_PIECE` quads whose
-        outline is a simple polygon and whose triangles all lie the right way up (such a run's outline is exactly the
-        union of its triangles: they cover it once), other runs halved until they are, down to single triangles."""
-        s = self.surfaces
-        inner, outer = (row[:, :2] for row in s.rows(lane))
-        # flipped[2 k]: faces lying upside down among the first k quads' (a fold)
-        flipped = np.concatenate([[0], np.cumsum(s.plan_areas[s.lane_faces[lane] : s.lane_faces[lane + 1]] < 0)])
-        quads = len(inner) - 1
-        runs = np.array([(a, min(a + _PIECE, quads)) for a in range(0, quads, _PIECE)], dtype=np.int64).reshape(-1, 2)
-        out = []
-        while len(runs):
-            polys = _run_outlines(inner, outer, runs)
-            ok = shapely.is_valid(polys) & (flipped[2 * runs[:, 1]] == flipped[2 * runs[:, 0]])
-            out.append(polys[ok])
-            single = runs[~ok & (runs[:, 1] - runs[:, 0] == 1)]
-            if len(single):
-                tris = self.triangles(lane)[np.concatenate([2 * single[:, 0], 2 * single[:, 0] + 1])]
-                polys = shapely.polygons(np.concatenate([tris, tris[:, :1]], axis=1))
-                out.append(polys[shapely.area(polys) > 0])
-            split = runs[~ok & (runs[:, 1] - runs[:, 0] > 1)]
-            middle = (split[:, 0] + split[:, 1]) // 2
-            runs = np.concatenate([np.column_stack([split[:, 0], middle]), np.column_stack([middle, split[:, 1]])])
-        return np.concatenate(out) if out else np.empty(0, dtype=object)
-
     def _union(self, lane: int):
-        """Union of a lane strip's :meth:`pieces`, in blocks of :data:`_UNION_BLOCK` merged pairwise, so that the time
-        budget can stop it between two GEOS calls (:class:`OutOfTime`)."""
-        polys = self.pieces(lane)
+        """Union of a lane strip's triangles, made from its pieces (:func:`xodrcheck.strip_shapes.pieces`) in blocks of
+        :data:`_UNION_BLOCK` merged pairwise, so that the time budget can stop it between two GEOS calls
+        (:class:`OutOfTime`)."""
+        polys = strip_shapes.pieces(self.surfaces, lane)
         work.add("union coordinates", int(shapely.get_num_coordinates(polys).sum()))
         parts = []
         for k in range(0, len(polys), _UNION_BLOCK):
@@ -165,6 +116,12 @@ class Footprints:
         u, v = tris[:, 1] - tris[:, 0], tris[:, 2] - tris[:, 0]
         total = 0.5 * np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]).sum()
         return float(total - shapely.area(self.polygons[lane]))
+
+    @cached_property
+    def tiled(self) -> np.ndarray:
+        """Per strip, its lane section's first strip when the section's strips overlap nowhere, else -1
+        (:func:`xodrcheck.strip_shapes.tiled_sections`)."""
+        return strip_shapes.tiled_sections(self.surfaces)
 
     def near_pairs(self) -> np.ndarray:
         """``(2, P)`` lane-strip index pairs ``i < j`` whose footprints intersect (queried once: the overlap rules
@@ -341,14 +298,22 @@ class OverlapIndex:
     @cached_property
     def self_pairs(self) -> np.ndarray:
         """``(2, P)`` near lane-strip pairs of one road, neither of them a strip that folds over itself (whose own
-        overlap :attr:`Footprints.invalid` marks)."""
+        overlap :attr:`Footprints.invalid` marks), nor two strips of a lane section known to overlap nowhere
+        (:attr:`Footprints.tiled`: their borders touch, and intersecting two long strips costs much)."""
         pairs = self.footprints.near_pairs()
         if not pairs.size:
             return pairs
         lanes = self.surfaces.lanes
         folded = np.zeros(len(lanes), dtype=bool)
         folded[self.footprints.invalid] = True
-        keep = [lanes[i].road == lanes[j].road and not folded[i] and not folded[j] for i, j in pairs.T]
+        tiled = self.footprints.tiled
+        keep = [
+            lanes[i].road == lanes[j].road
+            and not folded[i]
+            and not folded[j]
+            and (tiled[i] < 0 or tiled[i] != tiled[j])
+            for i, j in pairs.T
+        ]
         return pairs[:, np.array(keep, dtype=bool)]
 
     def overlaps(
@@ -374,6 +339,7 @@ class OverlapIndex:
     ) -> bool:
         """:meth:`overlaps` of one block of pairs, appended to ``out``; ``True`` when the deadline stopped it."""
         polys = self.footprints.polygons
+        work.add("overlay coordinates", int(shapely.get_num_coordinates(polys[pairs]).sum()))
         shared = shapely.intersection(polys[pairs[0]], polys[pairs[1]])
         areas = shapely.area(shared)
         for k in np.flatnonzero(areas > min_area * 1e-3):
