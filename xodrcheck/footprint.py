@@ -124,11 +124,15 @@ class Footprints:
         return strip_shapes.tiled_sections(self.surfaces)
 
     def near_pairs(self) -> np.ndarray:
-        """``(2, P)`` lane-strip index pairs ``i < j`` whose footprints intersect (queried once: the overlap rules
-        between roads and within a road share it)."""
+        """``(2, P)`` lane-strip index pairs ``i < j`` whose footprints intersect, but for two strips of one lane
+        section known to overlap nowhere (:attr:`tiled`: they touch along their shared borders, and testing that on
+        two long strips costs much). Queried once: the overlap rules between roads and within a road share it."""
         if self._near is None:
-            pairs = self.tree.query(self.polygons, predicate="intersects")
-            self._near = pairs[:, pairs[0] < pairs[1]]
+            pairs = self.tree.query(self.polygons)  # bounding boxes that meet
+            tiled = self.tiled
+            pairs = pairs[:, (pairs[0] < pairs[1]) & ((tiled[pairs[0]] < 0) | (tiled[pairs[0]] != tiled[pairs[1]]))]
+            polys = self.polygons
+            self._near = pairs[:, shapely.intersects(polys[pairs[0]], polys[pairs[1]])]
         return self._near
 
     def heights(self, lane: int, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -297,23 +301,16 @@ class OverlapIndex:
 
     @cached_property
     def self_pairs(self) -> np.ndarray:
-        """``(2, P)`` near lane-strip pairs of one road, neither of them a strip that folds over itself (whose own
-        overlap :attr:`Footprints.invalid` marks), nor two strips of a lane section known to overlap nowhere
-        (:attr:`Footprints.tiled`: their borders touch, and intersecting two long strips costs much)."""
+        """``(2, P)`` near lane-strip pairs of one road (:meth:`Footprints.near_pairs`: not two strips of a lane section
+        known to overlap nowhere), neither of them a strip that folds over itself (whose own overlap
+        :attr:`Footprints.invalid` marks)."""
         pairs = self.footprints.near_pairs()
         if not pairs.size:
             return pairs
         lanes = self.surfaces.lanes
         folded = np.zeros(len(lanes), dtype=bool)
         folded[self.footprints.invalid] = True
-        tiled = self.footprints.tiled
-        keep = [
-            lanes[i].road == lanes[j].road
-            and not folded[i]
-            and not folded[j]
-            and (tiled[i] < 0 or tiled[i] != tiled[j])
-            for i, j in pairs.T
-        ]
+        keep = [lanes[i].road == lanes[j].road and not folded[i] and not folded[j] for i, j in pairs.T]
         return pairs[:, np.array(keep, dtype=bool)]
 
     def overlaps(
