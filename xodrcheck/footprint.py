@@ -69,16 +69,22 @@ class Footprints:
         self._near: np.ndarray | None = None
         most = Tolerances().max_turns if max_turns is None else max_turns
         polygons = _outlines(surfaces)
-        invalid = np.flatnonzero(~shapely.is_valid(polygons))
+        turns = strip_shapes.strip_turns(surfaces)
+        # a strip turning that much whose triangles outweigh its hull winds round itself: testing its outline for
+        # simplicity would cost the square of its size (a 1e9 m spiral: minutes)
+        many = np.flatnonzero(turns > most)
+        wound = many[strip_shapes.covers_twice(surfaces, many)]
+        judged = np.ones(len(polygons), dtype=bool)
+        judged[wound] = False
+        invalid = np.union1d(wound, np.flatnonzero(judged)[~shapely.is_valid(polygons[judged])]).astype(np.int64)
         #: Strips that wind round themselves -> the full turns their inner border sweeps (see the class docstring).
         self.winding: dict[int, float] = {}
-        for i in invalid:
-            turns = strip_shapes.turns(surfaces.rows(int(i))[0][:, :2])
-            if turns > most:
-                self.winding[int(i)] = turns
+        for i in map(int, invalid):
+            if turns[i] > most:
+                self.winding[i] = float(turns[i])
                 polygons[i] = shapely.Polygon()
             else:
-                polygons[i] = self._union(int(i))
+                polygons[i] = self._union(i)
         #: One (multi)polygon per lane strip of :attr:`surfaces` (empty for a strip that winds round itself).
         self.polygons = polygons
         #: Lane strips whose outline is not a simple polygon (their footprint is the union of their triangles).
@@ -121,7 +127,7 @@ class Footprints:
     def tiled(self) -> np.ndarray:
         """Per strip, its lane section's first strip when the section's strips overlap nowhere, else -1
         (:func:`xodrcheck.strip_shapes.tiled_sections`)."""
-        return strip_shapes.tiled_sections(self.surfaces)
+        return strip_shapes.tiled_sections(self.surfaces, self.invalid)
 
     def near_pairs(self) -> np.ndarray:
         """``(2, P)`` lane-strip index pairs ``i < j`` whose footprints intersect, but for two strips of one lane

@@ -15,9 +15,10 @@ from __future__ import annotations
 import numpy as np
 import shapely
 
+from xodrcheck.arrays import ranges
 from xodrcheck.mesh import LaneSurfaces
 
-__all__ = ["PIECE", "pieces", "run_outlines", "tiled_sections", "turns"]
+__all__ = ["PIECE", "covers_twice", "pieces", "run_outlines", "strip_turns", "tiled_sections", "turns"]
 
 #: Most quads of one piece of a folded strip (:func:`pieces`).
 PIECE = 64
@@ -44,6 +45,43 @@ def turns(xy: np.ndarray) -> float:
         return 0.0
     heading = np.unwrap(np.arctan2(steps[:, 1], steps[:, 0]))
     return float((heading.max() - heading.min()) / (2 * np.pi))
+
+
+def strip_turns(surfaces: LaneSurfaces) -> np.ndarray:
+    """:func:`turns` of every strip's inner border, for all strips at once."""
+    count = len(surfaces)
+    starts = surfaces.lane_vertices[:-1]
+    half = np.diff(surfaces.lane_vertices) // 2
+    if count == 0 or not half.any():
+        return np.zeros(count)
+    inner = ranges(starts, half)  # vertex index of every inner-row point, strip after strip
+    owner = np.repeat(np.arange(count), half)
+    xy = surfaces.vertices[inner, :2]
+    step = np.diff(xy, axis=0)
+    usable = ((step[:, 0] != 0) | (step[:, 1] != 0)) & (owner[1:] == owner[:-1])
+    heading = np.arctan2(step[:, 1], step[:, 0])
+    # heading change between usable steps of one strip, wrapped to (-pi, pi]: carried over the steps left out
+    kept = np.flatnonzero(usable)
+    change = np.zeros(len(step))
+    same = owner[kept[1:] + 1] == owner[kept[:-1] + 1]
+    turn = np.angle(np.exp(1j * (heading[kept[1:]] - heading[kept[:-1]])))
+    change[kept[1:]] = np.where(same, turn, 0.0)
+    profile = np.concatenate([[0.0], np.cumsum(change)])  # unwrapped heading (plus a constant) at each point
+    low = np.minimum.reduceat(profile, np.concatenate([[0], np.cumsum(half)[:-1]]))
+    high = np.maximum.reduceat(profile, np.concatenate([[0], np.cumsum(half)[:-1]]))
+    return np.where(half > 0, (high - low) / (2 * np.pi), 0.0)
+
+
+def covers_twice(surfaces: LaneSurfaces, lanes: np.ndarray) -> np.ndarray:
+    """Whether each strip of ``lanes`` certainly covers some ground twice: its triangles' areas add up to more than
+    its convex hull's (cheap where testing the outline for simplicity is not: a strip wound thousands of times)."""
+    out = np.zeros(len(lanes), dtype=bool)
+    for k, lane in enumerate(lanes.tolist()):
+        first, stop = surfaces.lane_faces[lane], surfaces.lane_faces[lane + 1]
+        start, end = surfaces.lane_vertices[lane], surfaces.lane_vertices[lane + 1]
+        hull = shapely.convex_hull(shapely.multipoints(surfaces.vertices[start:end, :2]))
+        out[k] = float(np.abs(surfaces.plan_areas[first:stop]).sum()) > float(shapely.area(hull))
+    return out
 
 
 def pieces(surfaces: LaneSurfaces, lane: int) -> np.ndarray:
@@ -75,11 +113,12 @@ def pieces(surfaces: LaneSurfaces, lane: int) -> np.ndarray:
     return np.concatenate(out) if out else np.empty(0, dtype=object)
 
 
-def tiled_sections(surfaces: LaneSurfaces) -> np.ndarray:
+def tiled_sections(surfaces: LaneSurfaces, overlapping: np.ndarray | None = None) -> np.ndarray:
     """For each strip, the index of its lane section's first strip when no two triangles of that section overlap
     (see the module docstring), else -1. ``surfaces`` must hold every lane (:func:`xodrcheck.mesh.surfaces_of`). A
     section is the run of consecutive strips of one road id and section ``s``; a run that holds a lane id twice (two
-    roads of one id) is not judged."""
+    roads of one id) is not judged, nor one holding a strip of ``overlapping`` (indexes of strips known to cover
+    themselves twice: a section that holds one is no tiling, and its outline may cross itself at every step)."""
     count = len(surfaces)
     out = np.full(count, -1, dtype=np.int64)
     if count == 0:
@@ -87,6 +126,8 @@ def tiled_sections(surfaces: LaneSurfaces) -> np.ndarray:
     keys = [(k.road, k.section_s) for k in surfaces.lanes]
     starts = [i for i in range(count) if i == 0 or keys[i] != keys[i - 1]]
     upright = np.bincount(surfaces.face_lane[surfaces.plan_areas < 0], minlength=count) == 0
+    if overlapping is not None:
+        upright[overlapping] = False
     rings, firsts = [], []
     for first, stop in zip(starts, [*starts[1:], count]):
         ids = [surfaces.lanes[i].lane for i in range(first, stop)]

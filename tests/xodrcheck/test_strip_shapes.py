@@ -74,3 +74,17 @@ def test_pieces_unite_to_the_triangles_union():
     assert shapely.is_valid(pieces).all()
     united = shapely.union_all(pieces)
     assert shapely.area(shapely.symmetric_difference(united, expected)) < 1e-6 * shapely.area(expected)
+
+
+def test_strip_turns_are_each_strips_turns():
+    surfaces = surfaces_of(read(fixture("lane-fold", "fail-winding-generated.xodr")).document)
+    expected = [strip_shapes.turns(surfaces.rows(i)[0][:, :2]) for i in range(len(surfaces))]
+    assert strip_shapes.strip_turns(surfaces) == pytest.approx(expected, abs=1e-9)
+    assert max(expected) > 35
+
+
+def test_covers_twice():
+    wound = surfaces_of(_document('<arc curvature="1.0"/>', _BOTH, length=100.0))
+    plain = surfaces_of(_document('<arc curvature="0.01"/>', _BOTH))
+    lanes = np.arange(3)
+    assert strip_shapes.covers_twice(wound, lanes).all() and not strip_shapes.covers_twice(plain, lanes).any()
