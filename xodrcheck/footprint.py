@@ -70,7 +70,7 @@ class Footprints:
         most = Tolerances().max_turns if max_turns is None else max_turns
         polygons = _outlines(surfaces)
         turns = strip_shapes.strip_turns(surfaces)
-        # a strip turning that much whose triangles outweigh its hull winds round itself: testing its outline for
+        # a strip turning that much whose triangles outweigh its box winds round itself: testing its outline for
         # simplicity would cost the square of its size (a 1e9 m spiral: minutes)
         many = np.flatnonzero(turns > most)
         wound = many[strip_shapes.covers_twice(surfaces, many)]
