@@ -96,22 +96,28 @@ def pieces(surfaces: LaneSurfaces, lane: int) -> np.ndarray:
     up = np.concatenate([[0], np.cumsum(areas > 0)])
     quads = len(inner) - 1
     runs = np.array([(a, min(a + PIECE, quads)) for a in range(0, quads, PIECE)], dtype=np.int64).reshape(-1, 2)
-    out = []
+    out, at = [], []  # pieces, and where along the strip each starts (quad index, then triangle)
     while len(runs):
         polys = run_outlines(inner, outer, runs)
         a, b = 2 * runs[:, 0], 2 * runs[:, 1]
         ok = shapely.is_valid(polys) & ((down[b] == down[a]) | (up[b] == up[a]))
         out.append(polys[ok])
+        at.append(2 * runs[ok, 0])
         single = runs[~ok & (runs[:, 1] - runs[:, 0] == 1)]
         if len(single):
-            faces = surfaces.faces[first + np.concatenate([2 * single[:, 0], 2 * single[:, 0] + 1])]
-            tris = surfaces.vertices[faces][..., :2]
+            faces = np.concatenate([2 * single[:, 0], 2 * single[:, 0] + 1])
+            tris = surfaces.vertices[surfaces.faces[first + faces]][..., :2]
             polys = shapely.polygons(np.concatenate([tris, tris[:, :1]], axis=1))
-            out.append(polys[shapely.area(polys) > 0])
+            keep = shapely.area(polys) > 0
+            out.append(polys[keep])
+            at.append(faces[keep])
         split = runs[~ok & (runs[:, 1] - runs[:, 0] > 1)]
         middle = (split[:, 0] + split[:, 1]) // 2
         runs = np.concatenate([np.column_stack([split[:, 0], middle]), np.column_stack([middle, split[:, 1]])])
-    return np.concatenate(out) if out else np.empty(0, dtype=object)
+    if not out:
+        return np.empty(0, dtype=object)
+    # in order along the strip: the union is made of consecutive blocks, which stay compact that way
+    return np.concatenate(out)[np.argsort(np.concatenate(at), kind="stable")]
 
 
 def tiled_sections(surfaces: LaneSurfaces, overlapping: np.ndarray | None = None) -> np.ndarray:
