@@ -210,7 +210,8 @@ def hostile_documents(
 ) -> st.SearchStrategy[bytes]:
     """Documents from ``base`` (default :func:`fuzz.opendrive_documents`) after ``min_changes`` to ``max_changes``
     changes, two in three a :class:`Growth` and the others random damage (:data:`fuzz.mutations.DAMAGE`); a change
-    that would make the document larger than ``max_size`` bytes is left out (the hunt is for small files)."""
+    that would make the document larger than ``max_size`` bytes is left out (the hunt is for small files; a base
+    document larger than that is kept as it is)."""
     for name, value in (("min_changes", min_changes), ("max_changes", max_changes)):
         if isinstance(value, bool) or not isinstance(value, int) or value < 0:
             raise InvalidArgument(f"{name}={value!r} must be a non-negative integer")
