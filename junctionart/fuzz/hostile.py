@@ -14,13 +14,13 @@ readably and replays.
 from __future__ import annotations
 
 import math
+from dataclasses import dataclass
 
 from hypothesis import strategies as st
 from hypothesis.errors import InvalidArgument
 from lxml import etree
 
 from junctionart.fuzz.mutations import DAMAGE, document_mutations
-from xodrcheck.classcache import dataclass
 
 __all__ = ["GROWTH", "MAX_COPIES", "MAX_SIZE", "Growth", "growths", "hostile_documents"]
 

@@ -19,6 +19,7 @@ import hashlib
 import heapq
 import time
 from collections import Counter
+from dataclasses import dataclass
 from pathlib import Path
 
 from hypothesis import target
@@ -26,7 +27,6 @@ from hypothesis import target
 from junctionart.fuzz import properties as P
 from junctionart.fuzz.profiles import tolerated
 from xodrcheck import work
-from xodrcheck.classcache import dataclass
 from xodrcheck.findings import ReadError
 
 __all__ = [
