@@ -259,11 +259,11 @@ def lane_fold(ctx: Context):
         face = first + int(flipped[0]) if len(flipped) else first
         corner = surfaces.vertices[surfaces.faces[face, 0]]
         road = ctx.road(key.road)
-        where = f"lane {key.lane} of road {key.road} (lane section at s={key.section_s:g})"
+        where = f"lane {key.lane} of road {key.road} (lane section at s={metres(key.section_s)})"
         if turns is not None:
             end = float(surfaces.face_s[stop - 1])
             message = (
-                f"{where} winds round itself: between s={key.section_s:g} and s={end:.6g} it turns through "
+                f"{where} winds round itself: between s={metres(key.section_s)} and s={metres(end)} it turns through "
                 f"{turns:,.0f} full circles and covers the same ground over and over (more than "
                 f"{ctx.tolerances.max_turns:g} turns, tolerance max_turns); correct the curvature or length of the "
                 "plan view there. Its overlaps were not computed"
@@ -273,9 +273,6 @@ def lane_fold(ctx: Context):
                 f" from s={surfaces.face_s[face]:.2f}" if len(flipped) else ""
             )
         yield lane_fold.finding(
-            f"lane {key.lane} of road {key.road} (lane section at s={metres(key.section_s)}) covers {area:.1f} m2 of "
-            "plan view twice: its surface folds over itself"
-            + (f" from s={surfaces.face_s[face]:.2f}" if flipped else ""),
             message,
             road=key.road,
             lane=key.lane,
