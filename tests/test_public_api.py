@@ -16,6 +16,7 @@ MODULES = [
     "xodrcheck.check",
     "xodrcheck.config",
     "xodrcheck.findings",
+    "xodrcheck.fix",
     "xodrcheck.mesh",
     "xodrcheck.metrics",
     "xodrcheck.model",

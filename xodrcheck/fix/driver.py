@@ -1,0 +1,231 @@
+"""The fix loop: check -> fixable findings -> repairs -> edits -> check again, until nothing changes.
+
+Each fix (:mod:`xodrcheck.fix.registry`) plans repairs for its rule's findings on the current bytes; repairs that
+touch the same bytes as an earlier one wait for the next round. The batch is applied and the file checked again: the
+batch stays when every finding it claims is gone and no finding is new (:mod:`xodrcheck.fix.verify`); otherwise its
+repairs that left their finding are rolled back, and a batch that brought a new finding is halved until the repair
+that did is found and rolled back. Rounds repeat while something was fixed, at most :data:`MAX_ROUNDS` times; a
+rolled-back repair is not tried again. So a file with nothing to fix comes out byte-identical, and fixing a fixed
+file changes nothing.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+from xodrcheck.check import Report, Selection, check
+from xodrcheck.config import Config
+from xodrcheck.findings import Finding
+from xodrcheck.fix.edits import Edit, LineMap, apply, overlaps
+from xodrcheck.fix.registry import Fixer, Repair, Skip, load_fixers
+from xodrcheck.fix.verify import place_key, verify
+from xodrcheck.fix.workspace import Workspace
+from xodrcheck.fix.xmltext import ScanError, XmlText, scan
+from xodrcheck.model import Document
+
+__all__ = ["MAX_ROUNDS", "Applied", "RolledBack", "Session"]
+
+#: Rounds of the loop at most (a round applies what every fix planned; the next sees the file they left).
+MAX_ROUNDS = 5
+
+
+@dataclass(frozen=True, slots=True)
+class Applied:
+    """A repair that stayed: the fix, the repair, and the round it landed in."""
+
+    fixer: Fixer
+    repair: Repair
+    round: int
+
+
+@dataclass(frozen=True, slots=True)
+class RolledBack:
+    """A repair taken back, and why (its finding remained, or it brought a new one)."""
+
+    fixer: Fixer
+    repair: Repair
+    reason: str
+
+
+@dataclass
+class Session:
+    """One file's fixing: the bytes as they go, the latest full check, and what was done and left."""
+
+    data: bytes
+    config: Config
+    selection: Selection
+    unsafe: bool = False
+    report: Report | None = None
+    applied: list[Applied] = field(default_factory=list)
+    rolled_back: list[RolledBack] = field(default_factory=list)
+    #: Why a fix left a finding alone, by the finding's rule and place.
+    skipped: dict[tuple, str] = field(default_factory=dict)
+    _document: Document | None = None
+    _tried: set[tuple[str, str]] = field(default_factory=set)
+
+    def run(self) -> None:
+        self.report = self._check(self.data)
+        try:
+            scan(self.data)
+        except ScanError as exc:
+            self.skipped[("*",)] = f"the file cannot be edited safely: {exc}"
+            return
+        fixers = [fx for group in load_fixers().values() for fx in group if fx.safe or self.unsafe]
+        for number in range(1, MAX_ROUNDS + 1):
+            if not any(self._one_fix(fx, number) for fx in fixers):
+                break
+
+    # ---------------------------------------------------------------------------------------------------- steps
+    def _check(self, data: bytes) -> Report:
+        return check(data, self.config)
+
+    def _workspace(self) -> Workspace | None:
+        if self._document is None:
+            from xodrcheck.reader import read
+
+            self._document = read(self.data, max_bytes=self.config.tolerances.max_file_bytes).document
+        if self._document is None or self.report is None:
+            return None
+        return Workspace(self.data, self._document, self.report.findings, self.config.tolerances)
+
+    def _one_fix(self, fx: Fixer, number: int) -> bool:
+        """Plan and try one fix's repairs; whether any stayed."""
+        assert self.report is not None
+        targets = [f for f in self.report.findings if f.code == fx.code and self.selection.wants_finding(f)]
+        if not targets:
+            return False
+        ws = self._workspace()
+        if ws is None:
+            return False
+        repairs: list[Repair] = []
+        for item in fx.plan(ws, targets):
+            if isinstance(item, Skip):
+                self.skipped.setdefault(place_key(item.finding), item.reason)
+            elif (fx.name, item.action) not in self._tried and item.findings and item.edits:
+                repairs.append(item)
+        repairs = _disjoint(repairs)
+        if not repairs:
+            return False
+        self._tried.update((fx.name, r.action) for r in repairs)
+        return self._attempt(fx, repairs, number) > 0
+
+    def _attempt(self, fx: Fixer, repairs: Sequence[Repair], number: int) -> int:
+        """Keep the largest part of ``repairs`` found to hold (see the module's docstring); how many stayed. Every
+        trial applies the repairs kept so far plus those tried to the same bytes, and is judged against one check."""
+        assert self.report is not None
+        base, before, lines = self.data, self.report, scan(self.data)
+        kept: list[Repair] = []
+        best: tuple[bytes, Report] | None = None
+
+        def trial(group: Sequence[Repair]) -> None:
+            nonlocal best
+            tried = [*kept, *group]
+            edits = [e for r in tried for e in r.edits]
+            data = apply(base, edits)
+            after = self._check(data)
+            verdict = verify(before.findings, after.findings, LineMap(lines, edits), tried)
+            if verdict.ok:
+                kept.extend(group)
+                best = (data, after)
+            elif len(group) == 1:
+                self.rolled_back.append(RolledBack(fx, group[0], _why(verdict.unresolved, verdict.new)))
+            elif not verdict.new:  # some claims failed: take those back, try the rest once more
+                failed = [r for r in group if r in verdict.unresolved] or list(group)
+                self.rolled_back.extend(RolledBack(fx, r, _why((r,), ())) for r in failed)
+                rest = [r for r in group if r not in failed]
+                if rest:
+                    trial(rest)
+            else:
+                guilty = _blamed(group, verdict.new_lines, lines)
+                if guilty is not None:  # every new finding lies on a line one repair edits: take those back
+                    self.rolled_back.extend(RolledBack(fx, r, _why((), _on(verdict, r, lines))) for r in guilty)
+                    rest = [r for r in group if r not in guilty]
+                    if rest:
+                        trial(rest)
+                    return
+                half = len(group) // 2  # else halve until the repair that brings it is found
+                trial(group[:half])
+                trial(group[half:])
+
+        trial(repairs)
+        if best is not None:
+            self.data, self.report, self._document = best[0], best[1], None
+            self.applied.extend(Applied(fx, r, number) for r in kept)
+        return len(kept)
+
+    def remaining(self, findings: Sequence[Finding]) -> list[tuple[Finding, str]]:
+        """Each finding left with why it is left (see :meth:`reason`)."""
+        return [(f, self.reason(f)) for f in findings]
+
+    def reason(self, finding: Finding) -> str:
+        """Why a finding is still there: a fix's own words, a repair that was rolled back, an unsafe fix not asked
+        for, or no fix for its rule."""
+        whole = self.skipped.get(("*",))
+        if whole is not None:
+            return whole
+        place = place_key(finding)
+        for back in self.rolled_back:
+            if any(place_key(f) == place for f in back.repair.findings):
+                return f"a repair was rolled back: {back.reason}"
+        if place in self.skipped:
+            return self.skipped[place]
+        fixers = load_fixers().get(finding.code, ())
+        if not fixers:
+            return "no fix for this rule"
+        if not self.unsafe and all(not fx.safe for fx in fixers):
+            return f"only an unsafe fix exists ({fixers[0].name}; --unsafe applies it)"
+        if not self.selection.wants_finding(finding):
+            return "not selected"
+        return "the fixes of this rule found nothing they could do safely here"
+
+
+def _edited_lines(repair: Repair, lines: XmlText) -> set[int]:
+    out: set[int] = set()
+    spans = [(e.start, e.end) for e in repair.edits]
+    if repair.scope is not None:
+        spans.append(repair.scope)
+    for start, end in spans:
+        out.update(range(lines.line_of(start), lines.line_of(max(start, end - 1)) + 1))
+    return out
+
+
+def _blamed(group: Sequence[Repair], new_lines: Sequence[int | None], lines: XmlText) -> list[Repair] | None:
+    """The repairs of ``group`` that edit a line a new finding lies on, when every new finding lies on such a line
+    (``None`` otherwise: the culprit is found by halving)."""
+    touched = {id(r): _edited_lines(r, lines) for r in group}
+    guilty: list[Repair] = []
+    for line in new_lines:
+        hit = [r for r in group if line is not None and line in touched[id(r)]]
+        if not hit:
+            return None
+        guilty.extend(r for r in hit if r not in guilty)
+    return guilty
+
+
+def _on(verdict, repair: Repair, lines: XmlText) -> list[Finding]:
+    """The new findings on the lines ``repair`` edits."""
+    mine = _edited_lines(repair, lines)
+    return [f for f, line in zip(verdict.new, verdict.new_lines) if line in mine]
+
+
+def _disjoint(repairs: list[Repair]) -> list[Repair]:
+    """The repairs whose edits overlap no earlier repair's (the others wait for the next round)."""
+    taken: list[Edit] = []
+    out = []
+    for r in repairs:
+        if any(overlaps(e, t) for e in r.edits for t in taken):
+            continue
+        if any(overlaps(a, b) for i, a in enumerate(r.edits) for b in r.edits[i + 1 :]):
+            continue
+        taken.extend(r.edits)
+        out.append(r)
+    return out
+
+
+def _why(unresolved: Sequence[Repair], new: Sequence[Finding]) -> str:
+    if new:
+        f = new[0]
+        more = f" and {len(new) - 1} more" if len(new) > 1 else ""
+        return f"it brought a new finding: {f.code} {f.name}: {f.message}{more}"
+    return "its finding remained after the edit"
