@@ -111,7 +111,6 @@ class _Package(ModuleType):
             return  # the submodule binding itself: the package keeps naming the function
         vars(self)["_check_function"] = value  # an explicit assignment (a test's monkeypatch, say) wins
 
-
     @property
     def fix(self) -> Any:
         override = vars(self).get("_fix_function")

@@ -66,14 +66,20 @@ class Session:
 
     def run(self) -> None:
         self.report = self._check(self.data)
+        fixers = [fx for group in load_fixers().values() for fx in group if fx.safe or self.unsafe]
+        codes = {fx.code for fx in fixers}
+        if not any(f.code in codes and self.selection.wants_finding(f) for f in self.report.findings):
+            return  # nothing to fix: the bytes are not even scanned
         try:
             scan(self.data)
         except ScanError as exc:
             self.skipped[("*",)] = f"the file cannot be edited safely: {exc}"
             return
-        fixers = [fx for group in load_fixers().values() for fx in group if fx.safe or self.unsafe]
         for number in range(1, MAX_ROUNDS + 1):
-            if not any(self._one_fix(fx, number) for fx in fixers):
+            again = False
+            for fx in fixers:  # every fix, each round (not only until one progresses)
+                again = self._one_fix(fx, number) or again
+            if not again:
                 break
 
     # ---------------------------------------------------------------------------------------------------- steps
@@ -90,7 +96,7 @@ class Session:
         return Workspace(self.data, self._document, self.report.findings, self.config.tolerances)
 
     def _one_fix(self, fx: Fixer, number: int) -> bool:
-        """Plan and try one fix's repairs; whether any stayed."""
+        """Plan and try one fix's repairs; whether another round is wanted (a repair stayed, or some waited)."""
         assert self.report is not None
         targets = [f for f in self.report.findings if f.code == fx.code and self.selection.wants_finding(f)]
         if not targets:
@@ -104,11 +110,12 @@ class Session:
                 self.skipped.setdefault(place_key(item.finding), item.reason)
             elif (fx.name, item.action) not in self._tried and item.findings and item.edits:
                 repairs.append(item)
-        repairs = _disjoint(repairs)
-        if not repairs:
+        ready = _disjoint(repairs)
+        if not ready:
             return False
-        self._tried.update((fx.name, r.action) for r in repairs)
-        return self._attempt(fx, repairs, number) > 0
+        self._tried.update((fx.name, r.action) for r in ready)
+        kept = self._attempt(fx, ready, number)
+        return kept > 0 or len(ready) < len(repairs)  # repairs that waited go on to the next round
 
     def _attempt(self, fx: Fixer, repairs: Sequence[Repair], number: int) -> int:
         """Keep the largest part of ``repairs`` found to hold (see the module's docstring); how many stayed. Every

@@ -101,7 +101,7 @@ class LineMap:
 
 
 def _breaks(text: bytes) -> int:
-    return text.count(b"\n") + text.count(b"\r") - text.count(b"\r\n")
+    return text.count(b"\n")
 
 
 # ------------------------------------------------------------------------------------------------------ builders

@@ -8,6 +8,7 @@ from collections.abc import Iterator
 
 import numpy as np
 
+from xodrcheck.config import Tolerances
 from xodrcheck.findings import Finding
 from xodrcheck.fix.edits import Edit, remove_element, set_attribute
 from xodrcheck.fix.registry import Repair, Skip, fixer
@@ -50,10 +51,16 @@ def _end(ws: Workspace, road: Road, g: Geometry) -> tuple[float, float]:
     return float(pose.x[0]), float(pose.y[0])
 
 
+def snap_bound(ws: Workspace) -> float:
+    """How far a snap may move geometry: the ``gap`` tolerance, and never less than its default (1 cm), so that the
+    strict profile, which grades gaps over 1 mm as errors, does not also forbid closing them."""
+    return max(ws.tolerances.gap, Tolerances.gap)
+
+
 @fixer("G001", "snap-plan-view-gap", safe=False, bound="moves an element and what lies on it by up to `gap` (1 cm)")
 def snap_plan_view_gap(ws: Workspace, findings: list[Finding]) -> Iterator[Repair | Skip]:
-    """Moves a plan-view element whose start lies up to the ``gap`` tolerance from the previous element's end onto
-    that end (its ``x`` and ``y``; heading, length and shape kept).
+    """Moves a plan-view element whose start lies up to the ``gap`` tolerance (1 cm; more when it is set higher)
+    from the previous element's end onto that end (its ``x`` and ``y``; heading, length and shape kept).
 
     The element and everything placed along it (lanes, objects) move by the gap, at most ``gap``; the repair says by
     how much. Larger gaps are left: closing them is a design decision.
@@ -68,8 +75,8 @@ def snap_plan_view_gap(ws: Workspace, findings: list[Finding]) -> Iterator[Repai
         before, (g, element) = pairs[k - 1][0], pairs[k]
         x, y = _end(ws, road, before)
         moved = math.hypot(g.x - x, g.y - y)
-        if not math.isfinite(moved) or moved > ws.tolerances.gap:
-            yield Skip(finding, f"the gap is {moved:.4g} m, over the gap tolerance ({ws.tolerances.gap:g} m)")
+        if not math.isfinite(moved) or moved > snap_bound(ws):
+            yield Skip(finding, f"the gap is {moved:.4g} m, over the gap tolerance ({snap_bound(ws):g} m)")
             continue
         edits = (set_attribute(ws.text, element, "x", _number(x)), set_attribute(ws.text, element, "y", _number(y)))
         yield Repair(

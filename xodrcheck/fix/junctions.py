@@ -161,10 +161,21 @@ def correct_junction_lane_link(ws: Workspace, findings: list[Finding]) -> Iterat
         )
 
 
+def _centre(ws: Workspace, road: Road, end: ContactPoint, lane_id: int) -> tuple[float, float] | None:
+    side = places.side_at(road, end)
+    return None if side is None else places.lane_centre(ws, road, side[0], side[1], lane_id)
+
+
+def _held(ws: Workspace, road: Road, end: ContactPoint, point: tuple[float, float] | None) -> list[int] | None:
+    side = places.side_at(road, end)
+    if side is None or point is None:
+        return None
+    return places.lanes_holding(ws, road, side[0], side[1], point, _AT_END)
+
+
 def _holding(ws: Workspace, known: tuple[Road, ContactPoint, int], road: Road, end: ContactPoint) -> int | None:
     """The one lane of ``road`` at ``end`` that holds the centre of the known lane at the joint, if there is one."""
-    centre = places.lane_centre(ws, *known)
-    held = places.lanes_holding(ws, road, end, *centre, _AT_END) if centre is not None else None
+    held = _held(ws, road, end, _centre(ws, *known))
     return held[0] if held is not None and len(held) == 1 else None
 
 
@@ -173,8 +184,7 @@ def _swapped(
 ) -> bool:
     """Whether ``from`` and ``to`` read the other way round name two lanes that exist and meet at the joint."""
     assert c.contact_point is not None
-    here, there = places.lane_centre(ws, incoming, in_end, ll.to_lane), None
-    if places.lane_centre(ws, target, c.contact_point, ll.from_lane) is None or here is None:
+    here = _centre(ws, incoming, in_end, ll.to_lane)
+    if _centre(ws, target, c.contact_point, ll.from_lane) is None or here is None:
         return False
-    there = places.lanes_holding(ws, target, c.contact_point, *here, _AT_END)
-    return there == [ll.from_lane]
+    return _held(ws, target, c.contact_point, here) == [ll.from_lane]

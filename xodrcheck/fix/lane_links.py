@@ -1,5 +1,5 @@
-"""Fixes of lane links the standard says to leave out (``L024``, ``R015``): an empty ``<link/>``, a lane's link into
-a junction, a lane's link at a road end that links to nothing."""
+"""Fixes of lane links (``L024``, ``R015``, ``L011``): an empty ``<link/>``, a lane's link into a junction, a lane's
+link at a road end that links to nothing (all three the standard says to leave out), and a lane link not returned."""
 
 from __future__ import annotations
 
@@ -8,12 +8,15 @@ from collections.abc import Iterable, Iterator
 from xodrcheck.findings import Finding
 from xodrcheck.fix import places
 from xodrcheck.fix.edits import Edit, remove_element
+from xodrcheck.fix.linking import WORD, Side, across, add_link
 from xodrcheck.fix.registry import Repair, Skip, fixer
 from xodrcheck.fix.workspace import Workspace, link_at
 from xodrcheck.fix.xmltext import Element
 from xodrcheck.model import ContactPoint, ElementType, Lane, Road
 
-_WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}
+_WORD = WORD
+#: How far along the road (m) a lane's centre may lie from the joint and still count as there.
+_AT_JOINT = 0.5
 
 
 def _located(ws: Workspace, finding: Finding) -> tuple[Road, int, Lane, Element] | str:
@@ -182,4 +185,64 @@ def remove_lane_link_to_nothing(ws: Workspace, findings: list[Finding]) -> Itera
         words = " and ".join(sorted(tags))
         yield Repair(
             tuple(group), tuple(edits), f"{_lane_words(group[0])}: removed its {words} (the road links nothing there)"
+        )
+
+
+def _joint_side(road: Road, index: int, finding: Finding) -> Side | None:
+    """The side of the joint a finding names: the section's start or end, told by the finding's ``s``."""
+    section = road.lane_sections[index]
+    start, end = section.s, road.section_end(index)
+    if finding.s is None or start == end:
+        return None
+    if finding.s == start:
+        return Side(road, index, ContactPoint.START)
+    return Side(road, index, ContactPoint.END) if finding.s == end else None
+
+
+@fixer("L011", "return-lane-link", safe=True, bound="moves nothing")
+def return_lane_link(ws: Workspace, findings: list[Finding]) -> Iterator[Repair | Skip]:
+    """Gives a lane the link back that lanes across a joint make to it, where it links nothing there and each of
+    those lanes' centre lies inside it at the joint.
+
+    Lane A's successor is lane B and B has no predecessor: B's predecessor becomes A (A and A' merging into B give
+    B both). The lanes already continue each other (A says so, the geometry agrees); the link makes both sides say it
+    (Annex F ``road.lane.link.lanes_across_laneSections``). A lane that names other lanes there is left alone: what
+    it means to say is for a person to judge. Nothing moves.
+    """
+    for group, located in _grouped(ws, findings):
+        if isinstance(located, str):
+            yield from (Skip(f, located) for f in group)
+            continue
+        road, index, lane, element = located
+        side = _joint_side(road, index, group[0])
+        other = across(ws, side) if side is not None else None
+        if side is None or other is None:
+            yield from (Skip(f, "the joint the finding names is not plain") for f in group)
+            continue
+        if side.links(lane):
+            yield from (Skip(f, f"lane {lane.id} names other lanes there; adding one would split it") for f in group)
+            continue
+        sources = [a for a in other.section.lanes if a.id != 0 and lane.id in other.links(a)]
+        held = [
+            places.lanes_holding(ws, road, index, side.s, centre, _AT_JOINT)
+            if (centre := places.lane_centre(ws, other.road, other.index, other.s, a.id)) is not None
+            else None
+            for a in sources
+        ]
+        if not sources or any(h != [lane.id] for h in held):
+            yield from (
+                Skip(f, f"the lanes linking to lane {lane.id} do not all lie in it at the joint") for f in group
+            )
+            continue
+        word = WORD[side.end].encode()
+        markup = b"".join(b"<" + word + b' id="' + str(a.id).encode() + b'"/>' for a in sources)
+        edit = add_link(ws, element, markup, side.end)
+        if edit is None:
+            yield from (Skip(f, "the lane's <link> is not plain in the file") for f in group)
+            continue
+        names = ", ".join(str(a.id) for a in sources)
+        yield Repair(
+            tuple(group),
+            (edit,),
+            f"{_lane_words(group[0])}: added {WORD[side.end]} lane {names} of road {other.road.id}, returning its link",
         )

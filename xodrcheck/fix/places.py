@@ -13,7 +13,7 @@ import numpy as np
 from xodrcheck.fix.workspace import Workspace
 from xodrcheck.model import ContactPoint, Road
 
-__all__ = ["end_pose", "lane_centre", "lanes_holding", "roads_near_end", "width_at"]
+__all__ = ["end_pose", "lane_centre", "lanes_holding", "roads_near_end", "side_at", "width_at"]
 
 
 def _s(road: Road, end: ContactPoint) -> float:
@@ -64,37 +64,42 @@ def roads_near_end(ws: Workspace, road: Road, end: ContactPoint, radius: float |
     return out
 
 
-def lane_centre(ws: Workspace, road: Road, end: ContactPoint, lane_id: int) -> tuple[float, float] | None:
-    """The lane's centre point at the road's ``end`` (``None`` when it has no such lane)."""
+def side_at(road: Road, end: ContactPoint) -> tuple[int, float] | None:
+    """The lane section index and ``s`` at a road's ``end`` (``None`` without lane sections)."""
     index = _section_index(road, end)
-    if index is None or road.lane_sections[index].lane(lane_id) is None or lane_id == 0:
+    return None if index is None else (index, _s(road, end))
+
+
+def lane_centre(ws: Workspace, road: Road, index: int, s: float, lane_id: int) -> tuple[float, float] | None:
+    """The centre point of lane ``lane_id`` of lane section ``index`` at ``s`` (``None`` when it has no such lane)."""
+    if not 0 <= index < len(road.lane_sections) or lane_id == 0 or road.lane_sections[index].lane(lane_id) is None:
         return None
-    p = ws.geometry[road.id].lane_points(index, lane_id, np.array([_s(road, end)]))
+    p = ws.geometry[road.id].lane_points(index, lane_id, np.array([s]))
     x, y = float(p.x[0]), float(p.y[0])
     return (x, y) if math.isfinite(x) and math.isfinite(y) else None
 
 
-def lanes_holding(ws: Workspace, road: Road, end: ContactPoint, x: float, y: float, reach: float) -> list[int] | None:
-    """The lanes (not lane 0, none zero wide) of the road's ``end`` whose span across the road holds the point
-    ``(x, y)``; ``None`` when the point lies more than ``reach`` along the road from that end (the ends do not meet).
-    A point within a millimetre of a border counts for neither lane beside it."""
-    pose = end_pose(ws, road, end)
-    index = _section_index(road, end)
-    if pose is None or index is None:
+def lanes_holding(
+    ws: Workspace, road: Road, index: int, s: float, point: tuple[float, float], reach: float
+) -> list[int] | None:
+    """The lanes (not lane 0, none zero wide) of lane section ``index`` at ``s`` whose span across the road holds
+    ``point``; ``None`` when the point lies more than ``reach`` along the road from ``s`` (it is not there). A point
+    within a millimetre of a border counts for neither lane beside it."""
+    if not road.plan_view or not 0 <= index < len(road.lane_sections):
         return None
-    x0, y0, hdg = pose
-    dx, dy = x - x0, y - y0
+    pose = ws.geometry[road.id].reference(np.array([s]))
+    x0, y0, hdg = float(pose.x[0]), float(pose.y[0]), float(pose.hdg[0])
+    dx, dy = point[0] - x0, point[1] - y0
     along = math.cos(hdg) * dx + math.sin(hdg) * dy
     t = -math.sin(hdg) * dx + math.cos(hdg) * dy
-    if abs(along) > reach:
+    if not abs(along) <= reach:
         return None
-    geometry = ws.geometry[road.id]
-    s = np.array([_s(road, end)])
+    geometry, at = ws.geometry[road.id], np.array([s])
     out = []
     for lane in road.lane_sections[index].lanes:
         if lane.id == 0:
             continue
-        inner, outer = (float(v[0]) for v in geometry.inner_outer(index, lane.id, s))
+        inner, outer = (float(v[0]) for v in geometry.inner_outer(index, lane.id, at))
         low, high = min(inner, outer), max(inner, outer)
         if high - low > 2e-3 and low + 1e-3 < t < high - 1e-3:
             out.append(lane.id)

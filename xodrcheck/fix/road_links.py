@@ -7,41 +7,18 @@ from collections.abc import Iterator
 
 from xodrcheck.findings import Finding
 from xodrcheck.fix import places
-from xodrcheck.fix.edits import Edit, child_indent, insert_child
+from xodrcheck.fix.linking import WORD, add_link
 from xodrcheck.fix.registry import Repair, Skip, fixer
 from xodrcheck.fix.workspace import Workspace, link_at
 from xodrcheck.fix.xmltext import encode_value
 from xodrcheck.model import ContactPoint, ElementType, Road
 
-_WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}
-
 
 def _link_markup(ws: Workspace, end: ContactPoint, road: Road, contact: ContactPoint) -> bytes:
     enc = ws.text.encoding
     return (
-        b"<" + _WORD[end].encode() + b' elementType="road" elementId="' + encode_value(road.id, enc) + b'" '
+        b"<" + WORD[end].encode() + b' elementType="road" elementId="' + encode_value(road.id, enc) + b'" '
         b'contactPoint="' + contact.value.encode() + b'"/>'
-    )
-
-
-def _add_link(ws: Workspace, road: Road, end: ContactPoint, markup: bytes) -> Edit | None:
-    """An edit giving ``road`` the link ``markup`` at ``end``: into its ``<link>`` (a predecessor first), or a new
-    ``<link>`` as the road's first child."""
-    element = ws.road_element(road)
-    if element is None:
-        return None
-    links = element.findall("link")
-    if len(links) > 1:
-        return None
-    if links:
-        return insert_child(ws.text, links[0], markup, first=end is ContactPoint.START)
-    indent = child_indent(ws.text, element)
-    if indent is None:
-        return insert_child(ws.text, element, b"<link>" + markup + b"</link>", first=True)
-    step = indent[len(ws.text.indent_of(element) or b"") :] or b"  "
-    nl = ws.text.newline
-    return insert_child(
-        ws.text, element, b"<link>" + nl + indent + step + markup + nl + indent + b"</link>", first=True
     )
 
 
@@ -74,13 +51,15 @@ def return_road_link(ws: Workspace, findings: list[Finding]) -> Iterator[Repair 
             if here is None or there is None or math.hypot(here[0] - there[0], here[1] - there[1]) > ws.tolerances.gap:
                 yield Skip(finding, f"the ends of roads {road.id} and {target.id} do not meet within the gap tolerance")
                 break
-            edit = _add_link(ws, target, link.contact_point, _link_markup(ws, link.contact_point, road, end))
+            element = ws.road_element(target)
+            markup = _link_markup(ws, link.contact_point, road, end)
+            edit = add_link(ws, element, markup, link.contact_point) if element is not None else None
             if edit is None:
                 yield Skip(finding, f"road {target.id}'s <link> is not plain in the file")
                 break
             yield Repair(
                 (finding,),
                 (edit,),
-                f"road {target.id}: added {_WORD[link.contact_point]} road {road.id} ({end.value}), returning its link",
+                f"road {target.id}: added {WORD[link.contact_point]} road {road.id} ({end.value}), returning its link",
             )
             break

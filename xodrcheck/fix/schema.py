@@ -53,8 +53,10 @@ def move_georeference_into_header(ws: Workspace, findings: list[Finding]) -> Ite
     """
     root = ws.text.root
     header = root.find("header")
+    beside = root.findall("geoReference")
     for finding in findings:
-        found = [e for e in ws.text.at_line(finding.line or 0, "geoReference") if e.parent is root]
+        # lxml names the element's line; the XSD 1.1 validator (1.8, 1.9) its parent's, the root
+        found = beside if finding.line == root.line else [e for e in beside if e.line == finding.line]
         if len(found) != 1 or header is None:
             continue
         if header.find("geoReference") is not None:

@@ -4,7 +4,8 @@ Fixes edit a file's bytes, never a re-serialised tree, so that everything they d
 unknown elements, attribute order and quoting, whitespace, number spellings) stays byte for byte. This module finds
 what they edit: a small scanner of XML text that skips comments, CDATA sections, processing instructions and a
 DOCTYPE, reads quoted attribute values that may hold ``>``, and builds a tree of :class:`Element` spans, each with
-the line libxml2 gives it (that of its start tag's ``>``; ``\\r\\n``, ``\\r`` and ``\\n`` each end a line).
+the line libxml2 gives it (that of its start tag's ``>``; lines end at ``\\n``, as libxml2 counts them: a lone ``\\r``
+ends none).
 
 It reads ASCII-compatible encodings (UTF-8, the ISO-8859 family, ...); anything else, or text that is not
 well-formed, raises :class:`ScanError` (nothing is fixed in such a file).
@@ -90,7 +91,7 @@ _TOKEN = re.compile(
     re.S,
 )
 _ATTRIBUTE = re.compile(rb"(" + _NAME + rb")\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
-_LINE_BREAK = re.compile(rb"\r\n?|\n")
+_LINE_BREAK = re.compile(rb"\n")
 _DECLARED = re.compile(rb"^(?:\xef\xbb\xbf)?<\?xml[^>]*?encoding\s*=\s*[\"']([A-Za-z0-9._-]+)[\"']")
 _ENTITY = re.compile(r"&(#x[0-9A-Fa-f]+|#[0-9]+|lt|gt|amp|quot|apos);")
 _NAMED = {"lt": "<", "gt": ">", "amp": "&", "quot": '"', "apos": "'"}
