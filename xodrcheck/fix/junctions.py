@@ -40,8 +40,8 @@ def _junction_end(junction: Junction, road: Road) -> list[ContactPoint]:
 
 
 def _nearer_end(ws: Workspace, road: Road, incoming: Road, incoming_end: ContactPoint) -> ContactPoint | None:
-    """The end of ``road`` that lies at the incoming road's junction end: nearer it than the other end by a margin
-    (``None`` when the geometry does not tell)."""
+    """The end of ``road`` that lies at the incoming road's junction end: within the roads' width of it, and nearer
+    than the other end by at least the ``gap`` tolerance (``None`` when the geometry does not tell)."""
     there = places.end_pose(ws, incoming, incoming_end)
     ends = {end: places.end_pose(ws, road, end) for end in (ContactPoint.START, ContactPoint.END)}
     if there is None or any(p is None for p in ends.values()):
@@ -50,7 +50,7 @@ def _nearer_end(ws: Workspace, road: Road, incoming: Road, incoming_end: Contact
     near = min(distance, key=lambda end: distance[end])
     far = distance[other_end(near)]
     width = max(places.width_at(ws, road, near), places.width_at(ws, incoming, incoming_end), ws.tolerances.gap)
-    return near if distance[near] <= width and far > 2 * width else None
+    return near if distance[near] <= width and far >= distance[near] + ws.tolerances.gap else None
 
 
 @fixer("J002", "set-connection-contact-point", safe=True, bound="moves nothing")

@@ -1,5 +1,5 @@
-"""Fixes of record order (``L019``): a lane's ``<access>``, ``<material>``, ``<rule>`` or ``<visibility>`` records
-listed out of ``sOffset`` order."""
+"""Fixes of lane records (``L019``, ``L002``): a lane's ``<access>``, ``<material>``, ``<rule>`` or ``<visibility>``
+records listed out of ``sOffset`` order, and width records of the centre lane, which has none."""
 
 from __future__ import annotations
 
@@ -7,7 +7,7 @@ import math
 from collections.abc import Iterator
 
 from xodrcheck.findings import Finding
-from xodrcheck.fix.edits import Edit
+from xodrcheck.fix.edits import Edit, remove_element
 from xodrcheck.fix.registry import Repair, Skip, fixer
 from xodrcheck.fix.workspace import Workspace
 from xodrcheck.fix.xmltext import Element
@@ -55,3 +55,24 @@ def sort_lane_records(ws: Workspace, findings: list[Finding]) -> Iterator[Repair
 
 def _where(finding: Finding) -> str:
     return f"road {finding.road} lane {finding.lane}"
+
+
+@fixer("L002", "remove-centre-lane-width", safe=True, bound="moves nothing")
+def remove_centre_lane_width(ws: Workspace, findings: list[Finding]) -> Iterator[Repair | Skip]:
+    """Removes the ``<width>`` and ``<border>`` records of a centre lane 0.
+
+    The centre lane has no width by definition (Annex F ``road.lane.center_lane_no_width``): readers ignore such
+    records, and so does the geometry here, so leaving them out moves no lane. Nothing else of the lane is touched.
+    """
+    for finding in findings:
+        lanes = [e for e in ws.text.at_line(finding.line or 0) if e.tag in ("width", "border")]
+        centre = lanes[0].parent if len(lanes) == 1 else None
+        if centre is None or centre.tag != "lane" or centre.parent is None or centre.parent.tag != "center":
+            continue
+        records = [c for c in centre.children if c.tag in ("width", "border")]
+        yield Repair(
+            (finding,),
+            tuple(remove_element(ws.text, r) for r in records),
+            f"road {finding.road} lane section s={finding.section_s:g}: removed the centre lane's "
+            f"{len(records)} width record(s)",
+        )

@@ -35,6 +35,8 @@ ROAD1_LANE1 = b'<lane id="1" type="driving" level="false">\n            <width s
 CONNECTION_0 = b'<connection id="0" incomingRoad="1" connectingRoad="101" contactPoint="start">'
 ROAD1_LANE_RIGHT = b'<lane id="-1" type="driving" level="false">\n            <width sOffset="0" a="3.5"'
 
+CENTRE = b'<lane id="0" type="none" level="false">\n            <roadMark'
+
 #: (what is damaged, the bytes replaced, by what, the rule whose finding the damage makes, the fix that undoes it)
 DAMAGES = [
     (
@@ -57,6 +59,13 @@ DAMAGES = [
         ROAD1_LANE_RIGHT.replace(b"\n", b'\n            <link><successor id="-1"/></link>\n', 1),
         "L024",
         "remove-lane-link-into-junction",
+    ),
+    (
+        "a width on the centre lane",
+        CENTRE,
+        CENTRE.replace(b"\n", b'\n            <width sOffset="0" a="0.2" b="0" c="0" d="0"/>\n', 1),
+        "L002",
+        "remove-centre-lane-width",
     ),
     (
         "a contact point at the wrong end",
