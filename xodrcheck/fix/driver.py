@@ -2,11 +2,12 @@
 
 Each fix (:mod:`xodrcheck.fix.registry`) plans repairs for its rule's findings on the current bytes; repairs that
 touch the same bytes as an earlier one wait for the next round. The batch is applied and the file checked again: the
-batch stays when every finding it claims is gone and no finding is new (:mod:`xodrcheck.fix.verify`); otherwise its
-repairs that left their finding are rolled back, and a batch that brought a new finding is halved until the repair
-that did is found and rolled back. Rounds repeat while something was fixed, at most :data:`MAX_ROUNDS` times; a
-rolled-back repair is not tried again. So a file with nothing to fix comes out byte-identical, and fixing a fixed
-file changes nothing.
+batch stays when every finding it claims is gone and no finding is new (:mod:`xodrcheck.fix.verify`). Otherwise the
+repairs that left their finding are rolled back, so are those a new finding lies on (on a line they edit or in their
+scope, or on a road their findings name), and the rest is tried again; a new finding no repair can be blamed for
+halves the batch until the repair that brought it is found. Rounds repeat while something was fixed or waited, at
+most :data:`MAX_ROUNDS` times; a rolled-back repair is not tried again. So a file with nothing to fix comes out
+byte-identical, and fixing a fixed file changes nothing.
 """
 
 from __future__ import annotations
@@ -19,7 +20,7 @@ from xodrcheck.config import Config
 from xodrcheck.findings import Finding
 from xodrcheck.fix.edits import Edit, LineMap, apply, overlaps
 from xodrcheck.fix.registry import Fixer, Repair, Skip, load_fixers
-from xodrcheck.fix.verify import place_key, verify
+from xodrcheck.fix.verify import Verdict, place_key, verify
 from xodrcheck.fix.workspace import Workspace
 from xodrcheck.fix.xmltext import ScanError, XmlText, scan
 from xodrcheck.model import Document
@@ -144,8 +145,8 @@ class Session:
                 if rest:
                     trial(rest)
             else:
-                guilty = _blamed(group, verdict.new_lines, lines)
-                if guilty is not None:  # every new finding lies on a line one repair edits: take those back
+                guilty = _blamed(group, verdict, lines)
+                if guilty:  # new findings on lines a repair edits: take those repairs back, try the rest
                     self.rolled_back.extend(RolledBack(fx, r, _why((), _on(verdict, r, lines))) for r in guilty)
                     rest = [r for r in group if r not in guilty]
                     if rest:
@@ -197,23 +198,18 @@ def _edited_lines(repair: Repair, lines: XmlText) -> set[int]:
     return out
 
 
-def _blamed(group: Sequence[Repair], new_lines: Sequence[int | None], lines: XmlText) -> list[Repair] | None:
-    """The repairs of ``group`` that edit a line a new finding lies on, when every new finding lies on such a line
-    (``None`` otherwise: the culprit is found by halving)."""
-    touched = {id(r): _edited_lines(r, lines) for r in group}
-    guilty: list[Repair] = []
-    for line in new_lines:
-        hit = [r for r in group if line is not None and line in touched[id(r)]]
-        if not hit:
-            return None
-        guilty.extend(r for r in hit if r not in guilty)
-    return guilty
+def _blamed(group: Sequence[Repair], verdict: Verdict, lines: XmlText) -> list[Repair]:
+    """The repairs of ``group`` a new finding lies on: on a line they edit or in their scope, or on a road their
+    findings name."""
+    found = {line for line in verdict.new_lines if line is not None}
+    roads = {f.road for f in verdict.new if f.road is not None}
+    return [r for r in group if _edited_lines(r, lines) & found or roads & {f.road for f in r.findings}]
 
 
-def _on(verdict, repair: Repair, lines: XmlText) -> list[Finding]:
-    """The new findings on the lines ``repair`` edits."""
-    mine = _edited_lines(repair, lines)
-    return [f for f, line in zip(verdict.new, verdict.new_lines) if line in mine]
+def _on(verdict: Verdict, repair: Repair, lines: XmlText) -> list[Finding]:
+    """The new findings laid at ``repair``'s door (see :func:`_blamed`)."""
+    mine, roads = _edited_lines(repair, lines), {f.road for f in repair.findings}
+    return [f for f, line in zip(verdict.new, verdict.new_lines) if line in mine or f.road in roads]
 
 
 def _disjoint(repairs: list[Repair]) -> list[Repair]:

@@ -57,13 +57,14 @@ def snap_bound(ws: Workspace) -> float:
     return max(ws.tolerances.gap, Tolerances.gap)
 
 
-@fixer("G001", "snap-plan-view-gap", safe=False, bound="moves an element and what lies on it by up to `gap` (1 cm)")
+@fixer("G001", "snap-plan-view-gap", safe=False, bound="moves part of a road by up to `gap` (1 cm)")
 def snap_plan_view_gap(ws: Workspace, findings: list[Finding]) -> Iterator[Repair | Skip]:
-    """Moves a plan-view element whose start lies up to the ``gap`` tolerance (1 cm; more when it is set higher)
-    from the previous element's end onto that end (its ``x`` and ``y``; heading, length and shape kept).
+    """Closes a plan-view gap of up to the ``gap`` tolerance (1 cm; more when it is set higher) by moving the element
+    after it, and every element after that on the road, by the gap (their ``x`` and ``y``; headings, lengths and
+    shapes kept), so that no other joint opens.
 
-    The element and everything placed along it (lanes, objects) move by the gap, at most ``gap``; the repair says by
-    how much. Larger gaps are left: closing them is a design decision.
+    That part of the road and everything placed along it (lanes, objects) moves by the gap, at most ``gap``, and so
+    does the road's end; the repair says by how much. Larger gaps are left: closing them is a design decision.
     """
     for finding in findings:
         found = _record_at(ws, finding)
@@ -72,16 +73,25 @@ def snap_plan_view_gap(ws: Workspace, findings: list[Finding]) -> Iterator[Repai
         road, pairs, k = found
         if k == 0:
             continue
-        before, (g, element) = pairs[k - 1][0], pairs[k]
+        before, g = pairs[k - 1][0], pairs[k][0]
         x, y = _end(ws, road, before)
-        moved = math.hypot(g.x - x, g.y - y)
+        dx, dy = x - g.x, y - g.y
+        moved = math.hypot(dx, dy)
         if not math.isfinite(moved) or moved > snap_bound(ws):
             yield Skip(finding, f"the gap is {moved:.4g} m, over the gap tolerance ({snap_bound(ws):g} m)")
             continue
-        edits = (set_attribute(ws.text, element, "x", _number(x)), set_attribute(ws.text, element, "y", _number(y)))
-        yield Repair(
-            (finding,), edits, f"road {road.id}: moved the element at s={g.s:g} onto the previous one's end", moved
+        edits = tuple(
+            edit
+            for later, element in pairs[k:]
+            for edit in (
+                set_attribute(ws.text, element, "x", _number(later.x + dx)),
+                set_attribute(ws.text, element, "y", _number(later.y + dy)),
+            )
         )
+        view = pairs[k][1].parent
+        scope = (view.start, view.end) if view is not None else None
+        action = f"road {road.id}: moved the elements from s={g.s:g} on onto the previous one's end"
+        yield Repair((finding,), edits, action, moved, scope)
 
 
 @fixer("G006", "remove-zero-length-geometry", safe=False, bound="moves the reference line by up to the removed length")
@@ -124,4 +134,7 @@ def remove_zero_length_geometry(ws: Workspace, findings: list[Finding]) -> Itera
                 set_attribute(ws.text, after_element, "length", _number(after.length + g.length)),
             )
             moved = max(g.length, math.hypot(x - g.x, y - g.y))
-        yield Repair((finding,), edits, f"road {road.id}: removed the {g.length:.3g} m element at s={g.s:g}", moved)
+        view = element.parent
+        scope = (view.start, view.end) if view is not None else None
+        action = f"road {road.id}: removed the {g.length:.3g} m element at s={g.s:g}"
+        yield Repair((finding,), edits, action, moved, scope)
