@@ -143,4 +143,5 @@ def _one(args: argparse.Namespace, path: str, config, select, ignore) -> tuple[i
         print(f"{path}: nothing written (a dry run): -o OUT or --in-place writes the fixed file", file=sys.stderr)
     elif target is not None:
         print(f"{path}: wrote {target}" + ("" if result.changed else " (nothing to fix: unchanged)"), file=sys.stderr)
-    return 0, result.report
+    # the report is of the file written (an HTML report draws its map from there); a dry run's, of the input
+    return 0, result.report if target is None else dataclasses.replace(result.report, path=target)

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Finding
 from xodrcheck.fix.xmltext import Element, XmlText, scan
-from xodrcheck.model import Connection, ContactPoint, Document, Junction, Lane, LaneSection, Road, RoadLink
+from xodrcheck.model import Connection, ContactPoint, Document, Junction, Lane, Road, RoadLink
 
 if TYPE_CHECKING:
     from xodrcheck.lanes import RoadGeometry
@@ -66,14 +66,6 @@ class Workspace:
     def junction(self, junction_id: str | None) -> Junction | None:
         return None if junction_id is None else self.document.junction_by_id.get(junction_id)
 
-    @staticmethod
-    def section_at(road: Road, end: ContactPoint) -> tuple[int, LaneSection] | None:
-        """Index and lane section at a road's start or end."""
-        if not road.lane_sections:
-            return None
-        index = 0 if end is ContactPoint.START else len(road.lane_sections) - 1
-        return index, road.lane_sections[index]
-
     def end_s(self, road: Road, end: ContactPoint) -> float:
         return 0.0 if end is ContactPoint.START else float(road.length)
 
@@ -119,9 +111,6 @@ class Workspace:
         for part in sections[section_index].findall(side):
             found.extend(e for e in part.findall("lane") if _integer(e.get("id")) == lane.id)
         return _pick(found, lane.line)
-
-    def findings_of(self, code: str) -> list[Finding]:
-        return [f for f in self.findings if f.code == code]
 
 
 def _integer(text: str | None) -> int | None:

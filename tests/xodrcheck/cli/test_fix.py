@@ -52,7 +52,11 @@ def test_in_place_on_several_files_and_the_exit_code_of_what_is_left(tmp_path, c
     assert "G001 error" in out and "left   G001 plan-view-gap" in err and "--unsafe applies it" in err
     assert main(["fix", str(b), "--in-place", "--unsafe", *strict]) == 0
     err = capsys.readouterr().err
-    assert b'x="-60.0"' in b.read_bytes() and "moved  road 1: moved the element at s=50" in err and "by 0.004 m" in err
+    assert (
+        b'x="-60.0"' in b.read_bytes()
+        and "moved  road 1: moved the elements from s=50 on" in err
+        and "by 0.004 m" in err
+    )
 
 
 def test_diff_select_ignore_and_json(tmp_path, capsys):
@@ -65,7 +69,7 @@ def test_diff_select_ignore_and_json(tmp_path, capsys):
     (entry,) = json.loads(capsys.readouterr().out)["files"]
     assert "G001" not in {f["code"] for f in entry["findings"]}  # ignored: neither fixed nor reported
     assert not [f for f in entry["findings"] if f["severity"] == "error"]
-    assert entry["path"] == str(path) and b"<link/>" not in (tmp_path / "p.xodr").read_bytes()
+    assert entry["path"] == str(tmp_path / "p.xodr") and b"<link/>" not in (tmp_path / "p.xodr").read_bytes()
 
 
 def test_usage_and_unreadable_files_exit_2_and_write_nothing(tmp_path, capsys):
