@@ -4,10 +4,10 @@ Each fix (:mod:`xodrcheck.fix.registry`) plans repairs for its rule's findings o
 touch the same bytes as an earlier one wait for the next round. The batch is applied and the file checked again: the
 batch stays when every finding it claims is gone and no finding is new (:mod:`xodrcheck.fix.verify`). Otherwise the
 repairs that left their finding are rolled back, so are those a new finding lies on (on a line they edit or in their
-scope, or on a road their findings name), and the rest is tried again; a new finding no repair can be blamed for
-halves the batch until the repair that brought it is found. Rounds repeat while something was fixed or waited, at
-most :data:`MAX_ROUNDS` times; a rolled-back repair is not tried again. So a file with nothing to fix comes out
-byte-identical, and fixing a fixed file changes nothing.
+scope), and the rest is tried again; a new finding no repair is so blamed for splits the batch (the repairs whose
+findings name its road apart, else in halves) until the repair that brought it is found. Rounds repeat while something
+was fixed or waited, at most :data:`MAX_ROUNDS` times; a rolled-back repair is tried again only after another batch has
+changed the file. So a file with nothing to fix comes out byte-identical, and fixing a fixed file changes nothing.
 """
 
 from __future__ import annotations
@@ -63,7 +63,10 @@ class Session:
     #: Why a fix left a finding alone, by the finding's rule and place.
     skipped: dict[tuple, str] = field(default_factory=dict)
     _document: Document | None = None
-    _tried: set[tuple[str, str]] = field(default_factory=set)
+    #: Repairs tried (fix, action) -> how many batches had stayed then: one rolled back is tried again only once
+    #: another batch has changed the file since.
+    _tried: dict[tuple[str, str], int] = field(default_factory=dict)
+    _landed: int = 0
 
     def run(self) -> None:
         self.report = self._check(self.data)
@@ -109,12 +112,12 @@ class Session:
         for item in fx.plan(ws, targets):
             if isinstance(item, Skip):
                 self.skipped.setdefault(place_key(item.finding), item.reason)
-            elif (fx.name, item.action) not in self._tried and item.findings and item.edits:
+            elif self._tried.get((fx.name, item.action), -1) < self._landed and item.findings and item.edits:
                 repairs.append(item)
         ready = _disjoint(repairs)
         if not ready:
             return False
-        self._tried.update((fx.name, r.action) for r in ready)
+        self._tried.update(((fx.name, r.action), self._landed) for r in ready)
         kept = self._attempt(fx, ready, number)
         return kept > 0 or len(ready) < len(repairs)  # repairs that waited go on to the next round
 
@@ -137,30 +140,45 @@ class Session:
                 kept.extend(group)
                 best = (data, after)
             elif len(group) == 1:
-                self.rolled_back.append(RolledBack(fx, group[0], _why(verdict.unresolved, verdict.new)))
+                self._roll_back(RolledBack(fx, group[0], _why(verdict.unresolved, verdict.new)))
             elif not verdict.new:  # some claims failed: take those back, try the rest once more
                 failed = [r for r in group if r in verdict.unresolved] or list(group)
-                self.rolled_back.extend(RolledBack(fx, r, _why((r,), ())) for r in failed)
+                for r in failed:
+                    self._roll_back(RolledBack(fx, r, _why((r,), ())))
                 rest = [r for r in group if r not in failed]
                 if rest:
                     trial(rest)
             else:
-                guilty = _blamed(group, verdict, lines)
-                if guilty:  # new findings on lines a repair edits: take those repairs back, try the rest
-                    self.rolled_back.extend(RolledBack(fx, r, _why((), _on(verdict, r, lines))) for r in guilty)
+                guilty = _on_their_lines(group, verdict, lines)
+                if guilty:  # new findings on lines these repairs edit: take them back, try the rest
+                    for r in guilty:
+                        self._roll_back(RolledBack(fx, r, _why((), _on(verdict, r, lines))))
                     rest = [r for r in group if r not in guilty]
                     if rest:
                         trial(rest)
                     return
-                half = len(group) // 2  # else halve until the repair that brings it is found
-                trial(group[:half])
-                trial(group[half:])
+                suspects = _on_their_roads(group, verdict)  # a coarser guess: tried apart from the others
+                parts = (
+                    [[r for r in group if r not in suspects], suspects]
+                    if 0 < len(suspects) < len(group)
+                    else [group[: len(group) // 2], group[len(group) // 2 :]]
+                )
+                for part in parts:
+                    trial(part)
 
         trial(repairs)
         if best is not None:
             self.data, self.report, self._document = best[0], best[1], None
             self.applied.extend(Applied(fx, r, number) for r in kept)
+            self._landed += 1
+            done = {(fx.name, r.action) for r in kept}  # tried again and stayed: no longer rolled back
+            self.rolled_back = [b for b in self.rolled_back if (b.fixer.name, b.repair.action) not in done]
         return len(kept)
+
+    def _roll_back(self, back: RolledBack) -> None:
+        """Record a rolled-back repair (once: a repair tried again replaces its earlier record)."""
+        key = (back.fixer.name, back.repair.action)
+        self.rolled_back = [b for b in self.rolled_back if (b.fixer.name, b.repair.action) != key] + [back]
 
     def remaining(self, findings: Sequence[Finding]) -> list[tuple[Finding, str]]:
         """Each finding left with why it is left (see :meth:`reason`)."""
@@ -198,18 +216,22 @@ def _edited_lines(repair: Repair, lines: XmlText) -> set[int]:
     return out
 
 
-def _blamed(group: Sequence[Repair], verdict: Verdict, lines: XmlText) -> list[Repair]:
-    """The repairs of ``group`` a new finding lies on: on a line they edit or in their scope, or on a road their
-    findings name."""
+def _on_their_lines(group: Sequence[Repair], verdict: Verdict, lines: XmlText) -> list[Repair]:
+    """The repairs of ``group`` a new finding lies on: on a line they edit or in their scope."""
     found = {line for line in verdict.new_lines if line is not None}
+    return [r for r in group if _edited_lines(r, lines) & found]
+
+
+def _on_their_roads(group: Sequence[Repair], verdict: Verdict) -> list[Repair]:
+    """The repairs of ``group`` whose findings name a road a new finding names."""
     roads = {f.road for f in verdict.new if f.road is not None}
-    return [r for r in group if _edited_lines(r, lines) & found or roads & {f.road for f in r.findings}]
+    return [r for r in group if roads & {f.road for f in r.findings}]
 
 
 def _on(verdict: Verdict, repair: Repair, lines: XmlText) -> list[Finding]:
-    """The new findings laid at ``repair``'s door (see :func:`_blamed`)."""
-    mine, roads = _edited_lines(repair, lines), {f.road for f in repair.findings}
-    return [f for f, line in zip(verdict.new, verdict.new_lines) if line in mine or f.road in roads]
+    """The new findings on the lines ``repair`` edits or has in its scope."""
+    mine = _edited_lines(repair, lines)
+    return [f for f, line in zip(verdict.new, verdict.new_lines) if line in mine]
 
 
 def _disjoint(repairs: list[Repair]) -> list[Repair]:

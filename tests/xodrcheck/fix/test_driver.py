@@ -31,6 +31,8 @@ def _links(ws):
 
 
 def _use(monkeypatch, plan):
+    """Only the test's fix, for L024 (the families are loaded first: else they would register into the test's dict)."""
+    registry.load_fixers()
     fx = Fixer("L024", "test-fix", True, "moves nothing", "A test's fix.", plan)
     monkeypatch.setattr(registry, "FIXERS", {"L024": (fx,)})
 

@@ -16,8 +16,9 @@ from xodrcheck.fix.result import FixResult, fix
 
 pytestmark = pytest.mark.slow  # part of the full suite (CI); left out by -m "not slow"
 
-#: Files whose unsafe fixes are judged too: tiny plan-view elements (CARLA), dangling links, small gaps.
-UNSAFE = ("Town01.xodr", "Town02.xodr", "Town07.xodr", "stationary_objects.xodr", "junction_ma.xodr")
+#: Files whose unsafe fixes are judged too: tiny plan-view elements (CARLA), dangling road and lane links, small gaps
+#: (junction_m2a).
+UNSAFE = ("Town02.xodr", "Town07.xodr", "stationary_objects.xodr", "junction_ma_2.xodr", "junction_m2a.xodr")
 
 
 def _run(path: Path, unsafe: bool) -> tuple[FixResult, Judged, bool]:
