@@ -3,11 +3,11 @@
 ``CODE`` may be a code (``R010``) or a name (``road-link-target-missing``). JSON (``--format json``) gives a list of
 ``{"code", "name", "category", "severity", "default_severity", "basis", "summary", "uids", "fix"}`` objects, or for
 one rule that object plus ``"doc"``, ``"tolerances"``, ``"standard"`` (per UID: uid, section, level and the annex's
-description) and ``"fixes"``. Text is plain (the docstrings' reStructuredText markup taken out); ``summary`` is the documentation's
-first sentence, whole. ``basis`` says what the rule's findings rest on: ``annex-f`` (each names the Annex F rule it
-enforces), ``schema``, ``reading``, ``plausibility`` (the checker's own judgement), ``incomplete``, or ``annex-f`` and
-one of these for a rule whose findings do not all name a UID; ``default_severity`` is the most severe a finding of
-the rule is under the default profile (the standard's words bound it).
+description) and ``"fixes"``. Text is plain (the docstrings' reStructuredText markup taken out); ``summary`` is the
+documentation's first sentence, whole. ``basis`` says what the rule's findings rest on: ``annex-f`` (each names the
+Annex F rule it enforces), ``schema``, ``reading``, ``plausibility`` (the checker's own judgement), ``incomplete``, or
+``annex-f`` and one of these for a rule whose findings do not all name a UID; ``default_severity`` is the most severe a
+finding of the rule is under the default profile (the standard's words bound it).
 
 A rule whose findings ``xodrcheck fix`` can repair is marked ``fix:safe``, ``fix:unsafe`` or ``fix:safe+unsafe`` in
 the list (JSON: ``"fix"``); one rule's page describes each fix, what it may move, and whether it needs ``--unsafe``.
