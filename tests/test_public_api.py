@@ -25,6 +25,7 @@ MODULES = [
     "xodrcheck.report",
     "xodrcheck.sample",
     "xodrcheck.snapshot",
+    "xodrcheck.structures",
     "junctionart",
     "junctionart.cli",
     "junctionart.errors",
