@@ -25,6 +25,7 @@ from xodrcheck.model import (
     Road,
     TrafficRule,
 )
+from xodrcheck.rules.context import travel_direction
 
 #: Lane types of ramps and of the lanes beside a main road that lead to or from them (11.8).
 RAMP_TYPES = frozenset({LaneType.OFF_RAMP, LaneType.ON_RAMP, LaneType.CONNECTING_RAMP})
@@ -60,9 +61,14 @@ def lane_at(road: Road, end: ContactPoint, lane_id: int) -> Lane | None:
 
 
 def leads_in(road: Road, end: ContactPoint, lane_id: int) -> bool:
-    """Whether traffic on lane ``lane_id`` drives towards ``end`` of ``road`` (module docstring)."""
-    along = (lane_id < 0) == (road.rule is not TrafficRule.LHT)
-    return along == (end is ContactPoint.END)
+    """Whether traffic on lane ``lane_id`` drives towards ``end`` of ``road`` (module docstring): the lane's direction
+    of travel (:func:`~xodrcheck.rules.context.travel_direction`: its side, the traffic rule and a 1.8 ``direction``),
+    and for a lane without one (``both``, a shoulder...) the direction of its side."""
+    lane = lane_at(road, end, lane_id)
+    direction = None if lane is None else travel_direction(road, lane)
+    if direction is None:
+        direction = 1 if (lane_id < 0) == (road.rule is not TrafficRule.LHT) else -1
+    return (direction > 0) == (end is ContactPoint.END)
 
 
 def junction_end(road: Road, junction_id: str) -> ContactPoint | None:
