@@ -152,6 +152,26 @@ OPTIONS = [
         "chance that a crossing of control lines becomes an overpass (5.5 m over the other road, ramps within the "
         "terrain's grade limits) instead of a junction, where both roads are long enough",
     ),
+    (
+        "--fork-probability",
+        "fork_probability",
+        float,
+        "chance that a road with a long enough straight stretch forks: its outermost lane (or one it gains) splits off "
+        "and joins it again further on",
+    ),
+    (
+        "--ramp-probability",
+        "ramp_probability",
+        float,
+        "chance that such a road gains a ramp pair instead: exit lane and off-ramp, link road, on-ramp and entry lane",
+    ),
+    (
+        "--direct-junctions",
+        "direct_junctions",
+        _bool,
+        "forks and ramps meet their road at direct junctions (OpenDRIVE 1.7+); false: default junctions with "
+        "connecting roads (CARLA and SUMO read no direct junction)",
+    ),
 ]
 
 
@@ -186,8 +206,8 @@ def _add_generate(p: argparse.ArgumentParser) -> None:
         choices=("paper", "scenario"),
         default=None,
         help="paper (default): the JunctionArt paper's maps, byte for byte as before; scenario: a test map with "
-        "what scenarios need (urban roadside, junction control auto, overpass probability 0.5); options given as well "
-        "override the profile",
+        "what scenarios need (urban roadside, junction control auto, overpass probability 0.5, fork probability 0.15 "
+        "and ramp probability 0.1 on default junctions); options given as well override the profile",
     )
     p.add_argument("-q", "--quiet", action="store_true", help="no summary line, no progress bar")
     p.add_argument("-v", "--verbose", action="store_true", help="list each repair the generator made, on stderr")
@@ -262,9 +282,9 @@ def _generate(args: argparse.Namespace) -> int:
         if bar is not None:
             bar.update(1)
         elif not args.quiet:
-            lay = result.layout
+            lay, doc = result.layout, result.document
             print(
-                f"{path}: {len(lay.roads)} roads, {len(lay.junctions)} junctions, "
+                f"{path}: {sum(r.junction == '-1' for r in doc.roads)} roads, {len(doc.junctions)} junctions, "
                 f"{sum(len(j.connections) for j in lay.junctions)} connection lanes, "
                 f"{len(lay.repairs)} repairs (changes made so every junction fits"
                 f"{'' if args.verbose else '; --verbose lists them'}), {time.perf_counter() - t0:.2f} s"
@@ -272,6 +292,8 @@ def _generate(args: argparse.Namespace) -> int:
         if args.verbose:
             for repair in result.layout.repairs:
                 print(f"junctionart: seed {seed}: repair: {repair}", file=sys.stderr)
+        for note in result.notes:  # what the control-line file asked for and did not get: always said
+            print(f"junctionart: seed {seed}: {note}", file=sys.stderr)
     if bar is not None:
         bar.close()
     return 0
@@ -353,13 +375,14 @@ COMMANDS: dict[str, tuple[str, str | None, Callable[[argparse.ArgumentParser], N
         _add_era,
     ),
     "intersection": (
-        "one intersection from explicit legs (headings, lanes in and out, medians, bends)",
+        "one intersection from explicit legs (headings, lanes in and out, medians, bends), or a fork, merge or ramp",
         "Write a small map with one intersection described leg by leg (--leg) or as JSON (--spec), built by the "
-        "generator's intersection stage: the junction and an approach road per leg.",
+        "generator's intersection stage: the junction and an approach road per leg. A fork, merge or ramp instead: "
+        "--preset (yosemite: the paper's one-way, two-lane road splitting in two) or --spec with a kind.",
         _add_intersection,
     ),
     "search": (
-        "quality-diversity search (MAP-Elites, pyribs) for intersections across chosen metrics",
+        "quality-diversity search (MAP-Elites, pyribs) for intersections, forks or ramps across chosen metrics",
         "Fill an archive of intersections spanning two or three metrics with MAP-Elites (needs the [search] extra); "
         "stop at a budget or when -n elites meet --where. Writes archive.csv, heatmaps, report.md and the elites' "
         ".xodr (resumable).",

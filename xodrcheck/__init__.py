@@ -6,6 +6,7 @@ Point it at any ``.xodr`` from any tool::
 
     result = xodrcheck.read("map.xodr")  # ReadResult: .document (typed model, or None) and .findings
     report = xodrcheck.check("map.xodr")  # Report: .ok, .complete, .findings (every rule run)
+    fixed = xodrcheck.fix("map.xodr")  # FixResult: .data (the fixed bytes), .applied, .remaining, .report
     xodrcheck.is_valid("map.xodr")  # True or False; is_valid_reason(path) says why not, in words
 
 Every error xodrcheck raises on purpose derives from :class:`XodrError` (``ReadError``: the input cannot be read at
@@ -28,6 +29,7 @@ if TYPE_CHECKING:
     from xodrcheck.check import Report, check, is_valid, is_valid_reason
     from xodrcheck.config import Config, ConfigError, Tolerances
     from xodrcheck.findings import Category, Finding, ReadError, Severity, XodrError
+    from xodrcheck.fix import FixResult, fix
     from xodrcheck.model import Document, LaneKey
     from xodrcheck.reader import ReadResult, read
 
@@ -38,6 +40,7 @@ _EXPORTS = {
     "ConfigError": "xodrcheck.config",
     "Document": "xodrcheck.model",
     "Finding": "xodrcheck.findings",
+    "FixResult": "xodrcheck.fix.result",
     "LaneKey": "xodrcheck.model",
     "OutputError": "xodrcheck.atomic",
     "ReadError": "xodrcheck.findings",
@@ -57,6 +60,7 @@ __all__ = [
     "ConfigError",
     "Document",
     "Finding",
+    "FixResult",
     "LaneKey",
     "OutputError",
     "ReadError",
@@ -66,6 +70,7 @@ __all__ = [
     "Tolerances",
     "XodrError",
     "check",
+    "fix",
     "is_valid",
     "is_valid_reason",
     "read",
@@ -82,13 +87,14 @@ def __getattr__(name: str) -> Any:
 
 
 def __dir__() -> list[str]:
-    return sorted(set(globals()) | set(_EXPORTS) | {"check"})
+    return sorted(set(globals()) | set(_EXPORTS) | {"check", "fix"})
 
 
 class _Package(ModuleType):
-    """The package's module type: ``xodrcheck.check`` is the function :func:`xodrcheck.check.check`, loaded on first
-    use, although the submodule of that name binds itself to the package when it is imported (the import system sets
-    the parent's attribute after loading a submodule; this property keeps the function there instead)."""
+    """The package's module type: ``xodrcheck.check`` is the function :func:`xodrcheck.check.check` and
+    ``xodrcheck.fix`` the function :func:`xodrcheck.fix.fix`, loaded on first use, although the submodule (package)
+    of that name binds itself to the package when it is imported (the import system sets the parent's attribute after
+    loading a submodule; these properties keep the function there instead)."""
 
     @property
     def check(self) -> Any:
@@ -104,6 +110,21 @@ class _Package(ModuleType):
         if isinstance(value, ModuleType) and value.__name__ == f"{__name__}.check":
             return  # the submodule binding itself: the package keeps naming the function
         vars(self)["_check_function"] = value  # an explicit assignment (a test's monkeypatch, say) wins
+
+    @property
+    def fix(self) -> Any:
+        override = vars(self).get("_fix_function")
+        if override is not None:
+            return override
+        from xodrcheck.fix.result import fix
+
+        return fix
+
+    @fix.setter
+    def fix(self, value: Any) -> None:
+        if isinstance(value, ModuleType) and value.__name__ == f"{__name__}.fix":
+            return  # the sub-package binding itself: the package keeps naming the function
+        vars(self)["_fix_function"] = value
 
 
 sys.modules[__name__].__class__ = _Package

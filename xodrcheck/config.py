@@ -165,6 +165,15 @@ class Tolerances:
         "Surfaces further apart than this in height do not overlap (bridges, tunnels).",
         rules="O001 O003 O004",
     )
+    max_turns: float = _tolerance(
+        10.0,
+        "turns",
+        "A lane whose surface covers itself in plan view and whose border turns through more than this many full "
+        "circles winds round itself (a damaged curvature or length, not a road): O002 says so, and its self-overlap "
+        "and its overlaps with other roads are not computed, whose cost grows with every turn. A spiral ramp of more "
+        "storeys needs a larger value.",
+        rules="O001 O002 O003 O004 O005",
+    )
     centre_distance: float = _tolerance(
         10_000.0,
         "m",

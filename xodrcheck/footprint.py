@@ -19,12 +19,14 @@ from functools import cached_property
 import numpy as np
 import shapely
 
+from xodrcheck import strip_shapes, work
+from xodrcheck.config import Tolerances
 from xodrcheck.findings import OutOfTime
 from xodrcheck.mesh import LaneSurfaces, cached_per_chord, surfaces_of
 from xodrcheck.model import DRIVABLE_LANE_TYPES, Document, ElementType, JunctionType, LaneKey
 
 DRIVABLE_TYPE_NAMES = frozenset(t.value for t in DRIVABLE_LANE_TYPES)
-#: Triangles united in one GEOS call when a lane strip's outline is not a simple polygon.
+#: Pieces united in one GEOS call when a lane strip's outline is not a simple polygon.
 _UNION_BLOCK = 256
 #: Most points of an overlap polygon's outline sampled for heights (plus its representative point).
 _HEIGHT_POINTS = 24
@@ -53,17 +55,37 @@ def _outlines(surfaces: LaneSurfaces) -> np.ndarray:
 
 
 class Footprints:
-    """Lane footprints of one document with a spatial index (build with :func:`footprints_of`)."""
+    """Lane footprints of one document with a spatial index (build with :func:`footprints_of`).
 
-    def __init__(self, surfaces: LaneSurfaces, out_of_time: Callable[[], bool] | None = None):
+    A strip whose outline is not a simple polygon and whose border turns through more than ``max_turns`` full circles
+    (:attr:`winding`) winds round itself: its footprint is left empty instead of united (the union's cost grows with
+    every turn, and a road wound round a 0.5 m circle a thousand times is no road), and ``lane-fold`` says so."""
+
+    def __init__(
+        self, surfaces: LaneSurfaces, out_of_time: Callable[[], bool] | None = None, max_turns: float | None = None
+    ):
         self.surfaces = surfaces
         self._out_of_time = out_of_time
         self._near: np.ndarray | None = None
+        most = Tolerances().max_turns if max_turns is None else max_turns
         polygons = _outlines(surfaces)
-        invalid = np.flatnonzero(~shapely.is_valid(polygons))
-        for i in invalid:
-            polygons[i] = self._triangle_union(int(i))
-        #: One (multi)polygon per lane strip of :attr:`surfaces`.
+        turns = strip_shapes.strip_turns(surfaces)
+        # a strip turning that much whose triangles outweigh its box winds round itself: testing its outline for
+        # simplicity would cost the square of its size (a 1e9 m spiral: minutes)
+        many = np.flatnonzero(turns > most)
+        wound = many[strip_shapes.covers_twice(surfaces, many)]
+        judged = np.ones(len(polygons), dtype=bool)
+        judged[wound] = False
+        invalid = np.union1d(wound, np.flatnonzero(judged)[~shapely.is_valid(polygons[judged])]).astype(np.int64)
+        #: Strips that wind round themselves -> the full turns their inner border sweeps (see the class docstring).
+        self.winding: dict[int, float] = {}
+        for i in map(int, invalid):
+            if turns[i] > most:
+                self.winding[i] = float(turns[i])
+                polygons[i] = shapely.Polygon()
+            else:
+                polygons[i] = self._union(i)
+        #: One (multi)polygon per lane strip of :attr:`surfaces` (empty for a strip that winds round itself).
         self.polygons = polygons
         #: Lane strips whose outline is not a simple polygon (their footprint is the union of their triangles).
         self.invalid = invalid
@@ -75,13 +97,12 @@ class Footprints:
         faces = s.faces[s.lane_faces[lane] : s.lane_faces[lane + 1]]
         return s.vertices[faces][..., :2]
 
-    def _triangle_union(self, lane: int):
-        """Union of a lane strip's triangles, in blocks of :data:`_UNION_BLOCK` merged pairwise, so that a strip
-        winding over itself thousands of times (a damaged 1e9 m spiral) can be stopped between two GEOS calls when the
-        time budget is spent (:class:`OutOfTime`)."""
-        tris = self.triangles(lane)
-        polys = shapely.polygons(np.concatenate([tris, tris[:, :1]], axis=1))
-        polys = polys[shapely.area(polys) > 0]
+    def _union(self, lane: int):
+        """Union of a lane strip's triangles, made from its pieces (:func:`xodrcheck.strip_shapes.pieces`) in blocks of
+        :data:`_UNION_BLOCK` merged pairwise, so that the time budget can stop it between two GEOS calls
+        (:class:`OutOfTime`)."""
+        polys = strip_shapes.pieces(self.surfaces, lane)
+        work.add("union coordinates", int(shapely.get_num_coordinates(polys).sum()))
         parts = []
         for k in range(0, len(polys), _UNION_BLOCK):
             self._check_time()
@@ -102,12 +123,22 @@ class Footprints:
         total = 0.5 * np.abs(u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]).sum()
         return float(total - shapely.area(self.polygons[lane]))
 
+    @cached_property
+    def tiled(self) -> np.ndarray:
+        """Per strip, its lane section's first strip when the section's strips overlap nowhere, else -1
+        (:func:`xodrcheck.strip_shapes.tiled_sections`)."""
+        return strip_shapes.tiled_sections(self.surfaces, self.invalid)
+
     def near_pairs(self) -> np.ndarray:
-        """``(2, P)`` lane-strip index pairs ``i < j`` whose footprints intersect (queried once: the overlap rules
-        between roads and within a road share it)."""
+        """``(2, P)`` lane-strip index pairs ``i < j`` whose footprints intersect, but for two strips of one lane
+        section known to overlap nowhere (:attr:`tiled`: they touch along their shared borders, and testing that on
+        two long strips costs much). Queried once: the overlap rules between roads and within a road share it."""
         if self._near is None:
-            pairs = self.tree.query(self.polygons, predicate="intersects")
-            self._near = pairs[:, pairs[0] < pairs[1]]
+            pairs = self.tree.query(self.polygons)  # bounding boxes that meet
+            tiled = self.tiled
+            pairs = pairs[:, (pairs[0] < pairs[1]) & ((tiled[pairs[0]] < 0) | (tiled[pairs[0]] != tiled[pairs[1]]))]
+            polys = self.polygons
+            self._near = pairs[:, shapely.intersects(polys[pairs[0]], polys[pairs[1]])]
         return self._near
 
     def heights(self, lane: int, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -243,9 +274,15 @@ class Relations:
 class OverlapIndex:
     """Footprints plus the road relations of one document."""
 
-    def __init__(self, document: Document, chord: float | None = None, out_of_time: Callable[[], bool] | None = None):
+    def __init__(
+        self,
+        document: Document,
+        chord: float | None = None,
+        out_of_time: Callable[[], bool] | None = None,
+        max_turns: float | None = None,
+    ):
         self.document = document
-        self.footprints = Footprints(surfaces_of(document, chord), out_of_time)
+        self.footprints = Footprints(surfaces_of(document, chord), out_of_time, max_turns)
         self.relations = Relations(document)
 
     @property
@@ -270,8 +307,9 @@ class OverlapIndex:
 
     @cached_property
     def self_pairs(self) -> np.ndarray:
-        """``(2, P)`` near lane-strip pairs of one road, neither of them a strip that folds over itself (whose own
-        overlap :attr:`Footprints.invalid` marks)."""
+        """``(2, P)`` near lane-strip pairs of one road (:meth:`Footprints.near_pairs`: not two strips of a lane section
+        known to overlap nowhere), neither of them a strip that folds over itself (whose own overlap
+        :attr:`Footprints.invalid` marks)."""
         pairs = self.footprints.near_pairs()
         if not pairs.size:
             return pairs
@@ -304,6 +342,7 @@ class OverlapIndex:
     ) -> bool:
         """:meth:`overlaps` of one block of pairs, appended to ``out``; ``True`` when the deadline stopped it."""
         polys = self.footprints.polygons
+        work.add("overlay coordinates", int(shapely.get_num_coordinates(polys[pairs]).sum()))
         shared = shapely.intersection(polys[pairs[0]], polys[pairs[1]])
         areas = shapely.area(shared)
         for k in np.flatnonzero(areas > min_area * 1e-3):
@@ -334,11 +373,17 @@ class OverlapIndex:
 
 
 def overlap_index(
-    document: Document, chord: float | None = None, out_of_time: Callable[[], bool] | None = None
+    document: Document,
+    chord: float | None = None,
+    out_of_time: Callable[[], bool] | None = None,
+    max_turns: float | None = None,
 ) -> OverlapIndex:
-    """:class:`OverlapIndex` of a document, cached for its lifetime (per chord). ``out_of_time`` is polled while the
-    footprints are built; when it says so, :class:`OutOfTime` is raised and nothing is cached."""
-    return cached_per_chord("overlap index", document, chord, lambda d, c: OverlapIndex(d, c, out_of_time))
+    """:class:`OverlapIndex` of a document, cached for its lifetime (per chord and ``max_turns``). ``out_of_time`` is
+    polled while the footprints are built; when it says so, :class:`OutOfTime` is raised and nothing is cached."""
+    most = Tolerances().max_turns if max_turns is None else float(max_turns)
+    return cached_per_chord(
+        f"overlap index within {most!r} turns", document, chord, lambda d, c: OverlapIndex(d, c, out_of_time, most)
+    )
 
 
 # ------------------------------------------------------------------------------------------------------ metrics

@@ -21,6 +21,7 @@ from functools import cached_property
 
 import numpy as np
 
+from xodrcheck import work
 from xodrcheck.arrays import batches, ranges
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import XodrError
@@ -194,11 +195,11 @@ def build_surfaces(
     part = _together(fast, chord, max_step, bound)
     if part is None:
         fast, part = [], _Part.empty()
-    if len(fast) == len(todo):
-        return part.surfaces()
-    own = {id(t): k for k, t in enumerate(fast)}
-    parts = [part.entry(own[id(t)]) if id(t) in own else _one(t, chord, max_step, bound) for t in todo]
-    return _Part.join(parts).surfaces()
+    if len(fast) != len(todo):
+        own = {id(t): k for k, t in enumerate(fast)}
+        part = _Part.join([part.entry(own[id(t)]) if id(t) in own else _one(t, chord, max_step, bound) for t in todo])
+    work.add("mesh vertices", len(part.vertices))
+    return part.surfaces()
 
 
 class _Bound:

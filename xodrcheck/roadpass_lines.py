@@ -11,6 +11,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck import work
 from xodrcheck.arrays import ranges
 from xodrcheck.geometry import profile
 from xodrcheck.geometry.pose import Pose
@@ -148,6 +149,7 @@ def lateral_lines(entries: Sequence[Entry], s: np.ndarray, offsets: np.ndarray) 
                 values[out] = new
                 lat[out] = lat[inn] + (new - inner)
     q, dq, ddq = lateral
+    work.add("line points", base)
     return Lines(ids, np.array(bases, dtype=np.int64), sample, q, dq, ddq, outer)
 
 

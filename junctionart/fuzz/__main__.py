@@ -1,11 +1,13 @@
-"""``python -m junctionart.fuzz [--minutes N] [--profile ci|long] [--runs NAME,...]``: fuzz until time is up.
+"""``python -m junctionart.fuzz [--minutes N] [--profile ci|long] [--runs NAME,...] [--slowest DIR]``: fuzz until
+time is up.
 
 Every run of :mod:`junctionart.fuzz.campaign` is repeated in rounds, round-robin, until ``--minutes`` have passed
 (one round: a
 tenth of the run's example budget under the profile, so that no round overruns the time by much); stored failing
 examples are replayed first. A run that fails is
 reported and left out of the later rounds. Prints the figures at the end (inputs tried per run, generated maps,
-damaged documents, failures, time) and exits 1 if any run failed.
+damaged documents, failures, time) and exits 1 if any run failed. The ``slow`` run (the slow-input hunt,
+:mod:`junctionart.fuzz.hunt`) also prints the slowest documents it checked, and ``--slowest DIR`` writes them there.
 """
 
 from __future__ import annotations
@@ -14,6 +16,7 @@ import argparse
 import sys
 import time
 import warnings
+from pathlib import Path
 
 from hypothesis import settings
 
@@ -36,7 +39,27 @@ def _parser() -> argparse.ArgumentParser:
     parser.add_argument(
         "--runs", default=",".join(campaign.RUNS), help=f"comma-separated runs (default all: {','.join(campaign.RUNS)})"
     )
+    parser.add_argument(
+        "--slowest", type=Path, metavar="DIR", help="write the 20 slowest documents of the slow run to DIR (.xodr)"
+    )
     return parser
+
+
+def _report_slowest(directory: Path | None) -> None:
+    """The slow run's slowest documents: printed, and written to ``directory`` when given."""
+    from junctionart.fuzz import hunt
+
+    if not hunt.SLOWEST:
+        return
+    print(
+        f"slowest documents of the slow run ({len(hunt.SLOWEST)} kept; under {hunt.LARGE // 1024} kB and over "
+        f"{hunt.SLOW_SECONDS:g} s of CPU: {P.STATS['slow']}):"
+    )
+    for cpu, digest, _, cost in sorted(hunt.SLOWEST, reverse=True)[:10]:
+        print(f"  {cpu:7.2f} s CPU  {cost.per_kb:7.3f} s/kB  {cost.size:9,d} B  {digest}")
+    if directory is not None:
+        written = hunt.save_slowest(directory)
+        print(f"{len(written)} written to {directory}")
 
 
 def main(argv: list[str] | None = None) -> int:
@@ -77,6 +100,8 @@ def main(argv: list[str] | None = None) -> int:
             f"round {rounds}: {sum(campaign.TRIED.values())} inputs in {time.monotonic() - started:.0f} s", flush=True
         )
     elapsed = time.monotonic() - started
+    if "slow" in names:
+        _report_slowest(args.slowest)
     print(f"\nprofile {args.profile}, {elapsed / 60.0:.1f} min, {rounds} round(s)")
     for name in names:
         status = "FAILED" if name in failed else "ok"

@@ -12,7 +12,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
-from hypothesis import given, settings
+from hypothesis import Phase, given, settings
 from hypothesis import strategies as st
 
 from junctionart.fuzz import properties as P
@@ -39,6 +39,10 @@ class Run:
     strategy: Callable[[], st.SearchStrategy]
     check: Callable[[Any], object]  # asserts; what it returns is not used
     doc: str
+    #: The check hands Hypothesis targets to climb (``hypothesis.target``): the run adds the target phase and
+    #: neither stores examples (the committed database keeps open failures only) nor shrinks (each step re-checks a
+    #: slow document).
+    climbs: bool = False
 
 
 # ------------------------------------------------------------------------------------------------ checker runs
@@ -94,6 +98,18 @@ def _check_renumbering(case) -> None:
     before = P.checked(data)
     after = P.checked(renumber_roads(data, mapping))
     assert P.finding_keys(after) == P.finding_keys(before, mapping), "renumbering roads changed more than ids"
+
+
+def _hostile() -> st.SearchStrategy:
+    from junctionart.fuzz.hostile import hostile_documents
+
+    return hostile_documents()
+
+
+def _check_hostile(data: bytes) -> None:
+    from junctionart.fuzz.hunt import check_is_bounded
+
+    check_is_bounded(data)
 
 
 # ------------------------------------------------------------------------------------------------ generator runs
@@ -173,6 +189,14 @@ RUNS: dict[str, Run] = {
             _check_defect,
             "documents with one known defect: the defect is reported",
         ),
+        Run(
+            "slow",
+            "slow",
+            _hostile,
+            _check_hostile,
+            "hostile documents (huge lengths, tiny radii, thousands of records): bounded cost, the slowest kept",
+            climbs=True,
+        ),
         Run("move-rotate", "metamorphic", _moves, _check_move, "moving and rotating a map changes no finding"),
         Run(
             "renumber",
@@ -217,4 +241,6 @@ def hypothesis_test(
     # Every run shares this function's source, which Hypothesis hashes into the database key; the run's name keeps
     # the keys apart (the attribute Hypothesis itself uses to separate parametrized tests).
     example.__dict__["_hypothesis_internal_add_digest"] = (key or name).encode()
+    if run.climbs:
+        config = settings(config, database=None, phases=(Phase.explicit, Phase.generate, Phase.target))
     return config(given(strategy if strategy is not None else run.strategy())(example))

@@ -54,6 +54,7 @@ BUDGETS: dict[str, dict[str, int]] = {
         "invalid": 200,
         "round-trip": 100,
         "faults": 30,
+        "slow": 20,
     },
     "long": {
         "maps": 200,
@@ -64,6 +65,7 @@ BUDGETS: dict[str, dict[str, int]] = {
         "invalid": 500,
         "round-trip": 100,
         "faults": 200,
+        "slow": 600,
     },
 }
 

@@ -80,6 +80,11 @@ def test_rows_are_the_metrics_of_the_written_map(tmp_path):
     row = result.rows[0]
     assert float(row["area"]) == pytest.approx(first.area) and int(row["legs"]) == first.legs
     assert float(row["fov"]) == pytest.approx(first.leg_metrics[0].fov)
+    # one structures.csv row per junction of a paper map, each an ordinary junction; legs.csv names the kind
+    assert [r["kind"] for r in result.structures] == ["junction"] * len(metrics)
+    assert [r["junctions"] for r in result.structures] == [m.junction for m in metrics]
+    assert {r["kind"] for r in result.rows} == {"junction"}
+    assert [float(r["legs"]) for r in result.structures] == [float(m.legs) for m in metrics]
 
 
 def test_a_failing_map_is_recorded_not_raised(monkeypatch):
@@ -158,6 +163,9 @@ def test_cli_writes_table_figures_and_report(tmp_path, corpus_dir):
     assert code == 0
     report = (out / "report.md").read_text()
     assert "complexity (paper Figure 13)" in report and "carla-towns" in report
+    assert "## Structures by kind" in report
+    structures = era.read_csv(out / "structures.csv")
+    assert structures and {r["kind"] for r in structures} == {"junction"}
     pngs = sorted(p.name for p in out.glob("*.png"))
     assert len(pngs) == 8 + 7 and all((out / p).stat().st_size > 1000 for p in pngs)
 
@@ -227,3 +235,30 @@ def test_generator_version_ignores_presentation_only_sources(tmp_path):
     assert era.source_hash([pkg, checker]) == both
     (checker / "metrics.py").write_text("E = 2\n")
     assert era.source_hash([pkg, checker]) != both
+
+
+def test_the_structures_section_counts_each_kind_and_draws_its_measures(tmp_path):
+    """A run whose maps hold forks and ramps: the section counts them per kind and draws one figure per special kind
+    with a panel per measure; structures of maps outside the selected intersections are not counted."""
+    from junctionart.era_structures import section
+    from xodrcheck.structures import KINDS, kind
+
+    def row(seed, k, **measures):
+        return {"run": "scenario", "seed": str(seed), "kind": k, **{n: str(v) for n, v in measures.items()}}
+
+    rows = [
+        row(0, "junction", legs=3, min_angle=80),
+        row(0, "fork", split_angle=12.0, lanes_in=2, lanes_left=1, lanes_right=1, merge=0, direct=0),
+        row(0, "fork", split_angle=12.0, lanes_in=2, lanes_left=1, lanes_right=1, merge=1, direct=0),
+        row(1, "ramp", ramp_angle=30.0, taper_length=29.4, side_lane_length=49.7, ramp_lanes=1, exit=1),
+        row(5, "ramp", ramp_angle=31.0, taper_length=29.4, side_lane_length=49.7, ramp_lanes=1, exit=0),
+    ]
+    selected = {"scenario": [{"seed": "0"}, {"seed": "1"}]}  # seed 5's intersections were not selected
+    lines = section(tmp_path, rows, selected)
+    counts = next(line for line in lines if line.startswith("| scenario |"))
+    cells = dict(zip([k.name for k in KINDS], (c.strip() for c in counts.strip("|").split("|")[1:])))
+    assert cells["junction"] == "1" and cells["fork"] == "2" and cells["ramp"] == "1"
+    assert (tmp_path / "kind_fork.png").stat().st_size > 1000 and (tmp_path / "kind_ramp.png").stat().st_size > 1000
+    text = "\n".join(lines)
+    assert "### fork" in text and "split_angle: scenario 12" in text and "ramp_angle: scenario 30" in text
+    assert len(kind("fork").measures) == 6

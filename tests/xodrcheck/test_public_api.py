@@ -13,14 +13,15 @@ import xodrcheck
 @pytest.mark.parametrize("name", xodrcheck.__all__)
 def test_every_public_name_resolves_to_its_module_object(name):
     value = getattr(xodrcheck, name)
-    module = xodrcheck._EXPORTS.get(name, "xodrcheck.check")
+    module = xodrcheck._EXPORTS.get(name, {"check": "xodrcheck.check", "fix": "xodrcheck.fix.result"}.get(name))
     importlib.import_module("xodrcheck.check")  # binds the package attribute 'check' to the submodule, then...
+    importlib.import_module("xodrcheck.fix.driver")  # (and 'fix' to the sub-package)
     assert getattr(importlib.import_module(module), name) is value
-    assert callable(xodrcheck.check)  # ...the function is still what the package names
+    assert callable(xodrcheck.check) and callable(xodrcheck.fix)  # ...the functions are still what it names
 
 
 def test_all_lists_the_lazy_names():
-    assert sorted(xodrcheck.__all__) == sorted([*xodrcheck._EXPORTS, "check"])
+    assert sorted(xodrcheck.__all__) == sorted([*xodrcheck._EXPORTS, "check", "fix"])
 
 
 def test_unknown_name_is_an_attribute_error():

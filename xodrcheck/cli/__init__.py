@@ -20,6 +20,7 @@ COMMANDS = {
     "info": "Summarise OpenDRIVE files: version, roads, junctions, lanes, geometry, extent and reader findings.",
     "sample": "Sample every lane's centre line (and borders) at a fixed step, as CSV or GeoJSON.",
     "check": "Check OpenDRIVE files against the conformance rules (exit 1 when an error is found).",
+    "fix": "Repair what can be repaired, safely, and check the result (-o OUT or --in-place writes it; else a diff).",
     "rules": "List the checker's rules (code, name, category, severity, basis, summary), or show one rule in full "
     "with the sentences of the standard it enforces.",
     "mesh": "Write the lane surfaces as a 3D mesh (.glb, .obj or .ply), coloured by lane type.",

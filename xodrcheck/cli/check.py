@@ -42,7 +42,7 @@ NAME = "check"
 HELP = "Check OpenDRIVE files against the conformance rules (exit 1 when an error is found)."
 
 
-def _split(values: list[str] | None, flag: str) -> tuple[str, ...] | None:
+def split_selectors(values: list[str] | None, flag: str) -> tuple[str, ...] | None:
     if values is None:
         return None
     parts = tuple(part.strip() for value in values for part in value.split(",") if part.strip())
@@ -120,7 +120,7 @@ def _jobs(text: str) -> int:
     return value
 
 
-def _tolerance_overrides(items: list[str]) -> dict[str, str]:
+def tolerance_overrides(items: list[str]) -> dict[str, str]:
     out: dict[str, str] = {}
     for item in items:
         name, sep, value = item.partition("=")
@@ -149,8 +149,8 @@ def run(args: argparse.Namespace) -> int:
     from xodrcheck.check import Selection
 
     try:
-        config = load_config(overrides=_tolerance_overrides(args.tolerance), profile=args.profile)
-        select, ignore = _split(args.select, "--select"), _split(args.ignore, "--ignore")
+        config = load_config(overrides=tolerance_overrides(args.tolerance), profile=args.profile)
+        select, ignore = split_selectors(args.select, "--select"), split_selectors(args.ignore, "--ignore")
         config = dataclasses.replace(
             config,
             select=config.select if select is None else select,

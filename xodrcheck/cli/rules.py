@@ -1,13 +1,16 @@
 """``xodrcheck rules [CODE]``: list the rules, or print one rule's documentation with its examples.
 
 ``CODE`` may be a code (``R010``) or a name (``road-link-target-missing``). JSON (``--format json``) gives a list of
-``{"code", "name", "category", "severity", "default_severity", "basis", "summary", "uids"}`` objects, or for one
-rule that object plus ``"doc"``, ``"tolerances"`` and ``"standard"`` (per UID: uid, section, level and the annex's
-description). Text is plain (the docstrings' reStructuredText markup taken out); ``summary`` is the documentation's
-first sentence, whole. ``basis`` says what the rule's findings rest on: ``annex-f`` (each names the Annex F rule it
-enforces), ``schema``, ``reading``, ``plausibility`` (the checker's own judgement), ``incomplete``, or ``annex-f`` and
-one of these for a rule whose findings do not all name a UID; ``default_severity`` is the most severe a finding of
-the rule is under the default profile (the standard's words bound it).
+``{"code", "name", "category", "severity", "default_severity", "basis", "summary", "uids", "fix"}`` objects, or for
+one rule that object plus ``"doc"``, ``"tolerances"``, ``"standard"`` (per UID: uid, section, level and the annex's
+description) and ``"fixes"``. Text is plain (the docstrings' reStructuredText markup taken out); ``summary`` is the
+documentation's first sentence, whole. ``basis`` says what the rule's findings rest on: ``annex-f`` (each names the
+Annex F rule it enforces), ``schema``, ``reading``, ``plausibility`` (the checker's own judgement), ``incomplete``, or
+``annex-f`` and one of these for a rule whose findings do not all name a UID; ``default_severity`` is the most severe a
+finding of the rule is under the default profile (the standard's words bound it).
+
+A rule whose findings ``xodrcheck fix`` can repair is marked ``fix:safe``, ``fix:unsafe`` or ``fix:safe+unsafe`` in
+the list (JSON: ``"fix"``); one rule's page describes each fix, what it may move, and whether it needs ``--unsafe``.
 
 ``xodrcheck rules --tolerances`` lists every tolerance: name, default, the ``strict`` profile's value, unit, the rules
 it bounds, and what it bounds (JSON: a list of objects with those keys).
@@ -93,6 +96,8 @@ def _standard_rows(rule: Rule) -> list[dict]:
 
 
 def _as_dict(rule: Rule, full: bool = False) -> dict:
+    from xodrcheck.fix.registry import fixable, fixers_for
+
     d: dict[str, object] = {
         "code": rule.code,
         "name": rule.name,
@@ -102,12 +107,27 @@ def _as_dict(rule: Rule, full: bool = False) -> dict:
         "basis": basis_label(rule),
         "summary": rule.summary,
         "uids": list(rule.uids),
+        "fix": fixable(rule.code),
     }
     if full:
         d["doc"] = rule.doc
         d["tolerances"] = rule_tolerances(rule.code)
         d["standard"] = _standard_rows(rule)
+        d["fixes"] = [
+            {"name": f.name, "kind": f.kind, "bound": f.bound, "doc": plain(f.doc)} for f in fixers_for(rule.code)
+        ]
     return d
+
+
+def _fixes_text(code: str) -> str:
+    """What ``xodrcheck fix`` does for the rule's findings, in plain text (empty without a fix)."""
+    from xodrcheck.fix.registry import fixers_for
+
+    parts = [
+        f"fix {f.name} ({f.kind}; {f.bound}{'' if f.safe else '; with --unsafe'}):\n{plain(f.doc)}"
+        for f in fixers_for(code)
+    ]
+    return "\n\n".join(parts)
 
 
 def _describe(rule: Rule) -> str:
@@ -128,7 +148,9 @@ def _describe(rule: Rule) -> str:
     tolerances = rule_tolerances(rule.code)
     if tolerances:
         lines.append(f"tolerances (xodrcheck rules --tolerances): {'; '.join(tolerances)}")
-    return "\n".join(lines) + "\n\n" + plain(rule.doc)
+    fixes = _fixes_text(rule.code)
+    repairs = f"\n\nxodrcheck fix repairs its findings:\n{fixes}" if fixes else ""
+    return "\n".join(lines) + "\n\n" + plain(rule.doc) + repairs
 
 
 def _standard(fmt: str) -> int:
@@ -248,12 +270,16 @@ def run(args: argparse.Namespace) -> int:
     if args.format == "json":
         print(json.dumps([_as_dict(r) for r in rules], indent=2))
         return 0
+    from xodrcheck.fix.registry import fixable
+
     width = max((len(r.name) for r in rules), default=0)
     kind = max((len(r.category.value) for r in rules), default=0)
     bases = max((len(basis_label(r)) for r in rules), default=0)
     for r in rules:
+        fix = fixable(r.code)
+        mark = f"fix:{fix}" if fix else ""
         print(
             f"{r.code}  {r.name:<{width}}  {r.category.value:<{kind}}  {r.severity!s:<7}  {basis_label(r):<{bases}}  "
-            f"{r.summary}"
+            f"{mark:<15} {r.summary}"
         )
     return 0

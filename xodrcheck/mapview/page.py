@@ -3,11 +3,13 @@ and the findings list, a summary on top and an index when there are several file
 
 The page's DOM contract (tools and tests rely on it): each finding is an element ``.xc-row`` with ``data-code``,
 ``data-severity``, ``data-category``, ``data-road``, ``data-lane``, ``data-section-s``, ``data-s``, ``data-x``,
-``data-y``, ``data-line``, ``data-rule-uid`` and ``data-basis`` (empty where the finding has no such value; any
-further field of :class:`~xodrcheck.findings.Finding` becomes a ``data-*`` attribute too); each map is an element
-``.xc-map`` whose ``data-center-x``/``data-center-y`` give the world coordinates of its view centre, updated on every
-pan and zoom, and ``data-ready="true"`` once it has been drawn. The verdict of a report is an element ``.xc-verdict``
-with ``data-verdict`` PASS, FAIL or INCOMPLETE (one on top for the whole report, one per file).
+``data-y``, ``data-line``, ``data-rule-uid``, ``data-basis`` and ``data-fixable`` (empty where the finding has no
+such value; ``data-fixable`` is ``safe``, ``unsafe`` or ``safe+unsafe`` where ``xodrcheck fix`` has a fix for the
+rule, and the row shows "fix"; any further field of :class:`~xodrcheck.findings.Finding` becomes a ``data-*``
+attribute too); each map is an element ``.xc-map`` whose ``data-center-x``/``data-center-y`` give the world
+coordinates of its view centre, updated on every pan and zoom, and ``data-ready="true"`` once it has been drawn. The
+verdict of a report is an element ``.xc-verdict`` with ``data-verdict`` PASS, FAIL or INCOMPLETE (one on top for the
+whole report, one per file).
 
 Info markers are off on the map by default (a CARLA town has over a thousand: they hid the errors): the map's
 ``info markers`` box (``[data-tool=info-markers]``) draws them; the list shows infos unless their severity box is
@@ -167,6 +169,14 @@ def _extra_fields() -> tuple[str, ...]:
     return tuple(field.name for field in fields(Finding) if field.name not in _KNOWN)
 
 
+@cache
+def _fixable(code: str) -> str | None:
+    """``safe``, ``unsafe`` or ``safe+unsafe`` when ``xodrcheck fix`` has fixes of that kind for the rule."""
+    from xodrcheck.fix.registry import fixable
+
+    return fixable(code)
+
+
 def _row(i: int, f: Finding) -> str:
     attrs = {
         "index": i,
@@ -186,10 +196,17 @@ def _row(i: int, f: Finding) -> str:
     }
     extra = _extra(f)
     attrs.update({re.sub(r"[^a-z0-9]+", "-", k.lower()): v for k, v in extra.items()})
+    fix = _fixable(f.code)
+    attrs["fixable"] = fix
     data = " ".join(f'data-{k}="{_attr(v)}"' for k, v in attrs.items())
+    mark = (
+        f' <span class="xc-fix" title="xodrcheck fix has a {fix} fix for this rule">fix</span>'
+        if fix is not None
+        else ""
+    )
     return (
         f'<li class="xc-row" tabindex="0" {data}>'
-        f'<span class="xc-code">{escape(f.code)}</span> <span class="xc-name">{escape(f.name)}</span>'
+        f'<span class="xc-code">{escape(f.code)}</span> <span class="xc-name">{escape(f.name)}</span>{mark}'
         f'<button class="xc-doc" type="button" data-code="{_attr(f.code)}" title="rule documentation">?</button>'
         f"{_basis_tag(f.basis)}"
         f'<div class="xc-msg">{escape(f.message)}</div><div class="xc-where">{_where(f, extra)}</div></li>'

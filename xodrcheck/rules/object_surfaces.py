@@ -279,7 +279,7 @@ def _crossed_roads(ctx: Context, box: Box, wanted: Callable[[str], bool] | None 
     roads are passed over before their areas and heights are computed."""
     from xodrcheck.footprint import overlap_index, sample_points
 
-    index = overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time)
+    index = overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time, ctx.tolerances.max_turns)
     footprints, lanes = index.footprints, index.surfaces.lanes
     out: dict[str, float] = {}
     for k in footprints.tree.query(box.polygon, predicate="intersects"):

@@ -25,6 +25,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+import numpy as np
+
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as JU
@@ -45,7 +47,7 @@ def _overlap_index(ctx: Context) -> OverlapIndex:
     """The file's :class:`~xodrcheck.footprint.OverlapIndex` (shapely loads here, when an overlap rule runs)."""
     from xodrcheck.footprint import overlap_index
 
-    return overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time)
+    return overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time, ctx.tolerances.max_turns)
 
 
 def _swapped(o: Overlap) -> Overlap:
@@ -226,6 +228,9 @@ def lane_fold(ctx: Context):
     runs backwards where the lane is wider than the radius of its inner side's curve (width times curvature past 1),
     or the lane crosses itself. Reported once per lane and lane section, at the first place it folds. A road shall not
     overlap with itself (Annex F ``road.no_overlap_self``; two lanes of one road overlapping: ``road-self-overlap``).
+    A lane that covers itself while turning through more than ``Tolerances.max_turns`` full circles winds round
+    itself (a curvature or length far too large, e.g. a 3 km arc of radius 0.5 m): the finding says so, and its
+    overlaps are not computed.
 
     Passes (a 3.5 m lane on a 20 m radius)::
 
@@ -234,25 +239,41 @@ def lane_fold(ctx: Context):
     Fails (a 3.5 m lane on the inside of a 2 m radius)::
 
         <geometry ... length="6"><arc curvature="-0.5"/></geometry> ... <lane id="-1"><width a="3.5" .../>
+
+    Fails (winds round a 0.5 m circle 35 times)::
+
+        <geometry ... length="112"><arc curvature="2.0"/></geometry>
     """
     index = _overlap_index(ctx)
     surfaces, footprints = index.surfaces, index.footprints
-    for lane in footprints.invalid:
+    for lane in map(int, footprints.invalid):
         if ctx.out_of_time():
             return
-        area = footprints.self_overlap(int(lane))
-        if area <= ctx.tolerances.overlap_area:
+        turns = footprints.winding.get(lane)
+        area = 0.0 if turns is not None else footprints.self_overlap(lane)
+        if turns is None and area <= ctx.tolerances.overlap_area:
             continue
         key = surfaces.lanes[lane]
         first, stop = surfaces.lane_faces[lane], surfaces.lane_faces[lane + 1]
-        flipped = [f for f in range(first, stop) if surfaces.plan_areas[f] < 0]
-        face = flipped[0] if flipped else first
+        flipped = np.flatnonzero(surfaces.plan_areas[first:stop] < 0)
+        face = first + int(flipped[0]) if len(flipped) else first
         corner = surfaces.vertices[surfaces.faces[face, 0]]
         road = ctx.road(key.road)
+        where = f"lane {key.lane} of road {key.road} (lane section at s={metres(key.section_s)})"
+        if turns is not None:
+            end = float(surfaces.face_s[stop - 1])
+            message = (
+                f"{where} winds round itself: between s={metres(key.section_s)} and s={metres(end)} it turns through "
+                f"{turns:,.0f} full circles and covers the same ground over and over (more than "
+                f"{ctx.tolerances.max_turns:g} turns, tolerance max_turns); correct the curvature or length of the "
+                "plan view there. Its overlaps were not computed"
+            )
+        else:
+            message = f"{where} covers {area:.1f} m2 of plan view twice: its surface folds over itself" + (
+                f" from s={surfaces.face_s[face]:.2f}" if len(flipped) else ""
+            )
         yield lane_fold.finding(
-            f"lane {key.lane} of road {key.road} (lane section at s={metres(key.section_s)}) covers {area:.1f} m2 of "
-            "plan view twice: its surface folds over itself"
-            + (f" from s={surfaces.face_s[face]:.2f}" if flipped else ""),
+            message,
             road=key.road,
             lane=key.lane,
             section_s=key.section_s,

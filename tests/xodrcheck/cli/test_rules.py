@@ -30,7 +30,7 @@ def test_json_list(capsys):
     assert main(["rules", "--format", "json"]) == 0
     items = json.loads(capsys.readouterr().out)
     assert {i["code"] for i in items} == set(load_rules())
-    keys = {"code", "name", "category", "severity", "default_severity", "basis", "summary", "uids"}
+    keys = {"code", "name", "category", "severity", "default_severity", "basis", "summary", "uids", "fix"}
     assert all(set(i) == keys for i in items)
     by_code = {i["code"]: i for i in items}
     assert (by_code["C001"]["severity"], by_code["C001"]["default_severity"]) == ("error", "warning")
