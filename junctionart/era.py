@@ -46,6 +46,7 @@ ROW_COLUMNS = (
     "junction_index",
     "junction",
     "junction_type",
+    "kind",
     "legs",
     "n_connection_lanes",
     "n_u_turn_lanes",
@@ -62,6 +63,8 @@ ROW_COLUMNS = (
     "corner_deviation",
     "complexity",
 )
+#: Columns of ``structures.csv`` before the measures of every kind (:func:`structure_columns`).
+STRUCTURE_HEAD = ("run", "seed", "structure", "kind", "junctions")
 #: Columns of ``maps.csv``.
 MAP_COLUMNS = ("run", "seed", "status", "junctions", "intersections", "seconds", "error", "generator")
 #: Smallest leg count of an intersection.
@@ -76,7 +79,24 @@ def paper_runs(width: float = 2000.0, height: float = 2000.0) -> dict[str, Param
     }
 
 
+def known_runs(width: float = 2000.0, height: float = 2000.0) -> dict[str, Params]:
+    """Every run ``junctionart era --runs`` knows: the paper's two and ``scenario`` (the scenario profile with random
+    lanes, whose maps also hold the special structures: forks, ramps...)."""
+    return {
+        **paper_runs(width, height),
+        "scenario": Params.create("scenario", width=width, height=height, randomize_lanes=True),
+    }
+
+
 PAPER_RUNS = ("two-lane", "random-lane")
+
+
+def structure_columns() -> tuple[str, ...]:
+    """Columns of ``structures.csv``: :data:`STRUCTURE_HEAD`, then every measure of every kind
+    (:func:`xodrcheck.structures.measure_names`; empty where the structure's kind has no such measure)."""
+    from xodrcheck.structures import measure_names
+
+    return (*STRUCTURE_HEAD, *measure_names())
 
 
 @dataclass(frozen=True)
@@ -91,14 +111,16 @@ class MapResult:
     intersections: int
     seconds: float
     error: str = ""
+    structures: tuple[dict, ...] = ()  #: ``structures.csv`` rows
 
 
 def _cell(value):
     return "" if value is None else value
 
 
-def metric_rows(run: str, seed: int, metrics) -> list[dict]:
-    """``legs.csv`` rows of one map's :class:`xodrcheck.metrics.JunctionMetrics` (a junction without legs: one row)."""
+def metric_rows(run: str, seed: int, metrics, kinds: dict[str, str] | None = None) -> list[dict]:
+    """``legs.csv`` rows of one map's :class:`xodrcheck.metrics.JunctionMetrics` (a junction without legs: one row);
+    ``kinds``: junction id -> the kind of the structure it is part of (:mod:`xodrcheck.structures`)."""
     out = []
     for index, m in enumerate(metrics):
         head = {
@@ -107,6 +129,7 @@ def metric_rows(run: str, seed: int, metrics) -> list[dict]:
             "junction_index": index,
             "junction": m.junction,
             "junction_type": m.type.value,
+            "kind": (kinds or {}).get(m.junction, ""),
             "legs": m.legs,
             "n_connection_lanes": m.n_connection_lanes,
             "n_u_turn_lanes": m.n_u_turn_lanes,
@@ -132,10 +155,20 @@ def metric_rows(run: str, seed: int, metrics) -> list[dict]:
     return out
 
 
+def structure_rows(run: str, seed: int, structures) -> list[dict]:
+    """``structures.csv`` rows of one map's :class:`xodrcheck.structures.Structure` list."""
+    out = []
+    for index, st in enumerate(structures):
+        row = {"run": run, "seed": seed, "structure": index, "kind": st.kind, "junctions": " ".join(st.junctions)}
+        out.append(row | {name: "" if value != value else value for name, value in st.values})  # NaN: empty
+    return out
+
+
 def measure_map(run: str, params: Params, seed: int) -> MapResult:
     """Generate map ``seed`` of a run, read it back with xodrcheck and measure it (runs in a worker)."""
     from xodrcheck.metrics import map_metrics
     from xodrcheck.reader import read
+    from xodrcheck.structures import map_structures
 
     from . import generate, to_bytes
 
@@ -146,12 +179,23 @@ def measure_map(run: str, params: Params, seed: int) -> MapResult:
         if document is None:
             raise JunctionArtError("the reader could not build the generated map")
         metrics = map_metrics(document)
+        structures = map_structures(document)
     except Exception as exc:
         detail = traceback.format_exception_only(type(exc), exc)[-1].strip()
         return MapResult(run, seed, "failed", (), 0, 0, time.perf_counter() - t0, detail)
-    rows = metric_rows(run, seed, metrics)
+    kinds = {j: st.kind for st in structures for j in st.junctions}
+    rows = metric_rows(run, seed, metrics, kinds)
     intersections = sum(1 for m in metrics if m.legs >= MIN_LEGS)
-    return MapResult(run, seed, "ok", tuple(rows), len(metrics), intersections, time.perf_counter() - t0)
+    return MapResult(
+        run,
+        seed,
+        "ok",
+        tuple(rows),
+        len(metrics),
+        intersections,
+        time.perf_counter() - t0,
+        structures=tuple(structure_rows(run, seed, structures)),
+    )
 
 
 def measure_folder(folder: Path) -> list[dict]:
@@ -162,6 +206,7 @@ def measure_folder(folder: Path) -> list[dict]:
     from xodrcheck.findings import ReadError
     from xodrcheck.metrics import map_metrics
     from xodrcheck.reader import read
+    from xodrcheck.structures import map_structures
 
     files = sorted(Path(folder).rglob("*.xodr"))
     if not files:
@@ -174,7 +219,8 @@ def measure_folder(folder: Path) -> list[dict]:
             print(f"junctionart: skipping {path}: {exc}", file=sys.stderr)
             continue
         if document is not None:
-            rows += metric_rows(Path(folder).name, index, map_metrics(document))
+            kinds = {j: st.kind for st in map_structures(document) for j in st.junctions}
+            rows += metric_rows(Path(folder).name, index, map_metrics(document), kinds)
     return rows
 
 
@@ -240,6 +286,10 @@ class Table:
     def maps_path(self) -> Path:
         return self.folder / "maps.csv"
 
+    @property
+    def structures_path(self) -> Path:
+        return self.folder / "structures.csv"
+
     def open(self) -> Table:
         self.folder.mkdir(parents=True, exist_ok=True)
         if self.maps_path.exists():
@@ -254,18 +304,21 @@ class Table:
                 self.done[(row["run"], int(row["seed"]))] = int(row["intersections"]) if row["status"] == "ok" else -1
         else:
             _write_header(self.maps_path, MAP_COLUMNS)
-        if self.legs_path.exists():  # drop rows of maps whose maps.csv line never got written
-            rows = read_csv(self.legs_path)
-            kept = [r for r in rows if (r["run"], int(r["seed"])) in self.done]
-            if len(kept) != len(rows):
-                _rewrite(self.legs_path, ROW_COLUMNS, kept)
-        else:
-            _write_header(self.legs_path, ROW_COLUMNS)
+        for path, columns in ((self.legs_path, ROW_COLUMNS), (self.structures_path, structure_columns())):
+            if path.exists():  # drop rows of maps whose maps.csv line never got written
+                rows = read_csv(path)
+                kept = [r for r in rows if (r["run"], int(r["seed"])) in self.done]
+                if len(kept) != len(rows):
+                    _rewrite(path, columns, kept)
+            else:
+                _write_header(path, columns)
         return self
 
     def add(self, result: MapResult) -> None:
         with open(self.legs_path, "a", newline="", encoding="utf-8") as stream:
             csv.DictWriter(stream, ROW_COLUMNS, lineterminator="\n").writerows(result.rows)
+        with open(self.structures_path, "a", newline="", encoding="utf-8") as stream:
+            csv.DictWriter(stream, structure_columns(), lineterminator="\n").writerows(result.structures)
         with open(self.maps_path, "a", newline="", encoding="utf-8") as stream:
             csv.DictWriter(stream, MAP_COLUMNS, lineterminator="\n").writerow(
                 {

@@ -19,6 +19,7 @@ def analyse(
     """Cut each run to its first ``n`` intersections, measure the comparison folder and write figures and report
     (with a section on a search's archive folder when given, :mod:`junctionart.era_archive`)."""
     from .era_report import Sample, write_report
+    from .era_structures import section as structures_section
 
     rows = era.read_csv(Path(folder) / "legs.csv")
     selected = {run: era.select(rows, run, n) for run in run_names}
@@ -34,6 +35,9 @@ def analyse(
         runs = [ea.from_rows(run, chosen) for run, chosen in selected.items()]
         theirs = ea.from_rows(Path(compare).name, compare_rows) if compare is not None and compare_rows else None
         extra = ea.section(Path(folder), runs, theirs, ea.from_archive(archive))
+    structures = Path(folder) / "structures.csv"
+    if structures.is_file():
+        extra = [*structures_section(Path(folder), era.read_csv(structures), selected), *extra]
     return write_report(Path(folder), samples, other, setup, extra)
 
 
@@ -53,7 +57,10 @@ def add_arguments(p) -> None:
         help="intersections (3+ legs) to collect per run (default 10000, as in the paper)",
     )
     p.add_argument(
-        "--runs", default="two-lane,random-lane", help="comma-separated runs: two-lane, random-lane (default: both)"
+        "--runs",
+        default="two-lane,random-lane",
+        help="comma-separated runs: two-lane, random-lane (the paper's, the default), scenario (the scenario profile "
+        "with random lanes: its maps also hold forks, ramps and other structures)",
     )
     p.add_argument("--size", default="2000x2000", help="map size WxH in metres (default 2000x2000)")
     p.add_argument("-j", "--jobs", type=int, default=None, help="worker processes (default: all cores)")
@@ -90,7 +97,7 @@ def run(args) -> int:
         width, height = (float(v) for v in args.size.lower().split("x"))
     except ValueError:
         raise ParamsError(f"--size {args.size!r}: expected WxH in metres, e.g. 2000x2000") from None
-    known = era.paper_runs(width, height)
+    known = era.known_runs(width, height)
     names = [name.strip() for name in args.runs.split(",") if name.strip()]
     unknown = [name for name in names if name not in known]
     if unknown or not names:

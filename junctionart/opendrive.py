@@ -240,12 +240,13 @@ class LaneLink:
 
 @dataclass(frozen=True)
 class Connection:
-    """A junction connection: incoming road, connecting road, contact point and lane links."""
+    """A junction connection: incoming road, connecting road (in a direct junction: the linked road), contact point
+    and lane links."""
 
     id: str
     incoming_road: str
-    connecting_road: str
-    contact_point: str  # "start" / "end" of the connecting road
+    connecting_road: str  #: written as ``linkedRoad`` in a direct junction
+    contact_point: str  # "start" / "end" of the connecting (linked) road
     lane_links: tuple[LaneLink, ...]
 
 
@@ -259,12 +260,14 @@ class JunctionController:
 
 @dataclass(frozen=True)
 class Junction:
-    """A junction as written: id, name, connections and controllers."""
+    """A junction as written: id, name, connections, controllers and type ("default", written without the attribute,
+    or "direct": roads linked to each other without connecting roads, OpenDRIVE 1.7+)."""
 
     id: str
     name: str
     connections: tuple[Connection, ...]
     controllers: tuple[JunctionController, ...] = ()
+    type: str = "default"
 
 
 @dataclass(frozen=True)

@@ -288,14 +288,17 @@ def _controller(out: _Out, c: Controller) -> None:
 
 def _junction(out: _Out, j: Junction) -> None:
     head = f' name="{_esc(j.name)}" id="{_esc(j.id)}"'
+    if j.type != "default":  # a default junction is written as before, without the attribute
+        head += f' type="{_esc(j.type)}"'
     if not j.connections:
         out.leaf(1, "junction", head)
         return
     out.open(1, "junction", head)
+    road_attr = "linkedRoad" if j.type == "direct" else "connectingRoad"
     for c in j.connections:
         attrs = (
             f' id="{_esc(c.id)}" incomingRoad="{_esc(c.incoming_road)}" '
-            f'connectingRoad="{_esc(c.connecting_road)}" contactPoint="{_esc(c.contact_point)}"'
+            f'{road_attr}="{_esc(c.connecting_road)}" contactPoint="{_esc(c.contact_point)}"'
         )
         if not c.lane_links:
             out.leaf(2, "connection", attrs)

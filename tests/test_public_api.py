@@ -24,6 +24,7 @@ MODULES = [
     "xodrcheck.report",
     "xodrcheck.sample",
     "xodrcheck.snapshot",
+    "xodrcheck.structures",
     "junctionart",
     "junctionart.cli",
     "junctionart.errors",

@@ -26,11 +26,18 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         help="folder of the results (default: ./search); reused to resume",
     )
     p.add_argument(
+        "--kind",
+        default="junction",
+        help="what to search (default: junction, an intersection of 3 to 7 legs); each kind has its own genome and "
+        "metrics (junctionart.search.kinds)",
+    )
+    p.add_argument(
         "--descriptors",
-        default=",".join(DEFAULT_DESCRIPTORS),
+        default=None,
         metavar="NAME[:CELLS],...",
-        help=f"two or three metrics spanning the archive, from {', '.join(NAMES)} "
-        f"(default: {','.join(DEFAULT_DESCRIPTORS)}; cells per metric: its default, or NAME:CELLS)",
+        help=f"two or three metrics spanning the archive; for junctions from {', '.join(NAMES)} "
+        f"(default: {','.join(DEFAULT_DESCRIPTORS)}; each kind has its own; cells per metric: its default, or "
+        "NAME:CELLS)",
     )
     p.add_argument("--where", default=None, help='stop when -n elites meet this, e.g. "legs >= 6 and min_angle < 30"')
     p.add_argument(
@@ -56,15 +63,15 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
     p.add_argument("-q", "--quiet", action="store_true", help="no progress bar")
 
 
-def descriptors(text: str) -> tuple[tuple[str, int], ...]:
-    """``legs,min_angle:24`` -> ((legs, 5), (min_angle, 24))."""
+def descriptors(text: str, metrics: dict[str, tuple[float, float, int]] = METRICS) -> tuple[tuple[str, int], ...]:
+    """``legs,min_angle:24`` -> ((legs, 5), (min_angle, 24)), the names among ``metrics`` (a kind's)."""
     out = []
     for item in (part.strip() for part in text.split(",")):
         name, _, cells = item.partition(":")
-        if name not in METRICS:
-            raise ParamsError(f"--descriptors: unknown metric {name!r}; choose from {', '.join(NAMES)}")
+        if name not in metrics:
+            raise ParamsError(f"--descriptors: unknown metric {name!r}; choose from {', '.join(metrics)}")
         try:
-            n = int(cells) if cells else METRICS[name][2]
+            n = int(cells) if cells else metrics[name][2]
         except ValueError:
             raise ParamsError(f"--descriptors: {item!r}: CELLS must be an integer") from None
         if not 1 <= n <= 200:
@@ -80,18 +87,24 @@ def run(args: argparse.Namespace) -> int:
         import ribs  # noqa: F401
     except ImportError:
         raise ParamsError("junctionart search needs pyribs: pip install 'junctionart[search]'") from None
+    from . import kinds
     from .engine import Settings
     from .outputs import write_all
     from .predicate import Predicate
     from .run import search
 
-    where = Predicate.parse(args.where, NAMES) if args.where is not None else None
+    kind = kinds.get(args.kind)
+    metrics = kind.METRICS
+    where = Predicate.parse(args.where, tuple(metrics)) if args.where is not None else None
     wanted = args.elites if args.elites is not None else (50 if where is not None else None)
     if wanted is not None and wanted < 1:
         raise ParamsError(f"-n {wanted}: must be at least 1")
     if args.seed < 0 or not 1 <= args.batch <= 10_000:
         raise ParamsError("--seed must be >= 0 and --batch in [1, 10000]")
-    settings = Settings(descriptors(args.descriptors), args.seed, args.batch)
+    if args.network and args.kind != "junction":
+        raise ParamsError(f"--network places junctions into generated maps; it does not take --kind {args.kind}")
+    text = args.descriptors if args.descriptors is not None else ",".join(kind.DEFAULT_DESCRIPTORS)
+    settings = Settings(descriptors(text, metrics), args.seed, args.batch, args.kind)
     t0 = time.perf_counter()
     state = search(args.output, settings, args.evaluations, where, wanted, args.jobs, args.scheduler, not args.quiet)
     report = write_all(args.output, state, where, maps=not args.no_maps)
@@ -139,5 +152,5 @@ def _meeting(state: State, where: Predicate) -> Iterator[int]:
 
     data = elites(state)
     for row in range(len(data["index"])):
-        if where({n: float(data[n][row]) for n in NAMES}):
+        if where({n: float(data[n][row]) for n in state.settings.metrics}):
             yield row

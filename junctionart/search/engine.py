@@ -1,16 +1,16 @@
-"""MAP-Elites with pyribs over the intersection genome: the archive, the emitters, the loop, the checkpoint.
+"""MAP-Elites with pyribs over a kind's genome: the archive, the emitters, the loop, the checkpoint.
 
-The archive is a :class:`ribs.archives.GridArchive` over the chosen descriptors (ranges and cells of
-:data:`.measure.METRICS`), with ``threshold_min = 0`` and ``learning_rate = 1`` (plain MAP-Elites: a cell keeps its
-best candidate; infeasible candidates score -1 and never enter). Every metric is stored beside each elite. A bandit
-scheduler (:class:`ribs.schedulers.BanditScheduler`, UCB1 over the emitters' share of archive improvements, Cully 2021
-and Sung et al. 2023) picks :data:`ACTIVE` emitters of a pool of five each iteration (:data:`EMITTERS`): Gaussian
-mutation of random elites with a small and a large sigma (local refinement and long jumps, the way to cells random
-sampling rarely reaches: 7 legs with a wide smallest angle, high complexity with few legs), iso+line-DD (Vassiliades
-and Mouret 2018), and two CMA-ES emitters (CMA-ME, Fontaine et al. 2020) ranked by improvement of the archive and by a
-random direction in descriptor space (they restart from a random elite when they stop improving). One *iteration*
-asks the active emitters for a batch each, evaluates the candidates (local processes or Dask, results in ask order)
-and tells the scheduler.
+The archive is a :class:`ribs.archives.GridArchive` over the chosen descriptors (ranges and cells of the searched
+kind's ``METRICS``, :mod:`.kinds`), with ``threshold_min = 0`` and ``learning_rate = 1`` (plain MAP-Elites: a cell
+keeps its best candidate; infeasible candidates score -1 and never enter). Every metric is stored beside each elite.
+A bandit scheduler (:class:`ribs.schedulers.BanditScheduler`, UCB1 over the emitters' share of archive improvements,
+Cully 2021 and Sung et al. 2023) picks :data:`ACTIVE` emitters of a pool of five each iteration (:data:`EMITTERS`):
+Gaussian mutation of random elites with a small and a large sigma (local refinement and long jumps, the way to cells
+random sampling rarely reaches: 7 legs with a wide smallest angle, high complexity with few legs), iso+line-DD
+(Vassiliades and Mouret 2018), and two CMA-ES emitters (CMA-ME, Fontaine et al. 2020) ranked by improvement of the
+archive and by a random direction in descriptor space (they restart from a random elite when they stop improving).
+One *iteration* asks the active emitters for a batch each, evaluates the candidates (local processes or Dask, results
+in ask order) and tells the scheduler.
 
 The run depends only on the seed and the settings, never on the number of workers: the scheduler (archive, emitters
 and their random generators) is pickled to ``search.pkl`` after every iteration, and a rerun on the same folder
@@ -28,7 +28,8 @@ from typing import Any
 import numpy as np
 
 from ..errors import ParamsError
-from .measure import INFEASIBLE, METRICS, NAMES, Evaluation, evaluate
+from . import kinds
+from .measure import INFEASIBLE, Evaluation, evaluate
 from .predicate import Predicate
 
 #: The bandit's pool: (kind, mutation scale in the unit box); CMA-ES emitters start from one random vector.
@@ -53,6 +54,12 @@ class Settings:
     descriptors: tuple[tuple[str, int], ...]  #: (metric name, cells)
     seed: int = 0
     batch: int = 16  #: candidates per emitter per iteration
+    kind: str = "junction"  #: what is searched (:mod:`.kinds`)
+
+    @property
+    def metrics(self) -> dict[str, tuple[float, float, int]]:
+        """The kind's metrics: name -> (low, high, default cells)."""
+        return kinds.get(self.kind).METRICS
 
 
 @dataclass
@@ -74,31 +81,33 @@ def new_scheduler(settings: Settings) -> Any:
     from ribs.emitters import EvolutionStrategyEmitter, GaussianEmitter, IsoLineEmitter
     from ribs.schedulers import BanditScheduler
 
-    from .genome import DIM, random_genomes
+    from .genome import random_genomes
 
+    dim = kinds.get(settings.kind).DIM
+    metrics = settings.metrics
     archive = GridArchive(
-        solution_dim=DIM,
+        solution_dim=dim,
         dims=[cells for _, cells in settings.descriptors],
-        ranges=[METRICS[name][:2] for name, _ in settings.descriptors],
+        ranges=[metrics[name][:2] for name, _ in settings.descriptors],
         learning_rate=1.0,
         threshold_min=0.0,
         seed=settings.seed,
-        extra_fields=dict.fromkeys(NAMES, ((), np.float64)),
+        extra_fields=dict.fromkeys(metrics, ((), np.float64)),
     )
     rng = np.random.default_rng(settings.seed)
-    box = [(0.0, 1.0)] * DIM
+    box = [(0.0, 1.0)] * dim
     pool: list[Any] = []
     for k, (kind, sigma) in enumerate(EMITTERS):
         seed = settings.seed + 1 + k
         if kind == "gaussian":
-            start = random_genomes(rng, settings.batch)
+            start = random_genomes(rng, settings.batch, dim)
             pool.append(
                 GaussianEmitter(
                     archive, sigma=sigma, initial_solutions=start, bounds=box, batch_size=settings.batch, seed=seed
                 )
             )
         elif kind == "iso_line":
-            start = random_genomes(rng, settings.batch)
+            start = random_genomes(rng, settings.batch, dim)
             pool.append(
                 IsoLineEmitter(
                     archive,
@@ -111,7 +120,7 @@ def new_scheduler(settings: Settings) -> Any:
                 )
             )
         else:  # "imp" / "rd": CMA-ES ranked by archive improvement or by a random direction in descriptor space
-            x0 = random_genomes(rng, 1)[0]
+            x0 = random_genomes(rng, 1, dim)[0]
             # no bounds: CMA-ES resamples out-of-box candidates, possibly for ever; decode() clips into the box
             pool.append(
                 EvolutionStrategyEmitter(
@@ -148,7 +157,7 @@ def load_or_start(folder: Path, settings: Settings, generator: str) -> State:
 
 def _describe(s: Settings) -> str:
     cells = ",".join(f"{name}:{n}" for name, n in s.descriptors)
-    return f"--descriptors {cells} --seed {s.seed} --batch {s.batch}"
+    return f"--kind {s.kind} --descriptors {cells} --seed {s.seed} --batch {s.batch}"
 
 
 def save(folder: Path, state: State) -> None:
@@ -168,7 +177,8 @@ def matches(state: State, where: Predicate | None) -> int:
     data = elites(state)
     if where is None:
         return len(data["index"])
-    return sum(1 for row in range(len(data["index"])) if where({n: float(data[n][row]) for n in NAMES}))
+    names = state.settings.metrics
+    return sum(1 for row in range(len(data["index"])) if where({n: float(data[n][row]) for n in names}))
 
 
 Evaluator = Callable[[list[list[float]]], list[Evaluation]]
@@ -178,13 +188,14 @@ def iterate(state: State, evaluate_batch: Evaluator) -> None:
     """One ask / evaluate / tell step."""
     scheduler = state.scheduler
     names = [name for name, _ in state.settings.descriptors]
+    metrics = state.settings.metrics
     solutions = scheduler.ask()
     results = evaluate_batch([[float(v) for v in x] for x in solutions])
     objective = np.array([r.objective for r in results])
-    lows = np.array([METRICS[n][0] for n in names])
+    lows = np.array([metrics[n][0] for n in names])
     measures = np.array([[r.metrics[n] for n in names] for r in results], dtype=float)
     measures = np.where(np.isnan(measures), lows, measures)  # infeasible rows: anywhere, they are never added
-    fields = {n: np.array([r.metrics[n] for r in results], dtype=float) for n in NAMES}
+    fields = {n: np.array([r.metrics[n] for r in results], dtype=float) for n in metrics}
     scheduler.tell(objective, measures, **fields)
     state.evaluated += len(results)
     state.feasible += sum(1 for r in results if r.objective > INFEASIBLE)
@@ -198,6 +209,6 @@ def iterate(state: State, evaluate_batch: Evaluator) -> None:
     )
 
 
-def evaluate_inline(batch: list[list[float]]) -> list[Evaluation]:
+def evaluate_inline(batch: list[list[float]], kind: str = "junction") -> list[Evaluation]:
     """Evaluate in this process (``-j 1``)."""
-    return [evaluate(x) for x in batch]
+    return [evaluate(x, kind) for x in batch]

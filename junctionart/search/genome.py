@@ -51,9 +51,9 @@ def _level(x: float, lo: int, count: int) -> int:
     return lo + min(math.floor(count * x), count - 1)
 
 
-def random_genomes(rng: np.random.Generator, n: int) -> np.ndarray:
-    """``n`` vectors drawn uniformly in the unit box."""
-    return rng.random((n, DIM))
+def random_genomes(rng: np.random.Generator, n: int, dim: int = DIM) -> np.ndarray:
+    """``n`` vectors of ``dim`` genes drawn uniformly in the unit box."""
+    return rng.random((n, dim))
 
 
 def decode(x: np.ndarray | list[float]) -> IntersectionSpec:

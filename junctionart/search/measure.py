@@ -64,7 +64,7 @@ class Evaluation:
 
     feasible: bool
     objective: float
-    metrics: dict[str, float]  #: every name of :data:`METRICS` (NaN where not measured)
+    metrics: dict[str, float]  #: every metric of the candidate's kind (NaN where not measured)
     errors: int  #: error-level xodrcheck findings (-1: the generator or reader failed)
     sha256: str  #: of the written bytes ("" when nothing was written)
     note: str = ""  #: first error, for the report
@@ -99,36 +99,35 @@ def measure_document(document: Any, junction: Any = None) -> dict[str, float]:
     }
 
 
-def _failed(note: str, errors: int = -1, digest: str = "") -> Evaluation:
-    return Evaluation(False, INFEASIBLE, dict.fromkeys(NAMES, float("nan")), errors, digest, note)
+def _failed(note: str, names: tuple[str, ...], errors: int = -1, digest: str = "") -> Evaluation:
+    return Evaluation(False, INFEASIBLE, dict.fromkeys(names, float("nan")), errors, digest, note)
 
 
-def evaluate(genome: list[float]) -> Evaluation:
+def evaluate(genome: list[float], kind: str = "junction") -> Evaluation:
     """Decode, build, write, check (the checker's ``generator`` profile: what junctionart guarantees), read back and
-    measure one candidate (runs in a worker)."""
+    measure one candidate of ``kind`` (runs in a worker)."""
     from xodrcheck.check import check
     from xodrcheck.config import Config
     from xodrcheck.findings import Severity
     from xodrcheck.reader import read
 
-    from .. import to_bytes
     from ..errors import JunctionArtError
-    from ..intersection import build
-    from .genome import decode
+    from . import kinds
 
+    module = kinds.get(kind)
+    names = tuple(module.METRICS)
     try:
-        spec = decode(genome)
-        data = to_bytes(build(spec).document, spec.version)
+        data = module.map_bytes(module.decode(genome))
     except JunctionArtError as exc:
-        return _failed(f"generator: {exc}")
+        return _failed(f"generator: {exc}", names)
     digest = hashlib.sha256(data).hexdigest()
     errors = [f for f in check(data, Config(profile="generator")).findings if f.severity >= Severity.ERROR]
     document = read(data).document
-    if document is None or len(document.junctions) != 1:
-        return _failed("the map read back has no single junction", len(errors), digest)
-    metrics = measure_document(document)
+    metrics = module.measure(document) if document is not None else None
+    if metrics is None:
+        return _failed(f"the map read back holds no single {kind}", names, len(errors), digest)
     if errors:
         return Evaluation(False, INFEASIBLE, metrics, len(errors), digest, f"{errors[0].code} {errors[0].message}")
     if any(np.isnan(v) for v in metrics.values()):
         return Evaluation(False, INFEASIBLE, metrics, 0, digest, "a metric could not be measured")
-    return Evaluation(True, objective(metrics["area"]), metrics, 0, digest)
+    return Evaluation(True, module.objective(metrics), metrics, 0, digest)

@@ -12,8 +12,8 @@ from typing import Any
 
 import numpy as np
 
+from . import kinds
 from .engine import State, elites
-from .measure import METRICS, NAMES
 from .predicate import Predicate
 
 #: Columns of ``archive.csv`` before the metrics.
@@ -24,7 +24,7 @@ def _rows(state: State, where: Predicate | None) -> list[dict[str, Any]]:
     data = elites(state)
     rows = []
     for k in np.argsort(data["index"], kind="stable"):
-        values = {n: float(data[n][k]) for n in NAMES}
+        values = {n: float(data[n][k]) for n in state.settings.metrics}
         cell = int(data["index"][k])
         rows.append(
             {
@@ -40,31 +40,28 @@ def _rows(state: State, where: Predicate | None) -> list[dict[str, Any]]:
     return rows
 
 
-def write_elites(folder: Path, rows: list[dict[str, Any]]) -> None:
+def write_elites(folder: Path, rows: list[dict[str, Any]], kind: str = "junction") -> None:
     """Each elite's map (regenerated from its vector) and its description as JSON beside it; fills ``sha256``."""
     from xodrcheck.atomic import atomic_file
 
-    from .. import to_bytes
-    from ..intersection import build, to_dict
-    from .genome import decode
-
+    module = kinds.get(kind)
     (folder / "elites").mkdir(exist_ok=True)
     for row in rows:
-        spec = decode(np.asarray(row["solution"]))
-        data = to_bytes(build(spec).document, spec.version)
+        spec = module.decode(np.asarray(row["solution"]))
+        data = module.map_bytes(spec)
         path = folder / str(row["file"])
         with atomic_file(path, "wb") as stream:
             stream.write(data)
         with atomic_file(path.with_suffix(".json"), "w") as stream:
-            json.dump(to_dict(spec), stream, indent=1)
+            json.dump(module.to_dict(spec), stream, indent=1)
         row["sha256"] = hashlib.sha256(data).hexdigest()
 
 
-def write_csv(folder: Path, rows: list[dict[str, Any]]) -> Path:
+def write_csv(folder: Path, rows: list[dict[str, Any]], names: tuple[str, ...]) -> Path:
     from xodrcheck.atomic import atomic_file
 
     path = folder / "archive.csv"
-    columns = [*HEAD, *NAMES, "genome"]
+    columns = [*HEAD, *names, "genome"]
     with atomic_file(path, "w") as stream:
         writer = csv.DictWriter(stream, columns, lineterminator="\n", extrasaction="ignore")
         writer.writeheader()
@@ -88,7 +85,8 @@ def heatmaps(folder: Path, state: State) -> list[Path]:
         if grid_index is not None:
             for (ia, ib), value in zip(grid_index[:, [a, b]], data["objective"]):
                 grid[ib, ia] = np.nanmax([grid[ib, ia], value])
-        (lo_a, hi_a, _), (lo_b, hi_b, _) = METRICS[names[a]], METRICS[names[b]]
+        metrics = state.settings.metrics
+        (lo_a, hi_a, _), (lo_b, hi_b, _) = metrics[names[a]], metrics[names[b]]
         fig, ax = plt.subplots(figsize=(6.4, 4.8), dpi=110)
         mesh = ax.pcolormesh(
             np.linspace(lo_a, hi_a, dims[a] + 1), np.linspace(lo_b, hi_b, dims[b] + 1), grid, cmap="viridis"
@@ -111,10 +109,13 @@ def report(folder: Path, state: State, where: Predicate | None, rows: list[dict[
     stats = archive.stats
     s = state.settings
     met = [r for r in rows if r["meets_where"] == 1]
-    spans = ", ".join(f"{n} ({c} cells, {METRICS[n][0]:g} to {METRICS[n][1]:g})" for n, c in s.descriptors)
+    metrics = s.metrics
+    names = tuple(metrics)
+    spans = ", ".join(f"{n} ({c} cells, {metrics[n][0]:g} to {metrics[n][1]:g})" for n, c in s.descriptors)
     lines = [
         "# junctionart search",
         "",
+        f"- Kind: {s.kind}.",
         f"- Descriptors: {spans}; {archive.cells} cells in all.",
         f"- Seed {s.seed}, {s.batch} candidates per emitter per iteration, {len(state.history)} iterations.",
         f"- Evaluated {state.evaluated} maps, {state.feasible} feasible (0 xodrcheck errors)"
@@ -125,8 +126,8 @@ def report(folder: Path, state: State, where: Predicate | None, rows: list[dict[
         )
         + ".",
         f"- Coverage {float(stats.coverage):.1%} ({int(stats.num_elites)} of {archive.cells} cells), "
-        f"QD-score {float(stats.qd_score):.3f} (sum of the elites' objectives; objective = compactness "
-        "1 / (1 + area / 1000 m^2)).",
+        f"QD-score {float(stats.qd_score):.3f} (sum of the elites' objectives; objective: "
+        f"{_objective_text(s.kind)}).",
     ]
     if where is not None:
         lines.append(f"- `--where {where.text}`: {len(met)} distinct elites meet it.")
@@ -135,20 +136,25 @@ def report(folder: Path, state: State, where: Predicate | None, rows: list[dict[
         lines += [
             "## Elites meeting --where",
             "",
-            "| file | " + " | ".join(NAMES) + " |",
-            "|---" * (len(NAMES) + 1) + "|",
+            "| file | " + " | ".join(names) + " |",
+            "|---" * (len(names) + 1) + "|",
         ]
-        lines += [f"| {r['file']} | " + " | ".join(f"{float(r[n]):.4g}" for n in NAMES) + " |" for r in met]
+        lines += [f"| {r['file']} | " + " | ".join(f"{float(r[n]):.4g}" for n in names) + " |" for r in met]
     path = folder / "report.md"
     with atomic_file(path, "w") as stream:
         stream.write("\n".join(lines) + "\n")
     return path
 
 
+def _objective_text(kind: str) -> str:
+    doc = kinds.get(kind).objective.__doc__ or ""
+    return doc.strip().rstrip(".") or "the kind's"
+
+
 def write_all(folder: Path, state: State, where: Predicate | None, maps: bool = True) -> Path:
     """Every output of a finished (or stopped) search; the report's path."""
     rows = _rows(state, where)
     if maps:
-        write_elites(folder, rows)
-    write_csv(folder, rows)
+        write_elites(folder, rows, state.settings.kind)
+    write_csv(folder, rows, tuple(state.settings.metrics))
     return report(folder, state, where, rows, heatmaps(folder, state))

@@ -13,20 +13,20 @@ from .measure import Evaluation, evaluate
 from .predicate import Predicate
 
 
-def _distributed(executor: Any, bar: Any) -> Evaluator:
+def _distributed(executor: Any, bar: Any, kind: str = "junction") -> Evaluator:
     """Evaluate a batch on ``executor`` (era's ``_Local`` or ``_Dask``), results in batch order."""
 
     def run(batch: list[list[float]]) -> list[Evaluation]:
-        return executor.map_ordered(evaluate, [(x,) for x in batch], bar)
+        return executor.map_ordered(evaluate, [(x, kind) for x in batch], bar)
 
     return run
 
 
-def _inline(bar: Any) -> Evaluator:
+def _inline(bar: Any, kind: str = "junction") -> Evaluator:
     def run(batch: list[list[float]]) -> list[Evaluation]:
         out = []
         for x in batch:
-            out += evaluate_inline([x])
+            out += evaluate_inline([x], kind)
             if bar is not None:
                 bar.update(1)
         return out
@@ -65,7 +65,8 @@ def search(
         executor = era._Dask(scheduler)
     elif jobs > 1:
         executor = era._Local(jobs)
-    evaluate_batch = _inline(bar) if executor is None else _distributed(executor, bar)
+    kind = settings.kind
+    evaluate_batch = _inline(bar, kind) if executor is None else _distributed(executor, bar, kind)
     try:
         while state.evaluated < budget and not _enough(state, where, wanted):
             iterate(state, evaluate_batch)

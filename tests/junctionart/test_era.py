@@ -80,6 +80,11 @@ def test_rows_are_the_metrics_of_the_written_map(tmp_path):
     row = result.rows[0]
     assert float(row["area"]) == pytest.approx(first.area) and int(row["legs"]) == first.legs
     assert float(row["fov"]) == pytest.approx(first.leg_metrics[0].fov)
+    # one structures.csv row per junction of a paper map, each an ordinary junction; legs.csv names the kind
+    assert [r["kind"] for r in result.structures] == ["junction"] * len(metrics)
+    assert [r["junctions"] for r in result.structures] == [m.junction for m in metrics]
+    assert {r["kind"] for r in result.rows} == {"junction"}
+    assert [float(r["legs"]) for r in result.structures] == [float(m.legs) for m in metrics]
 
 
 def test_a_failing_map_is_recorded_not_raised(monkeypatch):
@@ -158,6 +163,9 @@ def test_cli_writes_table_figures_and_report(tmp_path, corpus_dir):
     assert code == 0
     report = (out / "report.md").read_text()
     assert "complexity (paper Figure 13)" in report and "carla-towns" in report
+    assert "## Structures by kind" in report
+    structures = era.read_csv(out / "structures.csv")
+    assert structures and {r["kind"] for r in structures} == {"junction"}
     pngs = sorted(p.name for p in out.glob("*.png"))
     assert len(pngs) == 8 + 7 and all((out / p).stat().st_size > 1000 for p in pngs)
 

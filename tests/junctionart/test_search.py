@@ -179,6 +179,7 @@ def test_where_outside_the_language_is_one_line_and_exit_2(tmp_path, capsys, whe
         (["--descriptors", "legs:0,area"], "CELLS must be in"),
         (["--evaluations", "0"], "at least 1"),
         (["--where", "legs > 3", "-n", "0"], "at least 1"),
+        (["--kind", "tunnel"], "--kind 'tunnel': choose from junction"),
     ],
 )
 def test_bad_options_are_one_line_and_exit_2(tmp_path, capsys, args, message):

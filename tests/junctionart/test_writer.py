@@ -135,3 +135,17 @@ def test_text_layout_is_lxmls_pretty_print():
     tree = etree.fromstring(data, etree.XMLParser(resolve_entities=False, no_network=True, remove_blank_text=True))
     again = b'<?xml version="1.0" encoding="UTF-8"?>\n' + etree.tostring(tree, encoding="UTF-8", pretty_print=True)
     assert data == again
+
+
+def test_a_direct_junction_names_its_type_and_linked_roads_and_a_default_one_neither():
+    from junctionart.opendrive import Connection, Junction, LaneLink
+
+    link = (LaneLink(-1, -1),)
+    direct = Junction("9", "fork", (Connection("0", "1", "2", "start", link),), type="direct")
+    default = Junction("8", "plain", (Connection("0", "1", "3", "start", link),))
+    root = etree.fromstring(to_bytes(Document(Header(), _tiny().roads, (direct, default))))
+    first, second = root.findall("junction")
+    assert first.get("type") == "direct" and second.get("type") is None
+    a, b = first.find("connection"), second.find("connection")
+    assert a.get("linkedRoad") == "2" and a.get("connectingRoad") is None
+    assert b.get("connectingRoad") == "3" and b.get("linkedRoad") is None
