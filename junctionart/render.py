@@ -1,8 +1,10 @@
 """Plan view (PNG, JPEG, SVG, PDF or WebP, by the output's suffix) of any .xodr file, read with xodrcheck's reader
 and lane geometry (not the generator's model).
 
-Lanes are filled by type (driving grey, median green, sidewalk and shoulder lighter, others tan); lanes of connecting
-roads inside junctions are drawn in a light orange so junctions stand out; reference lines are thin dark lines.
+Lanes are filled by type (driving grey, median green, sidewalk and shoulder lighter, exit and entry lanes violet,
+ramps blue, others tan) with a thin light seam between neighbouring lanes; lanes of connecting roads inside junctions
+are drawn in a light orange so junctions stand out, and a direct junction (which has no connecting road) as an orange
+bar across the roads where they meet; reference lines are thin light lines.
 On a map whose heights vary, lanes and reference lines are drawn in pieces of :data:`PIECE` samples (about 50 m),
 lowest first, so that an overpass's deck covers the road below it.
 """
@@ -29,9 +31,15 @@ COLOURS = {
     "border": "#b0b0b0",
     "biking": "#b5651d",
     "parking": "#8a8fb5",
+    "exit": "#9b7fc4",
+    "entry": "#9b7fc4",
+    "offRamp": "#5b8fc7",
+    "onRamp": "#5b8fc7",
+    "connectingRamp": "#5b8fc7",
     "none": "#d8d8d8",
 }
 JUNCTION_COLOUR = "#f0a04b"
+SEAM_COLOUR = "#f7f7f2"  #: the background: a thin seam of it between neighbouring lanes
 OTHER_COLOUR = "#c8b48a"
 REFERENCE_COLOUR = "#f5d76e"
 #: Samples (2 m apart) per piece of a lane drawn by height on a map whose heights vary.
@@ -135,7 +143,7 @@ class _Shapes:
     reference-line strips) with their colours and mean heights, the flat reference lines, and whether any strip was
     drawn."""
 
-    __slots__ = ("colours", "drawn_refs", "heights", "polys", "refs")
+    __slots__ = ("colours", "drawn_refs", "heights", "joints", "polys", "refs")
 
     def __init__(self) -> None:
         self.polys: list[np.ndarray] = []
@@ -143,6 +151,7 @@ class _Shapes:
         self.heights: list[float] = []
         self.refs: list[np.ndarray] = []
         self.drawn_refs = False
+        self.joints: list[np.ndarray] = []
 
     def add(self, ring: np.ndarray, colour: str, height: float) -> None:
         self.polys.append(ring)
@@ -157,14 +166,36 @@ def _gather(doc, layered: bool) -> _Shapes:
 
     geos = geometry_of(doc)
     shapes = _Shapes()
+    direct = {j.id for j in doc.junctions if j.type.value == "direct"}
     for road in doc.roads:
         try:
             geo = geos[road.id]
             _add_lanes(shapes, road, geo, layered)
             _add_reference(shapes, road, geo, layered)
+            _add_joints(shapes, road, geo, direct)
         except (ArithmeticError, ValueError, KeyError, IndexError, TypeError):
             continue
     return shapes
+
+
+def _add_joints(shapes: _Shapes, road, geo, direct: set[str]) -> None:
+    """Where ``road`` touches a direct junction: a bar across its lanes at that end (the junction has no connecting
+    road to draw)."""
+    for link, at_end in ((road.predecessor, False), (road.successor, True)):
+        if link is None or link.element_type.value != "junction" or link.element_id not in direct:
+            continue
+        if not road.lane_sections:
+            continue
+        idx = len(road.lane_sections) - 1 if at_end else 0
+        s = np.array([road.length if at_end else 0.0])
+        lanes = [lane.id for lane in road.lane_sections[idx].lanes if lane.id != 0]
+        if not lanes:
+            continue
+        a = geo.lane_points(idx, max(lanes), s, where="outer")
+        b = geo.lane_points(idx, min(lanes), s, where="outer")
+        bar = np.array([[a.x[0], a.y[0]], [b.x[0], b.y[0]]])
+        if np.all(np.isfinite(bar)):
+            shapes.joints.append(bar)
 
 
 def _add_lanes(shapes: _Shapes, road, geo, layered: bool) -> None:
@@ -229,8 +260,12 @@ def _draw(plt, shapes: _Shapes, layered: bool, size: float):
         polys, colours = [polys[k] for k in order], [colours[k] for k in order]
         ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors=colours, linewidths=0.3))
     else:
-        ax.add_collection(PolyCollection(polys, facecolors=colours, edgecolors="none", alpha=0.95))
+        ax.add_collection(
+            PolyCollection(polys, facecolors=colours, edgecolors=SEAM_COLOUR, linewidths=0.25, alpha=0.95)
+        )
     ax.add_collection(LineCollection(shapes.refs, colors=REFERENCE_COLOUR, linewidths=0.4))
+    if shapes.joints:
+        ax.add_collection(LineCollection(shapes.joints, colors=JUNCTION_COLOUR, linewidths=2.5))
     pts = np.concatenate(polys) if polys else np.zeros((1, 2))
     pad = 10.0
     ax.set_xlim(pts[:, 0].min() - pad, pts[:, 0].max() + pad)
@@ -247,6 +282,8 @@ def _label(ax, doc, source: str | Path, title: str | None, shapes: _Shapes) -> t
     from matplotlib.patches import Patch
 
     legend: list[Patch | Line2D] = [Patch(color=c, label=name) for name, c in _legend_entries(shapes.colours)]
+    if shapes.joints:
+        legend.append(Line2D([], [], color=JUNCTION_COLOUR, linewidth=2.5, label="direct junction (roads meet)"))
     if shapes.refs or shapes.drawn_refs:
         legend.append(Line2D([], [], color=REFERENCE_COLOUR, linewidth=1.5, label="reference line"))
     n_j = len(doc.junctions)

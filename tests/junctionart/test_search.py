@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import csv
 import hashlib
+import json
 import pickle
 import subprocess
 import sys
@@ -226,3 +227,34 @@ def test_network_places_elites_into_generated_maps_that_keep_a_junction_meeting_
         assert len(document.junctions) > 3  # an ordinary map around it, not the elite alone
         matching = [j.id for j in document.junctions if predicate(measure_document(document, j))]
         assert matching and matching == row["junctions"].split()
+
+
+@pytest.mark.parametrize(
+    "kind, where, descriptors",
+    [
+        ("fork", "split_angle < 15", ("split_angle", "lanes_left", "lanes_right")),
+        ("ramp", "exit == 1", ("ramp_angle", "taper_length")),
+    ],
+)
+def test_a_search_of_another_kind_keeps_maps_of_that_kind_measured_from_the_file(tmp_path, kind, where, descriptors):
+    """``--kind fork`` / ``ramp``: each elite's map is one structure of the kind, checks clean, and its written
+    measures (the kind's, read back by xodrcheck.structures) are the archive's; --where reads those names."""
+    from xodrcheck.structures import map_structures
+
+    folder = tmp_path / kind
+    args = ["search", "--kind", kind, "-o", str(folder), "--batch", "4", "--seed", "3", "-j", "1", "-q"]
+    assert main([*args, "--evaluations", "16", "--where", where, "-n", "100"]) == 0
+    rows = _archive(folder)
+    assert len(rows) >= 4
+    report = (folder / "report.md").read_text(encoding="utf-8")
+    assert f"- Kind: {kind}." in report and f"heatmap_{descriptors[0]}_{descriptors[1]}.png" in report
+    predicate = Predicate.parse(where, tuple(rows[0]))
+    for row in rows:
+        data = (folder / row["file"]).read_bytes()
+        assert [f.code for f in check(data).findings if f.severity >= Severity.ERROR] == []
+        (found,) = map_structures(read(data).document)
+        assert found.kind == kind
+        for name, value in found.values:
+            assert value == pytest.approx(float(row[name]), abs=1e-6), name
+        assert row["meets_where"] == str(int(predicate({n: float(row[n]) for n in found.measures})))
+        assert json.loads((folder / row["file"]).with_suffix(".json").read_text())["kind"] == kind

@@ -52,3 +52,69 @@ def test_kinds_are_listed_with_unique_measure_names():
     assert structures.KINDS[-1].name == "junction"  # what no other recogniser claims
     with pytest.raises(KeyError, match=r"unknown kind 'tunnel'; kinds: .*junction"):
         structures.kind("tunnel")
+
+
+_ROAD = """<road name="{name}" length="{length}" id="{id}" junction="-1" rule="RHT">
+    <link><{link} elementType="junction" elementId="100"/></link>
+    <planView><geometry s="0.0" x="{x}" y="{y}" hdg="0.0" length="{length}">{shape}</geometry></planView>
+    <lanes><laneSection s="0.0"><center><lane id="0" type="none" level="false"/></center><right>{lanes}</right>
+    </laneSection></lanes>
+  </road>"""
+_LANE = '<lane id="{id}" type="{type}" level="false"><width sOffset="0.0" a="3.5" b="0.0" c="0.0" d="0.0"/></lane>'
+
+
+def _direct_junction(branch_type: str) -> bytes:
+    """A hand-written file of another tool's kind: a one-way, two-lane road whose lanes continue on a straight road
+    and on one curving off to the left by 0.8 rad, joined by a direct junction (12.6)."""
+    two = _LANE.format(id=-1, type="driving") + _LANE.format(id=-2, type="driving")
+    roads = [
+        _ROAD.format(name="a", length=100.0, id=1, link="successor", x=0.0, y=0.0, shape="<line/>", lanes=two),
+        _ROAD.format(
+            name="l",
+            length=80.0,
+            id=2,
+            link="predecessor",
+            x=100.0,
+            y=0.0,
+            shape='<arc curvature="0.01"/>',
+            lanes=_LANE.format(id=-1, type="driving"),
+        ),
+        _ROAD.format(
+            name="r",
+            length=100.0,
+            id=3,
+            link="predecessor",
+            x=100.0,
+            y=-3.5,
+            shape="<line/>",
+            lanes=_LANE.format(id=-1, type=branch_type),
+        ),
+    ]
+    return f"""<?xml version="1.0" encoding="UTF-8"?>
+<OpenDRIVE>
+  <header revMajor="1" revMinor="8" name="t" version="1.00" vendor="other"/>
+  {"".join(roads)}
+  <junction name="split" id="100" type="direct">
+    <connection id="0" incomingRoad="1" linkedRoad="2" contactPoint="start"><laneLink from="-1" to="-1"/></connection>
+    <connection id="1" incomingRoad="1" linkedRoad="3" contactPoint="start"><laneLink from="-2" to="-1"/></connection>
+  </junction>
+</OpenDRIVE>""".encode()
+
+
+def test_a_direct_junction_from_another_tool_is_a_fork_with_its_split_angle():
+    doc = read(_direct_junction("driving")).document
+    (found,) = structures.map_structures(doc)
+    assert found.kind == "fork"
+    m = found.measures
+    assert m["split_angle"] == pytest.approx(math.degrees(0.8))  # the arc's heading at its end (80 m < 100 m)
+    assert (m["lanes_in"], m["lanes_left"], m["lanes_right"], m["merge"], m["direct"]) == (2, 1, 1, 0, 1)
+
+
+def test_the_same_junction_with_an_off_ramp_lane_is_a_ramp_without_a_taper():
+    doc = read(_direct_junction("offRamp")).document
+    (found,) = structures.map_structures(doc)
+    assert found.kind == "ramp"
+    m = found.measures
+    assert m["ramp_angle"] == pytest.approx(math.degrees(0.8)) and m["ramp_lanes"] == 1 and m["exit"] == 1
+    # the stem's lane joined to the ramp is full width all along the stem: no taper, as long as the stem
+    assert m["taper_length"] == 0.0 and m["side_lane_length"] == pytest.approx(100.0)

@@ -79,7 +79,11 @@ Recogniser = Callable[[Document, Sequence[Junction]], list[Structure]]
 
 #: Recogniser modules under ``xodrcheck.structures``, in recognition order (a group of junctions first, then the
 #: single-junction layouts); ``junction`` (every junction left) is last and always there.
-MODULES: tuple[str, ...] = ("junction",)
+MODULES: tuple[str, ...] = (
+    "ramp",
+    "fork",
+    "junction",
+)
 
 
 def _load() -> tuple[tuple[Kind, Recogniser], ...]:

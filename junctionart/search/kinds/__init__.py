@@ -24,6 +24,8 @@ from ...errors import ParamsError
 #: kind -> module.
 MODULES = {
     "junction": "junctionart.search.kinds.junction",
+    "fork": "junctionart.search.kinds.fork",
+    "ramp": "junctionart.search.kinds.ramp",
 }
 
 
