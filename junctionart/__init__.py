@@ -77,6 +77,8 @@ class Result:
     laned: lanes.LanedNetwork
     layout: intersections.Layout
     document: Document
+    #: requests of the control-line file (forks, ramps) that could not be met, each with its reason
+    notes: tuple[str, ...] = ()
 
 
 #: Names of the stages, in order, as passed to ``on_stage``.
@@ -117,7 +119,13 @@ def generate_layout(
         from .scenario.dress import dress
 
         doc = dress(doc, layout, params, int(seed))
-    return Result(lines, net, laned, layout, doc)
+    notes: list[str] = []
+    requests = () if control_lines is None else control_lines.requests
+    if params.structures or requests:
+        from .splits.network import add
+
+        doc, notes = add(doc, params, int(seed), requests)
+    return Result(lines, net, laned, layout, doc, tuple(notes))
 
 
 def generate(params: Params | None = None, seed: int = 0, control_lines: ControlLines | None = None) -> Document:

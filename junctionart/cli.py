@@ -152,6 +152,26 @@ OPTIONS = [
         "chance that a crossing of control lines becomes an overpass (5.5 m over the other road, ramps within the "
         "terrain's grade limits) instead of a junction, where both roads are long enough",
     ),
+    (
+        "--fork-probability",
+        "fork_probability",
+        float,
+        "chance that a road with a long enough straight stretch forks: its outermost lane (or one it gains) splits off "
+        "and joins it again further on",
+    ),
+    (
+        "--ramp-probability",
+        "ramp_probability",
+        float,
+        "chance that such a road gains a ramp pair instead: exit lane and off-ramp, link road, on-ramp and entry lane",
+    ),
+    (
+        "--direct-junctions",
+        "direct_junctions",
+        _bool,
+        "forks and ramps meet their road at direct junctions (OpenDRIVE 1.7+); false: default junctions with "
+        "connecting roads (CARLA and SUMO read no direct junction)",
+    ),
 ]
 
 
@@ -186,8 +206,8 @@ def _add_generate(p: argparse.ArgumentParser) -> None:
         choices=("paper", "scenario"),
         default=None,
         help="paper (default): the JunctionArt paper's maps, byte for byte as before; scenario: a test map with "
-        "what scenarios need (urban roadside, junction control auto, overpass probability 0.5); options given as well "
-        "override the profile",
+        "what scenarios need (urban roadside, junction control auto, overpass probability 0.5, fork probability 0.15 "
+        "and ramp probability 0.1 on default junctions); options given as well override the profile",
     )
     p.add_argument("-q", "--quiet", action="store_true", help="no summary line, no progress bar")
     p.add_argument("-v", "--verbose", action="store_true", help="list each repair the generator made, on stderr")
@@ -272,6 +292,8 @@ def _generate(args: argparse.Namespace) -> int:
         if args.verbose:
             for repair in result.layout.repairs:
                 print(f"junctionart: seed {seed}: repair: {repair}", file=sys.stderr)
+        for note in result.notes:  # what the control-line file asked for and did not get: always said
+            print(f"junctionart: seed {seed}: {note}", file=sys.stderr)
     if bar is not None:
         bar.close()
     return 0

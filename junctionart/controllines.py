@@ -11,6 +11,13 @@ JSON::
 
 GeoJSON: a FeatureCollection of LineString features; ``properties`` may hold ``id``, ``group``, ``lanes`` and
 ``pair_with`` (a list of line ids). Without explicit pairs, consecutive lines of one group form the pairs.
+
+A line (or a feature's ``properties``) may also ask for forks and ramps at given places (issue 28): ``"forks"`` and
+``"ramps"``, lists of ``{"at": metres along the line from its first point, "angle": degrees}`` (``angle`` optional:
+the branch's turn away from the road). The road running along the line there gets the structure, centred as near the
+point as its straight stretch allows (:mod:`junctionart.splits.network`); one that does not fit is reported::
+
+    {"id": "a", "points": [[0, 0], [800, 0]], "forks": [{"at": 300, "angle": 15}], "ramps": [{"at": 600}]}
 """
 
 from __future__ import annotations
@@ -39,13 +46,27 @@ MAX_COORDINATE = 1e7
 
 
 @dataclass(frozen=True)
+class Request:
+    """A structure a control-line file asks for: its kind ("fork" or "ramp"), the point on the line (x, y), the
+    angle (degrees; None: drawn) and where it was asked (for messages)."""
+
+    kind: str
+    x: float
+    y: float
+    angle: float | None = None
+    source: str = ""
+
+
+@dataclass(frozen=True)
 class ControlLine:
-    """A control line: a polyline the road network follows, its group and its lane counts."""
+    """A control line: a polyline the road network follows, its group, its lane counts and the structures asked for
+    along it ((kind, metres along the line, angle or None))."""
 
     id: str
     points: tuple[tuple[float, float], ...]
     group: int = 0
     lanes: tuple[int, int] | None = None  # (forward, backward) lane counts, None: drawn
+    structures: tuple[tuple[str, float, float | None], ...] = ()
 
     @property
     def length(self) -> float:
@@ -91,6 +112,16 @@ class ControlLines:
     @property
     def groups(self) -> tuple[int, ...]:
         return tuple(sorted({ln.group for ln in self.lines}))
+
+    @property
+    def requests(self) -> tuple[Request, ...]:
+        """The forks and ramps the lines ask for, at their points on the lines."""
+        out = []
+        for ln in self.lines:
+            for kind, at, angle in ln.structures:
+                x, y = ln.point_at(at)
+                out.append(Request(kind, x, y, angle, f"line {ln.id!r} at {at:g} m"))
+        return tuple(out)
 
 
 # ---------------------------------------------------------------------------------------------------------------------
@@ -174,6 +205,30 @@ def _lanes(where: str, raw: Any) -> tuple[int, int] | None:
     return (fwd, bwd)
 
 
+def _structures(where: str, raw: dict) -> tuple[tuple[str, float, float | None], ...]:
+    """The ``forks`` and ``ramps`` of a line (module docstring)."""
+    out: list[tuple[str, float, float | None]] = []
+    for key, kind in (("forks", "fork"), ("ramps", "ramp")):
+        items = raw.get(key)
+        if items is None:
+            continue
+        if not isinstance(items, list):
+            raise InputError(f'{where}: "{key}" must be a list of {{"at": metres, "angle": degrees}}')
+        for k, item in enumerate(items):
+            if not isinstance(item, dict) or "at" not in item or set(item) - {"at", "angle"}:
+                raise InputError(f'{where}: {key}[{k}] must be {{"at": metres along the line, "angle": degrees}}')
+            at, angle = item["at"], item.get("angle")
+            if isinstance(at, bool) or not isinstance(at, (int, float)) or not math.isfinite(at) or at < 0:
+                raise InputError(f"{where}: {key}[{k}] at={at!r}: must be a distance along the line (m, >= 0)")
+            ok = angle is None or (
+                isinstance(angle, (int, float)) and not isinstance(angle, bool) and math.isfinite(angle)
+            )
+            if not ok or (angle is not None and not 2.0 <= angle <= 90.0):
+                raise InputError(f"{where}: {key}[{k}] angle={angle!r}: must be degrees in [2, 90]")
+            out.append((kind, float(at), None if angle is None else float(angle)))
+    return tuple(out)
+
+
 def _group(where: str, raw: Any) -> int:
     if raw is None:
         return 0
@@ -203,15 +258,21 @@ def _check_extent(source: str, lines: tuple[ControlLine, ...]) -> None:
         )
 
 
-def _assemble(source: str, entries: list[tuple[str, tuple, int, Any]], pairs_raw: list[Any]) -> ControlLines:
+def _assemble(source: str, entries: list[tuple], pairs_raw: list[Any]) -> ControlLines:
     if len(entries) < 2:
         raise InputError(f"{source}: needs at least 2 control lines, found {len(entries)}")
     ids = [e[0] for e in entries]
     if len(set(ids)) != len(ids):
         dup = next(i for i in ids if ids.count(i) > 1)
         raise InputError(f"{source}: line id {dup!r} is used twice")
-    lines = tuple(ControlLine(i, pts, grp, lanes) for i, pts, grp, lanes in entries)
+    lines = tuple(ControlLine(*entry) for entry in entries)
     _check_extent(source, lines)
+    for ln in lines:
+        for kind, at, _ in ln.structures:
+            if at > ln.length:
+                raise InputError(
+                    f"{source}: line {ln.id!r} asks for a {kind} at {at:g} m; it is {ln.length:.6g} m long"
+                )
     index = {ln.id: k for k, ln in enumerate(lines)}
     pairs: list[tuple[int, int]] = []
     for p in pairs_raw:
@@ -242,7 +303,7 @@ def parse(data: Any, source: str = "<input>") -> ControlLines:
     """Control lines from already-decoded JSON or GeoJSON."""
     if not isinstance(data, dict):
         raise InputError(f'{source}: expected a JSON object with "lines" or a GeoJSON FeatureCollection')
-    entries: list[tuple[str, tuple, int, Any]] = []
+    entries: list[tuple] = []
     pairs_raw: list[Any] = []
     if data.get("type") == "FeatureCollection":
         feats = data.get("features")
@@ -263,6 +324,7 @@ def parse(data: Any, source: str = "<input>") -> ControlLines:
                     _points(where, geom.get("coordinates")),
                     _group(where, props.get("group")),
                     _lanes(where, props.get("lanes")),
+                    _structures(where, props),
                 )
             )
             for other in props.get("pair_with") or []:
@@ -281,6 +343,7 @@ def parse(data: Any, source: str = "<input>") -> ControlLines:
                     _points(where, ln.get("points")),
                     _group(where, ln.get("group")),
                     _lanes(where, ln.get("lanes")),
+                    _structures(where, ln),
                 )
             )
         pairs_raw = data.get("pairs") or []

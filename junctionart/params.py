@@ -126,6 +126,15 @@ class Params:
     #: long enough for the ramps (:mod:`junctionart.scenario.overpass`); 0: every crossing is a junction
     overpass_probability: float = 0.0
     country: str = "DE"  #: whose sign catalogue the signs come from (:mod:`junctionart.scenario.catalogue`)
+    #: chance that a road with a long enough straight stretch forks: its outermost lane (or one it gains) splits off
+    #: and joins it again further on (:mod:`junctionart.splits.network`); 0: no forks
+    fork_probability: float = 0.0
+    #: chance that such a road gains a ramp pair instead: an exit lane and off-ramp, a link road, an on-ramp and an
+    #: entry lane; 0: no ramps
+    ramp_probability: float = 0.0
+    #: forks and ramps meet their road at direct junctions (OpenDRIVE 1.7+, 12.6; the default) or, false, at default
+    #: junctions with connecting roads (what CARLA 0.9.16 and SUMO 1.28 read: neither loads a direct junction)
+    direct_junctions: bool = True
 
     def __post_init__(self) -> None:
         validate(self)
@@ -146,6 +155,11 @@ class Params:
             or self.terrain is not Terrain.FLAT
             or self.overpass_probability > 0.0
         )
+
+    @property
+    def structures(self) -> bool:
+        """Whether forks or ramps may be placed (the "paper" profile places none)."""
+        return self.fork_probability > 0.0 or self.ramp_probability > 0.0
 
     @classmethod
     def create(cls, profile: str | None = None, **values: Any) -> Params:
@@ -185,10 +199,18 @@ _ENUMS: dict[str, type[enum.Enum]] = {
 #: earlier maps, the golden snapshots and the paper's ERA are reproduced byte for byte. "scenario": a drivable test
 #: map with what scenarios need (urban roadside: kerbs and sidewalks continued round every junction corner; junction
 #: control drawn per junction: traffic lights with signal groups, stop or yield signs; half of the crossings of control
-#: lines long enough for ramps become overpasses, the others junctions).
+#: lines long enough for ramps become overpasses, the others junctions; of the roads with a straight stretch for one,
+#: 15 % fork and 10 % gain a ramp pair, joined by default junctions that CARLA and SUMO read).
 PROFILES: dict[str, dict[str, Any]] = {
     "paper": {},
-    "scenario": {"roadside": Roadside.URBAN, "junction_control": JunctionControl.AUTO, "overpass_probability": 0.5},
+    "scenario": {
+        "roadside": Roadside.URBAN,
+        "junction_control": JunctionControl.AUTO,
+        "overpass_probability": 0.5,
+        "fork_probability": 0.15,
+        "ramp_probability": 0.1,
+        "direct_junctions": False,
+    },
 }
 
 
@@ -328,6 +350,10 @@ def validate(p: Params) -> None:
 
 def _validate_scenario(p: Params) -> None:
     _range("overpass_probability", p.overpass_probability, 0.0, 1.0)
+    _range("fork_probability", p.fork_probability, 0.0, 1.0)
+    _range("ramp_probability", p.ramp_probability, 0.0, 1.0)
+    if not isinstance(p.direct_junctions, bool):
+        raise ParamsError(f"direct_junctions={p.direct_junctions!r}: must be true or false")
     for name, kind in _ENUMS.items():
         if not isinstance(getattr(p, name), kind):
             valid = ", ".join(str(m.value) for m in kind)

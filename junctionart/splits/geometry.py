@@ -8,6 +8,7 @@ give.
 from __future__ import annotations
 
 import math
+from dataclasses import replace
 
 from ..curves import end_pose, wrap
 from ..opendrive import Arc, Geometry, Line
@@ -69,7 +70,8 @@ def reverse(p: Path) -> Path:
 
 
 def cut(p: Path, at: float) -> tuple[Path, Path]:
-    """``p`` cut at arc length ``at`` (0 < at < its length) into two paths, each starting at s = 0."""
+    """``p`` cut at arc length ``at`` (0 < at < its length) into two paths, each starting at s = 0; the element cut
+    must be a line or an arc (the others are only moved along s)."""
     head: list[Geometry] = []
     tail: list[Geometry] = []
     for g in p:
@@ -83,5 +85,5 @@ def cut(p: Path, at: float) -> tuple[Path, Path]:
             e = end_pose(first)
             tail.append(_restart(g, at, e.x, e.y, e.hdg, g.s + g.length - at))
     start = tail[0].s
-    tail = [_restart(g, g.s - start, g.x, g.y, g.hdg, g.length) for g in tail]
+    tail = [replace(g, s=g.s - start) for g in tail]
     return tuple(head), tuple(tail)

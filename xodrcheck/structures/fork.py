@@ -7,15 +7,13 @@ and both branches leave within 90 degrees of straight on. A direct junction (12.
 a common junction with connecting roads qualifies too. Directions are the legs' (:func:`xodrcheck.metrics.make_leg`:
 from the incident point to the point 50 m back along the road), so they compare with the junction kind's angles.
 
-Measures: ``split_angle``, the angle between the two branches' headings :data:`REACH` metres from the junction along
-each branch's road (at its far end when it is shorter; away from the junction), the angle the branches part by once
-their first curves are driven whatever kind of junction carries them; ``lanes_in``, lanes of the stem that split
-(merge: that the branches fill); ``lanes_left`` and ``lanes_right``, lanes of each branch joined to the stem in the
-fork's direction,
-left and right as a driver sees them (a split: looking from the stem into the branches; a merge: driving towards the
-stem); ``merge`` (1 for a merge, 0 for a split); ``direct`` (1 for a direct junction). A ramp (:mod:`.ramp`) is
-fork-shaped too and is recognised first.
-"""
+Measures: ``split_angle``, the largest angle between the two branches' headings (away from the junction) at equal
+distances along their roads up to :data:`REACH` metres (or the shorter road's end): the angle the branches part by,
+whatever kind of junction carries them and whether they run on apart or come back beside each other; ``lanes_in``, lanes
+of the stem that split (merge: that the branches fill); ``lanes_left`` and ``lanes_right``, lanes of each branch joined
+to the stem in the fork's direction, left and right as a driver sees them (a split: looking from the stem into the
+branches; a merge: driving towards the stem); ``merge`` (1 for a merge, 0 for a split); ``direct`` (1 for a direct
+junction). A ramp (:mod:`.ramp`) is fork-shaped too and is recognised first."""
 
 from __future__ import annotations
 
@@ -46,8 +44,9 @@ KIND = Kind(
 )
 
 End = tuple[str, ContactPoint]
-#: Distance (m) along a branch at which its heading is taken for the split angle.
+#: Distance (m) along the branches within which their headings are compared for the split angle, every STEP m.
 REACH = 100.0
+STEP = 1.0
 
 
 @dataclass(frozen=True)
@@ -108,7 +107,7 @@ def fork_shape(document: Document, junction: Junction) -> ForkShape | None:
     for stem in ends:
         branches = [e for e in ends if e != stem]
         if any((a, b) in pairs for a in branches for b in branches):
-            return None  # traffic from one branch into the other: a junction, whatever the stem
+            continue  # traffic from one branch into the other: not with this stem
         split = all((stem, b) in pairs for b in branches)
         merge = all((b, stem) in pairs for b in branches)
         if split or merge:
@@ -137,20 +136,26 @@ def _shape(
 
     a, b = legs[1], legs[2]
     left, right = (a, b) if (lateral(a) >= lateral(b)) != merge else (b, a)
-    angle = _angle(*(heading_out(document, leg) for leg in (a, b)))
-    return ForkShape(junction, legs[0], left, right, merge, through, angle)
+    return ForkShape(junction, legs[0], left, right, merge, through, parting_angle(document, a, b))
 
 
-def heading_out(document: Document, leg: Leg, reach: float = REACH) -> np.ndarray:
-    """Unit vector of the leg's road heading ``reach`` metres from the junction (its far end when shorter), pointing
-    away from the junction."""
+def headings_out(document: Document, leg: Leg, reach: float = REACH) -> np.ndarray:
+    """Headings (radians) of the leg's road every :data:`STEP` metres from the junction up to ``reach`` (or its far
+    end), pointing away from the junction."""
     road = document.road_by_id[leg.road]
-    at = min(reach, road.length)
+    at = np.arange(0.0, min(reach, road.length) + 1e-9, STEP)
     s = at if leg.end is ContactPoint.START else road.length - at
-    hdg = float(geometry_of(document)[road.id].reference(np.array([s])).hdg[0])
-    if leg.end is ContactPoint.END:
-        hdg += math.pi
-    return np.array([math.cos(hdg), math.sin(hdg)])
+    hdg = geometry_of(document)[road.id].reference(s).hdg
+    return hdg + (math.pi if leg.end is ContactPoint.END else 0.0)
+
+
+def parting_angle(document: Document, a: Leg, b: Leg, reach: float = REACH) -> float:
+    """The largest angle (degrees) between the headings of the roads of legs ``a`` and ``b`` at equal distances
+    from the junction, up to ``reach`` metres (or the shorter road's end)."""
+    ha, hb = headings_out(document, a, reach), headings_out(document, b, reach)
+    n = min(len(ha), len(hb))
+    diff = np.abs((ha[:n] - hb[:n] + np.pi) % (2 * np.pi) - np.pi)
+    return float(np.degrees(diff.max())) if n else float("nan")
 
 
 def values(shape: ForkShape) -> tuple[tuple[str, float], ...]:

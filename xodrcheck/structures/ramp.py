@@ -6,8 +6,8 @@ a ramp type (``offRamp``, ``onRamp``, ``connectingRamp``), or are fed by (feed) 
 deceleration lane of an exit or the acceleration lane of an entry: the part of them narrower than their full width
 is the taper.
 
-Measures: ``ramp_angle``, the angle between the ramp's and the main road's headings away from the junction, 100 m
-along each (as the fork's ``split_angle``); ``taper_length``, along the stem, how long the lane joined to the
+Measures: ``ramp_angle``, the largest angle between the ramp's and the main road's headings away from the junction
+within 100 m of it (as the fork's ``split_angle``); ``taper_length``, along the stem, how long the lane joined to the
 ramp nearest the main lanes is narrower than its full width (0 when it is full width all along the stem);
 ``side_lane_length``, how far from the junction that lane reaches along the stem (where it starts at zero width or
 the stem's far end); ``ramp_lanes``, lanes of the ramp joined to the stem; ``exit`` (1 for an exit, 0 for an entry).
@@ -26,7 +26,7 @@ from xodrcheck.model import ContactPoint, Document, Junction
 
 from . import Kind, Measure, Structure
 from .flows import RAMP_TYPES, SIDE_TYPES, Flow
-from .fork import ForkShape, _angle, fork_shape, heading_out
+from .fork import ForkShape, fork_shape, parting_angle
 
 KIND = Kind(
     "ramp",
@@ -110,7 +110,7 @@ def recognise(document: Document, free: Sequence[Junction]) -> list[Structure]:
         ramp, main = legs
         taper, reach = _side_lane(document, shape, ramp)
         values = (
-            ("ramp_angle", _angle(heading_out(document, ramp), heading_out(document, main))),
+            ("ramp_angle", parting_angle(document, ramp, main)),
             ("taper_length", taper),
             ("side_lane_length", reach),
             ("ramp_lanes", float(shape.branch_lanes(ramp))),
