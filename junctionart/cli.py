@@ -282,9 +282,9 @@ def _generate(args: argparse.Namespace) -> int:
         if bar is not None:
             bar.update(1)
         elif not args.quiet:
-            lay = result.layout
+            lay, doc = result.layout, result.document
             print(
-                f"{path}: {len(lay.roads)} roads, {len(lay.junctions)} junctions, "
+                f"{path}: {sum(r.junction == '-1' for r in doc.roads)} roads, {len(doc.junctions)} junctions, "
                 f"{sum(len(j.connections) for j in lay.junctions)} connection lanes, "
                 f"{len(lay.repairs)} repairs (changes made so every junction fits"
                 f"{'' if args.verbose else '; --verbose lists them'}), {time.perf_counter() - t0:.2f} s"

@@ -306,11 +306,12 @@ def place(doc: Document, st: Stretch, d: Design, centre: float, params: Params, 
     loop_len = length_of(loop_geo)
     z1, g1 = profile_at(road.elevation, s1)
     z2, g2 = profile_at(road.elevation, s2)
-    far_types = ("offRamp", "onRamp") if d.kind == "ramp" else ("driving", "driving")
+    far_types = ("offRamp", "onRamp") if d.kind == "ramp" else ("driving",)  # a ramp's lanes change type halfway
     halves = []
     for k, ftype in enumerate(far_types):
         uses = (*(Use(replace(t_, type=ftype), mark="solid") for t_ in g.far), *_uses(g.roadside))
-        halves.append(Span(loop_len / 2, k * loop_len / 2, uses, (), _one_way_centre()))
+        n = len(far_types)
+        halves.append(Span(loop_len / n, k * loop_len / n, uses, (), _one_way_centre()))
     loop = Piece(
         ids.next(), loop_geo, tuple(halves), fs, elevation=hermite(z1, g1, z2, g2, loop_len), speed=road.speed_kmh
     )

@@ -106,21 +106,24 @@ def add(doc: Document, params: Params, seed: int, requests: Iterable[Request] = 
             if asked:
                 notes.append(f"{req.kind} asked on {req.source}: {why}")
             continue
-        st, d, centre, area = why
+        st, d, centre = why
         placed = place(doc, st, d, centre, params, ids, kind)
         if placed is None:
             if asked:
                 notes.append(f"{req.kind} asked on {req.source}: road {st.road.id} has no lanes for it")
             continue
+        changed = st.road.id
         doc = placed
-        areas[f"{req.kind} {len(areas)}"] = area
+        for road in doc.roads:  # the road's pieces, the branch and any connecting roads: their own footprints
+            if road.id == changed or road.id not in areas:
+                areas[road.id] = _footprint(road)
     return doc, notes
 
 
 def _why_not(
     doc: Document, req: Request, asked: bool, params: Params, fs: int, areas: dict[str, shapely.Geometry]
-) -> str | tuple[Stretch, Design, float, shapely.Geometry]:
-    """Where and how ``req`` goes (stretch, design, centre, branch footprint), or why it cannot."""
+) -> str | tuple[Stretch, Design, float]:
+    """Where and how ``req`` goes (stretch, design, centre), or why it cannot."""
     road = _road_at(doc, req) if asked else _by_id(doc, req.source)
     if road is None:
         return f"no road runs within 5 m of ({req.x:.1f}, {req.y:.1f})"
@@ -137,7 +140,7 @@ def _why_not(
     area = _branch_area(d, st, centre, params, road, fs)
     if any(area.intersects(a) for rid, a in areas.items() if rid != road.id):
         return f"its branch beside road {road.id} would run into another road"
-    return st, d, centre, area
+    return st, d, centre
 
 
 def _by_id(doc: Document, rid: str) -> Road | None:

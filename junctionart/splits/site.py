@@ -22,6 +22,7 @@ from dataclasses import replace
 
 from xodrcheck.classcache import dataclass
 
+from ..curves import wrap
 from ..opendrive import Geometry, Line, Road
 from .geometry import Path, path, reverse
 from .pieces import constant
@@ -112,8 +113,13 @@ def _extend(p: Path, turn: float, radius: float, straight: float) -> Path:
 
 
 def _join(a: Path, b: Path) -> Path:
+    """``a`` then ``b``; where both meet with a straight line of one heading, one line."""
     s = sum(g.length for g in a)
-    return (*a, *(replace(g, s=g.s + s) for g in b))
+    tail = [replace(g, s=g.s + s) for g in b]
+    last, first = a[-1], tail[0]
+    if isinstance(last, Line) and isinstance(first, Line) and abs(wrap(last.hdg - first.hdg)) < 1e-9:
+        return (*a[:-1], replace(last, length=last.length + first.length), *tail[1:])
+    return (*a, *tail)
 
 
 @dataclass(frozen=True)
@@ -130,8 +136,8 @@ class Stretch:
 
 def stretch(road: Road) -> Stretch | None:
     """The longest stretch of ``road`` (module docstring), or None when it has none."""
-    if road.junction != "-1" or road.bridges or road.predecessor == road.successor:
-        return None
+    if road.junction != "-1" or road.bridges or (road.predecessor is not None and road.predecessor == road.successor):
+        return None  # a road whose both ends meet one junction: renaming its far end would be ambiguous
     best: Stretch | None = None
     for k, sec in enumerate(road.sections):
         a = sec.s + MARGIN if k > 0 else MARGIN

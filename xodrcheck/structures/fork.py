@@ -25,7 +25,7 @@ import numpy as np
 from xodrcheck.classcache import dataclass
 from xodrcheck.lanes import geometry_of
 from xodrcheck.metrics import Leg, leg_ends, make_leg
-from xodrcheck.model import ContactPoint, Document, Junction, JunctionType
+from xodrcheck.model import ContactPoint, Document, Junction, JunctionType, Road
 
 from . import Kind, Measure, Structure
 from .flows import Flow, flows
@@ -139,11 +139,18 @@ def _shape(
     return ForkShape(junction, legs[0], left, right, merge, through, parting_angle(document, a, b))
 
 
-def headings_out(document: Document, leg: Leg, reach: float = REACH) -> np.ndarray:
-    """Headings (radians) of the leg's road every :data:`STEP` metres from the junction up to ``reach`` (or its far
-    end), pointing away from the junction."""
+def _distances(road: Road, end: ContactPoint, reach: float) -> np.ndarray:
+    """Distances from the road's ``end`` to its plan-view elements' ends (where a heading made of lines and arcs
+    turns back), within ``reach``."""
+    ends = np.array([g.s for g in road.plan_view] + [road.length])
+    d = ends if end is ContactPoint.START else road.length - ends
+    return d[(d >= 0) & (d <= reach)]
+
+
+def headings_out(document: Document, leg: Leg, at: np.ndarray) -> np.ndarray:
+    """Headings (radians) of the leg's road at distances ``at`` from the junction, pointing away from it."""
     road = document.road_by_id[leg.road]
-    at = np.arange(0.0, min(reach, road.length) + 1e-9, STEP)
+    at = np.clip(at, 0.0, road.length)
     s = at if leg.end is ContactPoint.START else road.length - at
     hdg = geometry_of(document)[road.id].reference(s).hdg
     return hdg + (math.pi if leg.end is ContactPoint.END else 0.0)
@@ -151,11 +158,15 @@ def headings_out(document: Document, leg: Leg, reach: float = REACH) -> np.ndarr
 
 def parting_angle(document: Document, a: Leg, b: Leg, reach: float = REACH) -> float:
     """The largest angle (degrees) between the headings of the roads of legs ``a`` and ``b`` at equal distances
-    from the junction, up to ``reach`` metres (or the shorter road's end)."""
-    ha, hb = headings_out(document, a, reach), headings_out(document, b, reach)
-    n = min(len(ha), len(hb))
-    diff = np.abs((ha[:n] - hb[:n] + np.pi) % (2 * np.pi) - np.pi)
-    return float(np.degrees(diff.max())) if n else float("nan")
+    from the junction, up to ``reach`` metres (or the shorter road's end): every :data:`STEP` metres and at each
+    element end of either road."""
+    ra, rb = document.road_by_id[a.road], document.road_by_id[b.road]
+    top = min(reach, ra.length, rb.length)
+    at = np.unique(
+        np.concatenate([np.arange(0.0, top, STEP), [top], _distances(ra, a.end, top), _distances(rb, b.end, top)])
+    )
+    diff = np.abs((headings_out(document, a, at) - headings_out(document, b, at) + np.pi) % (2 * np.pi) - np.pi)
+    return float(np.degrees(diff.max()))
 
 
 def values(shape: ForkShape) -> tuple[tuple[str, float], ...]:
