@@ -116,7 +116,16 @@ def _pair(draw, relation: str, extent: float, max_lanes: int, lanes: bool, offse
     def conf():
         return draw(_lane_pairs(max_lanes)) if lanes and draw(st.booleans()) else None
 
-    return [(base, conf()), (other, conf())]
+    def asked() -> dict:
+        """Now and then a fork or ramp asked for somewhere along the line (issue 28)."""
+        kind = draw(st.sampled_from((None, None, None, "forks", "ramps")))
+        if kind is None:
+            return {}
+        at = draw(st.floats(0.0, 0.95)) * length
+        angle = draw(st.one_of(st.none(), st.floats(2.0, 90.0)))
+        return {kind: [{"at": at} | ({} if angle is None else {"angle": angle})]}
+
+    return [(base, conf(), asked()), (other, conf(), asked())]
 
 
 @st.composite
@@ -136,8 +145,9 @@ def _groups(draw, min_lines, max_lines, extent, relations, max_lanes, lanes, as_
                 "points": _rotate(pts, angle, dx, dy),
                 "group": i // 2,
                 **({"lanes": list(conf)} if conf else {}),
+                **structures,
             }
-            for i, (pts, conf) in enumerate(lines)
+            for i, (pts, conf, structures) in enumerate(lines)
         ],
         "pairs": [[f"c{i}", f"c{i + 1}"] for i in range(0, len(lines), 2)],
     }
@@ -198,6 +208,10 @@ def _params(draw, min_size, max_size, many_lanes):
         min_leg_angle=draw(st.floats(0.0, 50.0)),
         taper_length=draw(st.floats(10.0, 60.0)),
         version=draw(st.sampled_from(("1.8", "1.7"))),
+        # forks and ramps (issue 28): off in half the maps, so the other features keep their share of the budget
+        fork_probability=draw(st.sampled_from((0.0, 0.0, 0.5, 1.0))),
+        ramp_probability=draw(st.sampled_from((0.0, 0.0, 0.5, 1.0))),
+        direct_junctions=draw(st.booleans()),
     )
 
 
@@ -263,6 +277,9 @@ def invalid_generator_params(draw) -> tuple[dict, str]:
                 ("lane_distribution_side", st.sampled_from(((0.5, 0.5, 0.5, 0.5), (1.0, 0.0, 0.0, 0.0), (0.2, 0.8)))),
                 ("n_lines", st.sampled_from((0, 1, -3, 10**6))),
                 ("traffic_rule", st.sampled_from(("left", "", "rht"))),
+                ("fork_probability", st.sampled_from((-0.5, 1.01, math.nan))),
+                ("ramp_probability", st.sampled_from((2.0, -1e-9, math.inf))),
+                ("direct_junctions", st.sampled_from((1, "yes", None))),
                 ("version", st.sampled_from(("1.6", "2.0", ""))),
             )
         )
