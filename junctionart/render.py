@@ -191,8 +191,9 @@ def _add_joints(shapes: _Shapes, road, geo, direct: set[str]) -> None:
         lanes = [lane.id for lane in road.lane_sections[idx].lanes if lane.id != 0]
         if not lanes:
             continue
-        a = geo.lane_points(idx, max(lanes), s, where="outer")
-        b = geo.lane_points(idx, min(lanes), s, where="outer")
+        top, bottom = max(lanes), min(lanes)  # each edge: the outermost lane's outer border (inner: no lane that side)
+        a = geo.lane_points(idx, top, s, where="outer" if top > 0 else "inner")
+        b = geo.lane_points(idx, bottom, s, where="outer" if bottom < 0 else "inner")
         bar = np.array([[a.x[0], a.y[0]], [b.x[0], b.y[0]]])
         if np.all(np.isfinite(bar)):
             shapes.joints.append(bar)

@@ -35,8 +35,15 @@ RAMP_ANGLES = (20.0, 40.0)
 CLEAR = 1.0
 
 
+def _polyline(geometry, step: float) -> shapely.LineString:
+    """The reference line through points about ``step`` apart, without repeated points (elements share their ends;
+    GEOS refuses to buffer a line that doubles back on a repeated point)."""
+    pts = np.concatenate([sample(g, max(2, int(g.length / step) + 2)) for g in geometry])
+    keep = np.concatenate([[True], np.hypot(*np.diff(pts, axis=0).T) > 1e-6])
+    return shapely.LineString(pts[keep])
+
+
 def _footprint(road: Road) -> shapely.Geometry:
-    pts = np.concatenate([sample(g, max(2, int(g.length / 2.0) + 2)) for g in road.geometry])
     half = max(
         (
             sum(lane.widths[0].a if lane.widths else 0.0 for lane in side)
@@ -46,7 +53,7 @@ def _footprint(road: Road) -> shapely.Geometry:
         default=0.0,
     )
     offset = max((abs(c.a) for c in road.lane_offset), default=0.0)
-    return shapely.LineString(pts).buffer(half + offset + CLEAR)
+    return _polyline(road.geometry, 2.0).buffer(half + offset + CLEAR)
 
 
 def _forward_lanes(road: Road, st: Stretch, fs: int) -> int:
@@ -69,9 +76,8 @@ def _branch_area(d: Design, st: Stretch, centre: float, doc_params: Params, road
         inner -= d.far_lanes * doc_params.lane_width
     fx, fy = x - fs * inner * math.sin(hdg), y + fs * inner * math.cos(hdg)
     geo = loop_path(d, fx, fy, hdg, fs)
-    pts = np.concatenate([sample(g, max(2, int(g.length / 1.0) + 2)) for g in geo])
     width = d.far_lanes * doc_params.lane_width + roadside_width(doc_params)
-    line = shapely.LineString(pts)
+    line = _polyline(geo, 1.0)
     return line.buffer(width + CLEAR, single_sided=True) if fs > 0 else line.buffer(-(width + CLEAR), single_sided=True)
 
 
@@ -154,8 +160,7 @@ def _road_at(doc: Document, req: Request) -> Road | None:
     for road in doc.roads:
         if road.junction != "-1":
             continue
-        pts = np.concatenate([sample(g, max(2, int(g.length / 2.0) + 2)) for g in road.geometry])
-        dist = shapely.LineString(pts).distance(pt)
+        dist = _polyline(road.geometry, 2.0).distance(pt)
         if dist < best_d:
             best, best_d = road, dist
     return best

@@ -48,6 +48,8 @@ class CarlaResult:
     topology: tuple[tuple[CarlaPoint, CarlaPoint], ...] = ()
     #: ``Map.get_all_landmarks()``: (signal id, type, road id) of each landmark (a signal as CARLA read it)
     landmarks: tuple[tuple[str, str, str], ...] = ()
+    #: per start of ``walks``: the road ids ``Waypoint.next`` reaches from it
+    walks: tuple[tuple[str, ...], ...] = ()
 
     @property
     def crashed(self) -> bool:
@@ -69,14 +71,34 @@ def _tail(text: str, lines: int = 5) -> str:
     return "\n".join(text.strip().splitlines()[-lines:])
 
 
-def carla_waypoints(xodr_path: str | os.PathLike, distance: float = 2.0, timeout: float = 60) -> CarlaResult:
-    """Waypoints every ``distance`` metres on every driving lane of the map, and CARLA's lane topology."""
+def carla_waypoints(
+    xodr_path: str | os.PathLike,
+    distance: float = 2.0,
+    timeout: float = 60,
+    walks: list[tuple[str, int, float, float]] | None = None,
+) -> CarlaResult:
+    """Waypoints every ``distance`` metres on every driving lane of the map, and CARLA's lane topology; for each of
+    ``walks`` (road, lane, s, metres), the road ids ``Waypoint.next`` reaches from there on every branch within
+    that many metres."""
     python = carla_python()
     with tempfile.TemporaryDirectory(prefix="carla-") as tmp:
         out = Path(tmp) / "result.json"
+        extra = []
+        if walks:
+            starts = Path(tmp) / "walks.json"
+            starts.write_text(json.dumps([list(w) for w in walks]), encoding="utf-8")
+            extra = [str(starts)]
         try:
             proc = subprocess.run(
-                [str(python), "-I", str(WORKER), str(Path(xodr_path).resolve()), repr(float(distance)), str(out)],
+                [
+                    str(python),
+                    "-I",
+                    str(WORKER),
+                    str(Path(xodr_path).resolve()),
+                    repr(float(distance)),
+                    str(out),
+                    *extra,
+                ],
                 check=False,
                 capture_output=True,
                 text=True,
@@ -95,4 +117,5 @@ def carla_waypoints(xodr_path: str | os.PathLike, distance: float = 2.0, timeout
         waypoints=tuple(CarlaPoint(**p) for p in data["waypoints"]),
         topology=tuple((CarlaPoint(**a), CarlaPoint(**b)) for a, b in data["topology"]),
         landmarks=tuple(tuple(m) for m in data.get("landmarks", ())),
+        walks=tuple(tuple(w) for w in data.get("walks", ())),
     )

@@ -72,7 +72,7 @@ def run_netconvert(path: Path, folder: Path) -> tuple[subprocess.CompletedProces
     return proc, out
 
 
-def carla(path: Path, **options: float) -> CarlaResult:
+def carla(path: Path, **options) -> CarlaResult:
     """CARLA's parser on one map (:func:`carla_waypoints`), failing the test when CARLA is not installed."""
     try:
         return carla_waypoints(path, **options)

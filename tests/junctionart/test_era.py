@@ -235,3 +235,30 @@ def test_generator_version_ignores_presentation_only_sources(tmp_path):
     assert era.source_hash([pkg, checker]) == both
     (checker / "metrics.py").write_text("E = 2\n")
     assert era.source_hash([pkg, checker]) != both
+
+
+def test_the_structures_section_counts_each_kind_and_draws_its_measures(tmp_path):
+    """A run whose maps hold forks and ramps: the section counts them per kind and draws one figure per special kind
+    with a panel per measure; structures of maps outside the selected intersections are not counted."""
+    from junctionart.era_structures import section
+    from xodrcheck.structures import KINDS, kind
+
+    def row(seed, k, **measures):
+        return {"run": "scenario", "seed": str(seed), "kind": k, **{n: str(v) for n, v in measures.items()}}
+
+    rows = [
+        row(0, "junction", legs=3, min_angle=80),
+        row(0, "fork", split_angle=12.0, lanes_in=2, lanes_left=1, lanes_right=1, merge=0, direct=0),
+        row(0, "fork", split_angle=12.0, lanes_in=2, lanes_left=1, lanes_right=1, merge=1, direct=0),
+        row(1, "ramp", ramp_angle=30.0, taper_length=29.4, side_lane_length=49.7, ramp_lanes=1, exit=1),
+        row(5, "ramp", ramp_angle=31.0, taper_length=29.4, side_lane_length=49.7, ramp_lanes=1, exit=0),
+    ]
+    selected = {"scenario": [{"seed": "0"}, {"seed": "1"}]}  # seed 5's intersections were not selected
+    lines = section(tmp_path, rows, selected)
+    counts = next(line for line in lines if line.startswith("| scenario |"))
+    cells = dict(zip([k.name for k in KINDS], (c.strip() for c in counts.strip("|").split("|")[1:])))
+    assert cells["junction"] == "1" and cells["fork"] == "2" and cells["ramp"] == "1"
+    assert (tmp_path / "kind_fork.png").stat().st_size > 1000 and (tmp_path / "kind_ramp.png").stat().st_size > 1000
+    text = "\n".join(lines)
+    assert "### fork" in text and "split_angle: scenario 12" in text and "ramp_angle: scenario 30" in text
+    assert len(kind("fork").measures) == 6

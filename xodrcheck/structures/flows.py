@@ -1,17 +1,19 @@
 """Traffic through one junction, lane by lane: which leg's lane feeds which other leg's lane, read from the file.
 
-A *flow* is one lane link followed in the direction traffic drives: from a lane of one leg (a road end touching the
-junction) that leads into it, to a lane of another leg that leads out, through a connecting road (common junction)
-or directly (direct junction, 12.6). Which lanes lead into a junction follows from the traffic rule: under right-hand
-traffic right lanes drive along ``s`` (into the junction at the road's end), left lanes against it (into it at the
-road's start); left-hand traffic the other way round. A connecting road's lane is followed from section to section
-by its lane links to the outside road at its other end.
+A *flow* is one lane link followed in the direction traffic drives: from a drivable lane of one leg (a road end
+touching the junction) that leads into it, to a drivable lane of another leg that leads out, through a connecting
+road (common junction) or directly (direct junction, 12.6). Which lanes lead into a junction follows from the traffic
+rule: under right-hand traffic right lanes drive along ``s`` (into the junction at the road's end), left lanes
+against it (into it at the road's start); left-hand traffic the other way round. A connecting road's lane is followed
+from section to section by its lane links to the outside road at its other end. Links between lanes nobody drives on
+(kerbs and sidewalks carried round a corner) are not flows.
 """
 
 from __future__ import annotations
 
 from xodrcheck.classcache import dataclass
 from xodrcheck.model import (
+    DRIVABLE_LANE_TYPES,
     ContactPoint,
     Document,
     ElementType,
@@ -112,6 +114,14 @@ def _beyond(document: Document, road: Road, start: ContactPoint, lane_id: int) -
 
 def flows(document: Document, junction: Junction) -> list[Flow]:
     """Every flow through ``junction`` that the file describes completely, in connection and lane-link order."""
+    return [
+        f
+        for f in _all_links(document, junction)
+        if f.types[0] in DRIVABLE_LANE_TYPES and f.types[-1] in DRIVABLE_LANE_TYPES
+    ]
+
+
+def _all_links(document: Document, junction: Junction) -> list[Flow]:
     roads = document.road_by_id
     out: list[Flow] = []
     for c in junction.connections:
