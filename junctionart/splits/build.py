@@ -10,8 +10,7 @@ lanes of each direction, linked lane by lane.
 from __future__ import annotations
 
 import math
-
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
 
 from ..cleanup import _three_points
 from ..opendrive import Connection, Document, Header, Junction, LaneLink, LaneSection, Line, Link, Road

@@ -10,9 +10,7 @@ for each side's lanes.
 
 from __future__ import annotations
 
-from dataclasses import replace
-
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass, replace
 
 from ..opendrive import Connection, Corner, Cubic, Document, Junction, Lane, LaneLink, LaneSection, Link, Road
 from ..params import Params, TrafficRule

@@ -9,7 +9,7 @@ solid yellow on a two-way road, solid white on a one-way road; connecting roads 
 
 from __future__ import annotations
 
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
 
 from ..opendrive import Cubic, Lane, LaneSection, RoadMark
 

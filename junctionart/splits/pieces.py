@@ -10,9 +10,7 @@ neighbouring section unless it widens from zero at their border (or narrows to z
 
 from __future__ import annotations
 
-from dataclasses import replace
-
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass, replace
 
 from ..opendrive import Cubic, Lane, LaneHeight, LaneSection, RoadMark
 from .lanes import width

@@ -11,8 +11,7 @@ same layout run the other way: the branches end at the junction and the stem sta
 from __future__ import annotations
 
 import math
-
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
 
 from ..params import TrafficRule
 from .spec import ForkSpec, RampSpec

@@ -18,9 +18,7 @@ clear of every other road.
 from __future__ import annotations
 
 import math
-from dataclasses import replace
-
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass, replace
 
 from ..curves import wrap
 from ..opendrive import Geometry, Line, Road

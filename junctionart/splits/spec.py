@@ -30,10 +30,8 @@ JSON (``kind`` "fork" or "ramp"; every other key optional)::
 from __future__ import annotations
 
 import math
-from dataclasses import fields
+from dataclasses import dataclass, fields
 from typing import Any
-
-from xodrcheck.classcache import dataclass
 
 from ..errors import ParamsError
 from ..params import VERSIONS, TrafficRule

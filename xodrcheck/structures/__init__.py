@@ -19,8 +19,8 @@ from __future__ import annotations
 import importlib
 import math
 from collections.abc import Callable, Sequence
+from dataclasses import dataclass
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.model import Document, Junction
 
 __all__ = [

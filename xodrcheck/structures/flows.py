@@ -11,7 +11,8 @@ from section to section by its lane links to the outside road at its other end. 
 
 from __future__ import annotations
 
-from xodrcheck.classcache import dataclass
+from dataclasses import dataclass
+
 from xodrcheck.model import (
     DRIVABLE_LANE_TYPES,
     ContactPoint,

@@ -19,10 +19,10 @@ from __future__ import annotations
 
 import math
 from collections.abc import Sequence
+from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.classcache import dataclass
 from xodrcheck.lanes import geometry_of
 from xodrcheck.metrics import Leg, leg_ends, make_leg
 from xodrcheck.model import ContactPoint, Document, Junction, JunctionType, Road
