@@ -48,8 +48,8 @@ class CarlaResult:
     topology: tuple[tuple[CarlaPoint, CarlaPoint], ...] = ()
     #: ``Map.get_all_landmarks()``: (signal id, type, road id) of each landmark (a signal as CARLA read it)
     landmarks: tuple[tuple[str, str, str], ...] = ()
-    #: per start of ``walks``: the road ids ``Waypoint.next`` reaches from it
-    walks: tuple[tuple[str, ...], ...] = ()
+    #: the waypoints of each ring walk asked for (``_carla_worker.py``), in the order asked
+    walks: tuple[tuple[CarlaPoint, ...], ...] = ()
 
     @property
     def crashed(self) -> bool:
@@ -72,33 +72,20 @@ def _tail(text: str, lines: int = 5) -> str:
 
 
 def carla_waypoints(
-    xodr_path: str | os.PathLike,
-    distance: float = 2.0,
-    timeout: float = 60,
-    walks: list[tuple[str, int, float, float]] | None = None,
+    xodr_path: str | os.PathLike, distance: float = 2.0, timeout: float = 60, walks: list[dict] | None = None
 ) -> CarlaResult:
-    """Waypoints every ``distance`` metres on every driving lane of the map, and CARLA's lane topology; for each of
-    ``walks`` (road, lane, s, metres), the road ids ``Waypoint.next`` reaches from there on every branch within
-    that many metres."""
+    """Waypoints every ``distance`` metres on every driving lane of the map, and CARLA's lane topology; with
+    ``walks``, a waypoint walk round a ring for each (``_carla_worker.py`` says what one asks for)."""
     python = carla_python()
     with tempfile.TemporaryDirectory(prefix="carla-") as tmp:
         out = Path(tmp) / "result.json"
-        extra = []
+        command = [str(python), "-I", str(WORKER), str(Path(xodr_path).resolve()), repr(float(distance)), str(out)]
         if walks:
-            starts = Path(tmp) / "walks.json"
-            starts.write_text(json.dumps([list(w) for w in walks]), encoding="utf-8")
-            extra = [str(starts)]
+            (Path(tmp) / "walks.json").write_text(json.dumps(walks), encoding="utf-8")
+            command.append(str(Path(tmp) / "walks.json"))
         try:
             proc = subprocess.run(
-                [
-                    str(python),
-                    "-I",
-                    str(WORKER),
-                    str(Path(xodr_path).resolve()),
-                    repr(float(distance)),
-                    str(out),
-                    *extra,
-                ],
+                command,
                 check=False,
                 capture_output=True,
                 text=True,
@@ -117,5 +104,5 @@ def carla_waypoints(
         waypoints=tuple(CarlaPoint(**p) for p in data["waypoints"]),
         topology=tuple((CarlaPoint(**a), CarlaPoint(**b)) for a, b in data["topology"]),
         landmarks=tuple(tuple(m) for m in data.get("landmarks", ())),
-        walks=tuple(tuple(w) for w in data.get("walks", ())),
+        walks=tuple(tuple(CarlaPoint(**p) for p in walk) for walk in data.get("walks", ())),
     )

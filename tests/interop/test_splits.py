@@ -109,7 +109,7 @@ def test_sumo_builds_every_map_with_default_junctions(cases, tmp_path):
     assert bad == []
 
 
-def _walks(document) -> list[tuple[tuple[str, int, float, float], set[str]]]:
+def _walks(document) -> list[tuple[dict, set[str]]]:
     """(start, roads it must reach) for every lane feeding a split and every lane of a merge's branches."""
     out = []
     for structure in map_structures(document):
@@ -126,7 +126,11 @@ def _walks(document) -> list[tuple[tuple[str, int, float, float], set[str]]]:
             road = document.road_by_id[leg.road]
             lanes = {f.source.lane for f in shape.flows if f.source.road == leg.road}
             s = max(road.length - 5.0, 0.0) if leg.end is ContactPoint.END else min(5.0, road.length)
-            out += [((leg.road, lane, s, 200.0), targets) for lane in sorted(lanes)]  # past the longest connecting road
+            # 200 m: past the longest connecting road (88 m in these maps)
+            out += [
+                ({"road": leg.road, "lane": lane, "s": s, "step": 2.0, "reach": 200.0}, targets)
+                for lane in sorted(lanes)
+            ]
     return out
 
 
@@ -141,15 +145,16 @@ def test_carla_loads_them_and_its_waypoints_lead_from_each_fork_into_both_branch
         if not result.loaded:
             bad.append(f"{c.path.name}: CARLA did not load it ({result.error})")
             continue
-        together: dict[tuple[str, float], set[str]] = {}
-        for (start, _), reached in zip(walks, result.walks):
-            key = (start[0], start[2])
-            together.setdefault(key, set()).update(reached)
+        together: dict[tuple[str, float], set[str]] = {}  # the roads a road's lanes together reach
+        for (start, _), met in zip(walks, result.walks):
+            together.setdefault((start["road"], start["s"]), set()).update(p.road_id for p in met)
             walked += 1
         for start, targets in walks:
-            missing = targets - together[(start[0], start[2])]
+            missing = targets - together[(start["road"], start["s"])]
             if missing:
-                bad.append(f"{c.path.name}: from road {start[0]} lane {start[1]} CARLA reaches no lane of {missing}")
+                bad.append(
+                    f"{c.path.name}: from road {start['road']} lane {start['lane']} CARLA reaches no lane of {missing}"
+                )
     assert walked >= 30 and bad == []
 
 
