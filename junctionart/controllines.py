@@ -13,9 +13,10 @@ GeoJSON: a FeatureCollection of LineString features; ``properties`` may hold ``i
 ``pair_with`` (a list of line ids). Without explicit pairs, consecutive lines of one group form the pairs.
 
 A line (or a feature's ``properties``) may also ask for forks and ramps at given places (issue 28): ``"forks"`` and
-``"ramps"``, lists of ``{"at": metres along the line from its first point, "angle": degrees}`` (``angle`` optional:
-the branch's turn away from the road). The road running along the line there gets the structure, centred as near the
-point as its straight stretch allows (:mod:`junctionart.splits.network`); one that does not fit is reported::
+``"ramps"``, lists of ``{"at": metres along the line from its first point, or a point [x, y] (its nearest point on
+the line), "angle": degrees}`` (``angle`` optional: the branch's turn away from the road). The road running along the
+line there gets the structure, centred as near the point as its straight stretch allows
+(:mod:`junctionart.splits.network`); one that does not fit is reported::
 
     {"id": "a", "points": [[0, 0], [800, 0]], "forks": [{"at": 300, "angle": 15}], "ramps": [{"at": 600}]}
 """
@@ -205,8 +206,10 @@ def _lanes(where: str, raw: Any) -> tuple[int, int] | None:
     return (fwd, bwd)
 
 
-def _structures(where: str, raw: dict) -> tuple[tuple[str, float, float | None], ...]:
-    """The ``forks`` and ``ramps`` of a line (module docstring)."""
+def _structures(
+    where: str, raw: dict, points: tuple[tuple[float, float], ...]
+) -> tuple[tuple[str, float, float | None], ...]:
+    """The ``forks`` and ``ramps`` of a line through ``points`` (module docstring), each at metres along it."""
     out: list[tuple[str, float, float | None]] = []
     for key, kind in (("forks", "fork"), ("ramps", "ramp")):
         items = raw.get(key)
@@ -218,8 +221,12 @@ def _structures(where: str, raw: dict) -> tuple[tuple[str, float, float | None],
             if not isinstance(item, dict) or "at" not in item or set(item) - {"at", "angle"}:
                 raise InputError(f'{where}: {key}[{k}] must be {{"at": metres along the line, "angle": degrees}}')
             at, angle = item["at"], item.get("angle")
-            if isinstance(at, bool) or not isinstance(at, (int, float)) or not math.isfinite(at) or at < 0:
-                raise InputError(f"{where}: {key}[{k}] at={at!r}: must be a distance along the line (m, >= 0)")
+            if isinstance(at, list) and len(at) == 2 and all(_finite(c) for c in at):
+                at = ControlLine("", points).project((float(at[0]), float(at[1])))
+            if not _finite(at) or at < 0:
+                raise InputError(
+                    f"{where}: {key}[{k}] at={at!r}: must be a distance along the line (m, >= 0) or a point [x, y]"
+                )
             ok = angle is None or (
                 isinstance(angle, (int, float)) and not isinstance(angle, bool) and math.isfinite(angle)
             )
@@ -227,6 +234,10 @@ def _structures(where: str, raw: dict) -> tuple[tuple[str, float, float | None],
                 raise InputError(f"{where}: {key}[{k}] angle={angle!r}: must be degrees in [2, 90]")
             out.append((kind, float(at), None if angle is None else float(angle)))
     return tuple(out)
+
+
+def _finite(value: Any) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool) and math.isfinite(value)
 
 
 def _group(where: str, raw: Any) -> int:
@@ -318,13 +329,14 @@ def parse(data: Any, source: str = "<input>") -> ControlLines:
             if not isinstance(props, dict):
                 raise InputError(f"{where}: properties must be an object")
             lid = str(props.get("id", f.get("id", k)))
+            pts = _points(where, geom.get("coordinates"))
             entries.append(
                 (
                     lid,
-                    _points(where, geom.get("coordinates")),
+                    pts,
                     _group(where, props.get("group")),
                     _lanes(where, props.get("lanes")),
-                    _structures(where, props),
+                    _structures(where, props, pts),
                 )
             )
             for other in props.get("pair_with") or []:
@@ -337,13 +349,14 @@ def parse(data: Any, source: str = "<input>") -> ControlLines:
             where = f"{source}: line {k}"
             if not isinstance(ln, dict):
                 raise InputError(f'{where}: must be an object with "points"')
+            pts = _points(where, ln.get("points"))
             entries.append(
                 (
                     str(ln.get("id", k)),
-                    _points(where, ln.get("points")),
+                    pts,
                     _group(where, ln.get("group")),
                     _lanes(where, ln.get("lanes")),
-                    _structures(where, ln),
+                    _structures(where, ln, pts),
                 )
             )
         pairs_raw = data.get("pairs") or []

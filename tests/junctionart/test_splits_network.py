@@ -61,6 +61,7 @@ def test_a_request_that_does_not_fit_is_reported_and_the_map_stays_clean(tmp_pat
     [
         ({"forks": {"at": 3}}, '"forks" must be a list'),
         ({"ramps": [{"at": -1}]}, "at=-1: must be a distance"),
+        ({"ramps": [{"at": [1, "x"]}]}, "at=[1, 'x']: must be a distance along the line (m, >= 0) or a point [x, y]"),
         ({"ramps": [{"where": 4}]}, 'must be {"at"'),
         ({"forks": [{"at": 10, "angle": 120}]}, "angle=120: must be degrees in [2, 90]"),
         ({"forks": [{"at": 5000}]}, "asks for a fork at 5000 m; it is 1200 m long"),
@@ -76,6 +77,7 @@ def test_bad_requests_are_refused_with_one_line(entry, message):
 
 def test_geojson_features_ask_for_them_in_their_properties():
     raw = json.loads(EXAMPLE.read_text())
+    raw["lines"][1]["ramps"] = [{"at": [800.0, -30.0], "angle": 25}]  # a point: its nearest point on the line
     features = [
         {
             "type": "Feature",
