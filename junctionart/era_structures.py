@@ -27,8 +27,12 @@ def figure(kind: Kind, by_run: Mapping[str, Sequence[dict]], path: Path) -> None
     """One panel per measure of ``kind``: a histogram per run."""
     plt = pyplot("the expressive range figures")
     n = len(kind.measures)
-    fig, axes = plt.subplots(1, n, figsize=(4.2 * n, 3.4), squeeze=False)
-    for ax, measure in zip(axes[0], kind.measures):
+    cols = min(3, n)
+    rows = math.ceil(n / cols)
+    fig, axes = plt.subplots(rows, cols, figsize=(4.4 * cols, 3.4 * rows), squeeze=False)
+    for ax in axes.ravel()[n:]:
+        ax.set_visible(False)
+    for ax, measure in zip(axes.ravel(), kind.measures):
         for k, (run, rows) in enumerate(by_run.items()):
             values = _values(rows, measure.name)
             values = values[np.isfinite(values)]
@@ -45,7 +49,8 @@ def figure(kind: Kind, by_run: Mapping[str, Sequence[dict]], path: Path) -> None
         ax.set_xlabel(measure.name + (f" ({measure.unit})" if measure.unit else ""))
         ax.set_title(measure.meaning, fontsize=8)
         ax.legend(fontsize=7)
-    axes[0][0].set_ylabel(f"{kind.name}s")
+    for row in axes:
+        row[0].set_ylabel(f"{kind.name}s")
     fig.tight_layout()
     try:
         with atomic_file(path, "wb") as stream:
