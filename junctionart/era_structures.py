@@ -28,8 +28,8 @@ def figure(kind: Kind, by_run: Mapping[str, Sequence[dict]], path: Path) -> None
     plt = pyplot("the expressive range figures")
     n = len(kind.measures)
     cols = min(3, n)
-    rows = math.ceil(n / cols)
-    fig, axes = plt.subplots(rows, cols, figsize=(4.4 * cols, 3.4 * rows), squeeze=False)
+    grid_rows = math.ceil(n / cols)
+    fig, axes = plt.subplots(grid_rows, cols, figsize=(4.4 * cols, 3.4 * grid_rows), squeeze=False)
     for ax in axes.ravel()[n:]:
         ax.set_visible(False)
     for ax, measure in zip(axes.ravel(), kind.measures):

@@ -246,111 +246,136 @@ def _approach(g: Lanes, d: Design, s_end: float, merge: bool) -> list[tuple[floa
     return spans[::-1] if merge else spans
 
 
+@dataclass(frozen=True)
+class _Cut:
+    """Where the road is cut: its middle lane section and where that ends, the split and merge s, its lane groups
+    and side of the lanes driving along ``s``."""
+
+    road: Road
+    st: Stretch
+    sec: LaneSection
+    sec_end: float
+    s1: float
+    s2: float
+    g: Lanes
+    fs: int
+
+    def span(self, length: float, at: float, forward: tuple[Use, ...]) -> Span:
+        return Span(length, at, forward, _uses(self.g.backward), self.sec.center)
+
+    @property
+    def whole(self) -> tuple[Use, ...]:
+        """The road's lanes along ``s`` as they are away from the structure."""
+        g = self.g
+        return _uses(g.inner, g.near, g.roadside) if g.added else _uses(g.inner, g.near, g.far, g.roadside)
+
+
+def _before(c: _Cut, d: Design) -> Piece:
+    """A: the road up to the split (its id, links, head sections)."""
+    pre = _approach(c.g, d, c.s1, merge=False)
+    at = c.s1 - sum(x for x, _ in pre)
+    spans = [c.span(at - c.sec.s, c.sec.s, c.whole)]
+    for length, uses in pre:
+        spans.append(c.span(length, at, uses))
+        at += length
+    return Piece(
+        c.road.id,
+        cut(c.road.geometry, c.s1)[0],
+        tuple(spans),
+        c.fs,
+        start=c.sec.s,
+        elevation=clip_profile(c.road.elevation, 0.0, c.s1),
+        head=c.road.sections[: c.st.section],
+        first_links=tuple(_original_links(c.sec, c.fs, "predecessor")),
+        speed=c.road.speed_kmh,
+        road_type=c.road.road_type,
+    )
+
+
+def _between(c: _Cut, ids: Ids) -> Piece:
+    """B: the road between the joints, without the lanes that leave and the roadside beyond them."""
+    last = c.g.near[-1].key
+    geometry = cut(cut(c.road.geometry, c.s1)[1], c.s2 - c.s1)[0]
+    forward = _uses(c.g.inner, c.g.near, **{last: "solid"})
+    return Piece(
+        ids.next(),
+        geometry,
+        (c.span(c.s2 - c.s1, c.s1, forward),),
+        c.fs,
+        elevation=clip_profile(c.road.elevation, c.s1, c.s2),
+        speed=c.road.speed_kmh,
+        road_type=c.road.road_type,
+    )
+
+
+def _branch(c: _Cut, d: Design, ids: Ids) -> Piece:
+    """The branch: the far lanes and the roadside, beside the road from the split to the merge; its height a cubic
+    from the road's height and grade at one joint to those at the other."""
+    x, y, hdg = point_on(c.st.line, c.s1)
+    fx, fy = offset(x, y, hdg, c.fs * sum(lane.width for lane in (*c.g.inner, *c.g.near)))
+    geometry = loop_path(d, fx, fy, hdg, c.fs)
+    length = length_of(geometry)
+    z1, g1 = profile_at(c.road.elevation, c.s1)
+    z2, g2 = profile_at(c.road.elevation, c.s2)
+    types = ("offRamp", "onRamp") if d.kind == "ramp" else ("driving",)  # a ramp's lanes change type halfway
+    spans = []
+    for k, kind in enumerate(types):
+        uses = (*(Use(replace(t, type=kind), mark="solid") for t in c.g.far), *_uses(c.g.roadside))
+        spans.append(Span(length / len(types), k * length / len(types), uses, (), _one_way_centre()))
+    elevation = hermite(z1, g1, z2, g2, length)
+    return Piece(ids.next(), geometry, tuple(spans), c.fs, elevation=elevation, speed=c.road.speed_kmh)
+
+
+def _after(c: _Cut, d: Design, ids: Ids) -> Piece:
+    """C: the road after the merge (a new id; its tail sections and links)."""
+    spans = []
+    at = c.s2
+    for length, uses in _approach(c.g, d, c.s2, merge=True):
+        spans.append(c.span(length, at, uses))
+        at += length
+    spans.append(c.span(c.sec_end - at, at, c.whole))
+    return Piece(
+        ids.next(),
+        cut(c.road.geometry, c.s2)[1],
+        tuple(spans),
+        c.fs,
+        elevation=clip_profile(c.road.elevation, c.s2, c.road.length),
+        tail=tuple(shift_sections(c.road.sections[c.st.section + 1 :], -c.s2)),
+        last_links=tuple(_original_links(c.sec, c.fs, "successor")),
+        speed=c.road.speed_kmh,
+        road_type=c.road.road_type,
+    )
+
+
 def place(doc: Document, st: Stretch, d: Design, centre: float, params: Params, ids: Ids, kind: str) -> Document | None:
     """``doc`` with the structure ``d`` beside stretch ``st`` around road s ``centre``, its joints ``kind``
     ("direct" or "default") junctions (None when the road's lanes do not allow it)."""
     road = st.road
     fs = -1 if params.traffic_rule is TrafficRule.RHT else 1
     sec = road.sections[st.section]
-    sec_end = road.sections[st.section + 1].s if st.section + 1 < len(road.sections) else road.length
     g = lane_groups(sec, sec.s, fs, d, params.lane_width)
     if g is None:
         return None
-    s1, s2 = centre - d.loop / 2, centre + d.loop / 2
-    pre = _approach(g, d, s1, merge=False)
-    post = _approach(g, d, s2, merge=True)
-    pre_len = sum(x for x, _ in pre)
-    whole = _uses(g.inner, g.near, g.far, g.roadside) if not g.added else _uses(g.inner, g.near, g.roadside)
-    back = _uses(g.backward)
-    centre_lane = sec.center
-    # A: the road up to the split
-    a_spans = [Span(s1 - pre_len - sec.s, sec.s, whole, back, centre_lane)]
-    at = s1 - pre_len
-    for length, uses in pre:
-        a_spans.append(Span(length, at, uses, back, centre_lane))
-        at += length
-    a_geo, rest = cut(road.geometry, s1)
-    b_geo, c_geo = cut(rest, s2 - s1)
-    first_links = tuple(_original_links(sec, fs, "predecessor"))
-    last_links = tuple(_original_links(sec, fs, "successor"))
-    a = Piece(
-        road.id,
-        a_geo,
-        tuple(a_spans),
-        fs,
-        start=sec.s,
-        elevation=clip_profile(road.elevation, 0.0, s1),
-        head=road.sections[: st.section],
-        first_links=first_links,
-        speed=road.speed_kmh,
-        road_type=road.road_type,
-    )
-    # B: the road between the joints, without the lanes that leave and the roadside beyond them
-    last = g.near[-1].key
-    b = Piece(
-        ids.next(),
-        b_geo,
-        (Span(s2 - s1, s1, _uses(g.inner, g.near, **{last: "solid"}), back, centre_lane),),
-        fs,
-        elevation=clip_profile(road.elevation, s1, s2),
-        speed=road.speed_kmh,
-        road_type=road.road_type,
-    )
-    # the branch: the far lanes and the roadside, beside the road
-    x, y, hdg = point_on(st.line, s1)
-    t = fs * sum(lane.width for lane in (*g.inner, *g.near))
-    fx, fy = offset(x, y, hdg, t)
-    loop_geo = loop_path(d, fx, fy, hdg, fs)
-    loop_len = length_of(loop_geo)
-    z1, g1 = profile_at(road.elevation, s1)
-    z2, g2 = profile_at(road.elevation, s2)
-    far_types = ("offRamp", "onRamp") if d.kind == "ramp" else ("driving",)  # a ramp's lanes change type halfway
-    halves = []
-    for k, ftype in enumerate(far_types):
-        uses = (*(Use(replace(t_, type=ftype), mark="solid") for t_ in g.far), *_uses(g.roadside))
-        n = len(far_types)
-        halves.append(Span(loop_len / n, k * loop_len / n, uses, (), _one_way_centre()))
-    loop = Piece(
-        ids.next(), loop_geo, tuple(halves), fs, elevation=hermite(z1, g1, z2, g2, loop_len), speed=road.speed_kmh
-    )
-    # C: the road after the merge
-    c_spans = []
-    at = s2
-    for length, uses in post:
-        c_spans.append(Span(length, at, uses, back, centre_lane))
-        at += length
-    c_spans.append(Span(sec_end - at, at, whole, back, centre_lane))
-    c = Piece(
-        ids.next(),
-        c_geo,
-        tuple(c_spans),
-        fs,
-        elevation=clip_profile(road.elevation, s2, road.length),
-        tail=tuple(shift_sections(road.sections[st.section + 1 :], -s2)),
-        last_links=last_links,
-        speed=road.speed_kmh,
-        road_type=road.road_type,
-    )
+    sec_end = road.sections[st.section + 1].s if st.section + 1 < len(road.sections) else road.length
+    c = _Cut(road, st, sec, sec_end, centre - d.loop / 2, centre + d.loop / 2, g, fs)
+    a, b, loop, after = _before(c, d), _between(c, ids), _branch(c, d, ids), _after(c, d, ids)
     rule = params.traffic_rule.value
     j1, j2 = ids.next(), ids.next()
     split = _joint(j1, a, (b, loop), True, kind, rule, ids)
-    b, loop = split.branches
-    merge = _joint(j2, c, (b, loop), False, kind, rule, ids)
+    merge = _joint(j2, after, split.branches, False, kind, rule, ids)
     b, loop = merge.branches
     label = "ramp" if d.kind == "ramp" else "fork"
+    at1, at2 = Link("junction", j1), Link("junction", j2)
     new_roads = [
-        _road(a, rule, "-1", road.predecessor, Link("junction", j1), road.name),
-        _road(b, rule, "-1", Link("junction", j1), Link("junction", j2), f"road {b.id} ({label} main)"),
-        _road(loop, rule, "-1", Link("junction", j1), Link("junction", j2), f"road {loop.id} ({label} branch)"),
-        _road(c, rule, "-1", Link("junction", j2), road.successor, f"road {c.id}"),
+        _keep(_road(a, rule, "-1", road.predecessor, at1, road.name), road, lambda s: s < c.s1, 0.0),
+        _road(b, rule, "-1", at1, at2, f"road {b.id} ({label} main)"),
+        _road(loop, rule, "-1", at1, at2, f"road {loop.id} ({label} branch)"),
+        _keep(_road(after, rule, "-1", at2, road.successor, f"road {after.id}"), road, lambda s: s > c.s2, c.s2),
     ]
-    new_roads[0] = _keep(new_roads[0], road, lambda s: s < s1, 0.0)
-    new_roads[3] = _keep(new_roads[3], road, lambda s: s > s2, s2)
-    made = [*new_roads, *split.roads, *merge.roads]
-    roads = [_renamed(old, road.id, c.id) for old in doc.roads if old.id != road.id]
+    roads = [_renamed(old, road.id, after.id) for old in doc.roads if old.id != road.id]
     at = next(k for k, old in enumerate(doc.roads) if old.id == road.id)
-    roads[at:at] = made
-    junctions = [_renamed_junction(j, road, c.id) for j in doc.junctions] + [split.junction, merge.junction]
+    roads[at:at] = [*new_roads, *split.roads, *merge.roads]
+    junctions = [_renamed_junction(j, road, after.id) for j in doc.junctions] + [split.junction, merge.junction]
     return replace(doc, roads=tuple(roads), junctions=tuple(junctions))
 
 
