@@ -5,7 +5,10 @@ benchmark (``bench_search.py``: 50 distinct valid 7-leg intersections, search 42
     nice python benchmarks/bench_search_kinds.py -o /tmp/bench_kinds   # one process, a few minutes
 
 Each run is a fresh search folder; the search stops when ``-n`` elites meet ``--where`` (distinct cells, so distinct
-maps) or the budget of maps runs out.
+maps) or the budget of maps runs out. Measured (seed 0, -j 1, nice, a shared 2-core machine): forks with split_angle
+< 15: 20 after 224 maps, 126 s; merges with 3+ lanes: 22 after 64 maps, 30 s; ramps under 30 degrees with a taper
+over 100 m: 21 after 192 maps, 39 s. A ramp query on fewer cells than -n (ramp_angle > 45 and taper_length < 60: 18
+cells of the default grid, the genome's tapers starting at 20 m) cannot reach 20: 13 after 448 maps.
 """
 
 from __future__ import annotations
@@ -26,7 +29,7 @@ BUDGET_MAPS, BUDGET_SECONDS = 420, 659.0
 RUNS = (
     ("fork", "split_angle < 15", 20),
     ("fork", "merge == 1 and lanes_in >= 3", 20),
-    ("ramp", "ramp_angle > 45 and taper_length < 60", 20),
+    ("ramp", "ramp_angle < 30 and taper_length > 100", 20),
 )
 
 
