@@ -258,3 +258,17 @@ def test_a_search_of_another_kind_keeps_maps_of_that_kind_measured_from_the_file
             assert value == pytest.approx(float(row[name]), abs=1e-6), name
         assert row["meets_where"] == str(int(predicate({n: float(row[n]) for n in found.measures})))
         assert json.loads((folder / row["file"]).with_suffix(".json").read_text())["kind"] == kind
+
+
+@pytest.mark.slow
+def test_a_fork_search_meets_split_angle_under_15_twenty_times_within_the_7_leg_budget(tmp_path):
+    """Issue 28's acceptance: 20 distinct forks meeting a --where on their own measures within the 7-leg benchmark's
+    budget of maps (420; the count depends only on the seed and settings, not on the machine)."""
+    folder = tmp_path / "forks"
+    args = ["search", "--kind", "fork", "--where", "split_angle < 15", "-n", "20", "--evaluations", "420"]
+    assert main([*args, "-o", str(folder), "-j", "1", "-q", "--no-maps"]) == 0
+    met = [r for r in _archive(folder) if r["meets_where"] == "1"]
+    with open(folder / "search.pkl", "rb") as stream:
+        state = pickle.load(stream)
+    assert len(met) >= 20 and state.evaluated <= 420
+    assert len({r["cell"] for r in met}) == len(met) and all(float(r["split_angle"]) < 15 for r in met)
