@@ -30,8 +30,9 @@ def urban():
     """Five urban maps, random lanes and curved roads, right- and left-hand traffic."""
     out = []
     for seed, rule in [(0, "RHT"), (1, "RHT"), (2, "LHT"), (3, "RHT"), (4, "LHT")]:
+        # forks and ramps off: their branch takes the roadside on its outer side, the island inside has none
         p = Params.create("scenario", randomize_lanes=True, curved_roads=True, traffic_rule=rule)
-        out.append(ja.generate_layout(p, seed))
+        out.append(ja.generate_layout(p.with_(fork_probability=0.0, ramp_probability=0.0), seed))
     return out
 
 

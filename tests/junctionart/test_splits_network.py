@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import junctionart as ja
@@ -134,3 +135,53 @@ def test_probabilities_are_validated(name, capsys):
     option = "--" + name.replace("_", "-")
     assert cli.main(["generate", option, "-0.1", "-o", "/nonexistent/x.xodr"]) == 2
     assert f"{name}=-0.1" in capsys.readouterr().err
+
+
+def _z_and_grade(geometry, road, at_end: bool) -> tuple[float, float]:
+    """Height and grade along s at one end of ``road`` (the grade by a 1 mm step inside the road)."""
+    h = 1e-3
+    s = np.array([road.length - h, road.length]) if at_end else np.array([0.0, h])
+    z = geometry[road.id].elevation(s)
+    return float(z[1] if at_end else z[0]), float((z[1] - z[0]) / h)
+
+
+def test_on_hills_the_structures_follow_their_road_with_z_and_grade_continuous_at_every_link():
+    """The branch's height is a cubic from the road's height and grade at the split to those at the merge, each piece
+    keeps the road's profile, so at every link (a direct junction's joint, a connecting road's ends) height and grade
+    run on (the generator's own junctions stay planar: tests/junctionart/test_terrain.py)."""
+    from xodrcheck.lanes import geometry_of
+    from xodrcheck.model import ContactPoint, ElementType, JunctionType
+
+    for direct in (True, False):
+        params = Params.create(
+            "scenario", terrain="hilly", width=800, height=800, randomize_lanes=True, direct_junctions=direct
+        ).with_(fork_probability=0.8, ramp_probability=0.8)
+        data = ja.to_bytes(ja.generate(params, 3))
+        assert _errors(data) == []
+        doc = read(data).document
+        geo = geometry_of(doc)
+        assert len(_special(data)) >= 4
+        links = 0
+        for road in doc.roads:  # road-to-road links: connecting roads, every junction
+            for link, at_end in ((road.predecessor, False), (road.successor, True)):
+                if link is None or link.element_type is not ElementType.ROAD:
+                    continue
+                other = doc.road_by_id[link.element_id]
+                z0, g0 = _z_and_grade(geo, road, at_end)
+                z1, g1 = _z_and_grade(geo, other, link.contact_point is ContactPoint.END)
+                assert abs(z0 - z1) < 1e-6 and abs(g0 - g1) < 1e-3, (road.id, other.id, z0, z1, g0, g1)
+                links += 1
+        for junction in doc.junctions:  # a direct junction's roads meet at one cross-section
+            if junction.type is not JunctionType.DIRECT:
+                continue
+            ends = [
+                _z_and_grade(geo, road, at_end)
+                for road in doc.roads
+                for link, at_end in ((road.predecessor, False), (road.successor, True))
+                if link is not None and link.element_id == junction.id
+            ]
+            zs, grades = [z for z, _ in ends], [g for _, g in ends]
+            assert len(ends) == 3 and np.ptp(zs) < 1e-6 and np.ptp(grades) < 1e-3, (junction.id, ends)
+            links += 1
+        hills = [float(np.ptp(geo[r.id].elevation(np.linspace(0, r.length, 20)))) for r in doc.roads]
+        assert links >= 8 and max(hills) > 1.0  # on real slopes
