@@ -25,5 +25,10 @@ def dress(doc: Document, layout: Layout, params: Params, seed: int) -> Document:
     if params.junction_control is not JunctionControl.NONE:
         from .signals import add_signals
 
-        doc = add_signals(doc, params, seed, ids)
+        entries = {
+            doc.junctions[j].id: (str(road + 1), contact)
+            for ring in layout.roundabouts
+            for j, (road, contact) in zip(ring.junctions, ring.arms)
+        }
+        doc = add_signals(doc, params, seed, ids, entries)
     return doc
