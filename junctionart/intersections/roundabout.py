@@ -204,14 +204,17 @@ def _turn(offset: float, r: float, rho: float) -> tuple[float, float] | None:
 
 def design(centre: tuple[float, float], legs: list[ArmLeg], spec: RoundaboutSpec, params: Params) -> Design | None:
     """The roundabout of ``spec`` round ``centre`` with ``legs`` as its arms, grown where its arms need room; None
-    when even the largest ring tried does not fit them."""
+    when even the largest ring tried does not fit them. Each gap between neighbouring arms takes the largest turn
+    radius, up to a cap, that leaves a ring road between their junctions; caps are tried from large to small."""
     sense = 1 if params.traffic_rule is TrafficRule.RHT else -1
     radius = max(spec.radius, smallest_radius(spec.lanes, params))
     floor = params.min_turn_radius + 0.5 + params.lane_width + 1.0
+    order = sorted(legs, key=lambda g: (sense * g.angle) % (2 * math.pi))
     while True:
         turns = {max(floor, min(t, radius)) for t in (*(f * radius for f in TURN_FRACTIONS), *TURN_RADII, floor)}
-        for rho in sorted(turns, reverse=True):
-            found = _attempt(centre, legs, radius, spec.lanes, rho, params, sense)
+        candidates = sorted(turns, reverse=True)
+        for cap in candidates:
+            found = _attempt(centre, order, radius, spec.lanes, [t for t in candidates if t <= cap], params, sense)
             if found is not None:
                 return found
         if radius >= spec.largest:
@@ -219,26 +222,50 @@ def design(centre: tuple[float, float], legs: list[ArmLeg], spec: RoundaboutSpec
         radius = min(round(radius * GROWTH, 3), spec.largest)
 
 
+Turn = tuple[float, float]  #: (distance along the arm from the centre, angle from the arm) where a turn meets the ring
+
+
+def _gap_turns(
+    shapes: list[_ArmShape], gaps: list[float], outer: float, island: float, radii: list[float]
+) -> list[tuple[Turn, Turn]] | None:
+    """Per arm, its entry and exit turns: each gap's two turns (the entry of the arm before it, the exit of the arm
+    after it) with the largest of ``radii`` that leaves :data:`MIN_RING` of ring road between them; None when no
+    radius does for some gap."""
+    n = len(shapes)
+    entry: list[Turn | None] = [None] * n
+    leave: list[Turn | None] = [None] * n
+    for k in range(n):
+        a, b = shapes[k], shapes[(k + 1) % n]
+        for rho in radii:
+            e = _turn(a.entries[-1][1] if a.entries else 0.0, outer, rho)
+            x = _turn(b.exit[1] if b.exit else 0.0, outer, rho)
+            if e is not None and x is not None and (gaps[k] - e[1] - x[1]) * island >= MIN_RING:
+                entry[k], leave[(k + 1) % n] = e, x
+                break
+        else:
+            return None
+    return [(e, x) for e, x in zip(entry, leave) if e is not None and x is not None]
+
+
 def _attempt(
-    centre: tuple[float, float], legs: list[ArmLeg], radius: float, lanes: int, rho: float, params: Params, sense: int
+    centre: tuple[float, float],
+    order: list[ArmLeg],
+    radius: float,
+    lanes: int,
+    radii: list[float],
+    params: Params,
+    sense: int,
 ) -> Design | None:
     w = params.lane_width
     island = radius - lanes * w
     outer = island + (lanes - 1) * w  # inner border of the outer ring lane
-    order = sorted(legs, key=lambda g: (sense * g.angle) % (2 * math.pi))
     shapes = [_arm_shape(g, radius, lanes, params, sense) for g in order]
-    turns = []
-    for s in shapes:
-        entry = _turn(s.entries[-1][1] if s.entries else 0.0, outer, rho)
-        leave = _turn(s.exit[1] if s.exit else 0.0, outer, rho)
-        if entry is None or leave is None:
-            return None
-        turns.append((entry, leave))
     n = len(order)
     gaps = [((sense * (order[(k + 1) % n].angle - order[k].angle)) % (2 * math.pi)) for k in range(n)]
-    spans = [gaps[k] - turns[k][0][1] - turns[(k + 1) % n][1][1] for k in range(n)]
-    if min(spans) * island < MIN_RING:
+    turns = _gap_turns(shapes, gaps, outer, island, radii)
+    if turns is None or len(turns) != n:
         return None
+    spans = [gaps[k] - turns[k][0][1] - turns[(k + 1) % n][1][1] for k in range(n)]
     ends = [_reach(s, t, radius, params) for s, t in zip(shapes, turns)]
     reach = [r for r in ends if r is not None]
     if len(reach) != n:
