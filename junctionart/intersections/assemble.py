@@ -24,11 +24,12 @@ from .survey import Survey
 
 
 def _slots(junctions: dict[int, Junction]) -> list[tuple[int, int | None]]:
-    """Every junction plan as (node, arm in driving order, or None for an ordinary junction), in plan order."""
+    """Every junction plan as (node, the roundabout's junction in driving order, or None for an ordinary junction),
+    in plan order."""
     out: list[tuple[int, int | None]] = []
     for node in sorted(junctions):
         ring = junctions[node].ring
-        out.extend([(node, None)] if ring is None else [(node, k) for k in range(len(ring.arms))])
+        out.extend([(node, None)] if ring is None else [(node, k) for k in range(len(ring.junctions))])
     return out
 
 
@@ -84,9 +85,9 @@ def _connection(keys: list[LegKey], r: LinkFit) -> ConnectionPlan:
 
 
 def _arm_plan(j: Junction, k: int, base: int) -> JunctionPlan:
-    """The junction of a roundabout's ``k``-th arm (in driving order): the ring's lanes past it, entry and exit."""
-    assert j.ring is not None  # only roundabouts have arms
-    arm, n = j.ring.arms[k], len(j.ring.arms)
+    """A roundabout's ``k``-th junction (in driving order): the ring's lanes past it, its arms' entries and exits."""
+    assert j.ring is not None  # only roundabouts have ring junctions
+    junction, n = j.ring.junctions[k], len(j.ring.junctions)
 
     def road(role: RoadRole, incoming: bool) -> tuple[int, str]:
         kind, i = role
@@ -96,10 +97,10 @@ def _arm_plan(j: Junction, k: int, base: int) -> JunctionPlan:
         return base + i % n, "end" if incoming else "start"
 
     conns = []
-    for link in arm.links:
+    for link in junction.links:
         (a, ca), (b, cb) = road(link.road_in, True), road(link.road_out, False)
         conns.append(ConnectionPlan(a, ca, link.lane_in, b, cb, link.lane_out, link.geometry, link.min_radius))
-    return JunctionPlan(j.node, arm.position, 3, tuple(conns))
+    return JunctionPlan(j.node, junction.position, 2 + len(junction.arms), tuple(conns))
 
 
 def road_plans(view: Survey, roads: list[Road], junctions: dict[int, Junction]) -> list[RoadPlan]:
@@ -107,7 +108,13 @@ def road_plans(view: Survey, roads: list[Road], junctions: dict[int, Junction]) 
     roads of the roundabouts."""
     slots = _slots(junctions)
     index = {slot: n for n, slot in enumerate(slots)}
-    arm_of = {j.keys[arm.leg]: k for j in junctions.values() if j.ring is not None for k, arm in enumerate(j.ring.arms)}
+    arm_of = {
+        j.keys[arm.leg]: k
+        for j in junctions.values()
+        if j.ring is not None
+        for k, ring_junction in enumerate(j.ring.junctions)
+        for arm in ring_junction.arms
+    }
 
     def junction_at(node: int, key: LegKey) -> int | None:
         if not view.is_junction(node):
@@ -158,8 +165,12 @@ def roundabout_plans(view: Survey, junctions: dict[int, Junction]) -> list[Round
     for node in sorted(bases):
         j = junctions[node]
         assert j.ring is not None  # bases holds roundabouts only
-        arms = tuple((j.keys[a.leg].chain, contact_point(j.keys[a.leg].at_start)) for a in j.ring.arms)
-        n = len(j.ring.arms)
+        n = len(j.ring.junctions)
+        arms = tuple(
+            (j.keys[a.leg].chain, contact_point(j.keys[a.leg].at_start), index[(node, k)])
+            for k, ring_junction in enumerate(j.ring.junctions)
+            for a in ring_junction.arms
+        )
         out.append(
             RoundaboutPlan(
                 node,

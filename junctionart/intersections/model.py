@@ -66,9 +66,10 @@ class RoundaboutPlan:
     centre: tuple[float, float]
     radius: float  #: outer radius of the circulating carriageway (m)
     lanes: int  #: circulating lanes
-    junctions: tuple[int, ...]  #: indexes into Layout.junctions, one per arm
+    junctions: tuple[int, ...]  #: indexes into Layout.junctions, in driving order (one per arm, or two arms' shared)
     ring_roads: tuple[int, ...]  #: indexes into Layout.roads: ring road k runs from junctions[k] to junctions[k + 1]
-    arms: tuple[tuple[int, str], ...]  #: (road index, contact point) of each arm, as ``junctions``
+    #: each arm in driving order: (road index, contact point, index into Layout.junctions of its junction)
+    arms: tuple[tuple[int, str, int], ...]
 
 
 @dataclass(frozen=True)

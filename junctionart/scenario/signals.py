@@ -81,10 +81,10 @@ class Approach:
 
 
 def add_signals(
-    doc: Document, params: Params, seed: int, ids: Ids, entries: dict[str, tuple[str, str]] | None = None
+    doc: Document, params: Params, seed: int, ids: Ids, entries: dict[str, list[tuple[str, str]]] | None = None
 ) -> Document:
     """``doc`` with the control of every junction of 3+ legs: signals on the incoming roads, controllers.
-    ``entries``: the arm (road id, contact point) of each roundabout arm junction, by junction id."""
+    ``entries``: the arms (road id, contact point) of each junction of a roundabout, by junction id."""
     entries = entries or {}
     rng = np.random.default_rng([seed, 16])
     roads = {r.id: r for r in doc.roads}
@@ -201,13 +201,13 @@ def _junction_signals(
 
 
 def _roundabout_signals(
-    entry: tuple[str, str], movements: dict[LaneKey, list[Road]], roads: dict[str, Road], params: Params, ids: Ids
+    arms: list[tuple[str, str]], movements: dict[LaneKey, list[Road]], roads: dict[str, Road], params: Params, ids: Ids
 ) -> _Made:
-    """A roundabout's arm junction: on the arm's entry the yield sign over the roundabout sign, and the yield line."""
+    """A roundabout's junction: on each arm's entry the yield sign over the roundabout sign, and the yield line."""
     made = _Made()
     cat = COUNTRIES[params.country]
     for a in _approaches(movements, roads):
-        if (a.road.id, a.contact) != entry:
+        if (a.road.id, a.contact) not in arms:
             continue  # the ring: circulating traffic has priority
         low = _sign(a, cat.roundabout, ids.next)
         made.signals.append((a.road.id, low))

@@ -173,7 +173,7 @@ def test_two_way_arms_end_in_a_splitter_island(singles):
     for spec, built, data in singles:
         doc = read(data).document
         width = splitter_width(built.roundabout.radius)
-        for road_index, contact in built.roundabout.arms:
+        for road_index, contact, _ in built.roundabout.arms:
             road = doc.road_by_id[str(road_index + 1)]
             section = road.lane_sections[-1 if contact == "end" else 0]
             (median,) = [lane for lane in section.lanes if lane.type is LaneType.MEDIAN]
@@ -254,7 +254,7 @@ def test_every_entry_yields_in_the_scenario_profile(generated):
         for ring in result.layout.roundabouts:
             for k in ring.ring_roads:
                 assert doc.roads[k].signals == ()
-            for road_index, contact in ring.arms:
+            for road_index, contact, _ in ring.arms:
                 road = doc.roads[road_index]
                 near = [s for s in road.signals if (s.s < 5.0 if contact == "start" else s.s > road.length - 5.0)]
                 assert sorted(s.type for s in near) == ["205", "215", "341"], road.id

@@ -158,7 +158,7 @@ def test_a_generated_roundabout_is_recognised_as_generated():
     built = build(IntersectionSpec(legs, roundabout_radius=24.0, roundabout_lanes=2))
     doc = read(junctionart.to_bytes(built.document)).document
     (found,) = structures.map_structures(doc)
-    assert found.kind == "roundabout" and len(found.junctions) == 4
+    assert found.kind == "roundabout" and len(found.junctions) == len(built.roundabout.junctions) >= 3
     assert found.measures == pytest.approx(
         {"arms": 4, "radius": built.roundabout.radius, "ring_lanes": 2, "arm_angle": 60.0}, abs=0.05
     )
