@@ -245,20 +245,29 @@ def test_roundabouts_are_reproducible_and_cost_the_paper_maps_nothing():
 
 
 def test_every_entry_yields_in_the_scenario_profile(generated):
-    """The arm road of each roundabout junction carries the yield sign 205, the roundabout sign 215 and the yield
-    line 341 at its end, valid for the entry lanes; no ring road carries a signal."""
+    """Each road meeting a roundabout's junction that is not a ring road (an arm: its approach, the piece next to the
+    ring when a fork or ramp split the arm's road) carries the yield sign 205, the roundabout sign 215 and the yield
+    line 341 at that end for its entry lanes; no ring road carries a signal."""
     for params, result, _ in generated:
         if params.junction_control.value == "none":
             continue
         doc = result.document
         for ring in result.layout.roundabouts:
-            for k in ring.ring_roads:
-                assert doc.roads[k].signals == ()
-            for road_index, contact, _ in ring.arms:
-                road = doc.roads[road_index]
-                near = [s for s in road.signals if (s.s < 5.0 if contact == "start" else s.s > road.length - 5.0)]
+            ring_ids = {str(k + 1) for k in ring.ring_roads}
+            junction_ids = {doc.junctions[j].id for j in ring.junctions}
+            assert all(doc.road(rid).signals == () for rid in ring_ids)
+            arms = [
+                (road, end)
+                for road in doc.roads
+                if road.junction == "-1" and road.id not in ring_ids
+                for link, end in ((road.predecessor, "start"), (road.successor, "end"))
+                if link is not None and link.element_type == "junction" and link.element_id in junction_ids
+            ]
+            assert len(arms) == len(ring.arms)
+            for road, end in arms:
+                near = [s for s in road.signals if (s.s < 5.0 if end == "start" else s.s > road.length - 5.0)]
                 assert sorted(s.type for s in near) == ["205", "215", "341"], road.id
-                assert {s.orientation for s in near} == {"-" if contact == "start" else "+"}
+                assert {s.orientation for s in near} == {"-" if end == "start" else "+"}
 
 
 def test_a_control_line_file_puts_roundabouts_where_it_asks(tmp_path):
