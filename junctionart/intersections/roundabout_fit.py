@@ -1,13 +1,14 @@
 """Fitting a roundabout's junctions round its ring (:mod:`.roundabout` says what is built and why).
 
 For one outer radius and a list of entry/exit turn radii: each gap between neighbouring arms (in driving order) takes
-the largest turn radius that leaves :data:`MIN_RING` of ring road between the entry of the arm before it and the exit
-of the arm after it. Two arms whose gap leaves no ring road at any turn radius share one junction: the first arm's
-entry then runs to where that junction ends (past the second arm's), the second arm's exit starts where it begins
-(before the first arm's). A junction holds at most two arms, and the ring at least :data:`MIN_JUNCTIONS` junctions
-(what SUMO's ``netconvert`` needs to call the loop a roundabout). The connection lanes are Hermite cubics checked
-against the radius bound, lanes from one road must not cross (xodrcheck's J101), and a shared junction's long entry
-and exit never run further from the centre than their arm's end, so they pass inside the other arm's road end.
+the largest turn radius that leaves :data:`MIN_RING` of ring road between the entry of the arm before it and the exit of
+the arm after it. Two arms whose gap leaves no ring road at any turn radius share one junction: the first arm's entry
+then runs to where that junction ends (past the second arm's), the second arm's exit starts where it begins (before the
+first arm's). A junction holds at most two arms and takes at most :data:`MAX_SPAN` of the ring, and the ring has at
+least :data:`MIN_JUNCTIONS` junctions (what SUMO's ``netconvert`` needs to call the loop a roundabout). The connection
+lanes are Hermite cubics checked against the radius bound, lanes from one road must not cross (xodrcheck's J101), and a
+shared junction's long entry and exit never run further from the centre than their arm's end, so they pass inside the
+other arm's road end.
 """
 
 from __future__ import annotations
@@ -29,6 +30,9 @@ from .roundabout import Arm, ArmLeg, Design, RingJunction, RingLink, ring_arc, s
 MIN_RING = 3.0
 #: Fewest junctions round a ring.
 MIN_JUNCTIONS = 3
+#: Widest sector (rad) of the ring one junction may take: the ring turns by that much inside it, and SUMO's
+#: ``netconvert`` takes a turn of 90 degrees or more between two edges for a corner, not a roundabout.
+MAX_SPAN = math.radians(80.0)
 #: Straight lead (m) of an arm beyond the start of its entry and exit turns.
 LEAD = 2.0
 #: Angle (rad) an arm's body keeps inside its junction's sector of the ring.
@@ -228,6 +232,8 @@ def _junctions(
         first, last = plan.order[group[0]], plan.order[group[-1]]
         enter = last.g.angle + sense * plan.entry[group[-1]][1]
         leave = first.g.angle - sense * plan.leave[group[0]][1]
+        if (sense * (enter - leave)) % (2 * math.pi) > MAX_SPAN:
+            return None
         bounds.append((enter, leave))
     targets, rows = [], []  # Hermite targets and (junction, arm, kind, lane in, lane out, start pose, long)
     for jn, group in enumerate(plan.groups):
