@@ -219,84 +219,122 @@ def _reaches(plan: _Plan, radius: float, params: Params) -> list[float] | None:
     return out
 
 
-def _junctions(
-    centre: tuple[float, float], plan: _Plan, reach: list[float], island: float, lanes: int, params: Params, sense: int
-) -> list[RingJunction] | None:
-    """Every junction with its connection lanes, or None when one misses the radius bound, two lanes from one road
-    cross, or a shared junction's long entry or exit runs beyond its arm's end."""
-    w, rule = params.lane_width, params.traffic_rule
-    ring_lane = [lane_id(True, j, False, rule) for j in range(1, lanes + 1)]
-    radii = [island + j * w for j in range(lanes)]
-    bounds = []  # (enter, leave) of each junction
+@dataclass(frozen=True)
+class _Ring:
+    """What every junction of one ring shares: centre, island, lanes (ids and inner-border radii), driving sense."""
+
+    centre: tuple[float, float]
+    island: float
+    width: float
+    sense: int
+    ids: tuple[int, ...]  #: lane id of ring lane 1 (next to the island) .. n
+    radii: tuple[float, ...]  #: inner border of ring lane 1 .. n
+
+    def point(self, j: int, angle: float) -> tuple[float, float]:
+        """Where ring lane ``j`` (from 1) has its inner border at ``angle``."""
+        return self.centre[0] + self.radii[j - 1] * math.cos(angle), self.centre[1] + self.radii[j - 1] * math.sin(
+            angle
+        )
+
+
+def _bounds(plan: _Plan, sense: int) -> list[tuple[float, float]] | None:
+    """(enter, leave) angles of each junction; None when one would take more than :data:`MAX_SPAN` of the ring."""
+    out = []
     for group in plan.groups:
         first, last = plan.order[group[0]], plan.order[group[-1]]
         enter = last.g.angle + sense * plan.entry[group[-1]][1]
         leave = first.g.angle - sense * plan.leave[group[0]][1]
         if (sense * (enter - leave)) % (2 * math.pi) > MAX_SPAN:
             return None
-        bounds.append((enter, leave))
-    targets, rows = [], []  # Hermite targets and (junction, arm, kind, lane in, lane out, start pose, long)
+        out.append((enter, leave))
+    return out
+
+
+def _rows(ring: _Ring, plan: _Plan, reach: list[float], bounds: list[tuple[float, float]]) -> tuple[list, list]:
+    """Every entry and exit to fit: its Hermite target, and (junction, arm, kind, lane in, lane out, start pose, long:
+    whether it crosses a shared junction)."""
+    w, lanes = ring.width, len(ring.ids)
+    targets, rows = [], []
     for jn, group in enumerate(plan.groups):
         enter, leave = bounds[jn]
         for i in group:
             s = plan.order[i]
             phi, hdg = s.g.angle, s.g.angle if s.g.at_start else s.g.angle + math.pi
-            ax, ay = centre[0] + reach[i] * math.cos(phi), centre[1] + reach[i] * math.sin(phi)
+            ax, ay = ring.centre[0] + reach[i] * math.cos(phi), ring.centre[1] + reach[i] * math.sin(phi)
             for m, (lid, _) in enumerate(s.entries):
                 j = lanes - (len(s.entries) - 1 - m)  # the kerb lane joins the outer ring lane
                 x0, y0 = border_point(ax, ay, hdg, inner_offset(lid, s.splitter > 0, w, s.splitter))
-                x1, y1 = centre[0] + radii[j - 1] * math.cos(enter), centre[1] + radii[j - 1] * math.sin(enter)
-                h0 = phi + math.pi
-                targets.append(local_target(x0, y0, h0, x1, y1, enter + sense * math.pi / 2))
-                rows.append((jn, i, "entry", lid, ring_lane[j - 1], (x0, y0, h0), i != group[-1]))
+                x1, y1 = ring.point(j, enter)
+                targets.append(local_target(x0, y0, phi + math.pi, x1, y1, enter + ring.sense * math.pi / 2))
+                rows.append((jn, i, "entry", lid, ring.ids[j - 1], (x0, y0, phi + math.pi), i != group[-1]))
             if s.exit is not None:
                 lid = s.exit[0]
                 x1, y1 = border_point(ax, ay, hdg, inner_offset(lid, s.splitter > 0, w, s.splitter))
-                x0, y0 = centre[0] + radii[-1] * math.cos(leave), centre[1] + radii[-1] * math.sin(leave)
-                h0 = leave + sense * math.pi / 2
+                x0, y0 = ring.point(lanes, leave)
+                h0 = leave + ring.sense * math.pi / 2
                 targets.append(local_target(x0, y0, h0, x1, y1, phi))
-                rows.append((jn, i, "exit", ring_lane[-1], lid, (x0, y0, h0), i != group[0]))
+                rows.append((jn, i, "exit", ring.ids[-1], lid, (x0, y0, h0), i != group[0]))
+    return targets, rows
+
+
+def _junctions(
+    centre: tuple[float, float], plan: _Plan, reach: list[float], island: float, lanes: int, params: Params, sense: int
+) -> list[RingJunction] | None:
+    """Every junction with its connection lanes, or None when one takes too much of the ring, misses the radius
+    bound, has two lanes from one road crossing, or a long entry or exit of a shared junction strays outward."""
+    w, rule = params.lane_width, params.traffic_rule
+    ring = _Ring(
+        centre,
+        island,
+        w,
+        sense,
+        tuple(lane_id(True, j, False, rule) for j in range(1, lanes + 1)),
+        tuple(island + j * w for j in range(lanes)),
+    )
+    bounds = _bounds(plan, sense)
+    if bounds is None:
+        return None
+    targets, rows = _rows(ring, plan, reach, bounds)
     side = -1.0 if rule is TrafficRule.RHT else 1.0
     fits = fit_connections(
         np.array(targets).reshape(-1, 3), (side * w / 2, side * w), params.min_turn_radius + 0.5, SCALES
     )
     if any(f is None for f in fits) or _cross(rows, fits) or _strays(centre, rows, fits):
         return None
-    out = []
+    return [_junction(ring, plan, reach, jn, bounds[jn], rows, fits) for jn in range(len(plan.groups))]
+
+
+def _junction(
+    ring: _Ring,
+    plan: _Plan,
+    reach: list[float],
+    jn: int,
+    bound: tuple[float, float],
+    rows: list,
+    fits: list[HermiteFit | None],
+) -> RingJunction:
+    """Junction ``jn``: the ring's lanes through it (arcs), its arms' entries and exits, its arms."""
+    enter, leave = bound
     n = len(plan.groups)
-    for jn, group in enumerate(plan.groups):
-        enter, leave = bounds[jn]
-        before, after = ("ring", (jn - 1) % n), ("ring", jn)
-        span = (sense * (enter - leave)) % (2 * math.pi)
-        links = [
-            RingLink(
-                "through",
-                before,
-                ring_lane[j],
-                after,
-                ring_lane[j],
-                ring_arc(centre, radii[j], leave, span, sense),
-                radii[j],
-            )
-            for j in range(lanes)
-        ]
-        for (junction, i, kind, lid_in, lid_out, (x0, y0, h0), _), fit in zip(rows, fits):
-            if junction != jn or fit is None:
-                continue
-            arm = ("arm", plan.order[i].g.leg)
-            road_in, road_out = (arm, after) if kind == "entry" else (before, arm)
-            links.append(
-                RingLink(kind, road_in, lid_in, road_out, lid_out, connection_geometry(x0, y0, h0, fit), fit.min_radius)
-            )
-        arms = tuple(
-            Arm(plan.order[i].g.leg, reach[i], plan.order[i].n_in, plan.order[i].n_out, plan.order[i].splitter)
-            for i in group
-        )
-        middle = island + lanes * w / 2
-        mid = leave + sense * span / 2
-        position = (centre[0] + middle * math.cos(mid), centre[1] + middle * math.sin(mid))
-        out.append(RingJunction(arms, enter, leave, tuple(links), position))
-    return out
+    before, after = ("ring", (jn - 1) % n), ("ring", jn)
+    span = (ring.sense * (enter - leave)) % (2 * math.pi)
+    links = [
+        RingLink("through", before, lid, after, lid, ring_arc(ring.centre, r, leave, span, ring.sense), r)
+        for lid, r in zip(ring.ids, ring.radii)
+    ]
+    for (junction, i, kind, lid_in, lid_out, (x0, y0, h0), _), fit in zip(rows, fits):
+        if junction != jn or fit is None:
+            continue
+        arm = ("arm", plan.order[i].g.leg)
+        road_in, road_out = (arm, after) if kind == "entry" else (before, arm)
+        geometry = connection_geometry(x0, y0, h0, fit)
+        links.append(RingLink(kind, road_in, lid_in, road_out, lid_out, geometry, fit.min_radius))
+    shapes = [(plan.order[i], reach[i]) for i in plan.groups[jn]]
+    arms = tuple(Arm(s.g.leg, r, s.n_in, s.n_out, s.splitter) for s, r in shapes)
+    middle = ring.island + len(ring.ids) * ring.width / 2
+    mid = leave + ring.sense * span / 2
+    position = (ring.centre[0] + middle * math.cos(mid), ring.centre[1] + middle * math.sin(mid))
+    return RingJunction(arms, enter, leave, tuple(links), position)
 
 
 def _cross(rows: list, fits: list[HermiteFit | None]) -> bool:
