@@ -138,23 +138,25 @@ def _groups(draw, min_lines, max_lines, extent, relations, max_lanes, lanes, as_
         lines.extend(draw(_pair(relation, extent, max_lanes, lanes, y)))
         y += 0.7 * extent + 150.0
     angle, dx, dy = draw(st.floats(-math.pi, math.pi)), draw(st.floats(-1e4, 1e4)), draw(st.floats(-1e4, 1e4))
+    rotated = [_rotate(pts, angle, dx, dy) for pts, _, _ in lines]
     data = {
         "lines": [
             {
                 "id": f"c{i}",
-                "points": _rotate(pts, angle, dx, dy),
+                "points": points,
                 "group": i // 2,
                 **({"lanes": list(conf)} if conf else {}),
                 **structures,
             }
-            for i, (pts, conf, structures) in enumerate(lines)
+            for i, (points, (_, conf, structures)) in enumerate(zip(rotated, lines))
         ],
         "pairs": [[f"c{i}", f"c{i + 1}"] for i in range(0, len(lines), 2)],
     }
     if draw(st.booleans()):  # roundabouts asked for at points of the lines (the nearest junction, if any, gets one)
+        ends = [points[k] for points in rotated for k in (0, 1)]
         data["roundabouts"] = [
             {
-                "at": draw(st.sampled_from(data["lines"]))["points"][draw(st.integers(0, 1))],
+                "at": draw(st.sampled_from(ends)),
                 **({"radius": draw(st.floats(6.0, 80.0))} if draw(st.booleans()) else {}),
                 **({"lanes": draw(st.integers(1, 2))} if draw(st.booleans()) else {}),
             }
