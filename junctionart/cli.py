@@ -383,14 +383,17 @@ COMMANDS: dict[str, tuple[str, str | None, Callable[[argparse.ArgumentParser], N
         _add_era,
     ),
     "intersection": (
-        "one intersection from explicit legs (headings, lanes in and out, medians, bends), or a fork, merge or ramp",
+        "one intersection from explicit legs (headings, lanes in and out, medians, bends), a roundabout of them, or a "
+        "fork, merge or ramp",
         "Write a small map with one intersection described leg by leg (--leg) or as JSON (--spec), built by the "
-        "generator's intersection stage: the junction and an approach road per leg. A fork, merge or ramp instead: "
-        "--preset (yosemite: the paper's one-way, two-lane road splitting in two) or --spec with a kind.",
+        "generator's intersection stage: the junction and an approach road per leg; with --roundabout RADIUS[:LANES] a "
+        "roundabout whose arms the legs are. A fork, merge or ramp instead: --preset (yosemite: the paper's one-way, "
+        "two-lane road splitting in two) or --spec with a kind.",
         _add_intersection,
     ),
     "search": (
-        "quality-diversity search (MAP-Elites, pyribs) for intersections, forks or ramps across chosen metrics",
+        "quality-diversity search (MAP-Elites, pyribs) for intersections, forks, ramps or roundabouts across chosen "
+        "metrics",
         "Fill an archive of intersections spanning two or three metrics with MAP-Elites (needs the [search] extra); "
         "stop at a budget or when -n elites meet --where. Writes archive.csv, heatmaps, report.md and the elites' "
         ".xodr (resumable).",
