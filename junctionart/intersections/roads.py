@@ -21,7 +21,7 @@ from ..params import Params
 from .legs import MAX_LEGS, LegKey
 from .planning import Junction, Reach
 from .roadshape import Contact, EndLanes, Misfit, RoadShape, RoadSpec, contact, shape_road
-from .roundabout import splitter_spans
+from .roundabout import SPLITTER_CLEAR, splitter_spans
 from .survey import Survey
 
 MIN_ROAD = 5.0  #: shortest road written between two junctions (beyond its lane tapers)
@@ -90,7 +90,7 @@ def _spec(
     view: Survey, c: int, ends: dict[LegKey, EndLanes], params: Params, splitters: dict[LegKey, float] | None = None
 ) -> RoadSpec:
     """Chain ``c``'s lanes; a dead end keeps the middle's counts. It needs room for both tapers and a piece between,
-    and for the splitter island at a roundabout's end."""
+    and for the splitter island at a roundabout's end and :data:`SPLITTER_CLEAR` beside it."""
     cfg = view.lanes(c)
     mid = EndLanes(cfg.forward, cfg.backward)
     start, end = ends.get(LegKey(c, True), mid), ends.get(LegKey(c, False), mid)
@@ -99,7 +99,8 @@ def _spec(
         return RoadSpec(c, cfg, start, end, need)
     first, last = splitters.get(LegKey(c, True), 0.0), splitters.get(LegKey(c, False), 0.0)
     median = params.median_width if cfg.median else 0.0
-    need += sum(length for w in (first, last) for length, _ in splitter_spans(w, median, params))
+    island = sum(length for w in (first, last) for length, _ in splitter_spans(w, median, params))
+    need += island + (SPLITTER_CLEAR if island > 0.0 else 0.0)
     return RoadSpec(c, cfg, start, end, need, first, last)
 
 

@@ -40,6 +40,10 @@ TURN_FRACTIONS = (1.0, 0.75, 0.55, 0.4)
 TURN_RADII = (16.0, 12.0)
 #: Length (m) of the splitter island's full-width part at the end of a two-way arm.
 SPLITTER_LENGTH = 10.0
+#: Room (m) an arm road keeps clear of its splitter island: what the junction at its other end puts on it (a stop line
+#: up to 6 m back behind a crosswalk, a traffic light) then lies in a lane section of its own, where simulators that
+#: split roads at lane sections (SUMO) look for it.
+SPLITTER_CLEAR = 10.0
 
 
 def splitter_width(radius: float) -> float:
