@@ -48,34 +48,62 @@ def _taper(a: float, b: float, length: float) -> Cubic:
 
 @dataclass(frozen=True)
 class _Span:
-    """A stretch of a road from ``s0`` to ``s1`` and its (forward, backward) lane counts at both ends."""
+    """A stretch of a road from ``s0`` to ``s1``, its (forward, backward) lane counts at both ends and the width of
+    its median lane at both ends (None: no median lane)."""
 
     s0: float
     s1: float
     start: tuple[int, int]  # (forward, backward) lanes at s0
     end: tuple[int, int]
+    median: tuple[float, float] | None = None
 
 
 def _spans(rp: RoadPlan, params: Params) -> list[_Span]:
+    """The road's lane sections: the middle, a taper at each end whose lane counts differ, and at a roundabout's end
+    the splitter island (a median widening to its width, then keeping it to the end)."""
     mid = (rp.lanes.forward, rp.lanes.backward)
     first, last = (rp.fwd_start, rp.bwd_start), (rp.fwd_end, rp.bwd_end)
-    s1 = taper_length(params, first, mid)
-    s2 = rp.length - taper_length(params, last, mid)
+    base = (params.median_width, params.median_width) if rp.lanes.median else None
+    head = _splitter(rp.splitter_start, base, params)
+    tail = _splitter(rp.splitter_end, base, params)
+    a, b = sum(length for length, _ in head), rp.length - sum(length for length, _ in tail)
+    s1 = a + taper_length(params, first, mid)
+    s2 = b - taper_length(params, last, mid)
     spans = []
-    if s1 > 0:
-        spans.append(_Span(0.0, s1, first, mid))
-    spans.append(_Span(s1, s2, mid, mid))
-    if s2 < rp.length:
-        spans.append(_Span(s2, rp.length, mid, last))
+    s = 0.0
+    for length, widths in reversed(head):  # from the road's start: full width, then narrowing
+        spans.append(_Span(s, s + length, first, first, (widths[1], widths[0])))
+        s += length
+    if s1 > a:
+        spans.append(_Span(a, s1, first, mid, base))
+    spans.append(_Span(s1, s2, mid, mid, base))
+    if s2 < b:
+        spans.append(_Span(s2, b, mid, last, base))
+    s = b
+    for length, widths in tail:
+        spans.append(_Span(s, s + length, last, last, widths))
+        s += length
     return spans
+
+
+def _splitter(
+    width: float, base: tuple[float, float] | None, params: Params
+) -> list[tuple[float, tuple[float, float]]]:
+    """A splitter island at one end of a road (:func:`junctionart.intersections.roundabout.splitter_spans`)."""
+    if width <= 0.0:
+        return []
+    from .intersections.roundabout import splitter_spans
+
+    return splitter_spans(width, base[0] if base is not None else 0.0, params)
 
 
 def _marks(kind: str, color: str, s0: float, s1: float, rp: RoadPlan, taper: bool = False) -> tuple[RoadMark, ...]:
     """Marks of one border over [s0, s1): ``kind`` in the open, solid within reach of a junction, except beside a
-    lane that opens or closes there (``taper``): its traffic crosses that line to enter or leave it."""
+    lane that opens or closes there (``taper``): its traffic crosses that line to enter or leave it; broken all round
+    a roundabout's ring, whose lanes are changed between its junctions."""
     if kind == "solid":
         return (RoadMark(0.0, "solid", color, lane_change="none"),)
-    if taper:
+    if taper or rp.ring:
         return (RoadMark(0.0, kind, color, lane_change="both"),)
     cuts: list[tuple[float, str]] = []
     near0 = SOLID_NEAR_JUNCTION if rp.start_junction is not None else 0.0
@@ -91,8 +119,10 @@ def _marks(kind: str, color: str, s0: float, s1: float, rp: RoadPlan, taper: boo
 
 
 def _section(rp: RoadPlan, span: _Span, params: Params, prev: _Span | None, nxt: _Span | None) -> LaneSection:
-    w, mw, rule = params.lane_width, params.median_width, params.traffic_rule
-    median = rp.lanes.median
+    w, rule = params.lane_width, params.traffic_rule
+    median = span.median is not None
+    prev_median = prev is not None and prev.median is not None
+    next_median = nxt is not None and nxt.median is not None
     L = span.s1 - span.s0
     lanes_by_side: dict[int, list[Lane]] = {1: [], -1: []}
     for forward, idx in ((True, 0), (False, 1)):
@@ -102,22 +132,22 @@ def _section(rp: RoadPlan, span: _Span, params: Params, prev: _Span | None, nxt:
         for k in range(1, n + 1):
             lid = lane_id(forward, k, median, rule)
             wa, wb = (w if k <= a else 0.0), (w if k <= b else 0.0)
-            pred = lid if prev is not None and k <= max(prev.start[idx], prev.end[idx]) and wa > 0 else None
-            succ = lid if nxt is not None and k <= max(nxt.start[idx], nxt.end[idx]) and wb > 0 else None
+            pred = _linked(prev, idx, k, wa, forward, prev_median, rule)
+            succ = _linked(nxt, idx, k, wb, forward, next_median, rule)
             outer = k == n
             kind = "solid" if outer else "broken"
             marks = _marks(kind, "standard", span.s0, span.s1, rp, taper=k + 1 in changing)
             lanes_by_side[1 if lid > 0 else -1].append(Lane(lid, "driving", (_taper(wa, wb, L),), marks, pred, succ))
-    if median:
-        has_prev, has_next = prev is not None, nxt is not None
+    if span.median is not None:
+        m0, m1 = span.median
         lanes_by_side[1].append(
             Lane(
                 1,
                 "median",
-                (Cubic(0.0, mw),),
+                (_taper(m0, m1, L),),
                 (RoadMark(0.0, "solid", "yellow"),),
-                1 if has_prev else None,
-                1 if has_next else None,
+                1 if prev_median else None,
+                1 if next_median else None,
             )
         )
     if params.roadside is not Roadside.NONE:
@@ -138,13 +168,23 @@ def _section(rp: RoadPlan, span: _Span, params: Params, prev: _Span | None, nxt:
     return LaneSection(span.s0, left, centre, right)
 
 
+def _linked(
+    other: _Span | None, idx: int, k: int, width: float, forward: bool, median: bool, rule: TrafficRule
+) -> int | None:
+    """The id of driving lane ``k`` in the neighbouring section ``other`` (None when it has no such lane or this lane
+    has no width at their boundary)."""
+    if other is None or k > max(other.start[idx], other.end[idx]) or width <= 0:
+        return None
+    return lane_id(forward, k, median, rule)
+
+
 def _inner(rp: RoadPlan, span: _Span, side: int, params: Params) -> int:
     """Lanes of one side (+1 left, -1 right) of ``span`` inside its roadside: driving lanes, and the median on the
     left."""
     forward = forward_side(params.traffic_rule) == side
     idx = 0 if forward else 1
     n = max(span.start[idx], span.end[idx])
-    return n + (1 if side > 0 and rp.lanes.median else 0)
+    return n + (1 if side > 0 and span.median is not None else 0)
 
 
 def _road(rp: RoadPlan, rid: str, junction_ids: list[str], params: Params) -> Road:
@@ -164,8 +204,8 @@ def _road(rp: RoadPlan, rid: str, junction_ids: list[str], params: Params) -> Ro
         params.traffic_rule.value,
         pred,
         succ,
-        name=f"road {rid}",
-        speed_kmh=ROAD_SPEED,
+        name=f"road {rid}" if not rp.ring else f"roundabout ring road {rid}",
+        speed_kmh=ROAD_SPEED if not rp.ring else JUNCTION_SPEED,
     )
 
 

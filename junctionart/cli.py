@@ -172,6 +172,13 @@ OPTIONS = [
         "forks and ramps meet their road at direct junctions (OpenDRIVE 1.7+); false: default junctions with "
         "connecting roads (CARLA and SUMO read no direct junction)",
     ),
+    (
+        "--roundabout-probability",
+        "roundabout_probability",
+        float,
+        "chance that a junction of 3 to 6 legs becomes a roundabout (a one-way ring of 1 or 2 lanes, a junction per "
+        "arm, splitter islands on two-way arms)",
+    ),
 ]
 
 
@@ -207,7 +214,8 @@ def _add_generate(p: argparse.ArgumentParser) -> None:
         default=None,
         help="paper (default): the JunctionArt paper's maps, byte for byte as before; scenario: a test map with "
         "what scenarios need (urban roadside, junction control auto, overpass probability 0.5, fork probability 0.15 "
-        "and ramp probability 0.1 on default junctions); options given as well override the profile",
+        "and ramp probability 0.1 on default junctions, roundabout probability 0.25); options given as well override "
+        "the profile",
     )
     p.add_argument("-q", "--quiet", action="store_true", help="no summary line, no progress bar")
     p.add_argument("-v", "--verbose", action="store_true", help="list each repair the generator made, on stderr")
@@ -375,14 +383,17 @@ COMMANDS: dict[str, tuple[str, str | None, Callable[[argparse.ArgumentParser], N
         _add_era,
     ),
     "intersection": (
-        "one intersection from explicit legs (headings, lanes in and out, medians, bends), or a fork, merge or ramp",
+        "one intersection from explicit legs (headings, lanes in and out, medians, bends), a roundabout of them, or a "
+        "fork, merge or ramp",
         "Write a small map with one intersection described leg by leg (--leg) or as JSON (--spec), built by the "
-        "generator's intersection stage: the junction and an approach road per leg. A fork, merge or ramp instead: "
-        "--preset (yosemite: the paper's one-way, two-lane road splitting in two) or --spec with a kind.",
+        "generator's intersection stage: the junction and an approach road per leg; with --roundabout RADIUS[:LANES] a "
+        "roundabout whose arms the legs are. A fork, merge or ramp instead: --preset (yosemite: the paper's one-way, "
+        "two-lane road splitting in two) or --spec with a kind.",
         _add_intersection,
     ),
     "search": (
-        "quality-diversity search (MAP-Elites, pyribs) for intersections, forks or ramps across chosen metrics",
+        "quality-diversity search (MAP-Elites, pyribs) for intersections, forks, ramps or roundabouts across chosen "
+        "metrics",
         "Fill an archive of intersections spanning two or three metrics with MAP-Elites (needs the [search] extra); "
         "stop at a budget or when -n elites meet --where. Writes archive.csv, heatmaps, report.md and the elites' "
         ".xodr (resumable).",

@@ -7,7 +7,8 @@ and optionally a fixed lane configuration (lanes travelling along the line and a
 JSON::
 
     {"lines": [{"id": "a", "points": [[0, 0], [400, 0]], "group": 0, "lanes": {"forward": 2, "backward": 1}}, ...],
-     "pairs": [["a", "b"], ...]}
+     "pairs": [["a", "b"], ...],
+     "roundabouts": [{"at": [200, 100], "radius": 18, "lanes": 1}]}
 
 GeoJSON: a FeatureCollection of LineString features; ``properties`` may hold ``id``, ``group``, ``lanes`` and
 ``pair_with`` (a list of line ids). Without explicit pairs, consecutive lines of one group form the pairs.
@@ -19,6 +20,12 @@ line there gets the structure, centred as near the point as its straight stretch
 (:mod:`junctionart.splits.network`); one that does not fit is reported::
 
     {"id": "a", "points": [[0, 0], [800, 0]], "forks": [{"at": 300, "angle": 15}], "ramps": [{"at": 600}]}
+
+Roundabouts: each entry of ``"roundabouts"`` (in GeoJSON a ``Point`` feature whose properties say
+``"roundabout": true``) asks for a roundabout at the junction whose control point is nearest to ``at`` (within 60 m;
+a junction is where lines cross or the network joins them), with ``radius`` (m, the outer radius of the circulating
+carriageway) and ``lanes`` (1 or 2 circulating lanes), each optional (drawn when missing). A junction with 3 to 6
+legs becomes one whatever ``roundabout_probability`` is; a request no junction is near is left unused.
 """
 
 from __future__ import annotations
@@ -33,7 +40,7 @@ import numpy as np
 import shapely
 
 from .errors import InputError
-from .params import MAX_SIDE, Params
+from .params import MAX_SIDE, ROUNDABOUT_LANES, ROUNDABOUT_RADIUS, Params
 
 MAX_FILE_BYTES = 20_000_000
 #: Largest total length (m) of the control lines of one file: about that of the automatic lines of the largest
@@ -104,11 +111,21 @@ class ControlLine:
 
 
 @dataclass(frozen=True)
+class RoundaboutRequest:
+    """A roundabout asked for near point ``at``: outer radius (m) and circulating lanes, None where drawn."""
+
+    at: tuple[float, float]
+    radius: float | None = None
+    lanes: int | None = None
+
+
+@dataclass(frozen=True)
 class ControlLines:
-    """The control lines of a map and the pairs of them that the network joins."""
+    """The control lines of a map, the pairs of them that the network joins, and the roundabouts asked for."""
 
     lines: tuple[ControlLine, ...]
     pairs: tuple[tuple[int, int], ...]  # indexes into lines
+    roundabouts: tuple[RoundaboutRequest, ...] = ()
 
     @property
     def groups(self) -> tuple[int, ...]:
@@ -248,6 +265,34 @@ def _group(where: str, raw: Any) -> int:
     return raw
 
 
+def _roundabout(where: str, raw: Any, at: Any = None) -> RoundaboutRequest:
+    """One roundabout request: ``{"at": [x, y], "radius": r, "lanes": n}`` (``at`` given apart for a GeoJSON point)."""
+    if not isinstance(raw, dict):
+        raise InputError(f'{where}: a roundabout is an object {{"at": [x, y], "radius": m, "lanes": n}}')
+    known = {"at", "radius", "lanes"} if at is None else {"roundabout", "radius", "lanes", "id", "name"}
+    unknown = sorted(set(raw) - known)
+    if unknown:
+        raise InputError(f"{where}: unknown key {unknown[0]!r}; valid: {', '.join(sorted(known))}")
+    point = raw.get("at") if at is None else at
+    if (
+        not isinstance(point, (list, tuple))
+        or len(point) < 2
+        or not all(isinstance(c, (int, float)) and not isinstance(c, bool) and math.isfinite(c) for c in point[:2])
+    ):
+        raise InputError(f"{where}: needs a point [x, y] with finite numbers, got {point!r}")
+    radius, lanes = raw.get("radius"), raw.get("lanes")
+    lo, hi = ROUNDABOUT_RADIUS
+    if radius is not None and (
+        isinstance(radius, bool) or not isinstance(radius, (int, float)) or not lo <= radius <= hi
+    ):
+        raise InputError(f"{where}: radius must be a number of metres in [{lo:g}, {hi:g}], got {radius!r}")
+    if lanes is not None and (
+        isinstance(lanes, bool) or lanes not in range(ROUNDABOUT_LANES[0], ROUNDABOUT_LANES[1] + 1)
+    ):
+        raise InputError(f"{where}: lanes must be {ROUNDABOUT_LANES[0]} or {ROUNDABOUT_LANES[1]}, got {lanes!r}")
+    return RoundaboutRequest((float(point[0]), float(point[1])), None if radius is None else float(radius), lanes)
+
+
 def _check_extent(source: str, lines: tuple[ControlLine, ...]) -> None:
     """Refuse lines a map cannot be generated from in reasonable time (the bounds above), naming the bound."""
     pts = np.array([p for ln in lines for p in ln.points])
@@ -269,7 +314,9 @@ def _check_extent(source: str, lines: tuple[ControlLine, ...]) -> None:
         )
 
 
-def _assemble(source: str, entries: list[tuple], pairs_raw: list[Any]) -> ControlLines:
+def _assemble(
+    source: str, entries: list[tuple], pairs_raw: list[Any], roundabouts: tuple[RoundaboutRequest, ...] = ()
+) -> ControlLines:
     if len(entries) < 2:
         raise InputError(f"{source}: needs at least 2 control lines, found {len(entries)}")
     ids = [e[0] for e in entries]
@@ -307,7 +354,7 @@ def _assemble(source: str, entries: list[tuple], pairs_raw: list[Any]) -> Contro
                 f"{source}: lines {lines[a].id!r} and {lines[b].id!r} of a pair overlap along "
                 f"{shared:.1f} m; the two lines of a pair must be apart"
             )
-    return ControlLines(lines, tuple(pairs))
+    return ControlLines(lines, tuple(pairs), roundabouts)
 
 
 def parse(data: Any, source: str = "<input>") -> ControlLines:
@@ -316,6 +363,7 @@ def parse(data: Any, source: str = "<input>") -> ControlLines:
         raise InputError(f'{source}: expected a JSON object with "lines" or a GeoJSON FeatureCollection')
     entries: list[tuple] = []
     pairs_raw: list[Any] = []
+    roundabouts: list[RoundaboutRequest] = []
     if data.get("type") == "FeatureCollection":
         feats = data.get("features")
         if not isinstance(feats, list):
@@ -323,11 +371,17 @@ def parse(data: Any, source: str = "<input>") -> ControlLines:
         for k, f in enumerate(feats):
             where = f"{source}: feature {k}"
             geom = f.get("geometry") if isinstance(f, dict) else None
-            if not isinstance(geom, dict) or geom.get("type") != "LineString":
-                raise InputError(f"{where}: only LineString geometries are control lines")
-            props = f.get("properties") or {}
+            props = (f.get("properties") if isinstance(f, dict) else None) or {}
             if not isinstance(props, dict):
                 raise InputError(f"{where}: properties must be an object")
+            if isinstance(geom, dict) and geom.get("type") == "Point" and props.get("roundabout") is True:
+                roundabouts.append(_roundabout(where, props, geom.get("coordinates")))
+                continue
+            if not isinstance(geom, dict) or geom.get("type") != "LineString":
+                raise InputError(
+                    f"{where}: only LineString geometries are control lines (and Points with "
+                    '"roundabout": true roundabouts)'
+                )
             lid = str(props.get("id", f.get("id", k)))
             pts = _points(where, geom.get("coordinates"))
             entries.append(
@@ -362,9 +416,13 @@ def parse(data: Any, source: str = "<input>") -> ControlLines:
         pairs_raw = data.get("pairs") or []
         if not isinstance(pairs_raw, list):
             raise InputError(f'{source}: "pairs" must be a list of [id, id]')
+        raw_roundabouts = data.get("roundabouts") or []
+        if not isinstance(raw_roundabouts, list):
+            raise InputError(f'{source}: "roundabouts" must be a list of {{"at": [x, y], ...}}')
+        roundabouts = [_roundabout(f"{source}: roundabout {k}", r) for k, r in enumerate(raw_roundabouts)]
     else:
         raise InputError(f'{source}: expected a JSON object with "lines" or a GeoJSON FeatureCollection')
-    return _assemble(source, entries, pairs_raw)
+    return _assemble(source, entries, pairs_raw, tuple(roundabouts))
 
 
 def load(path: str | Path) -> ControlLines:

@@ -18,6 +18,11 @@ JSON::
 Every approach road ends in a dead end, which traffic must be able to leave, so each leg has 1 to 3 lanes each way.
 Where the legs do not fit as described, the stage repairs as it does in any map (e.g. drops a leg it cannot fit): the
 result says so (:attr:`Built.repairs`) and the map's measured legs can then be fewer than requested.
+
+A roundabout instead of a junction (3 to 6 legs, its arms): ``"roundabout": {"radius": 18, "lanes": 1}`` (the outer
+radius of the circulating carriageway in metres, 1 or 2 circulating lanes; :mod:`junctionart.intersections.roundabout`).
+Where its arms need more room the ring grows (up to 60 m, a repair says so); where even that does not fit them it is
+built as an ordinary junction (the result's :attr:`Built.roundabout` is then None).
 """
 
 from __future__ import annotations
@@ -25,16 +30,22 @@ from __future__ import annotations
 import json
 import math
 from dataclasses import dataclass, fields
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
+from .controllines import RoundaboutRequest
 from .errors import ParamsError
 from .lanes import LaneConfig, LanedNetwork
 from .network import Edge, Network
 from .opendrive import Document
-from .params import Params, SplitStrategy, TrafficRule
+from .params import ROUNDABOUT_LANES, ROUNDABOUT_RADIUS, Params, SplitStrategy, TrafficRule
+
+if TYPE_CHECKING:
+    from .intersections.model import RoundaboutPlan
 
 #: Legs of one intersection (the generator's bound, :data:`junctionart.intersections.legs.MAX_LEGS`).
 MIN_LEGS, MAX_LEGS = 3, 7
+#: Arms of one roundabout (:data:`junctionart.intersections.roundabout_choice.MAX_ARMS`).
+MAX_ARMS = 6
 #: Largest bend (degrees) of an approach road halfway out.
 MAX_BEND = 60.0
 #: Bounds (m) of the approach length, from the junction's centre to the road's far end.
@@ -65,6 +76,8 @@ class IntersectionSpec:
     median_width: float = 2.0
     approach_length: float = 150.0
     version: str = "1.8"
+    roundabout_radius: float | None = None  #: a roundabout of this outer radius (m) instead of a junction
+    roundabout_lanes: int = 1  #: its circulating lanes
 
     def __post_init__(self) -> None:
         validate(self)
@@ -113,11 +126,17 @@ def validate(spec: IntersectionSpec) -> None:
     if min(gaps) < 1.0:
         raise ParamsError(f"legs: two headings are {min(gaps):.3g} deg apart; legs need at least 1 deg between them")
     _finite("approach_length", spec.approach_length, MIN_APPROACH, MAX_APPROACH)
+    if spec.roundabout_radius is not None:
+        _finite("roundabout radius", spec.roundabout_radius, *ROUNDABOUT_RADIUS)
+        _count("roundabout lanes", spec.roundabout_lanes, *ROUNDABOUT_LANES)
+        if len(spec.legs) > MAX_ARMS:
+            raise ParamsError(f"legs: {len(spec.legs)} given, a roundabout has {MIN_LEGS} to {MAX_ARMS} arms")
     spec.params()  # lane and median width, version: the generator's own checks and messages
 
 
 def network(spec: IntersectionSpec) -> LanedNetwork:
-    """The generator's laned network of ``spec``: node 0 the junction, one road per leg (two edges when it bends)."""
+    """The generator's laned network of ``spec``: node 0 the junction (or roundabout), one road per leg (two edges
+    when it bends)."""
     nodes: list[tuple[float, float]] = [(0.0, 0.0)]
     edges: list[Edge] = []
     lanes: list[LaneConfig] = []
@@ -136,7 +155,10 @@ def network(spec: IntersectionSpec) -> LanedNetwork:
         nodes += [mid, end]
         edges += [Edge(0, len(nodes) - 2), Edge(len(nodes) - 2, len(nodes) - 1)]
         lanes += [config, config]
-    return LanedNetwork(Network(tuple(nodes), tuple(edges)), tuple(lanes))
+    rings: tuple[RoundaboutRequest, ...] = ()
+    if spec.roundabout_radius is not None:
+        rings = (RoundaboutRequest((0.0, 0.0), spec.roundabout_radius, spec.roundabout_lanes),)
+    return LanedNetwork(Network(tuple(nodes), tuple(edges), (), rings), tuple(lanes))
 
 
 @dataclass(frozen=True)
@@ -144,8 +166,9 @@ class Built:
     """A generated intersection: its document and the repairs the stage made to fit it."""
 
     document: Document
-    legs: int  #: legs of the junction as built
+    legs: int  #: legs of the junction (arms of the roundabout) as built
     repairs: tuple[str, ...]
+    roundabout: RoundaboutPlan | None = None  #: the roundabout as built, when one was asked for and fits
 
 
 def build(spec: IntersectionSpec, seed: int = 0) -> Built:
@@ -160,15 +183,17 @@ def build(spec: IntersectionSpec, seed: int = 0) -> Built:
     rng = np.random.default_rng(seed)
     layout = intersections.build(network(spec), params, rng)
     document = cleanup.document(layout, params, name=f"junctionart intersection seed {seed}")
-    legs = max((j.legs for j in layout.junctions), default=0)
-    return Built(document, legs, tuple(str(r) for r in layout.repairs))
+    ring = layout.roundabouts[0] if layout.roundabouts else None
+    legs = len(ring.arms) if ring is not None else max((j.legs for j in layout.junctions), default=0)
+    return Built(document, legs, tuple(str(r) for r in layout.repairs), ring)
 
 
 # --------------------------------------------------------------------------------------------------------------------
 # Plain values (JSON) and the command line's leg syntax
 # --------------------------------------------------------------------------------------------------------------------
 _LEG_KEYS = {"heading", "in", "out", "median", "bend"}
-_SPEC_KEYS = {f.name for f in fields(IntersectionSpec)}
+_RING_FIELDS = {"roundabout_radius": "radius", "roundabout_lanes": "lanes"}
+_SPEC_KEYS = {f.name for f in fields(IntersectionSpec)} - set(_RING_FIELDS) | {"roundabout"}
 
 
 def _leg_from(k: int, raw: Any) -> LegSpec:
@@ -191,6 +216,11 @@ def from_dict(raw: Any) -> IntersectionSpec:
         raise ParamsError(f"unknown key {unknown[0]!r}; valid: {', '.join(sorted(_SPEC_KEYS))}")
     values = dict(raw)
     values["legs"] = tuple(_leg_from(k, leg) for k, leg in enumerate(raw["legs"]))
+    ring = values.pop("roundabout", None)
+    if ring is not None:
+        if not isinstance(ring, dict) or set(ring) - {"radius", "lanes"} or "radius" not in ring:
+            raise ParamsError(f'roundabout={ring!r}: expected {{"radius": metres, "lanes": 1 or 2}}')
+        values["roundabout_radius"], values["roundabout_lanes"] = ring["radius"], ring.get("lanes", 1)
     for name, kind in (("traffic_rule", TrafficRule), ("split_strategy", SplitStrategy)):
         if name in values:
             try:
@@ -211,9 +241,11 @@ def to_dict(spec: IntersectionSpec) -> dict[str, Any]:
         for g in spec.legs
     ]
     out: dict[str, Any] = {"legs": legs}
-    for name in sorted(_SPEC_KEYS - {"legs"}):
+    for name in sorted(_SPEC_KEYS - {"legs", "roundabout"}):
         value = getattr(spec, name)
         out[name] = value.value if isinstance(value, (TrafficRule, SplitStrategy)) else value
+    if spec.roundabout_radius is not None:  # only then: a junction's description stays as it was
+        out["roundabout"] = {"radius": spec.roundabout_radius, "lanes": spec.roundabout_lanes}
     return out
 
 
@@ -224,6 +256,17 @@ def load(text: str) -> IntersectionSpec:
     except json.JSONDecodeError as exc:
         raise ParamsError(f"intersection description: not JSON ({exc})") from None
     return from_dict(raw)
+
+
+def parse_roundabout(text: str) -> tuple[float, int]:
+    """``RADIUS[:LANES]``, e.g. ``18`` or ``25:2``: the outer radius (m) and circulating lanes of a roundabout."""
+    parts = text.split(":")
+    try:
+        if len(parts) > 2:
+            raise ValueError
+        return float(parts[0]), int(parts[1]) if len(parts) == 2 else 1
+    except ValueError:
+        raise ParamsError(f"--roundabout {text!r}: expected RADIUS[:LANES], e.g. 18 or 25:2") from None
 
 
 def parse_leg(text: str) -> LegSpec:

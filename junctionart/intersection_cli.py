@@ -9,7 +9,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .errors import ParamsError
-from .intersection import IntersectionSpec, from_dict, load, parse_leg, to_dict
+from .intersection import IntersectionSpec, from_dict, load, parse_leg, parse_roundabout, to_dict
 
 if TYPE_CHECKING:
     from .splits.spec import ForkSpec, RampSpec
@@ -53,6 +53,12 @@ def add_arguments(p: argparse.ArgumentParser) -> None:
         help="forks, merges and ramps: a direct junction (OpenDRIVE 1.7+, the default) or a common one with "
         "connecting roads (what CARLA and SUMO read)",
     )
+    p.add_argument(
+        "--roundabout",
+        metavar="RADIUS[:LANES]",
+        help="a roundabout instead of a junction, the legs its arms (3 to 6): the outer radius of its circulating "
+        "carriageway in metres (mini 9-13, compact 13-20, large 20-35) and 1 or 2 circulating lanes, e.g. 18 or 25:2",
+    )
     p.add_argument("-o", "--output", type=Path, default=Path("intersection.xodr"), help="output file")
     p.add_argument("--seed", type=int, default=0, help="random seed (split strategy 'random' draws per leg)")
     p.add_argument(
@@ -73,7 +79,7 @@ def _split(raw: dict[str, Any], args: argparse.Namespace) -> SplitSpec:
     from .splits.spec import from_dict as split_from_dict
 
     values = dict(raw)
-    for key in ("turn_lanes", "u_turns", "split_strategy", "median_width"):
+    for key in ("turn_lanes", "u_turns", "split_strategy", "median_width", "roundabout"):
         if getattr(args, key) is not None:
             raise ParamsError(f"--{key.replace('_', '-')} does not apply to a {raw['kind']}")
     for key in ("version", "junction", "traffic_rule", "lane_width", "approach_length"):
@@ -131,6 +137,9 @@ def spec_of(args: argparse.Namespace) -> IntersectionSpec | SplitSpec:
     for key in ("turn_lanes", "u_turns", "version", *(key for _, key, _, _ in OPTIONS)):
         if getattr(args, key) is not None:
             raw[key] = getattr(args, key)
+    if args.roundabout is not None:
+        radius, lanes = parse_roundabout(args.roundabout)
+        raw["roundabout"] = {"radius": radius, "lanes": lanes}
     return from_dict(raw)
 
 
@@ -153,7 +162,13 @@ def run(args: argparse.Namespace) -> int:
         return 0
     built = build(spec, args.seed)
     path = write(built.document, args.output, spec.version)
-    if not args.quiet:
+    ring = built.roundabout
+    if not args.quiet and ring is not None:
+        print(
+            f"{path}: one roundabout, {built.legs} arms ({len(spec.legs)} described), outer radius {ring.radius:g} m, "
+            f"{ring.lanes} circulating lane(s), {len(built.repairs)} repairs"
+        )
+    elif not args.quiet:
         print(f"{path}: one junction, {built.legs} legs ({len(spec.legs)} described), {len(built.repairs)} repairs")
     for repair in built.repairs:
         print(f"junctionart: repair: {repair}", file=sys.stderr)

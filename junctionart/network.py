@@ -13,7 +13,7 @@ from dataclasses import dataclass
 import numpy as np
 from shapely import LineString, STRtree
 
-from .controllines import ControlLine, ControlLines
+from .controllines import ControlLine, ControlLines, RoundaboutRequest
 from .grade_separation import GradeSeparation
 from .params import Params
 
@@ -37,6 +37,8 @@ class Network:
     edges: tuple[Edge, ...]
     #: (upper, lower) edge indexes of each crossing kept as an overpass (:mod:`junctionart.grade_separation`)
     overpasses: tuple[tuple[int, int], ...] = ()
+    #: roundabouts the control-line file asks for (stage 3 gives each to the junction nearest to it)
+    roundabouts: tuple[RoundaboutRequest, ...] = ()
 
     def degree(self) -> list[int]:
         deg = [0] * len(self.nodes)
@@ -337,4 +339,5 @@ def build(lines: ControlLines, params: Params, rng: np.random.Generator) -> Netw
                 used[x] = len(used)
     new_nodes = tuple(nodes[old] for old in used)  # used numbers the nodes in insertion order
     out_edges = tuple(Edge(used[a], used[b], edges[(a, b)]) for a, b in sorted(edges))
-    return Network(new_nodes, out_edges, grade.pairs(nodes, sorted(edges)) if grade.kept else ())
+    overpasses = grade.pairs(nodes, sorted(edges)) if grade.kept else ()
+    return Network(new_nodes, out_edges, overpasses, lines.roundabouts)

@@ -72,6 +72,11 @@ VERSIONS = ("1.8", "1.9", "1.7")
 # 550-580 km in each of the 1e8 m^2 maps. 100 km x 100 km was still in its second stage after 400 s.
 #: Smallest and largest side (m) of an automatic map.
 MIN_SIDE, MAX_SIDE = 50.0, 100_000.0
+#: Outer radius (m) of a roundabout's circulating carriageway a control-line file or a description may ask for (the
+#: generator makes it larger where the lanes or the arms need more room, and says so among the repairs).
+ROUNDABOUT_RADIUS = (6.0, 80.0)
+#: Circulating lanes a roundabout may have.
+ROUNDABOUT_LANES = (1, 2)
 #: Largest area (m^2) of an automatic map: 100 km^2, e.g. 10 km x 10 km, which takes 1-2 minutes.
 MAX_AREA = 1e8
 
@@ -125,6 +130,9 @@ class Params:
     #: chance that a crossing of two control lines becomes an overpass instead of a junction, where both roads are
     #: long enough for the ramps (:mod:`junctionart.scenario.overpass`); 0: every crossing is a junction
     overpass_probability: float = 0.0
+    #: chance that a junction of 3 to 6 legs becomes a roundabout (:mod:`junctionart.intersections.roundabout`): a
+    #: one-way ring of 1 or 2 lanes with a junction per arm; 0: every junction is an ordinary one
+    roundabout_probability: float = 0.0
     country: str = "DE"  #: whose sign catalogue the signs come from (:mod:`junctionart.scenario.catalogue`)
     #: chance that a road with a long enough straight stretch forks: its outermost lane (or one it gains) splits off
     #: and joins it again further on (:mod:`junctionart.splits.network`); 0: no forks
@@ -154,6 +162,7 @@ class Params:
             or self.junction_control is not JunctionControl.NONE
             or self.terrain is not Terrain.FLAT
             or self.overpass_probability > 0.0
+            or self.roundabout_probability > 0.0
         )
 
     @property
@@ -200,7 +209,8 @@ _ENUMS: dict[str, type[enum.Enum]] = {
 #: map with what scenarios need (urban roadside: kerbs and sidewalks continued round every junction corner; junction
 #: control drawn per junction: traffic lights with signal groups, stop or yield signs; half of the crossings of control
 #: lines long enough for ramps become overpasses, the others junctions; of the roads with a straight stretch for one,
-#: 15 % fork and 10 % gain a ramp pair, joined by default junctions that CARLA and SUMO read).
+#: 15 % fork and 10 % gain a ramp pair, joined by default junctions that CARLA and SUMO read; a quarter of the
+#: junctions of 3 to 6 legs become roundabouts, with a yield sign, the roundabout sign and a yield line on every entry).
 PROFILES: dict[str, dict[str, Any]] = {
     "paper": {},
     "scenario": {
@@ -210,6 +220,7 @@ PROFILES: dict[str, dict[str, Any]] = {
         "fork_probability": 0.15,
         "ramp_probability": 0.1,
         "direct_junctions": False,
+        "roundabout_probability": 0.25,
     },
 }
 
@@ -354,6 +365,7 @@ def _validate_scenario(p: Params) -> None:
     _range("ramp_probability", p.ramp_probability, 0.0, 1.0)
     if not isinstance(p.direct_junctions, bool):
         raise ParamsError(f"direct_junctions={p.direct_junctions!r}: must be true or false")
+    _range("roundabout_probability", p.roundabout_probability, 0.0, 1.0)
     for name, kind in _ENUMS.items():
         if not isinstance(getattr(p, name), kind):
             valid = ", ".join(str(m.value) for m in kind)

@@ -138,19 +138,30 @@ def _groups(draw, min_lines, max_lines, extent, relations, max_lanes, lanes, as_
         lines.extend(draw(_pair(relation, extent, max_lanes, lanes, y)))
         y += 0.7 * extent + 150.0
     angle, dx, dy = draw(st.floats(-math.pi, math.pi)), draw(st.floats(-1e4, 1e4)), draw(st.floats(-1e4, 1e4))
+    rotated = [_rotate(pts, angle, dx, dy) for pts, _, _ in lines]
     data = {
         "lines": [
             {
                 "id": f"c{i}",
-                "points": _rotate(pts, angle, dx, dy),
+                "points": points,
                 "group": i // 2,
                 **({"lanes": list(conf)} if conf else {}),
                 **structures,
             }
-            for i, (pts, conf, structures) in enumerate(lines)
+            for i, (points, (_, conf, structures)) in enumerate(zip(rotated, lines))
         ],
         "pairs": [[f"c{i}", f"c{i + 1}"] for i in range(0, len(lines), 2)],
     }
+    if draw(st.booleans()):  # roundabouts asked for at points of the lines (the nearest junction, if any, gets one)
+        ends = [points[k] for points in rotated for k in (0, 1)]
+        data["roundabouts"] = [
+            {
+                "at": draw(st.sampled_from(ends)),
+                **({"radius": draw(st.floats(6.0, 80.0))} if draw(st.booleans()) else {}),
+                **({"lanes": draw(st.integers(1, 2))} if draw(st.booleans()) else {}),
+            }
+            for _ in range(draw(st.integers(1, 3)))
+        ]
     return data if as_json else parse(data)
 
 
@@ -212,6 +223,7 @@ def _params(draw, min_size, max_size, many_lanes):
         fork_probability=draw(st.sampled_from((0.0, 0.0, 0.5, 1.0))),
         ramp_probability=draw(st.sampled_from((0.0, 0.0, 0.5, 1.0))),
         direct_junctions=draw(st.booleans()),
+        roundabout_probability=draw(st.sampled_from((0.0, 0.0, 0.25, 1.0))),  # roundabouts: off in half the maps
     )
 
 
@@ -238,7 +250,16 @@ def invalid_control_line_files(draw) -> tuple[dict, str]:
     i = draw(st.integers(0, len(lines) - 1))
     what = draw(
         st.sampled_from(
-            ("non-finite", "degenerate", "single-point", "overlapping", "lane-count", "no-lanes", "one-line")
+            (
+                "non-finite",
+                "degenerate",
+                "single-point",
+                "overlapping",
+                "lane-count",
+                "no-lanes",
+                "one-line",
+                "roundabout",
+            )
         )
     )
     if what == "non-finite":
@@ -256,6 +277,22 @@ def invalid_control_line_files(draw) -> tuple[dict, str]:
         lines[i]["lanes"] = [draw(st.sampled_from((-1, 4, 7, 1.5))), draw(st.integers(0, 3))]
     elif what == "no-lanes":
         lines[i]["lanes"] = [0, 0]
+    elif what == "roundabout":
+        base["roundabouts"] = [
+            draw(
+                st.sampled_from(
+                    (
+                        {"at": [0, 0], "radius": 500},
+                        {"at": [0, 0], "radius": math.nan},
+                        {"at": [0, 0], "lanes": 3},
+                        {"at": [math.inf, 0]},
+                        {"at": [0]},
+                        {"radius": 20},
+                        [0, 0],
+                    )
+                )
+            )
+        ]
     else:
         base = {"lines": lines[:1]}
     return base, what
@@ -280,6 +317,7 @@ def invalid_generator_params(draw) -> tuple[dict, str]:
                 ("fork_probability", st.sampled_from((-0.5, 1.01, math.nan))),
                 ("ramp_probability", st.sampled_from((2.0, -1e-9, math.inf))),
                 ("direct_junctions", st.sampled_from((1, "yes", None))),
+                ("roundabout_probability", st.sampled_from((-0.1, 1.5, math.nan))),
                 ("version", st.sampled_from(("1.6", "2.0", ""))),
             )
         )

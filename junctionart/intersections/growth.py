@@ -38,8 +38,10 @@ class Growth:
         self.planner, self.fitter, self.p = planner, fitter, params
         self.junctions, self.reach, self.roads = junctions, reach, roads
         self.done: dict[int, list[LinkFit]] = {}
-        self.queue = deque(sorted(junctions))
+        # a roundabout's connection lanes were fitted with its design (:mod:`.roundabout`): it never grows
+        self.queue = deque(n for n in sorted(junctions) if junctions[n].ring is None)
         self.queued = set(self.queue)
+        self.ordinary = frozenset(self.queue)
 
     def run(self) -> dict[int, list[LinkFit]] | None:
         """The links to build at every junction (``roads`` then hold the roads they start from), or None when the
@@ -101,7 +103,7 @@ class Growth:
             rebuilt.append(c)
         for c in rebuilt:
             for other in (self.view.chains[c].start, self.view.chains[c].end):
-                if other != j.node and other in self.junctions and other not in self.queued:
+                if other != j.node and other in self.ordinary and other not in self.queued:
                     self.done.pop(other, None)
                     self.queue.append(other)
                     self.queued.add(other)

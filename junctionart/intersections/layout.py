@@ -37,7 +37,7 @@ import numpy as np
 from ..errors import GenerationError
 from ..lanes import LanedNetwork
 from ..params import Params
-from .assemble import junction_plans, road_plans
+from .assemble import junction_plans, road_plans, roundabout_plans
 from .fitting import SCALES, LinkFitter
 from .growth import Growth
 from .model import Layout
@@ -62,7 +62,7 @@ class Builder:
         self.rng = rng
         self.st = NetworkState(list(net.nodes), {k: (e.u, e.v, laned.lanes[k]) for k, e in enumerate(net.edges)})
         self.st.overpasses = set(net.overpasses)
-        self.planner = Planner(self.st, params, rng)
+        self.planner = Planner(self.st, params, rng, net.roundabouts)
         self.fitter = LinkFitter(params)
 
     def run(self) -> Layout:
@@ -104,7 +104,9 @@ class Builder:
         decks = fit_overpasses(view, roads, self.p)
         if st.dirty:
             return None
-        return Layout(tuple(road_plans(view, roads, junctions)), tuple(plans), tuple(st.repairs), decks)
+        rings = tuple(roundabout_plans(view, junctions))
+        repairs = (*st.repairs, *(self.planner.notes[n] for n in sorted(self.planner.notes)))
+        return Layout(tuple(road_plans(view, roads, junctions)), tuple(plans), repairs, decks, rings)
 
 
 def build(laned: LanedNetwork, params: Params, rng: np.random.Generator) -> Layout:

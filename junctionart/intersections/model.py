@@ -24,6 +24,9 @@ class RoadPlan:
     bwd_start: int
     fwd_end: int
     bwd_end: int
+    splitter_start: float = 0.0  #: width of a roundabout's splitter island at the road's start (0: none)
+    splitter_end: float = 0.0
+    ring: bool = False  #: a roundabout's ring road (one-way round the island, lanes outward of its reference line)
 
 
 @dataclass(frozen=True)
@@ -56,6 +59,20 @@ class JunctionPlan:
 
 
 @dataclass(frozen=True)
+class RoundaboutPlan:
+    """A roundabout of the layout: its ring, its arm junctions and ring roads in driving order, and its arms."""
+
+    node: int
+    centre: tuple[float, float]
+    radius: float  #: outer radius of the circulating carriageway (m)
+    lanes: int  #: circulating lanes
+    junctions: tuple[int, ...]  #: indexes into Layout.junctions, in driving order (one per arm, or two arms' shared)
+    ring_roads: tuple[int, ...]  #: indexes into Layout.roads: ring road k runs from junctions[k] to junctions[k + 1]
+    #: each arm in driving order: (road index, contact point, index into Layout.junctions of its junction)
+    arms: tuple[tuple[int, str, int], ...]
+
+
+@dataclass(frozen=True)
 class Layout:
     """The intersection stage's result: roads, junctions and the repairs made."""
 
@@ -63,3 +80,4 @@ class Layout:
     junctions: tuple[JunctionPlan, ...]
     repairs: tuple[str, ...]  #: what was changed to make every intersection fit (no map is ever discarded)
     overpasses: tuple[tuple[int, int], ...] = ()  #: (upper, lower) indexes into ``roads`` of each overpass
+    roundabouts: tuple[RoundaboutPlan, ...] = ()

@@ -96,7 +96,12 @@ def remove_overlaps(
     """Roads and junction areas (with every connection lane) may only touch where the map connects them; otherwise
     a road is removed (one whose removal keeps the map connected when there is one)."""
     st = view.state
-    lanes = {jp.node: [c.geometry for c in jp.connections] for jp in plans}
+    lanes: dict[int, list[Geometry]] = {}
+    for jp in plans:
+        lanes.setdefault(jp.node, []).extend(c.geometry for c in jp.connections)
+    for node, j in junctions.items():
+        if j.ring is not None:  # a roundabout: its ring roads' lanes too
+            lanes[node] = j.ring.lane_borders()
     for cands in overlaps(view.chains, roads, junctions, lanes, p, separated(view)):
         if any(st.touched(view.chains[c].nodes) for c in cands):
             continue
@@ -155,7 +160,8 @@ def _road_shapes(roads: list[Road], lines: list[np.ndarray], p: Params) -> list:
     halves = []
     for road in roads:
         cfg = road.spec.lanes
-        halves.append(max(side_width(cfg.forward, cfg.median, w, mw), side_width(cfg.backward, cfg.median, w, mw)) + rs)
+        half = max(side_width(cfg.forward, cfg.median, w, mw), side_width(cfg.backward, cfg.median, w, mw))
+        halves.append(max(half, _splitter_side(road, w)) + rs)
     indices = np.repeat(np.arange(len(lines)), [len(x) for x in lines])
     return list(
         shapely.buffer(shapely.linestrings(np.concatenate(lines), indices=indices), np.array(halves), cap_style="flat")
@@ -171,11 +177,21 @@ def _leg_body(road: Road, line: np.ndarray, p: Params) -> shapely.Geometry:
     backward = max(spec.lanes.backward, spec.start.backward, spec.end.backward)
     left, right = (backward, forward) if p.traffic_rule is TrafficRule.RHT else (forward, backward)
     ref = shapely.LineString(line)
+    left_width = max(side_width(left, spec.lanes.median, w, mw), _splitter_side(road, w))
     sides = [
-        shapely.buffer(ref, side_width(left, spec.lanes.median, w, mw) + rs - INSET, single_sided=True),
+        shapely.buffer(ref, left_width + rs - INSET, single_sided=True),
         shapely.buffer(ref, -(side_width(right, False, w, mw) + rs - INSET), single_sided=True),
     ]
     return shapely.union_all(sides)
+
+
+def _splitter_side(road: Road, w: float) -> float:
+    """The left side's width (lanes and splitter island) at a roundabout arm's end; 0 on other roads."""
+    spec = road.spec
+    splitter = max(spec.splitter_start, spec.splitter_end)
+    if splitter == 0.0:
+        return 0.0
+    return max(spec.lanes.forward, spec.lanes.backward, *spec.start, *spec.end) * w + splitter
 
 
 def _junction_shapes(roads: list[Road], j: Junction, connections: list[Geometry], p: Params) -> list:

@@ -21,6 +21,7 @@ from ..params import Params
 from .legs import MAX_LEGS, LegKey
 from .planning import Junction, Reach
 from .roadshape import Contact, EndLanes, Misfit, RoadShape, RoadSpec, contact, shape_road
+from .roundabout import SPLITTER_CLEAR, splitter_spans
 from .survey import Survey
 
 MIN_ROAD = 5.0  #: shortest road written between two junctions (beyond its lane tapers)
@@ -35,11 +36,12 @@ def lay_roads(view: Survey, junctions: dict[int, Junction], reach: Reach, params
     """The road of every chain (indexed like the chains), or None when one did not fit. Each misfit is repaired at
     once, so that roads laid later in the pass see what was changed; the pass then starts again."""
     ends = _end_lanes(junctions)
+    splitters = _splitters(junctions)
     roads: list[Road] = []
     for c, ch in enumerate(view.chains):
         if view.state.touched(ch.nodes):
             continue
-        spec = _spec(view, c, ends, params)
+        spec = _spec(view, c, ends, params, splitters)
         shape = build_road(view, spec, reach, params)
         if shape.misfit is None:
             roads.append(Road(spec, shape.geometry))
@@ -73,13 +75,33 @@ def _end_lanes(junctions: dict[int, Junction]) -> dict[LegKey, EndLanes]:
     return out
 
 
-def _spec(view: Survey, c: int, ends: dict[LegKey, EndLanes], params: Params) -> RoadSpec:
-    """Chain ``c``'s lanes; a dead end keeps the middle's counts. It needs room for both tapers and a piece between."""
+def _splitters(junctions: dict[int, Junction]) -> dict[LegKey, float]:
+    """The splitter island's width at the end of each roundabout arm that has one."""
+    return {
+        j.keys[arm.leg]: arm.splitter
+        for j in junctions.values()
+        if j.ring is not None
+        for arm in j.ring.arms
+        if arm.splitter > 0.0
+    }
+
+
+def _spec(
+    view: Survey, c: int, ends: dict[LegKey, EndLanes], params: Params, splitters: dict[LegKey, float] | None = None
+) -> RoadSpec:
+    """Chain ``c``'s lanes; a dead end keeps the middle's counts. It needs room for both tapers and a piece between,
+    and for the splitter island at a roundabout's end and :data:`SPLITTER_CLEAR` beside it."""
     cfg = view.lanes(c)
     mid = EndLanes(cfg.forward, cfg.backward)
     start, end = ends.get(LegKey(c, True), mid), ends.get(LegKey(c, False), mid)
     need = MIN_ROAD + taper_length(params, start, mid) + taper_length(params, end, mid)
-    return RoadSpec(c, cfg, start, end, need)
+    if not splitters:
+        return RoadSpec(c, cfg, start, end, need)
+    first, last = splitters.get(LegKey(c, True), 0.0), splitters.get(LegKey(c, False), 0.0)
+    median = params.median_width if cfg.median else 0.0
+    island = sum(length for w in (first, last) for length, _ in splitter_spans(w, median, params))
+    need += island + (SPLITTER_CLEAR if island > 0.0 else 0.0)
+    return RoadSpec(c, cfg, start, end, need, first, last)
 
 
 def _repair(view: Survey, c: int, shape: RoadShape) -> None:

@@ -48,6 +48,8 @@ class RoadSpec:
     start: EndLanes
     end: EndLanes
     need: float  #: shortest length that holds both tapers and a minimal straight piece
+    splitter_start: float = 0.0  #: width of a roundabout's splitter island at the road's start (0: none)
+    splitter_end: float = 0.0
 
 
 class Misfit(Enum):
@@ -167,6 +169,9 @@ def shape_road(P: list[tuple[float, float]], r0: float, r1: float, spec: RoadSpe
     cfg, ends = spec.lanes, (spec.start, spec.end)
     mid = (cfg.forward, cfg.backward)
     widest = max(side_width(n, cfg.median, params.lane_width, params.median_width) for n in (*mid, *ends[0], *ends[1]))
+    splitter = max(spec.splitter_start, spec.splitter_end)
+    if splitter > 0.0:  # a roundabout's arm: its splitter island widens one side
+        widest = max(widest, max(*mid, *ends[0], *ends[1]) * params.lane_width + splitter)
     # lane centres on the inside keep 3/4 of the curvature budget; a lane taper on the curve may use the rest
     r_min = min_curve_radius(params, widest, ends, mid)
     corners = _corners(segs, avail, r_min, max(r_min, PREFERRED_RADIUS))

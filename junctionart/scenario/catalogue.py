@@ -8,8 +8,10 @@ Germany (``DE``) is the country of the standard's own examples (14.1: sign 274, 
 of the numbering CARLA's and esmini's readers know (CARLA's ``SignalType``: 205 yield, 206 stop, 294 stop line). Its
 catalogue is the Straßenverkehrs-Ordnung's sign list (Anlage 1-3 StVO): 205 "Vorfahrt gewähren" (yield), 206 "Halt.
 Vorfahrt gewähren" (stop), 306 "Vorfahrtstraße" (priority road), 294 "Haltlinie" (stop line, a road marking with a
-sign number). Traffic lights are the signal reference's 1000001 (three lights, red-yellow-green, for vehicles).
-Another country is one more :class:`Catalogue` entry in :data:`COUNTRIES`.
+sign number), and at roundabouts 215 "Kreisverkehr" (roundabout, under the yield sign on every entry) and 341
+"Wartelinie" (yield line, the broken line where entering traffic waits). Traffic lights are the signal reference's
+1000001 (three lights, red-yellow-green, for vehicles). Another country is one more :class:`Catalogue` entry in
+:data:`COUNTRIES`.
 """
 
 from __future__ import annotations
@@ -44,6 +46,8 @@ class Catalogue:
     yield_: SignType
     priority_road: SignType
     stop_line: SignType  #: a road marking across the stopping lanes (height 0, z offset 0)
+    roundabout: SignType  #: on every entry of a roundabout, under the yield sign
+    yield_line: SignType  #: a road marking across a roundabout's entry lanes (height 0, z offset 0)
     traffic_light: SignType = TRAFFIC_LIGHT
 
 
@@ -55,5 +59,7 @@ COUNTRIES: dict[str, Catalogue] = {
         yield_=SignType("DE", "205", "-1", "yield", width=0.9, height=0.8),
         priority_road=SignType("DE", "306", "-1", "priority road"),
         stop_line=SignType("DE", "294", "-1", "stop line", width=0.0, height=0.0, z_offset=0.0),
+        roundabout=SignType("DE", "215", "-1", "roundabout"),
+        yield_line=SignType("DE", "341", "-1", "yield line", width=0.0, height=0.0, z_offset=0.0),
     ),
 }

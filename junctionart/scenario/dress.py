@@ -25,5 +25,9 @@ def dress(doc: Document, layout: Layout, params: Params, seed: int) -> Document:
     if params.junction_control is not JunctionControl.NONE:
         from .signals import add_signals
 
-        doc = add_signals(doc, params, seed, ids)
+        entries: dict[str, list[tuple[str, str]]] = {}
+        for ring in layout.roundabouts:
+            for road, contact, j in ring.arms:
+                entries.setdefault(doc.junctions[j].id, []).append((str(road + 1), contact))
+        doc = add_signals(doc, params, seed, ids, entries)
     return doc

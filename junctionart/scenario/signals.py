@@ -12,7 +12,9 @@ junction                                   traffic lights  stop  yield  none
 
 A *major* leg has 3 or more driving lanes or a median at the junction (an arterial); junctions of fewer than 3 legs
 (a road joining another at a bend) get no control. ``traffic-lights``, ``stop``, ``yield`` and ``none`` impose one
-type on every junction of 3+ legs.
+type on every junction of 3+ legs. A roundabout's arm junctions are controlled as roundabouts whatever the setting
+(other than ``none``): traffic on the ring has priority, every entry yields (the yield sign 205 over the roundabout
+sign 215 at the outer edge, and the yield line 341 across the entry lanes 1 m before the junction).
 
 Traffic lights: one signal per incoming lane (the signal reference's vehicle light, hung over its lane at 5 m on a
 mast arm), its ``<validity>`` that lane, referring to the approach's stop line; one ``<controller>`` per signal group
@@ -57,6 +59,7 @@ CONTROL_PROBABILITIES = {
 CONTROLS = (JunctionControl.TRAFFIC_LIGHTS, JunctionControl.STOP, JunctionControl.YIELD, JunctionControl.NONE)
 STOP_BACK = 1.0  #: m between the stop line and the junction
 LIGHT_HEIGHT = 5.0  #: m, bottom of an overhead traffic light above the road
+SIGN_GAP = 0.05  #: m between two signs on one post
 
 
 @dataclass(frozen=True)
@@ -77,8 +80,12 @@ class Approach:
         return "+" if self.contact == "end" else "-"
 
 
-def add_signals(doc: Document, params: Params, seed: int, ids: Ids) -> Document:
-    """``doc`` with the control of every junction of 3+ legs: signals on the incoming roads, controllers."""
+def add_signals(
+    doc: Document, params: Params, seed: int, ids: Ids, entries: dict[str, list[tuple[str, str]]] | None = None
+) -> Document:
+    """``doc`` with the control of every junction of 3+ legs: signals on the incoming roads, controllers.
+    ``entries``: the arms (road id, contact point) of each junction of a roundabout, by junction id."""
+    entries = entries or {}
     rng = np.random.default_rng([seed, 16])
     roads = {r.id: r for r in doc.roads}
     added: dict[str, list[Signal]] = {}
@@ -88,7 +95,10 @@ def add_signals(doc: Document, params: Params, seed: int, ids: Ids) -> Document:
     for j in doc.junctions:
         movements, legs = _movements(j, roads)
         control = _control(params, rng, legs, roads)
-        made = _junction_signals(j, control, movements, legs, roads, params, ids)
+        if j.id in entries and params.junction_control is not JunctionControl.NONE:
+            made = _roundabout_signals(entries[j.id], movements, roads, params, ids)
+        else:
+            made = _junction_signals(j, control, movements, legs, roads, params, ids)
         for sig_road, sig in made.signals:
             added.setdefault(sig_road, []).append(sig)
         for obj_road, obj in made.objects:
@@ -187,6 +197,23 @@ def _junction_signals(
         made.signals.append((a.road.id, _sign(a, sign, ids.next)))
         if control is JunctionControl.STOP:
             made.signals.append((a.road.id, _stop_line(a, cat.stop_line, ids.next)))
+    return made
+
+
+def _roundabout_signals(
+    arms: list[tuple[str, str]], movements: dict[LaneKey, list[Road]], roads: dict[str, Road], params: Params, ids: Ids
+) -> _Made:
+    """A roundabout's junction: on each arm's entry the yield sign over the roundabout sign, and the yield line."""
+    made = _Made()
+    cat = COUNTRIES[params.country]
+    for a in _approaches(movements, roads):
+        if (a.road.id, a.contact) not in arms:
+            continue  # the ring: circulating traffic has priority
+        low = _sign(a, cat.roundabout, ids.next)
+        made.signals.append((a.road.id, low))
+        high = low.z_offset + cat.roundabout.height + SIGN_GAP
+        made.signals.append((a.road.id, dataclasses.replace(_sign(a, cat.yield_, ids.next), z_offset=high)))
+        made.signals.append((a.road.id, _stop_line(a, cat.yield_line, ids.next)))
     return made
 
 

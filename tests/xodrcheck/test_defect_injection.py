@@ -285,6 +285,7 @@ def test_injected_defect_gives_a_new_error(corpus_dir, defect):
     tree = etree.ElementTree(etree.fromstring(source, parser))
     defect.inject(tree)
     injected = etree.tostring(tree, xml_declaration=True, encoding="UTF-8")
+
     def new(profile: str, least: Severity):
         return _findings(injected, defect.category, profile, least) - _findings(source, defect.category, profile, least)
 
@@ -292,4 +293,3 @@ def test_injected_defect_gives_a_new_error(corpus_dir, defect):
     reported = new("default", Severity.WARNING)
     assert reported, f"{defect.name} in {defect.map}: not reported under the default profile"
     assert not [f for f in reported if f[3] == "plausibility" and f[2] >= Severity.ERROR], reported
-

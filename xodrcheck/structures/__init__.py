@@ -80,6 +80,7 @@ Recogniser = Callable[[Document, Sequence[Junction]], list[Structure]]
 #: Recogniser modules under ``xodrcheck.structures``, in recognition order (a group of junctions first, then the
 #: single-junction layouts); ``junction`` (every junction left) is last and always there.
 MODULES: tuple[str, ...] = (
+    "roundabout",
     "ramp",
     "fork",
     "junction",

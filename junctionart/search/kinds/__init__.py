@@ -26,6 +26,7 @@ MODULES = {
     "junction": "junctionart.search.kinds.junction",
     "fork": "junctionart.search.kinds.fork",
     "ramp": "junctionart.search.kinds.ramp",
+    "roundabout": "junctionart.search.kinds.roundabout",
 }
 
 
