@@ -36,22 +36,35 @@ def turn(legs: list[Leg], i: int, j: int) -> float:
     return wrap(legs[j].angle - (legs[i].angle + math.pi))
 
 
+def _same_road(legs: list[Leg], i: int, j: int) -> bool:
+    """Legs i and j are the two ends of one road looping back to the junction."""
+    return legs[i].road == legs[j].road != -1
+
+
 def _targets(legs: list[Leg], rule: TrafficRule) -> list[list[int]]:
     """Per incoming leg, the legs it feeds, in enumeration order. Turns sharper than SHARPEST_TURN are left out, unless
     a leg would then have no exit at all, or only its own road's other end (a road looping back to the junction: its
-    traffic would go round the loop for ever), or an outgoing leg no feeder (it is then fed by the least sharp turn)."""
+    traffic would go round the loop for ever), or an outgoing leg no feeder, or only its own road's other end (traffic
+    from elsewhere could never enter that direction of the loop): it is then fed by the least sharp turn from
+    another road."""
     n = len(legs)
     out: list[list[int]] = []
     for i in range(n):
         others = [j for j in range(n) if j != i and legs[j].n_out > 0] if legs[i].n_in else []
         gentle = [j for j in others if abs(turn(legs, i, j)) <= SHARPEST_TURN]
-        loop = all(legs[j].road == legs[i].road != -1 for j in gentle)
+        loop = all(_same_road(legs, i, j) for j in gentle)
         out.append(others if loop else gentle)
     for j in range(n):
-        if legs[j].n_out and not any(j in t for t in out):
+        if not legs[j].n_out:
+            continue
+        fed_by = [i for i in range(n) if j in out[i]]
+        if fed_by and not all(_same_road(legs, i, j) for i in fed_by):
+            continue
+        feeders = [i for i in range(n) if i != j and legs[i].n_in and not _same_road(legs, i, j)]
+        if not feeders and not fed_by:
             feeders = [i for i in range(n) if i != j and legs[i].n_in]
-            if feeders:
-                out[min(feeders, key=lambda i: abs(turn(legs, i, j)))].append(j)
+        if feeders:
+            out[min(feeders, key=lambda i: abs(turn(legs, i, j)))].append(j)
     sign = 1.0 if rule is TrafficRule.RHT else -1.0
 
     def by_turn(i: int, targets: list[int]) -> list[int]:

@@ -1,3 +1,4 @@
+import dataclasses
 import math
 from collections import defaultdict
 
@@ -185,3 +186,23 @@ def test_link_plan_feeds_a_leg_reachable_only_by_a_sharp_turn():
     assert {j for _, _, j, _ in p.links} == {1, 2}
     assert p.n_out_end == (0, 1, 1)
     assert p.n_in_end == (1, 0, 0)
+
+
+def test_link_plan_feeds_both_ends_of_a_loop_from_the_other_road():
+    """A road looping back to its junction (legs 1 and 2, one road): each of its ends is fed from the other road
+    (leg 0), even where that turn is sharper than SHARPEST_TURN, so traffic from elsewhere can enter both directions of
+    the loop (fuzz regression loop-road-direction-without-a-way-in: leg 0's 156 deg turn into leg 1 was left out and
+    leg 1 was fed only by the loop's own other end)."""
+    from junctionart.intersections.links import Leg, plan
+
+    legs = [
+        Leg((0, 17), -0.0976, 1, 1, True, road=0),
+        Leg((0, 23), 0.3194, 1, 1, True, road=1),  # 156 deg right turn from leg 0
+        Leg((0, 21), 2.0652, 1, 1, True, road=1),  # 56 deg right turn from leg 0
+    ]
+    p = plan(legs, Params(turn_lane_probability=0.0), np.random.default_rng(0), {})
+    assert {j for i, _, j, _ in p.links if i == 0} == {1, 2}
+    assert {i for i, _, j, _ in p.links if j == 1} == {0, 2}
+    one_road = [dataclasses.replace(g, road=-1) for g in legs]  # three roads: the sharp turn stays out
+    q = plan(one_road, Params(turn_lane_probability=0.0), np.random.default_rng(0), {})
+    assert {j for i, _, j, _ in q.links if i == 0} == {2}
