@@ -2,7 +2,7 @@
 
 Counts are per travel direction along the chain: ``forward`` lanes travel from its first node to its last,
 ``backward`` lanes the other way; 0 to 3 each, never 0 both. A median lane is added to some two-way roads. One-way
-roads that would leave part of the network without a way in or out get a lane back (:func:`_both_ways_where_needed`).
+roads that would leave part of the network without a way in or out get a lane back (:func:`both_ways_where_needed`).
 """
 
 from __future__ import annotations
@@ -60,7 +60,7 @@ def _reached(arcs: list[tuple[int, int]], root: int) -> set[int]:
     return seen
 
 
-def _both_ways_where_needed(drawn: list[tuple[Chain, LaneConfig]], deg: list[int]) -> list[tuple[Chain, LaneConfig]]:
+def both_ways_where_needed(drawn: list[tuple[Chain, LaneConfig]], deg: list[int]) -> list[tuple[Chain, LaneConfig]]:
     """The drawn configurations, with one-way roads made two-way (one lane back, no median) until every node can
     reach every other one through the roads' directions, the map's open ends (nodes of degree 1, where traffic enters
     and leaves) joined through the outside: random one-way roads may otherwise lead traffic into a part it never
@@ -129,7 +129,7 @@ def assign(net: Network, lines: ControlLines, params: Params, rng: np.random.Gen
             fwd, bwd = max(fwd, 1), max(bwd, 1)
         median = bool(fwd and bwd and rng.random() < params.median_probability)
         drawn.append((ch, LaneConfig(fwd, bwd, median)))
-    for ch, cfg in _both_ways_where_needed(drawn, deg):
+    for ch, cfg in both_ways_where_needed(drawn, deg):
         for e, fw in zip(ch.edges, ch.forward):
             lanes[e] = cfg if fw else cfg.reversed()
     configs = tuple(c for c in lanes if c is not None)

@@ -136,8 +136,9 @@ def generated_map_is_connected(
     map without open edges: from and to every other lane), and the lane-graph rules find nothing (no dead end, no
     lane nothing enters, no trap, no junction approach without a way through). No parameter allows a dead end: the
     generator links every lane it draws, marks a line crossable beside every lane that opens or closes, gives a
-    one-way road a lane back where the network would otherwise have a part without a way out, and lets a road that
-    loops back to its junction turn off it. A finding with a code in ``tolerated`` (an open known fault of
+    one-way road a lane back where the network would otherwise have a part without a way in or out (also after the
+    layout's repairs), and lets a road that loops back to its junction be entered from, and turn off into, its other
+    roads. A finding with a code in ``tolerated`` (an open known fault of
     :data:`fuzz.profiles.REGRESSIONS`) is counted in ``STATS["tolerated"]``, and the lanes it strands are not held
     against the map."""
     from xodrcheck.graph import lane_graph

@@ -14,6 +14,7 @@ fits, and records what it did (``Layout.repairs``):
   leg that still fails is dropped;
 * roads or junction areas that overlap where the map does not connect them lose a road (an overpass's two roads are
   connected by its deck's clearance);
+* a one-way road is made two-way where repairs left part of the map that traffic cannot enter or leave;
 * an overpass whose laid roads leave no room for its ramps becomes a junction (:mod:`.overpasses`).
 
 Each repair removes an edge or a node or enlarges a bounded counter, so the loop ends. Repairs that touch different
@@ -44,7 +45,7 @@ from .model import Layout
 from .overlap import remove_overlaps
 from .overpasses import fit_overpasses
 from .planning import Planner
-from .prune import drop_acute_legs, drop_excess_legs, open_exits
+from .prune import drop_acute_legs, drop_excess_legs, open_exits, open_ways
 from .roads import lay_roads
 from .state import NetworkState
 from .survey import Survey
@@ -90,6 +91,7 @@ class Builder:
         if st.dirty:
             return None
         open_exits(view, legs_at)
+        open_ways(view)
         junctions, reach = self.planner.plan_all(view, legs_at)
         roads = lay_roads(view, junctions, reach, self.p)
         if roads is None:

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 
-from ..lanes import LaneConfig
+from ..lanes import LaneConfig, both_ways_where_needed
 from ..params import Params
 from .legs import MAX_LEGS, LegKey, neighbour_gaps
 from .survey import Survey
@@ -59,6 +59,21 @@ def open_exits(view: Survey, legs_at: dict[int, list[LegKey]]) -> None:
     for _ in range(10 * len(view.chains) + 10):
         if not _open_one_exit(view, legs_at):
             return
+
+
+def open_ways(view: Survey) -> None:
+    """Stage 2 leaves every node reaching every other one through the roads' directions; a repair since (a road
+    removed, two junctions merged) can break that, and leave a junction traffic never enters or never leaves (a loop
+    road whose only other leg is a one-way road out of it). One-way roads are then made two-way again, as stage 2
+    does (:func:`~junctionart.lanes.both_ways_where_needed`)."""
+    drawn = [(ch, view.lanes(c)) for c, ch in enumerate(view.chains)]
+    for c, ((ch, before), (_, after)) in enumerate(zip(drawn, both_ways_where_needed(drawn, view.degree))):
+        if after != before:
+            view.set_lanes(c, after)
+            view.state.repairs.append(
+                f"road from node {ch.start} to node {ch.end} made two-way: without it, part of the map could not be "
+                "entered or left"
+            )
 
 
 def _open_one_exit(view: Survey, legs_at: dict[int, list[LegKey]]) -> bool:

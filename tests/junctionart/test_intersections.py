@@ -206,3 +206,24 @@ def test_link_plan_feeds_both_ends_of_a_loop_from_the_other_road():
     one_road = [dataclasses.replace(g, road=-1) for g in legs]  # three roads: the sharp turn stays out
     q = plan(one_road, Params(turn_lane_probability=0.0), np.random.default_rng(0), {})
     assert {j for i, _, j, _ in q.links if i == 0} == {2}
+
+
+def test_repairs_that_strand_a_junction_make_a_one_way_road_two_way():
+    """Node 0 has a loop (0-1-2-0) and a one-way road out to node 3 (a junction of two dead ends): nothing enters
+    node 0 until that road gets a lane back (fuzz regression repairs-leaving-a-loop-junction-without-a-way-in)."""
+    from junctionart.intersections.prune import open_ways
+    from junctionart.intersections.state import NetworkState
+    from junctionart.intersections.survey import Survey
+    from junctionart.lanes import LaneConfig
+
+    two, one = LaneConfig(1, 1), LaneConfig(1, 0)
+    nodes = [(0.0, 0.0), (-100.0, 100.0), (-100.0, -100.0), (200.0, 0.0), (300.0, 100.0), (300.0, -100.0)]
+    edges = {0: (0, 1, two), 1: (1, 2, two), 2: (2, 0, two), 3: (0, 3, one), 4: (3, 4, two), 5: (3, 5, two)}
+    st = NetworkState(nodes, edges)
+    view = Survey.take(st)
+    open_ways(view)
+    assert st.edges[3][2] == LaneConfig(1, 1)
+    assert st.edges[0][2] == two and st.edges[4][2] == two
+    assert len(st.repairs) == 1 and "made two-way" in st.repairs[0]
+    open_ways(Survey.take(st))  # connected now: nothing changes
+    assert len(st.repairs) == 1
