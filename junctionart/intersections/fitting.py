@@ -7,6 +7,7 @@ test by its links and targets, so only what is new is computed (in one vectorise
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import NamedTuple
 
 import numpy as np
@@ -42,12 +43,19 @@ class LinkFitter:
         self._fits: dict[Target, HermiteFit | None] = {}
         self._crossings: dict[tuple[tuple[LinkFit, ...], tuple[Target, ...]], set[int]] = {}
 
-    def fit(self, plan: LinkPlan, contacts: list[Contact], medians: list[bool], may_drop: bool) -> JunctionFit:
+    def fit(
+        self,
+        plan: LinkPlan,
+        contacts: list[Contact],
+        medians: list[bool],
+        may_drop: bool,
+        roads: Sequence[int] = (),
+    ) -> JunctionFit:
         """Connection geometry for every link of ``plan`` between legs meeting the junction at ``contacts``.
 
         A link that cannot meet the radius bound, or crosses another link from its road, makes the junction grow,
-        unless ``may_drop`` (the junction has grown once already) and its incoming lane keeps another link and its
-        outgoing lane another feeder: it is then left out."""
+        unless ``may_drop`` (the junction has grown once already) and the links left keep what it gave
+        (:func:`_droppable`): it is then left out. ``roads`` names each leg's road (two legs of one road: a loop)."""
         rows, targets = self._rows(plan, contacts, medians)
         out = self._fitted(rows, targets)
         bad = {n for n, r in enumerate(out) if r.fit is None}
@@ -61,11 +69,8 @@ class LinkFitter:
         if not may_drop:
             return marked
         good = [r for n, r in enumerate(out) if n not in bad]
-        lanes_ok = {(r.leg_in, r.lane_in) for r in good}
-        fed_ok = {(r.leg_out, r.lane_out) for r in good}
-        for n in bad:
-            if (out[n].leg_in, out[n].lane_in) not in lanes_ok or (out[n].leg_out, out[n].lane_out) not in fed_ok:
-                return marked
+        if not _droppable([out[n] for n in sorted(bad)], good, roads):
+            return marked
         return JunctionFit(good, False)
 
     def _rows(self, plan: LinkPlan, contacts: list[Contact], medians: list[bool]) -> tuple[list[LinkFit], list[Target]]:
@@ -86,3 +91,27 @@ class LinkFitter:
             fits = fit_connections(np.array(todo), self.offsets, self.p.min_turn_radius + 0.5, SCALES)
             self._fits.update(zip(todo, fits))
         return [r._replace(fit=self._fits[t]) for r, t in zip(rows, targets)]
+
+
+def _droppable(bad: list[LinkFit], good: list[LinkFit], roads: Sequence[int]) -> bool:
+    """Whether the ``bad`` links may be left out, the ``good`` ones kept: each bad link's incoming lane keeps another
+    link and its outgoing lane another feeder. At a road looping back to the junction, a link between it and another
+    road must also leave its loop lane another link with another road: a loop lane fed, or left, only through the
+    loop's other end could never be entered from the rest of the map, or never be left."""
+    exits = {(r.leg_in, r.lane_in) for r in good}
+    feeds = {(r.leg_out, r.lane_out) for r in good}
+    if any((r.leg_in, r.lane_in) not in exits or (r.leg_out, r.lane_out) not in feeds for r in bad):
+        return False
+    loops = {r for r in roads if list(roads).count(r) > 1}
+    if not loops:
+        return True
+    across = [r for r in good if roads[r.leg_in] != roads[r.leg_out]]
+    exits, feeds = {(r.leg_in, r.lane_in) for r in across}, {(r.leg_out, r.lane_out) for r in across}
+    for r in bad:
+        if roads[r.leg_in] == roads[r.leg_out]:
+            continue
+        if roads[r.leg_in] in loops and (r.leg_in, r.lane_in) not in exits:
+            return False
+        if roads[r.leg_out] in loops and (r.leg_out, r.lane_out) not in feeds:
+            return False
+    return True

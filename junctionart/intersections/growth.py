@@ -55,7 +55,8 @@ class Growth:
 
     def _visit(self, j: Junction) -> None:
         contacts, medians = leg_ends(self.roads, j.keys)
-        fit = self.fitter.fit(j.links, contacts, medians, may_drop=self.st.growth.get(j.node, 0) >= 1)
+        may_drop = self.st.growth.get(j.node, 0) >= 1
+        fit = self.fitter.fit(j.links, contacts, medians, may_drop, [leg.road for leg in j.legs])
         if not fit.grow:
             self._accept(j, fit.links)
             return

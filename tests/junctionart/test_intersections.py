@@ -208,6 +208,22 @@ def test_link_plan_feeds_both_ends_of_a_loop_from_the_other_road():
     assert {j for i, _, j, _ in q.links if i == 0} == {2}
 
 
+def test_a_failing_link_into_a_loop_is_kept_while_it_is_the_loops_only_way_in():
+    """After a growth step the fitter may leave out a failing link whose lanes keep other links; into a road looping
+    back to the junction (legs 1 and 2), a link from another road stays while the loop's own other end is the only
+    other feeder (fuzz regression loop-link-dropped-at-a-growing-junction)."""
+    from junctionart.intersections.crossing import LinkFit
+    from junctionart.intersections.fitting import _droppable
+
+    def link(i, j):
+        return LinkFit(i, 1, j, 1, 0, 0, (0.0, 0.0), 0.0, None)
+
+    bad, good = [link(0, 1)], [link(2, 1), link(0, 2), link(1, 0)]
+    assert not _droppable(bad, good, [0, 1, 1])  # leg 1 would be fed only by its own road's other end
+    assert _droppable(bad, good, [0, 1, 2])  # three roads: leg 2 is a feeder like any other
+    assert _droppable(bad, [*good, link(3, 1)], [0, 1, 1, 3])  # road 3 still feeds the loop
+
+
 def test_repairs_that_strand_a_junction_make_a_one_way_road_two_way():
     """Node 0 has a loop (0-1-2-0) and a one-way road out to node 3 (a junction of two dead ends): nothing enters
     node 0 until that road gets a lane back (fuzz regression repairs-leaving-a-loop-junction-without-a-way-in)."""
