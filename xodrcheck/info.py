@@ -14,7 +14,8 @@ import numpy as np
 
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Finding, Severity
-from xodrcheck.lanes import RoadGeometry, geometry_of
+from xodrcheck.geometry.lanes import RoadGeometry, geometry_of
+from xodrcheck.geometry.sampling import step_counts
 from xodrcheck.model import (
     Arc,
     Document,
@@ -28,7 +29,6 @@ from xodrcheck.model import (
     lane_type_name,
 )
 from xodrcheck.reader import ReadResult
-from xodrcheck.sampling import step_counts
 
 if TYPE_CHECKING:
     from xodrcheck.elevation_info import ElevationInfo

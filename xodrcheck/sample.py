@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from xodrcheck.config import Tolerances
-from xodrcheck.lanes import RoadGeometry, geometry_of
+from xodrcheck.geometry.lanes import RoadGeometry, geometry_of
 from xodrcheck.model import Document, lane_type_name
 
 __all__ = ["KINDS", "LaneLine", "sample_count", "sample_lanes", "section_s_values"]

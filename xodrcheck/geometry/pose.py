@@ -46,6 +46,13 @@ def local_to_inertial(g, u: np.ndarray, v: np.ndarray) -> tuple[np.ndarray, np.n
     return g.x + c * u - s * v, g.y + s * u + c * v
 
 
+def filled(value, like: np.ndarray) -> np.ndarray:
+    """A new array shaped as ``like`` holding ``value`` (a number, or an array of that shape)."""
+    out = np.empty_like(like)
+    out[...] = value
+    return out
+
+
 def as_array(ds) -> np.ndarray:
     """A 1-D float array (scalars become length-1 arrays)."""
     if type(ds) is np.ndarray and ds.dtype == np.float64 and ds.ndim == 1:
