@@ -9,8 +9,9 @@ blocks end to end, so that one numpy call can update the rows of one depth acros
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Protocol
 
 import numpy as np
@@ -67,8 +68,6 @@ class SectionRows:
     elevation: Table
     #: The superelevation, ``None`` on a road without (no roll anywhere).
     roll: Table | None
-    #: Layouts of this section alone at a few sample counts (:func:`layout_of`).
-    layouts: dict[int, Layout] = field(default_factory=dict)
 
 
 def lay_out(
@@ -140,24 +139,27 @@ class Step:
     rolled: np.ndarray | None
 
 
-#: Most samples of a block whose layout its section keeps (per-road queries at a few points repeat the same layout).
+#: Most samples of a block whose layout is kept (per-road queries at a few points repeat the same layouts).
 _KEPT_SAMPLES = 64
-#: Most layouts a section keeps (one per sample count).
-_KEPT_LAYOUTS = 4
+#: Most layouts kept, least recently used dropped first (a few kB each).
+_KEPT_LAYOUTS = 512
+_KEPT: OrderedDict[tuple[int, int], tuple[SectionRows, Layout]] = OrderedDict()
 
 
 def layout_of(sections: Sequence[SectionRows], counts: np.ndarray, offsets: np.ndarray) -> Layout:
-    """The :class:`Layout` of a batch; that of one block of a few samples is kept with its section."""
+    """The :class:`Layout` of a batch; those of one block of a few samples are kept for the next query."""
     if len(sections) != 1 or counts[0] > _KEPT_SAMPLES:
         return Layout(sections, counts, offsets)
-    kept = sections[0].layouts
-    n = int(counts[0])
-    found = kept.get(n)
-    if found is None:
-        if len(kept) >= _KEPT_LAYOUTS:
-            del kept[next(iter(kept))]
-        found = kept[n] = Layout(sections, counts, offsets)
-    return found
+    key = (id(sections[0]), int(counts[0]))
+    found = _KEPT.get(key)
+    if found is not None and found[0] is sections[0]:
+        _KEPT.move_to_end(key)
+        return found[1]
+    layout = Layout(sections, counts, offsets)
+    _KEPT[key] = (sections[0], layout)
+    if len(_KEPT) > _KEPT_LAYOUTS:
+        _KEPT.popitem(last=False)
+    return layout
 
 
 class Layout:
