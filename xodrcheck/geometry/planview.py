@@ -33,6 +33,9 @@ _EVALUATORS: dict[type, Callable[..., Pose]] = {
     ParamPoly3: parampoly3.evaluate,
 }
 
+#: Elements whose calls are evaluated together, each call with its own numbers.
+_RUNS: dict[type, Callable[..., Pose]] = {ParamPoly3: parampoly3.evaluate_runs, Poly3: poly3.evaluate_runs}
+
 #: Element kinds in :attr:`ReferenceLine.kinds`: evaluated elementwise (lines, arcs), or one call per block.
 _LINE, _ARC, _PER_CALL = 0, 1, 2
 
@@ -151,23 +154,23 @@ def _per_call(
     at: np.ndarray,
 ) -> None:
     """Evaluate the points ``at`` (on spirals, poly3 and paramPoly3; ``block``: the block of each) one call per block
-    and element, each call with its points in their order; the paramPoly3 calls together
-    (:func:`parampoly3.evaluate_runs`)."""
+    and element, each call with its points in their order; the poly3 and paramPoly3 calls together (their
+    ``evaluate_runs``)."""
     order = np.lexsort((element[at], block))  # stable: a call's points keep their order
     at, block = at[order], block[order]
     owner = element[at]
     cuts = np.flatnonzero((owner[1:] != owner[:-1]) | (block[1:] != block[:-1])) + 1
     bounds = np.concatenate(([0], cuts, [len(at)])).tolist()
-    curves: list[ParamPoly3] = []
-    runs: list[tuple[int, int]] = []
+    runs: dict[type, tuple[list, list[tuple[int, int]]]] = {ParamPoly3: ([], []), Poly3: ([], [])}
     for lo, hi in itertools.pairwise(bounds):
         g = elements[int(owner[lo])]
-        if type(g) is ParamPoly3:
-            curves.append(g)
-            runs.append((lo, hi))
+        if type(g) in runs:
+            runs[type(g)][0].append(g)
+            runs[type(g)][1].append((lo, hi))
         else:
             pose.assign(at[lo:hi], evaluate_element(g, ds[at[lo:hi]]))
-    if curves:
-        inside = at[ranges([lo for lo, _ in runs], [hi - lo for lo, hi in runs])]
-        counts = np.array([hi - lo for lo, hi in runs], dtype=np.int64)
-        pose.assign(inside, parampoly3.evaluate_runs(curves, ds[inside], counts))
+    for kind, (curves, spans) in runs.items():
+        if curves:
+            inside = at[ranges([lo for lo, _ in spans], [hi - lo for lo, hi in spans])]
+            counts = np.array([hi - lo for lo, hi in spans], dtype=np.int64)
+            pose.assign(inside, _RUNS[kind](curves, ds[inside], counts))

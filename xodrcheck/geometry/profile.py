@@ -19,7 +19,6 @@ Decisions
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 from functools import lru_cache
 
@@ -199,29 +198,28 @@ def breakpoints(profile: Profile, origin: float = 0.0) -> np.ndarray:
 def jumps(profile: Profile, origin: float = 0.0) -> list[tuple[Cubic, float, float]]:
     """Where the profile is discontinuous: for every record start after the first, the record in force from there (the
     last of equal starts, as :meth:`Piecewise.jet` picks it), the value the record in force before reaches there and
-    the value the new one starts with. Pairs whose difference is not finite are left out (a damaged record)."""
+    the value the new one starts with (:meth:`Piecewise.jet`'s arithmetic: 0 before a record starts, or where the
+    start is NaN). Pairs whose difference is not finite are left out (a damaged record)."""
     records = sorted(profile, key=lambda r: r.s) if len(profile) > 1 else profile
-    out = []
+    pairs = []
     previous = None
     for k, record in enumerate(records):
         if k + 1 < len(records) and records[k + 1].s == record.s:
             continue  # a later record with the same start holds from there
         if previous is not None and record.s > previous.s:
-            at = record.s + origin
-            reached = _value(previous, origin, at)
-            starts = _value(record, origin, at)
-            if math.isfinite(reached - starts):
-                out.append((record, reached, starts))
+            pairs.append((previous, record))
         previous = record
-    return out
+    if not pairs:
+        return []
+    at = np.array([record.s + origin for _, record in pairs], dtype=float)
+    reached = _values([before for before, _ in pairs], origin, at)
+    starts = _values([record for _, record in pairs], origin, at)
+    with np.errstate(invalid="ignore", over="ignore"):
+        finite = np.isfinite(reached - starts)
+    return [(record, float(a), float(b)) for (_, record), a, b, ok in zip(pairs, reached, starts, finite) if ok]
 
 
-def _value(record: Cubic, origin: float, at: float) -> float:
-    """``Piecewise((record,), origin).jet(np.array([at]))[0][0]`` in scalar arithmetic: the same IEEE double
-    operations in the same order, so the same number, without building arrays (0 before the record starts, or where
-    ``at`` is NaN)."""
-    ds = float(at) - float(record.s + origin)
-    if not ds >= 0:
-        return 0.0
-    a, b, c, d = float(record.a), float(record.b), float(record.c), float(record.d)
-    return a + ds * (b + ds * (c + ds * d))
+def _values(records: list[Cubic], origin: float, at: np.ndarray) -> np.ndarray:
+    """The value of each record at its ``at`` (0 before the record starts), with :meth:`Piecewise.jet`'s arithmetic."""
+    a, b, c, d = np.array([(r.a, r.b, r.c, r.d) for r in records], dtype=float).reshape(-1, 4).T
+    return _cubic_jet(a, b, c, d, at - np.array([r.s + origin for r in records], dtype=float), None)[0]
