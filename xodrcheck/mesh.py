@@ -16,7 +16,7 @@ followed by its outer row reversed.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Collection, Mapping
+from collections.abc import Callable, Collection
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -27,9 +27,9 @@ from xodrcheck.arrays import batches, ranges
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import XodrError
 from xodrcheck.geometry.batch import Evaluation
-from xodrcheck.geometry.lanes import RoadGeometry, geometry_of
+from xodrcheck.geometry.lanes import RoadGeometry, geometry_of, road_geometry
 from xodrcheck.geometry.sampling import sample_sections
-from xodrcheck.model import Document, Lane, LaneKey, Road, document_cache, lane_type_name
+from xodrcheck.model import Document, Lane, LaneKey, document_cache, lane_type_name
 
 __all__ = ["MAX_COORDINATE", "LaneSurfaces", "MeshTooLarge", "build_surfaces", "cached_per_chord", "surfaces_of"]
 
@@ -153,11 +153,6 @@ class MeshTooLarge(XodrError, ValueError):
     """The mesh would have more vertices than the bound it was built with."""
 
 
-def _road_geometry(document: Document, road: Road, geometries: Mapping[str, RoadGeometry]) -> RoadGeometry:
-    rg = geometries[road.id]
-    return rg if rg.road is road else RoadGeometry(road)  # a duplicated id: the mapping holds the first road
-
-
 def build_surfaces(
     document: Document,
     chord: float | None = None,
@@ -185,7 +180,7 @@ def build_surfaces(
     for road in document.roads:
         if not road.plan_view:
             continue
-        rg = _road_geometry(document, road, geometries)
+        rg = road_geometry(geometries, road)
         for index, section in enumerate(road.lane_sections):
             if road.section_end(index) > section.s:
                 pairs = _lane_pairs(rg, index, wanted)

@@ -347,6 +347,13 @@ class _LazyGeometries(Mapping[str, RoadGeometry]):
         return len(self._roads)
 
 
+def road_geometry(geometries: Mapping[str, RoadGeometry], road: Road) -> RoadGeometry:
+    """``road``'s geometry from ``geometries`` (:func:`geometry_of`), or one of its own for a road whose id an earlier
+    road of the document has (the mapping holds the first road of an id)."""
+    found = geometries[road.id]
+    return found if found.road is road else RoadGeometry(road)
+
+
 def geometry_of(document: Document) -> Mapping[str, RoadGeometry]:
     """Road id -> :class:`RoadGeometry`, built on first access and cached for the document's lifetime."""
     cache = document_cache(document)

@@ -18,7 +18,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from xodrcheck.geometry.lanes import RoadGeometry, SideLanes, geometry_of
+from xodrcheck.geometry.lanes import RoadGeometry, SideLanes, geometry_of, road_geometry
 from xodrcheck.model import Document, Lane, Road, RoadMark, lane_type_name
 
 #: Default chord tolerance (m) of the drawn polylines: below a pixel at any useful zoom.
@@ -146,9 +146,7 @@ def map_shapes(document: Document, chord: float = CHORD, max_step: float = MAX_S
 def _add_road(shapes: MapShapes, road: Road, geometries: Mapping[str, RoadGeometry], chord: float, max_step: float):
     if not road.plan_view or not road.lane_sections:
         return
-    rg = geometries[road.id]
-    if rg.road is not road:  # a duplicated id: the mapping holds the first road
-        rg = RoadGeometry(road)
+    rg = road_geometry(geometries, road)
     try:
         found = [_section(road, i, rg, chord, max_step) for i in range(len(road.lane_sections))]
     except Exception:

@@ -27,6 +27,7 @@ import numpy as np
 
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.geometry.batch import centre_lines
+from xodrcheck.geometry.lines import tightest
 from xodrcheck.model import Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context, placed_lane_ids
@@ -56,13 +57,6 @@ def _where(road: Road, index: int, lane_id: int | None, s: float, x: float, y: f
         "y": y,
         "line": line or road.lane_sections[index].line or road.line or None,
     }
-
-
-def _tightest(curvature: np.ndarray, bound: float) -> int | None:
-    """Index of the largest |curvature| above ``bound`` (``None`` when none is)."""
-    k = np.abs(np.nan_to_num(curvature, nan=0.0, posinf=0.0, neginf=0.0))
-    i = int(np.argmax(k)) if len(k) else 0
-    return i if len(k) and k[i] > bound else None
 
 
 @rule("C001", "lane-radius-too-small", Category.CURVATURE, Severity.ERROR, basis=Basis.PLAUSIBILITY)
@@ -170,9 +164,10 @@ def reference_radius_too_small(ctx: Context):
         if not len(lines.s) or not any((lane := section.lane(i)) is not None and lane.drivable for i in (1, -1)):
             continue
         s, points = lines.s, lines.borders[0]
-        i = _tightest(np.where(points.speed > 0, points.curvature, 0.0), bound)
-        if i is None:
+        hit = tightest(points.curvature, points.speed, np.array([0, len(s)]), bound)[0]
+        if hit is None:
             continue
+        i = hit[1]
         radius = 1.0 / abs(float(points.curvature[i]))
         yield reference_radius_too_small.finding(
             f"road {road.id}: the lane-0 line (reference line plus laneOffset) has a radius of {radius:.3g} m at "

@@ -18,7 +18,7 @@ from xodrcheck import arrays
 from xodrcheck.check import Selection, run_rules
 from xodrcheck.config import Config
 from xodrcheck.geometry.batch import Evaluation, centre_lines
-from xodrcheck.geometry.lanes import RoadGeometry, geometry_of
+from xodrcheck.geometry.lanes import RoadGeometry, geometry_of, road_geometry
 from xodrcheck.geometry.lines import tightest
 from xodrcheck.geometry.sampling import sample_sections
 from xodrcheck.mesh import MAX_COORDINATE, build_surfaces
@@ -97,7 +97,7 @@ def _assert_mesh_is_each_sections_own(document, chord: float) -> None:
     for road in document.roads:
         if not road.plan_view:
             continue
-        rg = geometries[road.id] if geometries[road.id].road is road else RoadGeometry(road)
+        rg = road_geometry(geometries, road)
         for i, section in enumerate(road.lane_sections):
             if not road.section_end(i) > section.s:
                 continue
