@@ -90,8 +90,9 @@ class SideLanes:
 
 def evaluation_size(evaluation: Evaluation) -> int:
     """Bytes an evaluation of one block holds once its lines and pose are computed, about: per row the border and
-    lateral jets and the pair's sample, and per sample ``s``, the pose with its heading, the profiles and the roll."""
-    return array_bytes(7 * len(evaluation.sections[0].ids) + 17, evaluation.s.size)
+    lateral jets, the pairs' samples and where each depth's rows and their inner neighbours lie, and per sample ``s``,
+    the pose with its heading, the elevation and the roll."""
+    return array_bytes(9 * len(evaluation.sections[0].ids) + 17, evaluation.s.size)
 
 
 class RoadGeometry:
