@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from xodrcheck.lanes import RoadGeometry
+from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.reader import read
 
 REPO = Path(__file__).resolve().parents[1]

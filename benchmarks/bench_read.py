@@ -32,7 +32,7 @@ from pathlib import Path
 
 from lxml import etree
 
-from xodrcheck.lanes import RoadGeometry
+from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.reader import read
 from xodrcheck.sample import sample_lanes
 

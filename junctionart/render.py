@@ -162,7 +162,7 @@ class _Shapes:
 def _gather(doc, layered: bool) -> _Shapes:
     """The lanes and reference lines of every road of ``doc``; a road the geometry cannot evaluate is left out of the
     picture (what it added before failing stays), never fatal."""
-    from xodrcheck.lanes import geometry_of
+    from xodrcheck.geometry.lanes import geometry_of
 
     geos = geometry_of(doc)
     shapes = _Shapes()

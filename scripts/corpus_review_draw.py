@@ -1,8 +1,8 @@
 """Plan-view pictures of a place in a map for the corpus review (``scripts/corpus_review.py``).
 
-Lanes are drawn from :mod:`xodrcheck.lanes` (the checker's own lane geometry, which the review's numbers recompute
-independently of the rules): every lane of every road near the place as a filled polygon between its borders, the
-roads a finding names outlined in colour, the finding's point marked."""
+Lanes are drawn from :mod:`xodrcheck.geometry.lanes` (the checker's own lane geometry, which the review's numbers
+recompute independently of the rules): every lane of every road near the place as a filled polygon between its
+borders, the roads a finding names outlined in colour, the finding's point marked."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from pathlib import Path
 
 import numpy as np
 
-from xodrcheck.lanes import RoadGeometry
+from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import Document, LaneType, Road
 
 _FILL = {"driving": "#b8b8b8", "sidewalk": "#e8d9b0", "shoulder": "#d5e6c8", "parking": "#c9d7ea"}

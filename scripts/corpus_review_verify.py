@@ -2,7 +2,7 @@
 
 Each function takes the document, the parsed XML and one finding (the JSON dict of ``xodrcheck check --format
 json``) and returns the recomputed number with a one-line explanation, and the scene to draw. They never call a rule:
-plan-view positions come from :class:`xodrcheck.lanes.RoadGeometry` (points only; curvatures and overlaps are
+plan-view positions come from :class:`xodrcheck.geometry.lanes.RoadGeometry` (points only; curvatures and overlaps are
 recomputed here from those points by finite differences and shapely polygons) and the link records from the XML."""
 
 from __future__ import annotations
@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 from corpus_review_draw import Scene, lane_outlines
 
-from xodrcheck.lanes import RoadGeometry
+from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import DRIVABLE_LANE_TYPES, Document
 
 Finding = dict[str, Any]

@@ -128,7 +128,7 @@ def _warm(paths: Sequence[str]) -> None:
     each declared version): forked workers share it instead of each building it again. Nothing here changes a
     result; a file whose header cannot be read here is simply not warmed for."""
     import xodrcheck.footprint
-    import xodrcheck.roadpass  # noqa: F401
+    import xodrcheck.geometry.batch  # noqa: F401
     from xodrcheck import schema, schema_fast
 
     versions = set()

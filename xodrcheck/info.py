@@ -14,7 +14,8 @@ import numpy as np
 
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Finding, Severity
-from xodrcheck.lanes import RoadGeometry, geometry_of
+from xodrcheck.geometry.lanes import RoadGeometry, geometry_of, road_geometry
+from xodrcheck.geometry.sampling import step_counts
 from xodrcheck.model import (
     Arc,
     Document,
@@ -28,7 +29,6 @@ from xodrcheck.model import (
     lane_type_name,
 )
 from xodrcheck.reader import ReadResult
-from xodrcheck.sampling import step_counts
 
 if TYPE_CHECKING:
     from xodrcheck.elevation_info import ElevationInfo
@@ -171,9 +171,7 @@ def bounding_box(document: Document, tolerances: Tolerances | None = None) -> Bo
     for road in document.roads:
         if not road.plan_view:
             continue
-        rg = geometry[road.id]
-        if rg.road is not road:  # a duplicated road id: the mapping holds the first road of that id
-            rg = RoadGeometry(road)
+        rg = road_geometry(geometry, road)
         rx, ry, used_lanes = _road_points(rg, tolerances)
         xs.extend(rx)
         ys.extend(ry)

@@ -1,7 +1,8 @@
 """Lane surface meshes: every lane of every lane section as a triangle strip in 3D, built with numpy index arithmetic.
 
 Each lane section is sampled once (:meth:`RoadGeometry.sample_s`, adaptive under a chord tolerance) and all its lane
-borders are evaluated at those ``s`` in one call, elevation and superelevation applied as :mod:`xodrcheck.lanes` does.
+borders are evaluated at those ``s`` (:mod:`xodrcheck.geometry.batch`, many sections at once), elevation and
+superelevation applied as :mod:`xodrcheck.geometry.lanes` describes.
 Every lane then gets two vertex rows of its own, its inner and its outer border (vertices are not shared between
 lanes, so a lane can be coloured or cut out alone), and ``2 (n - 1)`` triangles between them, wound counter-clockwise
 seen from above (normals point up where the lane does not fold).
@@ -15,7 +16,7 @@ followed by its outer row reversed.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Collection, Mapping
+from collections.abc import Callable, Collection
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -25,8 +26,10 @@ from xodrcheck import work
 from xodrcheck.arrays import batches, ranges
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import XodrError
-from xodrcheck.lanes import RoadGeometry, geometry_of
-from xodrcheck.model import Document, Lane, LaneKey, Road, document_cache, lane_type_name
+from xodrcheck.geometry.batch import Evaluation
+from xodrcheck.geometry.lanes import RoadGeometry, geometry_of, road_geometry
+from xodrcheck.geometry.sampling import sample_sections
+from xodrcheck.model import Document, Lane, LaneKey, document_cache, lane_type_name
 
 __all__ = ["MAX_COORDINATE", "LaneSurfaces", "MeshTooLarge", "build_surfaces", "cached_per_chord", "surfaces_of"]
 
@@ -150,11 +153,6 @@ class MeshTooLarge(XodrError, ValueError):
     """The mesh would have more vertices than the bound it was built with."""
 
 
-def _road_geometry(document: Document, road: Road, geometries: Mapping[str, RoadGeometry]) -> RoadGeometry:
-    rg = geometries[road.id]
-    return rg if rg.road is road else RoadGeometry(road)  # a duplicated id: the mapping holds the first road
-
-
 def build_surfaces(
     document: Document,
     chord: float | None = None,
@@ -168,11 +166,9 @@ def build_surfaces(
     that do not end after they start, and sections whose geometry does not evaluate to finite numbers or lies beyond
     :data:`MAX_COORDINATE` (a damaged width or position: other rules report it), are skipped. With ``max_vertices``,
     a mesh that would have more vertices raises :class:`MeshTooLarge` before its vertex arrays are built. All sections
-    are sampled and evaluated together where :mod:`xodrcheck.roadpass` covers them (the per-section code's numbers),
-    one by one otherwise.
+    are sampled and evaluated together, in batches (:mod:`xodrcheck.geometry.sampling`,
+    :mod:`xodrcheck.geometry.batch`: the numbers of each section alone).
     """
-    from xodrcheck import roadpass
-
     defaults = Tolerances()
     chord = defaults.chord if chord is None else chord
     max_step = defaults.max_step if max_step is None else max_step
@@ -184,20 +180,13 @@ def build_surfaces(
     for road in document.roads:
         if not road.plan_view:
             continue
-        rg = _road_geometry(document, road, geometries)
+        rg = road_geometry(geometries, road)
         for index, section in enumerate(road.lane_sections):
             if road.section_end(index) > section.s:
                 pairs = _lane_pairs(rg, index, wanted)
                 if pairs:
                     todo.append(_Section(rg, index, pairs))
-    fast = [t for t in todo if roadpass.covered(t.rg, t.index)]
-    bound = _Bound(max_vertices)
-    part = _together(fast, chord, max_step, bound)
-    if part is None:
-        fast, part = [], _Part.empty()
-    if len(fast) != len(todo):
-        own = {id(t): k for k, t in enumerate(fast)}
-        part = _Part.join([part.entry(own[id(t)]) if id(t) in own else _one(t, chord, max_step, bound) for t in todo])
+    part = _together(todo, chord, max_step, _Bound(max_vertices))
     work.add("mesh vertices", len(part.vertices))
     return part.surfaces()
 
@@ -325,77 +314,51 @@ class _Part:
         )
 
 
-def _one(t: _Section, chord: float, max_step: float, bound: _Bound | None = None) -> _Part:
-    """One section meshed by the per-section code."""
-    s = t.rg.sample_s(t.index, chord=chord, max_step=max_step)
-    if len(s) < 2:
-        return _Part.empty()
-    curves = t.rg.border_curves(t.index, s)
-    ids = list(curves)
-    rows = np.stack([np.column_stack([curves[i].x, curves[i].y, curves[i].z]) for i in ids])
-    if not (np.abs(rows) <= MAX_COORDINATE).all():  # also False for NaN
-        return _Part.empty()
-    if bound is not None:
-        bound.add(2 * len(s) * len(t.pairs))
-    return _strips([t], [ids], rows.reshape(-1, 3), np.array([0]), [s], np.array([0]))
-
-
-#: Border-line points (samples times lines) of the sections meshed in one :mod:`xodrcheck.roadpass` call: the
-#: temporaries of a call scale with it (a 10 km map's sections at once peaked about 900 MB over the mesh).
+#: Border-line points (samples times lines) of the sections meshed in one evaluation: the temporaries of a call scale
+#: with it (a 10 km map's sections at once peaked about 900 MB over the mesh).
 _MESH_BATCH = 1 << 18
-#: Sections sampled in one :func:`xodrcheck.roadpass.sample_sections` call (its temporaries scale with them: a 10 km
-#: map's 31,352 sections at once peaked 971 MB for 7 MB of samples).
+#: Sections sampled in one :func:`~xodrcheck.geometry.sampling.sample_sections` call (its temporaries scale with them:
+#: a 10 km map's 31,352 sections at once peaked 971 MB for 7 MB of samples).
 _SAMPLE_SECTIONS = 1 << 10
 
 
-def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound | None = None) -> _Part | None:
-    """The sections of ``todo`` (each covered by :mod:`xodrcheck.roadpass`) sampled and meshed in batches of
-    consecutive sections (the same numbers: roadpass computes each section on its own); ``None`` when a
-    pass declines (damaged numbers), as one pass over all of them would."""
-    from xodrcheck import roadpass
-
+def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound | None = None) -> _Part:
+    """The sections of ``todo`` sampled and meshed in batches of consecutive sections (the same numbers: a batch
+    evaluates each section as alone)."""
     if not todo:
         return _Part.empty()
-    entries = [(t.rg, t.index) for t in todo]
+    blocks = [(t.rg.rows(t.index), t.rg.knots(t.index)) for t in todo]
+    budget = Tolerances().max_samples_per_section
     samples: list[np.ndarray] = []
-    for lo in range(0, len(entries), _SAMPLE_SECTIONS):
-        found = roadpass.sample_sections(
-            entries[lo : lo + _SAMPLE_SECTIONS], chord, max_step, Tolerances().max_samples_per_section
-        )
-        if found is None or not all(np.isfinite(s).all() for s in found):
-            return None
-        samples.extend(found)
-    counted = bound.total if bound is not None else 0
-    parts = []
-    for lo, hi in batches([len(s) * (len(t.pairs) + 1) for t, s in zip(todo, samples)], _MESH_BATCH):
-        part = _batch(todo[lo:hi], samples[lo:hi], bound)
-        if part is None:
-            if bound is not None:
-                bound.total = counted  # the per-section code counts these sections again
-            return None
-        parts.append(part)
+    for lo in range(0, len(blocks), _SAMPLE_SECTIONS):
+        samples.extend(sample_sections(blocks[lo : lo + _SAMPLE_SECTIONS], chord, max_step, budget))
+    parts = [
+        _batch(todo[lo:hi], samples[lo:hi], bound)
+        for lo, hi in batches([len(s) * (len(t.pairs) + 1) for t, s in zip(todo, samples)], _MESH_BATCH)
+    ]
     return _Part.concat(parts)
 
 
-def _batch(todo: list[_Section], samples: list[np.ndarray], bound: _Bound | None) -> _Part | None:
-    """One batch of :func:`_together` (its sections sampled), meshed from one roadpass call."""
-    from xodrcheck import roadpass
-
-    entries = [(t.rg, t.index) for t in todo]
+def _batch(todo: list[_Section], samples: list[np.ndarray], bound: _Bound | None) -> _Part:
+    """One batch of :func:`_together` (its sections sampled), meshed from one evaluation of their border lines; a
+    section whose lines are not finite or lie beyond :data:`MAX_COORDINATE` is left out."""
     keep = [k for k, s in enumerate(samples) if len(s) > 1]  # fewer than two knots: nothing to mesh
-    borders = roadpass.border_lines([entries[k] for k in keep], [samples[k] for k in keep])
-    if borders is None:
-        return None
-    xyz = np.column_stack([borders.x, borders.y, borders.z])
+    evaluation = Evaluation([todo[k].rg.rows(todo[k].index) for k in keep], [samples[k] for k in keep])
+    lines = evaluation.border_lines()
+    x, y = lines.xy()
+    xyz = np.column_stack([x, y, lines.z()])
+    del x, y, lines
     ok = (np.abs(xyz) <= MAX_COORDINATE).all(axis=1)  # also False for NaN
+    line_counts = [len(section.lines) * len(samples[k]) for section, k in zip(evaluation.sections, keep)]
+    first = np.concatenate(([0], np.cumsum(line_counts)[:-1])).astype(np.int64)
     usable = np.zeros(len(todo), dtype=bool)
     if len(ok):
-        usable[keep] = np.logical_and.reduceat(ok, borders.base)
+        usable[keep] = np.logical_and.reduceat(ok, first)
     ids: list[list[int]] = [[] for _ in todo]
     base = np.zeros(len(todo), dtype=np.int64)
     for kept, k in enumerate(keep):
-        ids[k], base[k] = borders.ids[kept], borders.base[kept]
-    del borders
+        ids[k], base[k] = evaluation.border_ids(kept), first[kept]
+    del evaluation
     if bound is not None:
         bound.add(sum(2 * len(s) * len(t.pairs) for t, s, fine in zip(todo, samples, usable) if fine))
     offsets = np.concatenate(([0], np.cumsum([len(s) for s in samples]))).astype(np.int64)

@@ -62,7 +62,7 @@ import shapely
 
 from xodrcheck.config import Tolerances
 from xodrcheck.footprint import area_and_conflict, overlap_index
-from xodrcheck.lanes import RoadGeometry, geometry_of
+from xodrcheck.geometry.lanes import RoadGeometry, geometry_of
 from xodrcheck.model import (
     ContactPoint,
     Document,

@@ -1,8 +1,8 @@
 """The OpenDRIVE document as plain, frozen, typed data.
 
 Nothing here parses XML or evaluates geometry: :mod:`xodrcheck.reader` builds these values, :mod:`xodrcheck.geometry`
-and :mod:`xodrcheck.lanes` evaluate them. Every element keeps the source ``line`` it came from (0 when it was not read
-from a file) so findings can point at it.
+evaluates them. Every element keeps the source ``line`` it came from (0 when it was not read from a file) so findings
+can point at it.
 
 Conventions
 -----------
@@ -466,7 +466,7 @@ class Road:
 
     def temporary_layer(self) -> Road | None:
         """The road seen through its temporary lane layer: the same road with the temporary layer's lane offset and
-        lane sections (what :class:`xodrcheck.lanes.RoadGeometry` evaluates); ``None`` without one."""
+        lane sections (what :class:`xodrcheck.geometry.lanes.RoadGeometry` evaluates); ``None`` without one."""
         layer = self.temporary_lanes
         if layer is None:
             return None

@@ -12,7 +12,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from xodrcheck.config import Tolerances
-from xodrcheck.lanes import RoadGeometry, geometry_of
+from xodrcheck.geometry.lanes import RoadGeometry, geometry_of, road_geometry
 from xodrcheck.model import Document, lane_type_name
 
 __all__ = ["KINDS", "LaneLine", "sample_count", "sample_lanes", "section_s_values"]
@@ -98,9 +98,7 @@ def sample_lanes(
     for road in document.roads:
         if not road.plan_view:
             continue
-        rg = geometry[road.id]
-        if rg.road is not road:  # a duplicated road id: the mapping holds the first road of that id
-            rg = RoadGeometry(road)
+        rg = road_geometry(geometry, road)
         for index, section in enumerate(road.lane_sections):
             end = road.section_end(index)
             if not end > section.s:

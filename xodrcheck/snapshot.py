@@ -34,10 +34,10 @@ import numpy as np
 from xodrcheck.check import check
 from xodrcheck.config import Config, Tolerances
 from xodrcheck.findings import XodrError
+from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.graph.invariants import KEYS as REACH_KEYS
 from xodrcheck.graph.invariants import reach_differences, reach_invariants
 from xodrcheck.info import bounding_box, junction_legs
-from xodrcheck.lanes import geometry_of
 from xodrcheck.model import ContactPoint, Document, ElementType, Road, lane_type_name
 from xodrcheck.reader import read
 

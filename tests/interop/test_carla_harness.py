@@ -17,7 +17,7 @@ from tests.interop.carla_harness import (
     carla_python,
     carla_waypoints,
 )
-from xodrcheck.lanes import geometry_of
+from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.reader import read
 
 pytestmark = pytest.mark.slow  # part of the full suite (CI); left out by -m "not slow"

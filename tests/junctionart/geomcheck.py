@@ -12,7 +12,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.lanes import geometry_of
+from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.reader import read
 
 

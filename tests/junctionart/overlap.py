@@ -10,7 +10,7 @@ import numpy as np
 import shapely
 from shapely import STRtree
 
-from xodrcheck.lanes import geometry_of
+from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.reader import read
 
 

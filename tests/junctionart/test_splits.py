@@ -13,7 +13,7 @@ from junctionart.errors import ParamsError
 from junctionart.splits.build import build
 from junctionart.splits.spec import PRESETS, Branch, ForkSpec, RampSpec, from_dict, to_dict
 from xodrcheck.check import check
-from xodrcheck.lanes import geometry_of
+from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.model import JunctionType
 from xodrcheck.reader import read
 from xodrcheck.structures import map_structures

@@ -151,7 +151,7 @@ def test_on_hills_the_structures_follow_their_road_with_z_and_grade_continuous_a
     """The branch's height is a cubic from the road's height and grade at the split to those at the merge, each piece
     keeps the road's profile, so at every link (a direct junction's joint, a connecting road's ends) height and grade
     run on (the generator's own junctions stay planar: tests/junctionart/test_terrain.py)."""
-    from xodrcheck.lanes import geometry_of
+    from xodrcheck.geometry.lanes import geometry_of
     from xodrcheck.model import ContactPoint, ElementType, JunctionType
 
     for direct in (True, False):

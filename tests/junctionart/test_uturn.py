@@ -7,7 +7,7 @@ import pytest
 import junctionart as ja
 from junctionart.params import Params, TrafficRule
 from xodrcheck.check import check
-from xodrcheck.lanes import geometry_of
+from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.reader import read
 
 WIDE = {

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from xodrcheck.lanes import RoadGeometry
+from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import Cubic, Lane, LaneSection, LaneType, Line, Road
 
 

@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 
 from xodrcheck.config import Config, Tolerances
-from xodrcheck.lanes import RoadGeometry
+from xodrcheck.geometry.lanes import RoadGeometry
+from xodrcheck.geometry.sampling import step_counts
 from xodrcheck.reader import read
 from xodrcheck.rules import grids, sampled
 from xodrcheck.rules.context import Context
-from xodrcheck.sampling import knots, step_counts
 
 
 def _reference(tol: Tolerances, geometry: RoadGeometry, section_index: int) -> np.ndarray:
@@ -22,7 +22,7 @@ def _reference(tol: Tolerances, geometry: RoadGeometry, section_index: int) -> n
     if not end > start:
         return np.array([start], dtype=float)
     step = sampled.grid_step(tol)
-    cuts = knots(geometry, section_index)
+    cuts = geometry.knots(section_index)
     lengths = np.diff(cuts)
     counts = step_counts(lengths, step, tol.max_samples_per_section)
     owner = np.repeat(np.arange(len(lengths)), counts)

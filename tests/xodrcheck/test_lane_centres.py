@@ -22,7 +22,7 @@ import numpy as np
 import pytest
 
 from tests.conftest import lane_centres_root
-from xodrcheck.lanes import RoadGeometry
+from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import Road, Spiral
 from xodrcheck.reader import read
 

@@ -231,7 +231,7 @@ def test_derived_caches_die_with_their_document():
 
     from tests.xodrcheck.rules.helpers import fixture
     from xodrcheck.footprint import overlap_index
-    from xodrcheck.lanes import geometry_of
+    from xodrcheck.geometry.lanes import geometry_of
     from xodrcheck.mesh import surfaces_of
     from xodrcheck.reader import read
 

@@ -10,7 +10,7 @@ import pytest
 
 from tests.xodrcheck.readerdocs import CENTER, LINE_GEOMETRY, clean, codes, only, road, section, xodr
 from xodrcheck import model as m
-from xodrcheck.lanes import RoadGeometry, geometry_of, temporary_geometry_of
+from xodrcheck.geometry.lanes import RoadGeometry, geometry_of, temporary_geometry_of
 from xodrcheck.reader import read
 
 FEATURES = Path(__file__).parent / "opendrive19" / "features.xodr"

@@ -1,7 +1,7 @@
 """Where roads and lanes end, for the fixes that must know whether ends meet before they link them: reference-line
 end points, road widths at an end, the roads ending near an end, and the lanes of a road end that hold a point.
 
-All from the exact lane geometry (:mod:`xodrcheck.lanes`), in plan view.
+All from the exact lane geometry (:mod:`xodrcheck.geometry.lanes`), in plan view.
 """
 
 from __future__ import annotations

@@ -17,7 +17,7 @@ from xodrcheck.fix.xmltext import Element, XmlText, scan
 from xodrcheck.model import Connection, ContactPoint, Document, Junction, Lane, Road, RoadLink
 
 if TYPE_CHECKING:
-    from xodrcheck.lanes import RoadGeometry
+    from xodrcheck.geometry.lanes import RoadGeometry
 
 __all__ = ["Workspace", "link_at", "other_end"]
 
@@ -55,7 +55,7 @@ class Workspace:
 
     @cached_property
     def geometry(self) -> Mapping[str, RoadGeometry]:
-        from xodrcheck.lanes import geometry_of
+        from xodrcheck.geometry.lanes import geometry_of
 
         return geometry_of(self.document)
 

@@ -9,20 +9,24 @@ from __future__ import annotations
 
 import numpy as np
 
-from xodrcheck.geometry.pose import Pose, as_array
+from xodrcheck.geometry.pose import Pose, as_array, filled
 from xodrcheck.model import Arc
 
 
 def evaluate(g: Arc, ds) -> Pose:
-    ds = as_array(ds)
-    k = g.curvature
+    return at(g.x, g.y, g.hdg, g.curvature, as_array(ds))
+
+
+def at(x0, y0, hdg, k, ds: np.ndarray) -> Pose:
+    """Poses ``ds`` along arcs from ``(x0, y0)`` with heading ``hdg`` and curvature ``k`` (numbers, or arrays of one
+    per point: many arcs evaluated together, each point with the same arithmetic)."""
     half_turn = 0.5 * k * ds
     chord = ds * np.sinc(half_turn / np.pi)  # np.sinc(x) = sin(pi x) / (pi x)
-    direction = g.hdg + half_turn
+    direction = hdg + half_turn
     return Pose(
-        g.x + chord * np.cos(direction),
-        g.y + chord * np.sin(direction),
-        g.hdg + k * ds,
-        np.full_like(ds, k),
+        x0 + chord * np.cos(direction),
+        y0 + chord * np.sin(direction),
+        hdg + k * ds,
+        filled(k, ds),
         np.zeros_like(ds),
     )

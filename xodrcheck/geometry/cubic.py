@@ -18,6 +18,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck.geometry.pose import Pose
+
 _NODES, _WEIGHTS = np.polynomial.legendre.leggauss(16)
 _UNIT_NODES = 0.5 * (_NODES + 1.0)  # the nodes on [0, 1]
 _FIRST_PANELS = 32  # fine enough for the Hermite first guess to be within ~1e-9 of the root
@@ -73,44 +75,9 @@ class CubicCurve:
         return _speed(self.u, self.v, p)
 
     def parameter_at(self, sigma: np.ndarray) -> np.ndarray:
-        """The parameter ``p`` at arc length ``sigma`` from ``p = 0`` (inverse of :meth:`arc_length`)."""
+        """The parameter ``p`` at arc length ``sigma`` from ``p = 0`` (one call of :func:`parameters_at`)."""
         sigma = np.asarray(sigma, dtype=float)
-        k, p = self._first_guess(sigma)
-        start = self.breaks[k]
-        width = self.breaks[k + 1] - start
-        base = self.cumulative[k]
-        u, v = self.u, self.v
-        n = len(p)
-        q = np.empty((n, len(_NODES) + 1))
-        for _ in range(_NEWTON_STEPS):
-            # Speed at the quadrature nodes of [start, p] and at p itself, in one pass.
-            q[:, :-1] = start[:, None] + (p - start)[:, None] * _UNIT_NODES
-            q[:, -1] = p
-            du = u[1] + q * (2.0 * u[2] + q * (3.0 * u[3]))
-            dv = v[1] + q * (2.0 * v[2] + q * (3.0 * v[3]))
-            speeds = np.hypot(du, dv)
-            residual = base + 0.5 * (p - start) * (speeds[:, :-1] @ _WEIGHTS) - sigma
-            speed = np.maximum(speeds[:, -1], _TINY)
-            step = residual / speed
-            p = p - step
-            if not (np.abs(residual) > _NEWTON_TOL).any():
-                break
-            # d|C'|/dp at the old p; the residual after the step is about |C'|' step^2 / 2.
-            ddu = 2.0 * u[2] + q[:, -1] * (6.0 * u[3])
-            ddv = 2.0 * v[2] + q[:, -1] * (6.0 * v[3])
-            slope = (du[:, -1] * ddu + dv[:, -1] * ddv) / speed
-            predicted = _PREDICTION_MARGIN * 0.5 * np.abs(slope) * step * step
-            if ((predicted <= _NEWTON_TOL) & (np.abs(step) <= _SMALL_STEP * width)).all():
-                break
-        return p
-
-    def _first_guess(self, sigma: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-        """Panel index of each ``sigma`` and the first guess of ``p`` there (see :func:`_guess_table`)."""
-        last = len(self.breaks) - 2
-        k = np.minimum(np.maximum(np.searchsorted(self.cumulative, sigma, side="right") - 1, 0), last)
-        a, b, c, d = self.guess[k].T
-        t = (sigma - self.cumulative[k]) * self.inverse_span[k]
-        return k, a + t * (b + t * (c + t * d))
+        return parameters_at([self], sigma, np.array([len(sigma)]))
 
 
 def _guess_table(breaks: np.ndarray, cumulative: np.ndarray, speed: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -133,14 +100,16 @@ def _panel_lengths(u: np.ndarray, v: np.ndarray, breaks: np.ndarray) -> np.ndarr
     return half * (_speed(u, v, nodes) @ _WEIGHTS)
 
 
-def frame(curve: CubicCurve, p: np.ndarray):
-    """Local position, tangent angle, curvature and its arc-length derivative of ``curve`` at parameters ``p``.
+def frame(u, v, p: np.ndarray):
+    """Local position, tangent angle, curvature and its arc-length derivative at parameters ``p`` of the cubic with
+    coefficients ``u = (a, b, c, d)`` and ``v`` (numbers, or arrays of one per point: many curves evaluated together,
+    each point with the same arithmetic).
 
     Returns ``(U, V, angle, curvature, dcurvature)`` with ``angle = atan2(V', U')`` in (-pi, pi], curvature
     ``(U'V'' - V'U'') / |C'|^3`` and its derivative with respect to arc length (chain rule through ``|C'|``).
     """
-    (ua, ub, uc, ud), (va, vb, vc, vd) = curve.u, curve.v
-    # Horner's scheme for the value and first three derivatives; the constant third derivatives kept scalar.
+    (ua, ub, uc, ud), (va, vb, vc, vd) = u, v
+    # Horner's scheme for the value and first three derivatives.
     u0, v0 = ua + p * (ub + p * (uc + p * ud)), va + p * (vb + p * (vc + p * vd))
     u1, v1 = ub + p * (2.0 * uc + p * (3.0 * ud)), vb + p * (2.0 * vc + p * (3.0 * vd))
     u2, v2 = 2.0 * uc + p * (6.0 * ud), 2.0 * vc + p * (6.0 * vd)
@@ -149,17 +118,25 @@ def frame(curve: CubicCurve, p: np.ndarray):
     speed = np.sqrt(speed2)
     cross = u1 * v2 - v1 * u2
     dcross = u1 * v3 - v1 * u3
-    moving = speed > 0
-    if moving.all():  # the usual case, without the cost of np.errstate
-        dspeed = (u1 * u2 + v1 * v2) / speed
-        curvature = cross / (speed2 * speed)
-        dcurvature = (dcross / (speed2 * speed) - 3.0 * cross * dspeed / (speed2 * speed2)) / speed
-        return u0, v0, np.arctan2(v1, u1), curvature, dcurvature
-    dspeed = (u1 * u2 + v1 * v2) / np.where(moving, speed, np.inf)
+    dspeed = (u1 * u2 + v1 * v2) / np.where(speed > 0, speed, np.inf)
     with np.errstate(divide="ignore", invalid="ignore"):
         curvature = cross / (speed2 * speed)
         dcurvature = (dcross / (speed2 * speed) - 3.0 * cross * dspeed / (speed2 * speed2)) / speed
     return u0, v0, np.arctan2(v1, u1), curvature, dcurvature
+
+
+def poses(curves: list[CubicCurve], scales, starts, ds: np.ndarray, counts: np.ndarray) -> Pose:
+    """Poses of many calls at once: call ``i`` takes the next ``counts[i]`` distances ``ds`` along ``curves[i]`` (the
+    parameter at arc length ``ds * scales[i]``), in the frame of an element starting at ``starts[i] = (x, y, hdg)``.
+    Each call's numbers are its own to the last bit (:func:`parameters_at`, :func:`frame`)."""
+    counts = np.asarray(counts, dtype=np.int64)
+    owner = np.repeat(np.arange(len(curves)), counts)
+    p = parameters_at(curves, ds * np.asarray(scales, dtype=float)[owner], counts)
+    coef = np.array([(*c.u, *c.v) for c in curves]).reshape(-1, 8)[owner].T
+    u0, v0, angle, curvature, dcurvature = frame(coef[:4], coef[4:], p)
+    x0, y0, hdg = np.array(starts, dtype=float).reshape(-1, 3)[owner].T
+    c, s = np.cos(hdg), np.sin(hdg)
+    return Pose(x0 + c * u0 - s * v0, y0 + s * u0 + c * v0, hdg + angle, curvature, dcurvature)
 
 
 def parameters_at(curves: list[CubicCurve], sigma: np.ndarray, counts: np.ndarray) -> np.ndarray:

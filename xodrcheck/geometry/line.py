@@ -4,17 +4,16 @@ from __future__ import annotations
 
 import numpy as np
 
-from xodrcheck.geometry.pose import Pose, as_array
+from xodrcheck.geometry.pose import Pose, as_array, filled
 from xodrcheck.model import Line
 
 
 def evaluate(g: Line, ds) -> Pose:
-    ds = as_array(ds)
+    return at(g.x, g.y, g.hdg, as_array(ds))
+
+
+def at(x0, y0, hdg, ds: np.ndarray) -> Pose:
+    """Poses ``ds`` along lines from ``(x0, y0)`` with heading ``hdg`` (numbers, or arrays of one per point: many
+    lines evaluated together, each point with the same arithmetic)."""
     zero = np.zeros_like(ds)
-    return Pose(
-        g.x + ds * np.cos(g.hdg),
-        g.y + ds * np.sin(g.hdg),
-        np.full_like(ds, g.hdg),
-        zero,
-        zero.copy(),
-    )
+    return Pose(x0 + ds * np.cos(hdg), y0 + ds * np.sin(hdg), filled(hdg, ds), zero, zero.copy())

@@ -30,8 +30,9 @@ from functools import lru_cache
 
 import numpy as np
 
-from xodrcheck.geometry.cubic import CubicCurve, frame, parameters_at
-from xodrcheck.geometry.pose import Pose, as_array, local_to_inertial
+from xodrcheck.geometry import cubic
+from xodrcheck.geometry.cubic import CubicCurve
+from xodrcheck.geometry.pose import Pose, as_array
 from xodrcheck.model import ParamPoly3, PRange
 
 
@@ -51,39 +52,13 @@ def parameter_at(g: ParamPoly3, ds) -> np.ndarray:
 
 
 def evaluate(g: ParamPoly3, ds) -> Pose:
-    p = parameter_at(g, ds)
-    u, v, angle, curvature, dcurvature = frame(curve_of(g), p)
-    x, y = local_to_inertial(g, u, v)
-    return Pose(x, y, g.hdg + angle, curvature, dcurvature)
+    ds = as_array(ds)
+    return evaluate_runs([g], ds, np.array([len(ds)]))
 
 
 def evaluate_runs(elements: list[ParamPoly3], ds: np.ndarray, counts: np.ndarray) -> Pose:
     """``evaluate(elements[i], ds_i)`` of many calls at once (call ``i`` takes the next ``counts[i]`` values of
-    ``ds``), as one flat :class:`Pose`: each call's numbers are its own to the last bit (see
-    :func:`xodrcheck.geometry.cubic.parameters_at`)."""
+    ``ds``), as one flat :class:`Pose`: each call's numbers are its own to the last bit (:func:`cubic.poses`)."""
     curves = [curve_of(g) for g in elements]
-    scales = np.array([c.total / g.length if g.length > 0 else 0.0 for c, g in zip(curves, elements)])
-    owner = np.repeat(np.arange(len(elements)), counts)
-    p = parameters_at(curves, ds * scales[owner], counts)
-    coef = np.array([(*c.u, *c.v) for c in curves])[owner]
-    ua, ub, uc, ud, va, vb, vc, vd = coef.T
-    # cubic.frame's arithmetic with each point's own coefficients
-    u0, v0 = ua + p * (ub + p * (uc + p * ud)), va + p * (vb + p * (vc + p * vd))
-    u1, v1 = ub + p * (2.0 * uc + p * (3.0 * ud)), vb + p * (2.0 * vc + p * (3.0 * vd))
-    u2, v2 = 2.0 * uc + p * (6.0 * ud), 2.0 * vc + p * (6.0 * vd)
-    u3, v3 = 6.0 * ud, 6.0 * vd
-    speed2 = u1 * u1 + v1 * v1
-    speed = np.sqrt(speed2)
-    cross = u1 * v2 - v1 * u2
-    dcross = u1 * v3 - v1 * u3
-    moving = speed > 0
-    dspeed = (u1 * u2 + v1 * v2) / np.where(moving, speed, np.inf)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        curvature = cross / (speed2 * speed)
-        dcurvature = (dcross / (speed2 * speed) - 3.0 * cross * dspeed / (speed2 * speed2)) / speed
-    angle = np.arctan2(v1, u1)
-    hdg = np.array([g.hdg for g in elements])[owner]
-    x0 = np.array([g.x for g in elements])[owner]
-    y0 = np.array([g.y for g in elements])[owner]
-    c, s = np.cos(hdg), np.sin(hdg)
-    return Pose(x0 + c * u0 - s * v0, y0 + s * u0 + c * v0, hdg + angle, curvature, dcurvature)
+    scales = [c.total / g.length if g.length > 0 else 0.0 for c, g in zip(curves, elements)]
+    return cubic.poses(curves, scales, [(g.x, g.y, g.hdg) for g in elements], ds, counts)

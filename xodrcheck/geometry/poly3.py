@@ -14,8 +14,9 @@ from functools import lru_cache
 
 import numpy as np
 
-from xodrcheck.geometry.cubic import CubicCurve, frame
-from xodrcheck.geometry.pose import Pose, as_array, local_to_inertial
+from xodrcheck.geometry import cubic
+from xodrcheck.geometry.cubic import CubicCurve
+from xodrcheck.geometry.pose import Pose, as_array
 from xodrcheck.model import Poly3
 
 
@@ -30,7 +31,13 @@ def parameter_at(g: Poly3, ds) -> np.ndarray:
 
 
 def evaluate(g: Poly3, ds) -> Pose:
-    p = parameter_at(g, ds)
-    u, v, angle, curvature, dcurvature = frame(curve_of(g), p)
-    x, y = local_to_inertial(g, u, v)
-    return Pose(x, y, g.hdg + angle, curvature, dcurvature)
+    ds = as_array(ds)
+    return evaluate_runs([g], ds, np.array([len(ds)]))
+
+
+def evaluate_runs(elements: list[Poly3], ds: np.ndarray, counts: np.ndarray) -> Pose:
+    """``evaluate(elements[i], ds_i)`` of many calls at once (call ``i`` takes the next ``counts[i]`` values of
+    ``ds``): each call's numbers are its own to the last bit (:func:`cubic.poses`; ``ds`` is the arc length itself,
+    scale 1)."""
+    curves = [curve_of(g) for g in elements]
+    return cubic.poses(curves, [1.0] * len(curves), [(g.x, g.y, g.hdg) for g in elements], ds, counts)

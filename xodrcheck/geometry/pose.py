@@ -40,10 +40,11 @@ class Pose:
         self.dcurvature[index] = other.dcurvature
 
 
-def local_to_inertial(g, u: np.ndarray, v: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """Map local (u, v) coordinates of an element starting at (g.x, g.y) with heading g.hdg to inertial (x, y)."""
-    c, s = np.cos(g.hdg), np.sin(g.hdg)
-    return g.x + c * u - s * v, g.y + s * u + c * v
+def filled(value, like: np.ndarray) -> np.ndarray:
+    """A new array shaped as ``like`` holding ``value`` (a number, or an array of that shape)."""
+    out = np.empty_like(like)
+    out[...] = value
+    return out
 
 
 def as_array(ds) -> np.ndarray:

@@ -19,11 +19,12 @@ Decisions
 
 from __future__ import annotations
 
-import math
+from collections.abc import Sequence
 from functools import lru_cache
 
 import numpy as np
 
+from xodrcheck.arrays import ranges
 from xodrcheck.geometry.pose import as_array
 from xodrcheck.model import Cubic, Profile
 
@@ -59,74 +60,102 @@ class Piecewise:
         return _cubic_jet(a, b, c, d, s - self.starts[index], active)
 
 
-#: Profiles with at most this many records are batched by counting starts (cost: records x points comparisons).
-_BATCHED_RECORDS = 32
+#: Profiles with at most this many records find each point's record by counting the starts at or before it (cost:
+#: records x points comparisons); longer ones search.
+_COUNTED_RECORDS = 32
+#: Fewer profiles of several records than this are searched one by one (counting pays for many at once).
+_COUNT_TOGETHER = 8
 
 
-class Batch:
-    """Several compiled profiles evaluated together at one array of ``s``, with exactly :meth:`Piecewise.jet`'s
-    arithmetic: the single-record ones (the common case: one ``<width>`` per lane) as rows of one array computation,
-    those with a few records likewise after finding each point's record by counting the starts at or before it (what
-    ``searchsorted`` finds; done per profile instead when an ``s`` is NaN), the empty ones as zeros and the rest one
-    by one."""
+class Table:
+    """Profiles compiled for :class:`Laws`, one per row (``None``: no profile, zero): the single-record ones as rows
+    of one coefficient array, the others kept as they are."""
 
-    __slots__ = ("_batched", "_coefficients", "_laws", "_multi", "_rows", "_starts")
+    __slots__ = ("multi", "single", "single_rows")
 
-    def __init__(self, laws: tuple[Piecewise, ...]):
-        self._laws = laws
-        single = [(i, law._single) for i, law in enumerate(laws) if law._single is not None]
-        self._rows = {i: row for row, (i, _) in enumerate(single)}
-        self._starts = np.array([record[0] for _, record in single], dtype=float)[:, None]
-        self._coefficients = np.array([record[1:] for _, record in single], dtype=float).reshape(-1, 4).T[..., None]
-        multi = [
-            i
-            for i, law in enumerate(laws)
-            if 2 <= len(law.starts) <= _BATCHED_RECORDS and not np.isnan(law.starts).any()
-        ]
-        self._multi = {i: row for row, i in enumerate(multi)}
-        sizes = [len(laws[i].starts) for i in multi]
-        #: The batched profiles' records: (offset of each profile's first record, record starts, coefficients).
-        self._batched: tuple[np.ndarray, np.ndarray, np.ndarray] | None = None
-        if multi:
-            self._batched = (
-                np.concatenate(([0], np.cumsum(sizes)[:-1])).astype(np.intp),
-                np.concatenate([laws[i].starts for i in multi]),
-                np.concatenate([laws[i].coefficients for i in multi]).T.copy(),
-            )
+    def __init__(self, laws: Sequence[Piecewise | None]):
+        single = [(row, law._single) for row, law in enumerate(laws) if law is not None and law._single is not None]
+        self.single_rows = np.array([row for row, _ in single], dtype=np.int64)
+        #: start, a, b, c, d of each single-record profile
+        self.single = np.array([record for _, record in single], dtype=float).reshape(-1, 5)
+        self.multi = [(row, law) for row, law in enumerate(laws) if law is not None and len(law.starts) > 1]
 
-    def jets(self, s) -> list[tuple[np.ndarray, np.ndarray, np.ndarray]]:
-        """``laws[i].jet(s)`` for every law, in order (read-only: arrays may be shared between laws)."""
-        s = as_array(s)
-        rows, multi = self._rows, self._multi
-        if rows:
-            a, b, c, d = self._coefficients
-            single = _cubic_jet(a, b, c, d, s - self._starts, None)
-        batched = self._batched if multi else None
-        if batched is not None and np.isnan(s).any():
-            multi, batched = {}, None
-        if batched is not None:
-            offsets, record_starts, record_coefficients = batched
-            counts = np.add.reduceat(s >= record_starts[:, None], offsets, axis=0, dtype=np.intp)
-            index = offsets[:, None] + np.maximum(counts - 1, 0)
-            ds = s - record_starts[index]
-            a, b, c, d = (column[index] for column in record_coefficients)
-            several = _cubic_jet(a, b, c, d, ds, counts > 0)
-        out = []
-        zero = None
-        for i, law in enumerate(self._laws):
-            row = rows.get(i)
-            if row is not None:
-                out.append((single[0][row], single[1][row], single[2][row]))
-                continue
-            row = multi.get(i)
-            if row is not None:
-                out.append((several[0][row], several[1][row], several[2][row]))
-            elif len(law.starts) == 0:
-                zero = np.zeros_like(s) if zero is None else zero
-                out.append((zero, zero, zero))
-            else:
-                out.append(law.jet(s))
+
+class Laws:
+    """Profiles evaluated together, with exactly :meth:`Piecewise.jet`'s arithmetic: row ``r`` of table ``t`` at
+    samples ``s[sample:sample + n]`` written at ``dest + r * n``. The single-record profiles (the common case: one
+    ``<width>`` per lane) are evaluated as one array computation, many with a few records likewise after finding each
+    point's record by counting (what ``searchsorted`` finds, NaN and infinities included), the rest one by one."""
+
+    __slots__ = ("_multi", "_single")
+
+    def __init__(self) -> None:
+        self._single: list[tuple[Table, int, int, int]] = []  # table, dest, sample, n
+        self._multi: list[tuple[Piecewise, int, int, int]] = []  # law, dest, sample, n
+
+    def add(self, table: Table, dest: int, sample: int, n: int) -> None:
+        if len(table.single_rows):
+            self._single.append((table, dest, sample, n))
+        for row, law in table.multi:
+            self._multi.append((law, dest + row * n, sample, n))
+
+    def evaluate(self, s: np.ndarray, size: int) -> np.ndarray:
+        """Value, first and second derivative, as the rows of a ``(3, size)`` array (zero where nothing was
+        written)."""
+        out = np.zeros((3, size))
+        if self._single:
+            self._singles(s, out)
+        few = [m for m in self._multi if len(m[0].starts) <= _COUNTED_RECORDS and not np.isnan(m[0].starts).any()]
+        together = len(few) >= _COUNT_TOGETHER
+        if together:
+            _counted(few, s, out)
+        for law, dest, sample, n in self._multi:
+            if not together or len(law.starts) > _COUNTED_RECORDS or np.isnan(law.starts).any():
+                out[:, dest : dest + n] = law.jet(s[sample : sample + n])
         return out
+
+    def _singles(self, s: np.ndarray, out: np.ndarray) -> None:
+        entries = self._single
+        _, _, sample, n = entries[0]
+        if all(entry[2] == sample and entry[3] == n for entry in entries):  # one block of samples: rows of a 2-D array
+            coef = np.concatenate([t.single for t, _, _, _ in entries]) if len(entries) > 1 else entries[0][0].single
+            first = np.concatenate([dest + t.single_rows * n for t, dest, _, _ in entries])
+            ds = s[sample : sample + n] - coef[:, :1]
+            jet = _cubic_jet(coef[:, 1:2], coef[:, 2:3], coef[:, 3:4], coef[:, 4:5], ds, None)
+            out[:, first[:, None] + np.arange(n)] = jet
+            return
+        rows = np.array([len(t.single_rows) for t, _, _, _ in entries], dtype=np.int64)
+        dest, samples, counts = (np.array([entry[i] for entry in entries], dtype=np.int64) for i in (1, 2, 3))
+        owner = np.repeat(np.arange(len(entries)), rows)
+        first = np.concatenate([t.single_rows for t, _, _, _ in entries]) * counts[owner] + dest[owner]
+        sizes = counts[owner]
+        per = np.repeat(np.concatenate([t.single for t, _, _, _ in entries]), sizes, axis=0)
+        at = ranges(samples[owner], sizes)
+        jet = _cubic_jet(per[:, 1], per[:, 2], per[:, 3], per[:, 4], s[at] - per[:, 0], None)
+        out[:, ranges(first, sizes)] = jet
+
+
+def _counted(laws: list[tuple[Piecewise, int, int, int]], s: np.ndarray, out: np.ndarray) -> None:
+    """Profiles of a few records: each point's record by counting the starts at or before it (NaN: the last record,
+    as ``searchsorted`` places NaN after every start)."""
+    width = max(len(law.starts) for law, _, _, _ in laws)
+    starts = np.full((len(laws), width), np.inf)
+    coef = np.zeros((len(laws), width, 4))
+    records = np.zeros(len(laws), dtype=np.int64)
+    for i, (law, _, _, _) in enumerate(laws):
+        records[i] = len(law.starts)
+        starts[i, : records[i]] = law.starts
+        coef[i, : records[i]] = law.coefficients
+    n = np.array([n for _, _, _, n in laws], dtype=np.int64)
+    owner = np.repeat(np.arange(len(laws)), n)
+    at = s[ranges([a for _, _, a, _ in laws], n)]
+    count = np.zeros(len(at), dtype=np.int64)
+    for j in range(width):  # one pass per record position: no (points x records) array
+        count += at >= starts[owner, j]
+    count = np.where(np.isnan(at), records[owner], np.minimum(count, records[owner]))
+    index = np.maximum(count - 1, 0)
+    a, b, c, d = coef[owner, index].T
+    out[:, ranges([d for _, d, _, _ in laws], n)] = _cubic_jet(a, b, c, d, at - starts[owner, index], count > 0)
 
 
 def _cubic_jet(a, b, c, d, ds: np.ndarray, active: np.ndarray | None):
@@ -169,29 +198,28 @@ def breakpoints(profile: Profile, origin: float = 0.0) -> np.ndarray:
 def jumps(profile: Profile, origin: float = 0.0) -> list[tuple[Cubic, float, float]]:
     """Where the profile is discontinuous: for every record start after the first, the record in force from there (the
     last of equal starts, as :meth:`Piecewise.jet` picks it), the value the record in force before reaches there and
-    the value the new one starts with. Pairs whose difference is not finite are left out (a damaged record)."""
+    the value the new one starts with (:meth:`Piecewise.jet`'s arithmetic: 0 before a record starts, or where the
+    start is NaN). Pairs whose difference is not finite are left out (a damaged record)."""
     records = sorted(profile, key=lambda r: r.s) if len(profile) > 1 else profile
-    out = []
+    pairs = []
     previous = None
     for k, record in enumerate(records):
         if k + 1 < len(records) and records[k + 1].s == record.s:
             continue  # a later record with the same start holds from there
         if previous is not None and record.s > previous.s:
-            at = record.s + origin
-            reached = _value(previous, origin, at)
-            starts = _value(record, origin, at)
-            if math.isfinite(reached - starts):
-                out.append((record, reached, starts))
+            pairs.append((previous, record))
         previous = record
-    return out
+    if not pairs:
+        return []
+    at = np.array([record.s + origin for _, record in pairs], dtype=float)
+    reached = _values([before for before, _ in pairs], origin, at)
+    starts = _values([record for _, record in pairs], origin, at)
+    with np.errstate(invalid="ignore", over="ignore"):
+        finite = np.isfinite(reached - starts)
+    return [(record, float(a), float(b)) for (_, record), a, b, ok in zip(pairs, reached, starts, finite) if ok]
 
 
-def _value(record: Cubic, origin: float, at: float) -> float:
-    """``Piecewise((record,), origin).jet(np.array([at]))[0][0]`` in scalar arithmetic: the same IEEE double
-    operations in the same order, so the same number, without building arrays (0 before the record starts, or where
-    ``at`` is NaN)."""
-    ds = float(at) - float(record.s + origin)
-    if not ds >= 0:
-        return 0.0
-    a, b, c, d = float(record.a), float(record.b), float(record.c), float(record.d)
-    return a + ds * (b + ds * (c + ds * d))
+def _values(records: list[Cubic], origin: float, at: np.ndarray) -> np.ndarray:
+    """The value of each record at its ``at`` (0 before the record starts), with :meth:`Piecewise.jet`'s arithmetic."""
+    a, b, c, d = np.array([(r.a, r.b, r.c, r.d) for r in records], dtype=float).reshape(-1, 4).T
+    return _cubic_jet(a, b, c, d, at - np.array([r.s + origin for r in records], dtype=float), None)[0]

@@ -1,4 +1,4 @@
-"""Lane centre lines of the graph's nodes: their points (from :mod:`xodrcheck.lanes`, sampled within the chord
+"""Lane centre lines of the graph's nodes: their points (from :mod:`xodrcheck.geometry.lanes`, sampled within the chord
 tolerance as ``xodrcheck sample`` and the snapshots' lane length are) and their lengths in plan view."""
 
 from __future__ import annotations
@@ -8,8 +8,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from xodrcheck.config import Tolerances
+from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.graph.build import LaneGraph
-from xodrcheck.lanes import geometry_of
 from xodrcheck.model import Document, document_cache
 
 __all__ = ["CentreLine", "centre_line", "node_lengths"]

@@ -1,10 +1,11 @@
 """Plan-view shapes of a map for drawing: per lane section, the reference line and every lane border as polylines.
 
-Each lane section is sampled once under a chord tolerance (:meth:`~xodrcheck.lanes.RoadGeometry.sample_s`, the exact
-lane geometry of :mod:`xodrcheck.lanes`, superelevation applied in plan view), with the road-mark starts added as
-samples so that every mark begins on a sample. All lines of a section share those ``s``: line 0 is the reference line,
-line 1 lane 0's line (the laneOffset line), then the outer border of each left lane from the inside out, then of each
-right lane from the inside out. A lane's outline is its inner border forward and its outer border backward.
+Each lane section is sampled once under a chord tolerance (:meth:`~xodrcheck.geometry.lanes.RoadGeometry.sample_s`,
+the exact lane geometry of :mod:`xodrcheck.geometry.lanes`, superelevation applied in plan view), with the road-mark
+starts added as samples so that every mark begins on a sample. All lines of a section share those ``s``: line 0 is
+the reference line, line 1 lane 0's line (the laneOffset line), then the outer border of each left lane from the
+inside out, then of each right lane from the inside out. A lane's outline is its inner border forward and its outer
+border backward.
 
 A road whose geometry cannot be evaluated (damaged input; the rules report why) or whose points are not finite or lie
 further than :data:`MAX_EXTENT` from the map's other points is left out and named in :attr:`MapShapes.skipped`.
@@ -17,7 +18,7 @@ from dataclasses import dataclass, field, replace
 
 import numpy as np
 
-from xodrcheck.lanes import RoadGeometry, SideLanes, geometry_of
+from xodrcheck.geometry.lanes import RoadGeometry, SideLanes, geometry_of, road_geometry
 from xodrcheck.model import Document, Lane, Road, RoadMark, lane_type_name
 
 #: Default chord tolerance (m) of the drawn polylines: below a pixel at any useful zoom.
@@ -145,9 +146,7 @@ def map_shapes(document: Document, chord: float = CHORD, max_step: float = MAX_S
 def _add_road(shapes: MapShapes, road: Road, geometries: Mapping[str, RoadGeometry], chord: float, max_step: float):
     if not road.plan_view or not road.lane_sections:
         return
-    rg = geometries[road.id]
-    if rg.road is not road:  # a duplicated id: the mapping holds the first road
-        rg = RoadGeometry(road)
+    rg = road_geometry(geometries, road)
     try:
         found = [_section(road, i, rg, chord, max_step) for i in range(len(road.lane_sections))]
     except Exception:

@@ -1,9 +1,9 @@
 """Where an object is: road ``s``/``t`` to inertial ``x``/``y``, the object's local frame and its bounding volume.
 
-Positions along a road come from the road's exact reference line (:class:`xodrcheck.lanes.RoadGeometry`, the
+Positions along a road come from the road's exact reference line (:class:`xodrcheck.geometry.lanes.RoadGeometry`, the
 checker's one evaluator of plan views and profiles). A point at lateral ``t`` lies ``t cos(phi)`` beside the
 reference line in plan view, ``phi`` the superelevation there (``t`` is measured along the road surface, 13.1 and
-:mod:`xodrcheck.lanes`).
+:mod:`xodrcheck.geometry.lanes`).
 
 The local frame of an object (8.4, 13.1): origin at the object's ``s``/``t``, ``u`` along the road's heading there
 turned by the object's ``hdg``, then pitched and rolled by ``pitch`` and ``roll`` (none with ``perpToRoad="true"``,
@@ -29,7 +29,7 @@ from xodrcheck.objects.model import RoadObject
 from xodrcheck.quantities import metres
 
 if TYPE_CHECKING:  # pragma: no cover
-    from xodrcheck.lanes import RoadGeometry
+    from xodrcheck.geometry.lanes import RoadGeometry
 
 #: Most instances one ``<repeat>`` places (a repeat placing more is taken as its first ones).
 MAX_INSTANCES = 10_000

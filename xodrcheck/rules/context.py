@@ -36,8 +36,8 @@ if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree
 
     from xodrcheck.filebytes import FileBytes
+    from xodrcheck.geometry.lanes import RoadGeometry
     from xodrcheck.junction_elements import JunctionParts
-    from xodrcheck.lanes import RoadGeometry
     from xodrcheck.objects import RoadObject, RoadObjects
     from xodrcheck.signals import Signals
 
@@ -223,7 +223,7 @@ class Context:
     def geometry(self, road_id: str) -> RoadGeometry | None:
         """The evaluated geometry of a road (lazy, cached per road); ``None`` for an unknown road."""
         if self._geometry is None:
-            from xodrcheck.lanes import geometry_of
+            from xodrcheck.geometry.lanes import geometry_of
 
             self._geometry = geometry_of(self.document)
         return self._geometry.get(road_id)

@@ -3,7 +3,7 @@
 Every lane section is sampled and evaluated once (:func:`xodrcheck.rules.sampled.section_lines`: every knot, and
 steps keeping the chord error under ``chord`` for curves within the radius bound) and the curvature of the lines is
 evaluated exactly there
-(offset-curve curvature with the lane's width change, :mod:`xodrcheck.lanes`).
+(offset-curve curvature with the lane's width change, :mod:`xodrcheck.geometry.lanes`).
 
 Decisions
 ---------
@@ -26,6 +26,8 @@ import math
 import numpy as np
 
 from xodrcheck.findings import Basis, Category, Severity
+from xodrcheck.geometry.batch import centre_lines
+from xodrcheck.geometry.lines import tightest
 from xodrcheck.model import Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context, placed_lane_ids
@@ -57,13 +59,6 @@ def _where(road: Road, index: int, lane_id: int | None, s: float, x: float, y: f
     }
 
 
-def _tightest(curvature: np.ndarray, bound: float) -> int | None:
-    """Index of the largest |curvature| above ``bound`` (``None`` when none is)."""
-    k = np.abs(np.nan_to_num(curvature, nan=0.0, posinf=0.0, neginf=0.0))
-    i = int(np.argmax(k)) if len(k) else 0
-    return i if len(k) and k[i] > bound else None
-
-
 @rule("C001", "lane-radius-too-small", Category.CURVATURE, Severity.ERROR, basis=Basis.PLAUSIBILITY)
 def lane_radius_too_small(ctx: Context):
     """The centre line of a drivable lane curves tighter than ``min_radius`` (5 m by default).
@@ -87,16 +82,11 @@ def lane_radius_too_small(ctx: Context):
     together = _centre_hits(ctx, bound)
     for road, index, geometry, s in _sections(ctx):
         placed = placed_lane_ids(geometry, index)
-        hits = together.get((road.id, index))
+        hits = together[(road.id, index)]
         for lane in road.lane_sections[index].lanes:
             if lane.id not in placed or not lane.drivable:
                 continue  # lane 0, and lanes filed on the wrong side (lane-id-sequence reports those)
-            if hits is not None:
-                hit = hits.get(lane.id)
-            else:
-                points = geometry.lane_points(index, lane.id, s, "centre")
-                i = _tightest(np.where(points.speed > 0, points.curvature, 0.0), bound)
-                hit = None if i is None else (i, float(points.curvature[i]), float(points.x[i]), float(points.y[i]))
+            hit = hits.get(lane.id)
             if hit is None or _folds(ctx, road, index, lane.id):
                 continue
             i, curvature, x, y = hit
@@ -125,34 +115,28 @@ _Hit = tuple[int, float, float, float]
 
 
 def _centre_hits(ctx: Context, bound: float) -> dict[tuple[str, int], dict[int, _Hit]]:
-    """The tightest centre point above ``bound`` of each drivable lane (none: not listed) of every lane section
-    :mod:`xodrcheck.roadpass` covers, by (road id, section index) and lane id, evaluated together in batches of
-    samples (:mod:`xodrcheck.centres`: the numbers of ``lane_points`` lane by lane); other sections are left out."""
-    from xodrcheck import centres, roadpass
-
+    """The tightest centre point above ``bound`` of each drivable lane (none: not listed) of every lane section, by
+    (road id, section index) and lane id, evaluated together in batches of samples
+    (:func:`xodrcheck.geometry.batch.centre_lines`: the numbers of ``lane_points`` lane by lane)."""
     entries, keys, grids, wanted = [], [], [], []
     out: dict[tuple[str, int], dict[int, _Hit]] = {}
     for road, index, geometry, s in _sections(ctx):
-        if not roadpass.covered(geometry, index) or not np.isfinite(s).all():
-            continue
         placed = placed_lane_ids(geometry, index)
         lanes = [lane.id for lane in road.lane_sections[index].lanes if lane.id in placed and lane.drivable]
         out[(road.id, index)] = {}
         if lanes:
-            entries.append((geometry, index))
+            entries.append(geometry.rows(index))
             keys.append((road.id, index))
             grids.append(s)
             wanted.append(list(dict.fromkeys(lanes)))
-    for lo, hi, found in centres.centre_batches(entries, grids, wanted, BATCH_SAMPLES):
-        if found is None:
-            for key in keys[lo:hi]:
-                del out[key]  # lane by lane
-            continue
-        hits = [(j, hit) for j, hit in enumerate(centres.tightest(found, bound)) if hit is not None]
-        places = found.xy([pair for _, (pair, _) in hits])
-        for (j, (pair, i)), (x, y) in zip(hits, places):
-            k, lane_id = found.lanes[j]
-            out[keys[lo + k]][lane_id] = (i, float(found.curvature[pair]), x, y)
+    for lo, hi, found in centre_lines(entries, grids, wanted, BATCH_SAMPLES):
+        lanes = [(k, lane_id) for k in range(hi - lo) for lane_id in wanted[lo + k]]
+        hits = [(j, hit) for j, hit in enumerate(found.tightest(bound)) if hit is not None]
+        x, y = found.xy(np.array([pair for _, (pair, _) in hits], dtype=np.int64))
+        curvature = found.bend()[2]
+        for (j, (pair, i)), xj, yj in zip(hits, x.tolist(), y.tolist()):
+            k, lane_id = lanes[j]
+            out[keys[lo + k]][lane_id] = (i, float(curvature[pair]), xj, yj)
     return out
 
 
@@ -180,9 +164,10 @@ def reference_radius_too_small(ctx: Context):
         if not len(lines.s) or not any((lane := section.lane(i)) is not None and lane.drivable for i in (1, -1)):
             continue
         s, points = lines.s, lines.borders[0]
-        i = _tightest(np.where(points.speed > 0, points.curvature, 0.0), bound)
-        if i is None:
+        hit = tightest(points.curvature, points.speed, np.array([0, len(s)]), bound)[0]
+        if hit is None:
             continue
+        i = hit[1]
         radius = 1.0 / abs(float(points.curvature[i]))
         yield reference_radius_too_small.finding(
             f"road {road.id}: the lane-0 line (reference line plus laneOffset) has a radius of {radius:.3g} m at "

@@ -21,6 +21,7 @@ from xodrcheck.config import Tolerances
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.geometry import profile
 from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
+from xodrcheck.geometry.sampling import capped
 from xodrcheck.model import Cubic, Geometry, Road, Spiral
 from xodrcheck.quantities import metres
 from xodrcheck.rules import road_uids as U
@@ -28,7 +29,6 @@ from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_uids import SECTION_VALID_LENGTH
 from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.rules.sampled import angle_between, grid_step, usable, warning_note
-from xodrcheck.sampling import capped, knots
 
 _KIND = {"Line": "line", "Arc": "arc", "Spiral": "spiral", "Poly3": "poly3", "ParamPoly3": "paramPoly3"}
 
@@ -381,7 +381,7 @@ def sampling_capped(ctx: Context):
         if geometry is None:
             continue
         for index, section in enumerate(road.lane_sections):
-            cuts = knots(geometry, index)
+            cuts = geometry.knots(index)
             if not capped(np.diff(cuts), step, budget):
                 continue
             length = road.section_end(index) - section.s

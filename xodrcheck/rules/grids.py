@@ -3,8 +3,9 @@ knots end to end in one array, the even steps between them in a few numpy calls 
 
 The arithmetic per element is :func:`xodrcheck.rules.sampled._grid`'s, so the grids are the same to the last bit:
 step counts are ``ceil(length / step)`` elementwise (a section whose counts pass the sample budget is counted alone,
-:func:`xodrcheck.sampling.step_counts`); the samples are ``cut + length * offset / count`` elementwise; each grid ends
-with ``left_of(end)``, and a grid that is not already non-decreasing is made so by ``np.maximum.accumulate`` alone.
+:func:`xodrcheck.geometry.sampling.step_counts`); the samples are ``cut + length * offset / count`` elementwise; each
+grid ends with ``left_of(end)``, and a grid that is not already non-decreasing is made so by
+``np.maximum.accumulate`` alone.
 """
 
 from __future__ import annotations
@@ -14,8 +15,8 @@ from collections.abc import Sequence
 import numpy as np
 
 from xodrcheck.config import Tolerances
-from xodrcheck.lanes import RoadGeometry
-from xodrcheck.sampling import _MAX_COUNT, knots, step_counts
+from xodrcheck.geometry.lanes import RoadGeometry
+from xodrcheck.geometry.sampling import raw_counts, step_counts
 
 #: Knot intervals counted together (the temporaries of a batch scale with its samples, a few arrays of them).
 _BATCH_INTERVALS = 1 << 14
@@ -36,7 +37,7 @@ def section_grids(tol: Tolerances, entries: Sequence[tuple[RoadGeometry, int]], 
             cuts, ends, pending = [], [], 0
             out.append(np.array([start], dtype=float))
             continue
-        cuts.append(knots(geometry, index))
+        cuts.append(geometry.knots(index))
         ends.append(left_of(end))
         pending += len(cuts[-1])
         if pending >= _BATCH_INTERVALS:
@@ -58,9 +59,7 @@ def _grids(cuts: list[np.ndarray], ends: list[float], step: float, budget: int |
     keep[last[:-1]] = False
     lengths, starts = lengths_all[keep], flat[:-1][keep]
     intervals = sizes - 1
-    with np.errstate(divide="ignore", over="ignore", invalid="ignore"):
-        counts = np.ceil(lengths / step)
-    counts = np.where((counts >= 1) & (counts <= _MAX_COUNT), counts, 1)
+    counts = raw_counts(lengths, step)
     first = np.cumsum(intervals) - intervals
     if budget is not None:
         for over in np.flatnonzero(np.add.reduceat(counts, first) > budget):  # rare: counted alone, scaled down

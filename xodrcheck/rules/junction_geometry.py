@@ -23,6 +23,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xodrcheck.findings import Basis, Category, Severity
+from xodrcheck.geometry.batch import centre_lines
 from xodrcheck.model import Connection, ContactPoint, JunctionType, Road
 from xodrcheck.rules.context import Context, placed_lane_ids, travel_direction
 from xodrcheck.rules.registry import rule
@@ -168,28 +169,23 @@ def _ahead(ctx: Context):
 
 
 def _known(ctx: Context, wanted: dict[tuple[str, int], tuple[Road, list[int]]]) -> _Known:
-    """The centre lines of ``wanted`` lanes ((road id, section index) -> road, lane ids) in the sections
-    :mod:`xodrcheck.roadpass` covers, evaluated together (:func:`xodrcheck.centres.centre_lines`: the points of
-    ``lane_points`` lane by lane); the others are left out."""
-    from xodrcheck import centres, roadpass
-
-    entries, keys, grids, lanes = [], [], [], []
+    """The centre lines of ``wanted`` lanes ((road id, section index) -> road, lane ids), evaluated together
+    (:func:`xodrcheck.geometry.batch.centre_lines`: the points of ``lane_points`` lane by lane)."""
+    sections, keys, grids, lanes = [], [], [], []
     for (road_id, index), (road, ids) in wanted.items():
-        geometry = ctx.road_geometry(road)
-        s = section_samples(ctx, road, index)
-        if roadpass.covered(geometry, index) and np.isfinite(s).all():
-            entries.append((geometry, index))
-            keys.append(road_id)
-            grids.append(s)
-            lanes.append(ids)
+        sections.append(ctx.road_geometry(road).rows(index))
+        keys.append((road_id, index))
+        grids.append(section_samples(ctx, road, index))
+        lanes.append(ids)
     out: _Known = {}
-    for lo, _hi, found in centres.centre_batches(entries, grids, lanes, BATCH_SAMPLES):
-        if found is None:
-            continue
-        x, y = found.all_xy()
-        for j, (k, lane_id) in enumerate(found.lanes):
-            a, b = int(found.starts[j]), int(found.starts[j + 1])
-            out[(keys[lo + k], entries[lo + k][1], lane_id)] = np.column_stack((x[a:b], y[a:b]))
+    for lo, hi, found in centre_lines(sections, grids, lanes, BATCH_SAMPLES):
+        x, y = found.xy()
+        line = 0
+        for k in range(lo, hi):
+            for lane_id in lanes[k]:
+                a, b = int(found.starts[line]), int(found.starts[line + 1])
+                out[(keys[k][0], keys[k][1], lane_id)] = np.column_stack((x[a:b], y[a:b]))
+                line += 1
     return out
 
 

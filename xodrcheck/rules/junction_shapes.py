@@ -1,8 +1,8 @@
 """A junction's area in plan view: its boundary (12.10), its reference line (12.9) and its elevation grid (12.11).
 
 :func:`boundary_pieces` evaluates the segments of a ``<boundary>`` as polylines, each from the segment's start to its
-end, with the exact lane geometry (:class:`xodrcheck.lanes.RoadGeometry`): a ``lane`` segment runs along the outer
-border of ``boundaryLane`` of its road from ``sStart`` to ``sEnd`` (lane 0: the lane-0 line, that is the reference
+end, with the exact lane geometry (:class:`xodrcheck.geometry.lanes.RoadGeometry`): a ``lane`` segment runs along the
+outer border of ``boundaryLane`` of its road from ``sStart`` to ``sEnd`` (lane 0: the lane-0 line, that is the reference
 line moved by the laneOffset), at the road's section samples between them; a ``joint`` segment runs straight across
 the road at its contact point, from the outer border of ``jointLaneStart`` to that of ``jointLaneEnd``. A joint
 without lanes crosses all of them: from the outermost border on one side to the outermost on the other, in whichever
@@ -21,7 +21,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.lanes import RoadGeometry
+from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import Road
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.sampled import left_of, section_lines, usable

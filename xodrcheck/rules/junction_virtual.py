@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xodrcheck.findings import Basis, Category, Finding, Severity
-from xodrcheck.lanes import RoadGeometry
+from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import ContactPoint, ElementType, Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U

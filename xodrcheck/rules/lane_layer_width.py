@@ -10,7 +10,6 @@ from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import grid_step, usable
-from xodrcheck.sampling import knots
 
 
 def _edges(geometry, index: int, s: np.ndarray) -> tuple[np.ndarray | None, np.ndarray | None]:
@@ -44,7 +43,7 @@ def temporary_layer_wider(ctx: Context):
 
         <lanes layer="temporary"><laneSection s="20" length="30"> ... <right> two lanes of 4 m ...
     """
-    from xodrcheck.lanes import temporary_geometry_of
+    from xodrcheck.geometry.lanes import temporary_geometry_of
 
     temporary = temporary_geometry_of(ctx.document)
     tol = ctx.tolerances.position
@@ -61,7 +60,7 @@ def temporary_layer_wider(ctx: Context):
             if not e > a:
                 continue
             count = int(min(np.ceil((e - a) / step), ctx.tolerances.max_samples_per_section))
-            s = np.unique(np.concatenate([np.linspace(a, e, count + 1), knots(layer, j)]))
+            s = np.unique(np.concatenate([np.linspace(a, e, count + 1), layer.knots(j)]))
             s = s[(s >= a) & (s <= e)]
             yield from _compare(temporary_layer_wider, road, layer, j, section, permanent, s, tol)
 

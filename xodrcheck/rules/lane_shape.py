@@ -16,13 +16,13 @@ from collections.abc import Iterator
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
+from xodrcheck.geometry.batch import Evaluation
 from xodrcheck.model import Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import BATCH_SAMPLES, usable
-from xodrcheck.sampling import knots
 
 _NODES = np.array([0.125, 0.375, 0.625, 0.875])
 _FIT = np.linalg.inv(np.vander(_NODES, 4, increasing=True))  # values at the nodes -> coefficients in u
@@ -79,20 +79,19 @@ _BORDER_BATCH_SAMPLES = BATCH_SAMPLES // 2
 
 
 def _all_borders(ctx: Context, nodes: dict) -> Iterator[tuple[tuple[int, int], dict[int, np.ndarray]]]:
-    """(key, :meth:`RoadGeometry.borders` at the piece nodes) of every section :mod:`xodrcheck.roadpass` covers,
-    evaluated in batches of sections (the same numbers as section by section, with a fraction of the numpy calls)."""
-    from xodrcheck import roadpass
+    """(key, :meth:`RoadGeometry.borders` at the piece nodes) of every section with pieces, evaluated in batches of
+    sections (the same numbers as section by section, with a fraction of the numpy calls)."""
     from xodrcheck.arrays import batches
 
-    keys, entries, samples = [], [], []
+    keys, sections, samples = [], [], []
     for key, (road, found) in nodes.items():
-        geometry = ctx.road_geometry(road)
-        if found is not None and roadpass.covered(geometry, key[1]) and np.isfinite(found[2]).all():
+        if found is not None:
             keys.append(key)
-            entries.append((geometry, key[1]))
+            sections.append(ctx.road_geometry(road).rows(key[1]))
             samples.append(found[2])
     for lo, hi in batches([len(s) for s in samples], _BORDER_BATCH_SAMPLES):
-        yield from zip(keys[lo:hi], roadpass.section_borders(entries[lo:hi], samples[lo:hi]))
+        evaluation = Evaluation(sections[lo:hi], samples[lo:hi])
+        yield from ((key, evaluation.borders(k)) for k, key in enumerate(keys[lo:hi]))
 
 
 _EXTREMES: weakref.WeakKeyDictionary[Context, dict] = weakref.WeakKeyDictionary()
@@ -135,7 +134,7 @@ def _split_extremes(blocks: list[np.ndarray]) -> list[tuple[np.ndarray, np.ndarr
 def _piece_nodes(ctx: Context, road: Road, index: int) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
     """``(a, b, s)``: the pieces ``[a, b]`` between consecutive knots of a section and the ``s`` of their nodes;
     ``None`` when the section has no piece."""
-    cuts = knots(ctx.road_geometry(road), index)
+    cuts = ctx.road_geometry(road).knots(index)
     if len(cuts) < 2:
         return None
     a, b = cuts[:-1], cuts[1:]

@@ -25,7 +25,7 @@ from xodrcheck.rules.registry import rule
 if TYPE_CHECKING:  # pragma: no cover
     import shapely
 
-    from xodrcheck.lanes import RoadGeometry
+    from xodrcheck.geometry.lanes import RoadGeometry
     from xodrcheck.objects import RoadObject
     from xodrcheck.objects.place import Instance, Volume
 

@@ -13,11 +13,9 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.model import Arc, Line
-
 if TYPE_CHECKING:
     from xodrcheck.findings import Finding
-    from xodrcheck.lanes import RoadGeometry
+    from xodrcheck.geometry.lanes import RoadGeometry
     from xodrcheck.rules.context import Context
 
 #: (road id, s, lane, section_s): a place as a finding names it.
@@ -47,35 +45,78 @@ def points_at(geometry: RoadGeometry, at: np.ndarray, placed: tuple[int, int] | 
         else:
             pose = geometry.reference(at)
             xs, ys, zs = pose.x, pose.y, geometry.elevation(at)
+    return _points(xs, ys, zs)
+
+
+def _points(xs: np.ndarray, ys: np.ndarray, zs: np.ndarray) -> list[Point]:
     out: list[Point] = []
     for x, y, z in zip(xs.tolist(), ys.tolist(), zs.tolist()):
         out.append((x, y, z if math.isfinite(z) else float("nan")) if math.isfinite(x) and math.isfinite(y) else None)
     return out
 
 
-def _pointwise(geometry: RoadGeometry) -> bool:
-    """Whether the road's plan view evaluates every point on its own (lines and arcs: a point's numbers do not depend
-    on the other points evaluated with it; spirals, poly3 and paramPoly3 choose series and iterations per call)."""
-    return all(type(element) in (Line, Arc) for element in geometry.reference_line.elements)
+#: Places evaluated together (each a block of one sample: a few hundred bytes of temporaries each).
+_PLACES_TOGETHER = 1 << 12
 
 
 def locate_all(ctx: Context, findings: list[Finding]) -> list[Finding]:
-    """:meth:`Context.locate` of every finding, with the places on one lane of one section (or on one road's reference
-    line) evaluated in one call where the road's plan view is pointwise: the same numbers as one by one."""
-    groups: dict[tuple[str, tuple[int, int] | None], dict[Key, float]] = {}
+    """:meth:`Context.locate` of every finding, with the places not known yet evaluated together, each as a block of
+    its own (:class:`~xodrcheck.geometry.batch.Evaluation`, :func:`~xodrcheck.geometry.planview.poses`): the same
+    numbers as one by one."""
+    on_lanes: dict[Key, tuple[RoadGeometry, tuple[int, int]]] = {}
+    on_lines: dict[Key, RoadGeometry] = {}
     for f in findings:
         if f.x is not None or f.road is None or f.s is None or not math.isfinite(f.s):
             continue
         key: Key = (f.road, f.s, f.lane, f.section_s)
         geometry = ctx.geometry(f.road)
-        if ctx.known_position(key) or geometry is None or not geometry.road.plan_view or not _pointwise(geometry):
+        if ctx.known_position(key) or key in on_lanes or key in on_lines or geometry is None:
             continue
-        groups.setdefault((f.road, lane_placed(geometry, f.s, f.lane, f.section_s)), {})[key] = float(f.s)
-    for (road_id, placed), places in groups.items():
-        if len(places) > 1:
-            geometry = ctx.geometry(road_id)
-            assert geometry is not None
-            found = points_at(geometry, np.array(list(places.values())), placed)
-            for key, point in zip(places, found):
-                ctx.remember_position(key, point)
+        if geometry.road.plan_view:
+            placed = lane_placed(geometry, f.s, f.lane, f.section_s)
+            if placed is None:
+                on_lines[key] = geometry
+            else:
+                on_lanes[key] = (geometry, placed)
+    keys = list(on_lanes)
+    for lo in range(0, len(keys), _PLACES_TOGETHER):
+        _lane_places(ctx, {key: on_lanes[key] for key in keys[lo : lo + _PLACES_TOGETHER]})
+    _line_places(ctx, on_lines)
     return [ctx.locate(f) for f in findings]
+
+
+def _lane_places(ctx: Context, places: dict[Key, tuple[RoadGeometry, tuple[int, int]]]) -> None:
+    """Remember the lane centres (raised by the lane's height) at ``places``, evaluated together."""
+    from xodrcheck.geometry.batch import Evaluation
+
+    if not places:
+        return
+    with np.errstate(all="ignore"):
+        evaluation = Evaluation(
+            [geometry.rows(index) for geometry, (index, _) in places.values()],
+            [np.array([float(key[1])]) for key in places],
+        )
+        wanted = [(k, lane, "centre", True) for k, (_, (_, lane)) in enumerate(places.values())]
+        p = evaluation.lines(wanted).points()
+    for key, point in zip(places, _points(p.x, p.y, p.z)):
+        ctx.remember_position(key, point)
+
+
+def _line_places(ctx: Context, places: dict[Key, RoadGeometry]) -> None:
+    """Remember the reference-line points (z: the elevation) at ``places``, evaluated together."""
+    from xodrcheck.geometry.planview import poses
+
+    if not places:
+        return
+    s = np.array([key[1] for key in places], dtype=float)
+    geometries = list(places.values())
+    z = np.empty(len(s))
+    with np.errstate(all="ignore"):
+        pose = poses([geometry.reference_line for geometry in geometries], s, np.arange(len(s) + 1))
+        by_road: dict[int, list[int]] = {}
+        for k, geometry in enumerate(geometries):
+            by_road.setdefault(id(geometry), []).append(k)
+        for ks in by_road.values():  # the elevation is evaluated point by point
+            z[ks] = geometries[ks[0]].elevation(s[ks])
+    for key, point in zip(places, _points(pose.x, pose.y, z)):
+        ctx.remember_position(key, point)

@@ -16,7 +16,9 @@ from dataclasses import dataclass
 import numpy as np
 
 from xodrcheck.arrays import batches
-from xodrcheck.lanes import LanePoints, RoadGeometry
+from xodrcheck.geometry.batch import Evaluation
+from xodrcheck.geometry.lanes import RoadGeometry
+from xodrcheck.geometry.lines import LanePoints
 from xodrcheck.model import ContactPoint, Road
 from xodrcheck.rules.context import Context
 
@@ -83,10 +85,8 @@ END_CURVES: weakref.WeakKeyDictionary[Context, dict[tuple[str, int], dict[int, L
 
 def end_curves(ctx: Context) -> dict[tuple[str, int], dict[int, LanePoints]]:
     """The border curves :func:`road_end` needs (:meth:`RoadGeometry.border_curves` at :func:`end_samples`) of every
-    usable road's end sections that :mod:`xodrcheck.roadpass` covers, evaluated together in one pass (the same
-    numbers, with a fraction of the numpy calls), keyed by (road id, section index); the rest are evaluated when
-    asked for."""
-    from xodrcheck import roadpass
+    usable road's end sections, evaluated together in batches (the same numbers, with a fraction of the numpy calls),
+    keyed by (road id, section index)."""
     from xodrcheck.rules.sampled import BATCH_SAMPLES, usable  # read when called: tests patch BATCH_SAMPLES there
 
     found = END_CURVES.get(ctx)
@@ -101,18 +101,13 @@ def end_curves(ctx: Context) -> dict[tuple[str, int], dict[int, LanePoints]]:
             continue
         for end in (ContactPoint.START, ContactPoint.END) if len(road.lane_sections) > 1 else (ContactPoint.START,):
             index, _, s = end_samples(road, end)
-            if roadpass.covered(geometry, index) and np.isfinite(s).all() and bool(np.all(np.diff(s) > 0)):
-                entries.append((geometry, index))
-                keys.append((road.id, index))
-                grids.append(s)
+            entries.append((geometry, index))
+            keys.append((road.id, index))
+            grids.append(s)
     found = {}
     for lo, hi in batches([len(s) for s in grids], BATCH_SAMPLES):
-        points = roadpass.section_points(entries[lo:hi], grids[lo:hi])
-        for key, p in zip(keys[lo:hi], points or ()):
-            found[key] = {
-                lane_id: LanePoints(p.x[k], p.y[k], p.z[k], p.hdg[k], p.curvature[k], p.speed[k])
-                for k, lane_id in enumerate(p.ids)
-            }
+        evaluation = Evaluation([geometry.rows(index) for geometry, index in entries[lo:hi]], grids[lo:hi])
+        found.update(zip(keys[lo:hi], evaluation.border_points()))
     END_CURVES[ctx] = found
     return found
 

@@ -23,7 +23,9 @@ from xodrcheck.arrays import batches
 from xodrcheck.budget import ByteBudget, array_bytes
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Severity
-from xodrcheck.lanes import LanePoints, RoadGeometry
+from xodrcheck.geometry.batch import Evaluation
+from xodrcheck.geometry.lanes import RoadGeometry
+from xodrcheck.geometry.lines import LanePoints
 from xodrcheck.model import Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context
@@ -51,10 +53,10 @@ def section_samples(ctx: Context, road: Road, section_index: int) -> np.ndarray:
     """Sorted ``s`` covering lane section ``section_index`` (the ``s`` of :func:`section_lines`, without evaluating
     the lines).
 
-    Every knot of the section (:func:`xodrcheck.sampling.knots`: record starts, plan-view joints, section ends) and
-    even steps between them no longer than ``sqrt(8 * chord * min_radius)`` (and ``max_step``): a polyline through
-    them strays at most ``chord`` from any line curving no tighter than the ``min_radius`` bound (tighter curves are
-    reported by the curvature rules). The section's end is taken just before it (:func:`left_of`).
+    Every knot of the section (:meth:`~xodrcheck.geometry.lanes.RoadGeometry.knots`: record starts, plan-view joints,
+    section ends) and even steps between them no longer than ``sqrt(8 * chord * min_radius)`` (and ``max_step``): a
+    polyline through them strays at most ``chord`` from any line curving no tighter than the ``min_radius`` bound
+    (tighter curves are reported by the curvature rules). The section's end is taken just before it (:func:`left_of`).
     """
     found = _lines_of(ctx).grid(road.id, section_index)
     return found if found is not None else _grid(ctx, ctx.road_geometry(road), section_index)
@@ -145,12 +147,12 @@ class _SectionCache:
     """The sampled lines of a file's lane sections, evaluated in batches of consecutive sections (document order)
     and kept within :data:`LINES_BUDGET`.
 
-    The sections :mod:`xodrcheck.roadpass` covers are listed once with their samples (a few bytes per sample). A
+    The sections whose samples are finite are listed once with their samples (a few bytes per sample). A
     file whose lines fit the budget is evaluated in full batches, once, and kept whole. In a bigger file the lines
     first evaluated stay (three quarters of the budget: every rule that reads the file from its start finds them),
     and the rest pass through a window (the last quarter, least recently used dropped first): a section asked for and
     not kept is evaluated with the sections after it, in a batch that grows while the rule reads on in document order
-    and starts small again where it jumps. Sections roadpass leaves out are evaluated one at a time.
+    and starts small again where it jumps. Sections left out are evaluated one at a time.
     """
 
     __slots__ = (
@@ -170,7 +172,6 @@ class _SectionCache:
     )
 
     def __init__(self, ctx: Context) -> None:
-        from xodrcheck import roadpass
         from xodrcheck.rules.grids import section_grids
 
         self._entries: list[tuple[RoadGeometry, int]] = []
@@ -182,7 +183,6 @@ class _SectionCache:
             for road in ctx.document.roads
             if (geometry := usable(ctx, road)) is not None
             for index in range(len(road.lane_sections))
-            if roadpass.covered(geometry, index)
         ]
         grids = section_grids(ctx.tolerances, [(g, i) for _, g, i in candidates], grid_step(ctx.tolerances))
         for (road, geometry, index), s in zip(candidates, grids):
@@ -323,7 +323,7 @@ def _copied(lines: SectionLines) -> SectionLines:
 
 
 def _all_sections(ctx: Context) -> dict[tuple[str, int], SectionLines]:
-    """:class:`SectionLines` of every lane section :mod:`xodrcheck.roadpass` covers, evaluated together in batches
+    """:class:`SectionLines` of every lane section with finite samples, evaluated together in batches
     (the same numbers as one section at a time, with a fraction of the calls); the rest are evaluated when asked for."""
     return _SectionCache(ctx).evaluate_all()
 
@@ -341,19 +341,11 @@ _FIRST_BATCH_SAMPLES = 1 << 12
 
 
 def _evaluate_batch(entries, keys, grids, out: dict[tuple[str, int], SectionLines]) -> None:
-    """Evaluate one batch of sections together into ``out`` (a batch roadpass cannot cover exactly is left out:
-    those sections are evaluated one at a time when asked for)."""
-    from xodrcheck import roadpass
-
-    points = roadpass.section_points(entries, grids)
-    if points is None:
-        return
-    for key, s, p in zip(keys, grids, points):
-        borders = {
-            lane_id: LanePoints(p.x[k], p.y[k], p.z[k], p.hdg[k], p.curvature[k], p.speed[k])
-            for k, lane_id in enumerate(p.ids)
-        }
-        out[key] = SectionLines(s, dict(zip(p.ids, p.t)), p.reference_curvature, borders)
+    """Evaluate one batch of sections together into ``out``."""
+    evaluation = Evaluation([geometry.rows(index) for geometry, index in entries], grids)
+    curvature = evaluation.pose.curvature
+    for k, (key, s, borders) in enumerate(zip(keys, grids, evaluation.border_points())):
+        out[key] = SectionLines(s, evaluation.borders(k), curvature[evaluation.block(k)], borders)
 
 
 def warning_note(severity: Severity, tolerances: Tolerances, kind: str = "position") -> str:

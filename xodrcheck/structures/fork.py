@@ -23,7 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.lanes import geometry_of
+from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.metrics import Leg, leg_ends, make_leg
 from xodrcheck.model import ContactPoint, Document, Junction, JunctionType, Road
 

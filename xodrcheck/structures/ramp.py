@@ -20,7 +20,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from xodrcheck.lanes import geometry_of
+from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.metrics import Leg
 from xodrcheck.model import ContactPoint, Document, Junction
 

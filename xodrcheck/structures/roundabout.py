@@ -28,7 +28,7 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from xodrcheck.lanes import geometry_of
+from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.metrics import leg_ends
 from xodrcheck.model import ContactPoint, Document, ElementType, Junction, Road
 

@@ -69,18 +69,37 @@ def _random_profile(rng, records: int, origin: float) -> profile.Piecewise:
 
 
 @pytest.mark.parametrize("with_nan", [False, True])
-def test_batch_gives_exactly_each_profiles_own_jet(with_nan):
+def test_laws_give_exactly_each_profiles_own_jet(with_nan):
+    """Profiles evaluated together (profile.Laws: many tables of rows at many blocks of s) are each profile's own
+    Piecewise.jet, to the last bit, NaN and infinities included; rows without a profile are zero."""
     rng = np.random.default_rng(7)
-    # Empty, single-record, few-record and many-record profiles, some starting after the first s.
-    laws = tuple(_random_profile(rng, n, origin) for n in (0, 1, 1, 3, 5, 40, 2, 0, 1) for origin in (0.0, 7.5))
-    s = np.concatenate([[-1.0, 0.0, 60.0, np.inf], rng.uniform(-5.0, 70.0, 200)])
+    # Empty, single-record, few-record (enough to be counted together) and many-record profiles, some starting after
+    # the first s.
+    counts = (0, 1, 1, 3, 5, 40, 2, 0, 1, 3, 4, 2, 6)
+    laws = tuple(_random_profile(rng, n, origin) for n in counts for origin in (0.0, 7.5))
+    s = np.concatenate([[-1.0, 0.0, 60.0, np.inf, -np.inf], rng.uniform(-5.0, 70.0, 200)])
     if with_nan:
         s[5] = np.nan
-    batched = profile.Batch(laws).jets(s)
-    assert len(batched) == len(laws)
-    for law, got in zip(laws, batched):
-        for part, expected in zip(got, law.jet(s)):
-            np.testing.assert_array_equal(part, expected)
+    for rows, blocks in (
+        ((None, *laws), [(0, len(s))]),  # one block: a 2-D computation
+        ((None, *laws), [(0, len(s)), (7, 40), (len(s) - 3, 3)]),
+        ((None, *laws[:10]), [(0, len(s))]),  # few profiles of several records: searched one by one
+    ):
+        table = profile.Table(rows)
+        together = profile.Laws()
+        dest = 0
+        for lo, n in blocks:
+            together.add(table, dest, lo, n)
+            dest += len(rows) * n
+        found = together.evaluate(s, dest)
+        dest = 0
+        for lo, n in blocks:
+            for row, law in enumerate(rows):
+                got = found[:, dest + row * n : dest + (row + 1) * n]
+                expected = law.jet(s[lo : lo + n]) if law is not None else (np.zeros(n),) * 3
+                for part, want in zip(got, expected):
+                    assert part.tobytes() == want.tobytes()
+            dest += len(rows) * n
 
 
 _EXTREMES = (0.0, -0.0, 1.0, -2.5, 0.1, 1e-300, 1e300, 1e308, -1e308, float("nan"), float("inf"), 123456.789)

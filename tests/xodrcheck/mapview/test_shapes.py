@@ -7,7 +7,7 @@ import base64
 import numpy as np
 import pytest
 
-from xodrcheck.lanes import geometry_of
+from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.mapview.encode import encode, zigzag_varints
 from xodrcheck.mapview.shapes import map_shapes
 from xodrcheck.reader import read

@@ -6,7 +6,7 @@ import pytest
 
 from tests.xodrcheck.roadbuild import lane, section, straight, width
 from xodrcheck.geometry import spiral
-from xodrcheck.lanes import RoadGeometry, geometry_of
+from xodrcheck.geometry.lanes import RoadGeometry, geometry_of
 from xodrcheck.model import Arc, Cubic, Document, Lane, LaneHeight, LaneType, Line, Road, Spiral
 
 S = np.array([0.0, 10.0, 37.5, 99.0])

@@ -5,7 +5,7 @@ from tests.xodrcheck.roadbuild import lane, section, straight, width
 from xodrcheck.check import check
 from xodrcheck.config import Tolerances
 from xodrcheck.geometry import arc, spiral
-from xodrcheck.lanes import RoadGeometry
+from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import Arc, Cubic, Line, Road, Spiral
 
 

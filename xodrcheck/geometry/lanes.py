@@ -45,36 +45,28 @@ lateral offset), with ``q'`` and ``q''`` carried exactly (:mod:`xodrcheck.geomet
 ``theta + atan2(q', 1 - q k)`` and curvature ``(A^2 k + A q'' + 2 q'^2 k + q q' k') / (A^2 + q'^2)^(3/2)``,
 ``A = 1 - q k``; widening lanes therefore contribute their width change.
 
-This module keeps each road's structure (sections, the lanes of each side, profiles, lane heights), the evaluations'
-caches and the entry points; one section's evaluation at an array of ``s`` and the lane lines drawn from it (border
-jets, lateral offsets across rolled and level lanes, plan-view points) are :mod:`xodrcheck.lane_lines`'s.
+This module keeps each road's structure (sections, the lanes of each side laid out as rows, profiles, lane heights,
+knots), the evaluations' caches and the per-road entry points; every evaluation is one block of the batched kernel
+(:mod:`xodrcheck.geometry.batch`), which evaluates many sections at once with the same numbers.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator, Mapping
+from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.budget import ByteBudget
+from xodrcheck.budget import ByteBudget, array_bytes
 from xodrcheck.config import Tolerances
 from xodrcheck.geometry import profile
-from xodrcheck.geometry.jet import Jet
+from xodrcheck.geometry.batch import Evaluation
+from xodrcheck.geometry.lines import LanePoints
 from xodrcheck.geometry.planview import ReferenceLine
 from xodrcheck.geometry.pose import Pose, as_array
-from xodrcheck.lane_lines import (
-    Evaluation,
-    LanePoints,
-    SideLanes,
-    bend,
-    border_jets,
-    evaluation_size,
-    place,
-    projected,
-    stacked_border_lines,
-)
-from xodrcheck.model import Cubic, Document, Lane, LaneLayer, Road, document_cache
-from xodrcheck.sampling import sample_section
+from xodrcheck.geometry.rows import SectionRows, lay_out
+from xodrcheck.geometry.sampling import sample_sections
+from xodrcheck.model import Document, Lane, LaneLayer, Road, document_cache
 
 _WHERE = ("centre", "inner", "outer")
 
@@ -82,6 +74,25 @@ _WHERE = ("centre", "inner", "outer")
 #: Bytes of lane evaluations the roads of one document keep cached together (:class:`~xodrcheck.budget.ByteBudget`;
 #: each road also keeps at most its last few): a 10 km map's roads kept 466 MB after the curvature rules without it.
 EVALUATION_BUDGET = 32 << 20
+
+
+@dataclass(frozen=True, slots=True)
+class SideLanes:
+    """The lanes of one side in effect in a section, inner to outer, with the ``s`` their records are relative to.
+
+    ``laws[i]`` is lane ``i``'s compiled width profile (``is_width[i]``) or border profile, ``None`` for neither."""
+
+    lanes: tuple[Lane, ...]
+    origin: float
+    laws: tuple[profile.Piecewise | None, ...]
+    is_width: tuple[bool, ...]
+
+
+def evaluation_size(evaluation: Evaluation) -> int:
+    """Bytes an evaluation of one block holds once its lines and pose are computed, about: per row the border and
+    lateral jets, the pairs' samples and where each depth's rows and their inner neighbours lie, and per sample ``s``,
+    the pose with its heading, the elevation and the roll."""
+    return array_bytes(9 * len(evaluation.sections[0].ids) + 17, evaluation.s.size)
 
 
 class RoadGeometry:
@@ -113,9 +124,13 @@ class RoadGeometry:
         self._offset = profile.Piecewise(road.lane_offset)
         self._elevation = profile.Piecewise(road.elevation)
         self._roll = profile.Piecewise(road.superelevation)
+        self._laws = (
+            profile.Table((self._elevation,)),
+            profile.Table((self._roll,)) if len(self._roll.starts) else None,
+        )
+        self._rows: dict[int, SectionRows] = {}
+        self._knots: dict[int, np.ndarray] = {}
         self._evaluations: dict[tuple[int, bytes], Evaluation] = {}
-        self._batches: dict[int, profile.Batch] = {}
-        self._heights: dict[tuple[int, int], tuple[Lane, profile.Piecewise, profile.Piecewise] | None] = {}
 
     # ---------------------------------------------------------------------------------------------------------------
     # Road level
@@ -175,91 +190,92 @@ class RoadGeometry:
         )
         return SideLanes(lanes, section.s, laws, tuple(bool(lane.widths) for lane in lanes))
 
-    def _batch(self, section_index: int) -> profile.Batch:
-        """The section's profiles evaluated together: laneOffset, elevation, then every lane's width or border law
-        (left lanes inner to outer, then right lanes)."""
-        batch = self._batches.get(section_index)
-        if batch is None:
-            laws = [law for side in self.side_lanes(section_index) for law in side.laws if law is not None]
-            batch = profile.Batch((self._offset, self._elevation, *laws))
-            self._batches[section_index] = batch
-        return batch
+    def rows(self, section_index: int) -> SectionRows:
+        """The section laid out for the batched evaluation (:class:`~xodrcheck.geometry.rows.SectionRows`)."""
+        found = self._rows.get(section_index)
+        if found is None:
+            found = self._rows[section_index] = lay_out(
+                self.reference_line, self.side_lanes(section_index), self._offset, *self._laws
+            )
+        return found
 
-    def _evaluate(self, section_index: int, s: np.ndarray) -> Evaluation:
-        """Reference pose, border jets, superelevation and elevation at ``s`` (a few recent queries are cached, so
-        asking for several lanes at the same ``s`` costs one evaluation)."""
+    def knots(self, section_index: int) -> np.ndarray:
+        """Sorted unique ``s`` where the section's curves may change their law: the section ends, plan-view element
+        joints, laneOffset, elevation and superelevation record starts, and the width/border record starts of the
+        lanes in effect (a new array: callers own it)."""
+        found = self._knots.get(section_index)
+        if found is None:
+            s0, s1 = self.section_range(section_index)
+            candidates = [
+                np.array([s0, s1]),
+                self.reference_line.breakpoints,
+                self._offset.starts,
+                self._elevation.starts,
+                self._roll.starts,
+            ]
+            for side in self.side_lanes(section_index):
+                candidates.extend(law.starts for law in side.laws if law is not None)
+            points = np.concatenate(candidates)
+            found = self._knots[section_index] = np.unique(points[(points >= s0) & (points <= s1)])
+        return found.copy()
+
+    def _evaluate(self, section_index: int, s) -> Evaluation:
+        """The section evaluated at ``s``, a batch of one block (a few recent queries are cached, so asking for
+        several lanes at the same ``s`` costs one evaluation)."""
+        s = as_array(s)
         key = (section_index, s.tobytes())
         found = self._evaluations.get(key)
         if found is not None:
             if self._budget is not None:
                 self._budget.touch(self._evaluations, key)
-        else:
-            cos: Jet | None
-            sin: Jet | None
-            if len(self._roll.starts):
-                roll = Jet(*self._roll.jet(s))
-                cos, sin = roll.cos(), roll.sin()
-            else:
-                cos = sin = None
-            offset, elevation, *laws = self._batch(section_index).jets(s)
-            jets = border_jets(self.side_lanes(section_index), offset, laws)
-            found = Evaluation(self.reference_line, s.copy(), jets, cos, sin, elevation[0])
-            if len(self._evaluations) >= self._CACHED_EVALUATIONS:
-                oldest = next(iter(self._evaluations))
-                del self._evaluations[oldest]
-                if self._budget is not None:
-                    self._budget.discard(self._evaluations, oldest)
-            self._evaluations[key] = found
+            return found
+        found = Evaluation([self.rows(section_index)], [s])
+        if len(self._evaluations) >= self._CACHED_EVALUATIONS:
+            oldest = next(iter(self._evaluations))
+            del self._evaluations[oldest]
             if self._budget is not None:
-                self._budget.add(self._evaluations, key, evaluation_size(found))
+                self._budget.discard(self._evaluations, oldest)
+        self._evaluations[key] = found
+        if self._budget is not None:
+            self._budget.add(self._evaluations, key, evaluation_size(found))
         return found
 
     def borders(self, section_index: int, s) -> dict[int, np.ndarray]:
         """Lateral ``t`` of each lane's outer border at ``s`` (lane 0: the laneOffset line)."""
-        return {lane_id: jet.v.copy() for lane_id, jet in self._evaluate(section_index, as_array(s)).borders.items()}
+        return self._evaluate(section_index, s).borders(0)
+
+    def _row(self, section_index: int, lane_id: int) -> int:
+        row = self.rows(section_index).first.get(lane_id)
+        if row is None:
+            raise KeyError(f"road {self.road.id}: no lane {lane_id} in lane section {section_index}")
+        return row
 
     def inner_outer(self, section_index: int, lane_id: int, s) -> tuple[np.ndarray, np.ndarray]:
         """Lateral ``t`` of a lane's inner and outer border at ``s``."""
-        jets = self._evaluate(section_index, as_array(s)).borders
-        if lane_id not in jets:
-            raise KeyError(f"road {self.road.id}: no lane {lane_id} in lane section {section_index}")
+        outer = self._row(section_index, lane_id)
         inner = 0
         for lane in self.side_lanes(section_index)[0 if lane_id > 0 else 1].lanes:
             if lane.id == lane_id:
                 break
             inner = lane.id
-        return jets[inner].v.copy(), jets[lane_id].v.copy()
-
-    def _height_laws(
-        self, section_index: int, lane_id: int
-    ) -> tuple[Lane, profile.Piecewise, profile.Piecewise] | None:
-        """The lane and its compiled inner and outer height profiles (``None`` for a lane without ``<height>``): each
-        record is a constant, so the one profile evaluation serves (records relative to the lanes' section start)."""
-        key = (section_index, lane_id)
-        if key not in self._heights:
-            found = None
-            for side in self.side_lanes(section_index):
-                lane = next((lane for lane in side.lanes if lane.id == lane_id), None)
-                if lane is not None and lane.heights:
-                    inner = tuple(Cubic(h.s, h.inner, 0.0, 0.0, 0.0, h.line) for h in lane.heights)
-                    outer = tuple(Cubic(h.s, h.outer, 0.0, 0.0, 0.0, h.line) for h in lane.heights)
-                    found = (lane, profile.Piecewise(inner, side.origin), profile.Piecewise(outer, side.origin))
-                if lane is not None:
-                    break
-            self._heights[key] = found
-        return self._heights[key]
+        evaluation = self._evaluate(section_index, s)
+        t = evaluation.t[0]
+        first = self.rows(section_index).first
+        return t[evaluation.row_pairs(0, first[inner])].copy(), t[evaluation.row_pairs(0, outer)].copy()
 
     def has_height(self, section_index: int, lane_id: int) -> bool:
         """Whether the lane has ``<height>`` records (its own lines differ from the shared border lines)."""
-        return self._height_laws(section_index, lane_id) is not None
+        rows = self.rows(section_index)
+        return rows.first.get(lane_id, -1) in rows.heights
 
     def lane_height(self, section_index: int, lane_id: int, s) -> tuple[np.ndarray, np.ndarray]:
         """Lane height (11.7.3) of a lane's inner and outer border at ``s``: 0 without ``<height>`` records."""
         s = as_array(s)
-        laws = self._height_laws(section_index, lane_id)
+        rows = self.rows(section_index)
+        laws = rows.heights.get(rows.first.get(lane_id, -1))
         if laws is None:
             return np.zeros_like(s), np.zeros_like(s)
-        return laws[1].jet(s)[0], laws[2].jet(s)[0]
+        return laws[0].jet(s)[0], laws[1].jet(s)[0]
 
     # ---------------------------------------------------------------------------------------------------------------
     # Points
@@ -271,60 +287,23 @@ class RoadGeometry:
         ``raised``, lifted by the lane's height along the h-axis (see the module docstring)."""
         if where not in _WHERE:
             raise ValueError(f"where must be one of {_WHERE}, got {where!r}")
-        evaluation = self._evaluate(section_index, as_array(s))
-        if lane_id not in evaluation.borders:
-            raise KeyError(f"road {self.road.id}: no lane {lane_id} in lane section {section_index}")
-        lateral, height = projected(self.side_lanes(section_index), evaluation, lane_id, where)
-        if raised:
-            lateral, height = self._raised(section_index, evaluation, lane_id, where, lateral, height)
-        return place(evaluation, lateral, height)
-
-    def _raised(
-        self,
-        section_index: int,
-        evaluation: Evaluation,
-        lane_id: int,
-        where: str,
-        lateral: Jet,
-        height: np.ndarray | float,
-    ) -> tuple[Jet, np.ndarray | float]:
-        """A lane line lifted by the lane's height along the h-axis: normal to the lane's surface, which is rolled by
-        the superelevation unless the lane is level."""
-        laws = self._height_laws(section_index, lane_id) if lane_id != 0 else None
-        if laws is None:
-            return lateral, height
-        lane, inner_law, outer_law = laws
-        inner, outer = Jet(*inner_law.jet(evaluation.s)), Jet(*outer_law.jet(evaluation.s))
-        lift = inner if where == "inner" else outer if where == "outer" else (inner + outer).scale(0.5)
-        if lane.level or evaluation.cos is None or evaluation.sin is None:
-            return lateral, height + lift.v
-        return lateral - lift * evaluation.sin, height + lift.v * evaluation.cos.v
+        self._row(section_index, lane_id)
+        return self._evaluate(section_index, s).lines([(0, lane_id, where, raised)]).points()
 
     def section_reference(self, section_index: int, s) -> Pose:
         """The reference-line pose at ``s``, from the same evaluation as the section's lanes at those ``s`` (asking
         for both costs one plan-view evaluation)."""
-        return self._evaluate(section_index, as_array(s)).pose
+        return self._evaluate(section_index, s).pose
 
     def border_curves(self, section_index: int, s) -> dict[int, LanePoints]:
         """Every lane's outer border (and lane 0's line) at ``s``: all the border polylines of the section."""
-        evaluation = self._evaluate(section_index, as_array(s))
-        ids, lateral, height = stacked_border_lines(self.side_lanes(section_index), evaluation)
-        p = place(evaluation, lateral, height)  # every line at once, one row each
-        z = p.z if p.z.ndim == 2 else np.repeat(p.z[None, :], len(ids), axis=0)  # flat road: one z for all
-        return {
-            lane_id: LanePoints(p.x[k], p.y[k], z[k], p.hdg[k], p.curvature[k], p.speed[k])
-            for k, lane_id in enumerate(ids)
-        }
+        return self._evaluate(section_index, s).border_points()[0]
 
     def border_bending(self, section_index: int, s) -> np.ndarray:
         """At each ``s``, the largest of ``|curvature| * speed^2`` over the section's border lines (lane 0's line
         included; see :meth:`border_curves`) and ``|curvature|`` of the reference line: what the sampler bounds.
         NaN where every one is NaN."""
-        evaluation = self._evaluate(section_index, as_array(s))
-        pose = evaluation.pose
-        _, lateral, _ = stacked_border_lines(self.side_lanes(section_index), evaluation)
-        _, speed, curvature = bend(pose, lateral)
-        return np.fmax(np.abs(pose.curvature), np.fmax.reduce(np.abs(curvature) * speed**2, axis=0))
+        return self._evaluate(section_index, s).bending()
 
     # ---------------------------------------------------------------------------------------------------------------
     # Sampling
@@ -338,15 +317,14 @@ class RoadGeometry:
     ) -> np.ndarray:
         """Sorted ``s`` covering the section with every knot, lane-border chord error under ``chord`` (default:
         the configured tolerance) and steps of at most ``max_step``, within a sample ``budget`` (default
-        ``max_samples_per_section``: past it the steps grow); see :mod:`xodrcheck.sampling`."""
+        ``max_samples_per_section``: past it the steps grow); see :mod:`xodrcheck.geometry.sampling`."""
         defaults = Tolerances()
-        return sample_section(
-            self,
-            section_index,
+        return sample_sections(
+            [(self.rows(section_index), self.knots(section_index))],
             defaults.chord if chord is None else chord,
             defaults.max_step if max_step is None else max_step,
             defaults.max_samples_per_section if budget is None else budget,
-        )
+        )[0]
 
 
 class _LazyGeometries(Mapping[str, RoadGeometry]):
@@ -368,6 +346,13 @@ class _LazyGeometries(Mapping[str, RoadGeometry]):
 
     def __len__(self) -> int:
         return len(self._roads)
+
+
+def road_geometry(geometries: Mapping[str, RoadGeometry], road: Road) -> RoadGeometry:
+    """``road``'s geometry from ``geometries`` (:func:`geometry_of`), or one of its own for a road whose id an earlier
+    road of the document has (the mapping holds the first road of an id)."""
+    found = geometries[road.id]
+    return found if found.road is road else RoadGeometry(road)
 
 
 def geometry_of(document: Document) -> Mapping[str, RoadGeometry]:
