@@ -17,17 +17,26 @@ from xodrcheck import model
 from xodrcheck.model import (
     Cubic,
     Lane,
+    LaneAccess,
+    LaneAdvisory,
     LaneDirection,
     LaneHeight,
     LaneLayer,
+    LaneLinks,
+    LaneMaterial,
+    LaneRule,
+    Lanes,
     LaneSection,
     LaneType,
-    Profile,
+    LaneVisibility,
     RoadMark,
+    RoadMarkExplicit,
+    RoadMarkSway,
+    RoadMarkType,
     Speed,
-    TemporaryLanes,
 )
-from xodrcheck.reader.context import SKIP_RECORD, Context, cubic, describe
+from xodrcheck.reader import lane_records
+from xodrcheck.reader.context import LEAF, SKIP_RECORD, Context, cubic, describe
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules import xml as R
 
@@ -46,6 +55,15 @@ _PERMANENT = "read as permanent, the standard's default"
 
 _SPEED = ["sOffset", "max"]
 _HEIGHT = ["sOffset", "inner", "outer"]
+_ADVISORIES = {a.value: a for a in LaneAdvisory}
+#: Children each element reads (the others are unknown there).
+_LANE = frozenset(
+    {"link", "width", "border", "roadMark", "speed", "height", "access", "material", "rule", "visibility"}
+)
+_LINK = frozenset({"predecessor", "successor"})
+_ROAD_MARK = frozenset({"sway", "type", "explicit"})
+_SECTION = frozenset({"left", "center", "right"})
+_LANES = frozenset({"laneOffset", "laneSection"})
 
 _Links = tuple[tuple[int, ...], tuple[int, ...], tuple[int, ...], tuple[int, ...]]
 
@@ -120,17 +138,44 @@ def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
                 raise ValueError
         except ValueError:
             width = ctx.number(el, "width", "the width is read as absent", nonneg=True)
-    return model.RoadMark(s, kind, get("weight"), get("color"), width, get("laneChange"), el.sourceline)
+    height = None if get("height") is None else ctx.opt_number(el, "height")
+    lines: RoadMarkType | None = None
+    explicit: RoadMarkExplicit | None = None
+    sways: tuple[RoadMarkSway, ...] = ()
+    if len(el):
+        for child in el:
+            tag = child.tag
+            if tag == "type" and lines is None:
+                lines = lane_records.mark_type(ctx, child)
+            elif tag == "explicit" and explicit is None:
+                explicit = lane_records.explicit(ctx, child)
+            elif tag == "sway":
+                sways += (lane_records.sway(ctx, child),)
+    return model.RoadMark(
+        s,
+        kind,
+        get("weight"),
+        get("color"),
+        width,
+        get("laneChange"),
+        el.sourceline,
+        get("material"),
+        height,
+        lines,
+        explicit,
+        sways,
+        ctx.facts(el, _ROAD_MARK),
+    )
 
 
 def _speed(ctx: Context, el: etree._Element) -> Speed | None:
     v = ctx.floats(el, _SPEED, (0, 1), SKIP_RECORD)
-    return None if v is None else model.Speed(v[0], v[1], el.get("unit"), el.sourceline)
+    return None if v is None else model.Speed(v[0], v[1], el.get("unit"), el.sourceline, ctx.facts(el, LEAF))
 
 
 def _height(ctx: Context, el: etree._Element) -> LaneHeight | None:
     v = ctx.floats(el, _HEIGHT, (0,), SKIP_RECORD)
-    return None if v is None else model.LaneHeight(v[0], v[1], v[2], el.sourceline)
+    return None if v is None else model.LaneHeight(v[0], v[1], v[2], el.sourceline, ctx.facts(el, LEAF))
 
 
 def _centre_type_optional(ctx: Context, el: etree._Element) -> bool:
@@ -191,11 +236,16 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
 
     links: _Links = ((), (), (), ())
     link = None
+    link_record = None
     widths: list[Cubic] = []
     borders: list[Cubic] = []
     marks: list[RoadMark] = []
     speeds: list[Speed] = []
     heights: list[LaneHeight] = []
+    access: list[LaneAccess] = []
+    materials: list[LaneMaterial] = []
+    rules: list[LaneRule] = []
+    visibilities: list[LaneVisibility] = []
     for child in el:
         tag = child.tag
         if tag == "roadMark":
@@ -212,6 +262,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
             else:
                 link = child
                 links = _lane_links(ctx, child)
+                link_record = LaneLinks(child.sourceline, ctx.facts(child, _LINK))
         elif tag == "speed":
             speed = _speed(ctx, child)
             if speed is not None:
@@ -220,6 +271,14 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
             height = _height(ctx, child)
             if height is not None:
                 heights.append(height)
+        elif tag == "access":
+            access.append(lane_records.access(ctx, child))
+        elif tag == "material":
+            materials.append(lane_records.material(ctx, child))
+        elif tag == "rule":
+            rules.append(lane_records.rule(ctx, child))
+        elif tag == "visibility":
+            visibilities.append(lane_records.visibility(ctx, child))
     if len(widths) > 1:
         ctx.check_order(widths, "<width>", el, U.WIDTH_ORDER)
     if len(borders) > 1:
@@ -246,6 +305,16 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         links[2],
         links[3],
         direction,
+        tuple(access),
+        tuple(materials),
+        tuple(rules),
+        tuple(visibilities),
+        link_record,
+        ctx.opt_enum(el, "advisory", _ADVISORIES),
+        ctx.opt_boolean(el, "dynamicLaneType"),
+        ctx.opt_boolean(el, "dynamicLaneDirection"),
+        ctx.opt_boolean(el, "roadWorks"),
+        ctx.facts(el, _LANE),
     )
 
 
@@ -303,11 +372,11 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
             uid=_missing_centre_uid(ctx, el, "center" in seen),
         )
     ctx.section_s = None
-    return model.LaneSection(s, single_side, left, center, right, el.sourceline, length)
+    return model.LaneSection(s, single_side, left, center, right, el.sourceline, length, ctx.facts(el, _SECTION))
 
 
-def build_lanes(ctx: Context, el: etree._Element) -> tuple[Profile, tuple[LaneSection, ...]]:
-    """The laneOffset profile and the lane sections of a road's ``<lanes>``."""
+def build_lanes(ctx: Context, el: etree._Element, layer: LaneLayer = LaneLayer.PERMANENT) -> Lanes:
+    """A road's ``<lanes>`` of ``layer``: its laneOffset profile and lane sections."""
     offsets = []
     sections = []
     seen = False
@@ -333,15 +402,13 @@ def build_lanes(ctx: Context, el: etree._Element) -> tuple[Profile, tuple[LaneSe
         )
     elif len(sections) > 1:
         ctx.check_order(sections, "<laneSection>", el, U.SECTION_ORDER)
-    return tuple(offsets), tuple(sections)
+    return Lanes(tuple(offsets), tuple(sections), el.sourceline, layer, ctx.facts(el, _LANES))
 
 
-def build_layers(
-    ctx: Context, elements: list[etree._Element]
-) -> tuple[Profile, tuple[LaneSection, ...], TemporaryLanes | None]:
-    """The permanent layer's laneOffset and lane sections and the temporary layer of a road's ``<lanes>`` elements
-    (1.9: one per layer, ``layer`` defaulting to permanent; before 1.9 only the first is read). A second ``<lanes>``
-    of the same layer is reported and skipped; a road with only a temporary layer has no permanent lanes."""
+def build_layers(ctx: Context, elements: list[etree._Element]) -> tuple[Lanes | None, Lanes | None]:
+    """The permanent and the temporary layer of a road's ``<lanes>`` elements (1.9: one per layer, ``layer``
+    defaulting to permanent; before 1.9 only the first is read). A second ``<lanes>`` of the same layer is reported
+    and skipped; a road with only a temporary layer has no permanent lanes."""
     found: dict[LaneLayer, etree._Element] = {}
     for el in elements:
         layer = LaneLayer.PERMANENT
@@ -351,11 +418,10 @@ def build_layers(
             ctx.repeated(el, found[layer], U.LAYER_LIMITS if layered(ctx) else None)
         else:
             found[layer] = el
-    offset: Profile = ()
-    sections: tuple[LaneSection, ...] = ()
     permanent = found.get(LaneLayer.PERMANENT)
+    lanes = None
     if permanent is not None:
-        offset, sections = build_lanes(ctx, permanent)
+        lanes = build_lanes(ctx, permanent)
     else:
         ctx.report(
             R.MISSING_ELEMENT,
@@ -364,7 +430,4 @@ def build_layers(
             uid=U.LAYER_LIMITS,
         )
     temporary = found.get(LaneLayer.TEMPORARY)
-    if temporary is None:
-        return offset, sections, None
-    temporary_offset, temporary_sections = build_lanes(ctx, temporary)
-    return offset, sections, TemporaryLanes(temporary_offset, temporary_sections, temporary.sourceline)
+    return lanes, None if temporary is None else build_lanes(ctx, temporary, LaneLayer.TEMPORARY)

@@ -13,6 +13,7 @@ from xodrcheck import model
 from xodrcheck.findings import Severity
 from xodrcheck.model import (
     ContactPoint,
+    CrossSectionSurface,
     ElementDir,
     ElementType,
     Geometry,
@@ -20,11 +21,17 @@ from xodrcheck.model import (
     Profile,
     Road,
     RoadLink,
+    RoadType,
+    Shape,
     TrafficRule,
+    XmlFacts,
 )
 from xodrcheck.quantities import metres
-from xodrcheck.reader.context import Context, cubics, describe
+from xodrcheck.reader import road_records
+from xodrcheck.reader.context import LEAF, Context, cubics, describe
 from xodrcheck.reader.lanes import build_layers
+from xodrcheck.reader.objects import NO_OBJECTS, read_objects
+from xodrcheck.reader.signals import read_signals
 from xodrcheck.rules import road_uids as RU
 from xodrcheck.rules import xml as R
 from xodrcheck.rules.lane_uids import SECTION_REQ as LANE_SECTION_REQUIRED
@@ -48,26 +55,30 @@ SKIP_GEOMETRY = "the geometry is skipped"
 
 
 # ---------------------------------------------------------------------------------------------------------- plan view
-def _line(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
-    return model.Line(head[0], head[1], head[2], head[3], head[4], line)
+def _line(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int, xml: XmlFacts) -> Geometry | None:
+    return model.Line(head[0], head[1], head[2], head[3], head[4], line, xml)
 
 
-def _arc(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+def _arc(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int, xml: XmlFacts) -> Geometry | None:
     k = ctx.number(kind, "curvature", SKIP_GEOMETRY)
-    return None if k is None else model.Arc(head[0], head[1], head[2], head[3], head[4], k, line)
+    return None if k is None else model.Arc(head[0], head[1], head[2], head[3], head[4], k, line, xml)
 
 
-def _spiral(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+def _spiral(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int, xml: XmlFacts) -> Geometry | None:
     k = ctx.floats(kind, _SPIRAL, _NONE, SKIP_GEOMETRY)
-    return None if k is None else model.Spiral(head[0], head[1], head[2], head[3], head[4], k[0], k[1], line)
+    return None if k is None else model.Spiral(head[0], head[1], head[2], head[3], head[4], k[0], k[1], line, xml)
 
 
-def _poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+def _poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int, xml: XmlFacts) -> Geometry | None:
     c = ctx.floats(kind, _POLY3, _NONE, SKIP_GEOMETRY)
-    return None if c is None else model.Poly3(head[0], head[1], head[2], head[3], head[4], c[0], c[1], c[2], c[3], line)
+    if c is None:
+        return None
+    return model.Poly3(head[0], head[1], head[2], head[3], head[4], c[0], c[1], c[2], c[3], line, xml)
 
 
-def _param_poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+def _param_poly3(
+    ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int, xml: XmlFacts
+) -> Geometry | None:
     c = ctx.floats(kind, _PARAM_POLY3, _NONE, SKIP_GEOMETRY)
     if c is None:
         return None
@@ -88,11 +99,12 @@ def _param_poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], li
             return None
         p_range = chosen
     return model.ParamPoly3(
-        head[0], head[1], head[2], head[3], head[4], c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], p_range, line
+        head[0], head[1], head[2], head[3], head[4], c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], p_range, line, xml
     )
 
 
 _KINDS = {"line": _line, "arc": _arc, "spiral": _spiral, "poly3": _poly3, "paramPoly3": _param_poly3}
+_SHAPES = frozenset(_KINDS)
 
 
 def _geometry(ctx: Context, el: etree._Element) -> Geometry | None:
@@ -129,7 +141,7 @@ def _geometry(ctx: Context, el: etree._Element) -> Geometry | None:
         return None
     if head is None:
         return None
-    return _KINDS[kind.tag](ctx, kind, head, el.sourceline)
+    return _KINDS[kind.tag](ctx, kind, head, el.sourceline, ctx.facts(el, _SHAPES))
 
 
 def _plan_view(ctx: Context, el: etree._Element) -> tuple[Geometry, ...]:
@@ -174,7 +186,7 @@ def _road_link(ctx: Context, el: etree._Element) -> RoadLink | None:
         element_s = ctx.number(el, "elementS", "read as absent", nonneg=True)
     if el.get("elementDir") is not None:
         element_dir = ctx.choice(el, "elementDir", _ELEMENT_DIRS, "read as absent")
-    return model.RoadLink(element_type, element_id, contact, element_s, element_dir, el.sourceline)
+    return model.RoadLink(element_type, element_id, contact, element_s, element_dir, el.sourceline, ctx.facts(el, LEAF))
 
 
 def _links(ctx: Context, el: etree._Element) -> tuple[RoadLink | None, RoadLink | None]:
@@ -195,12 +207,10 @@ def _links(ctx: Context, el: etree._Element) -> tuple[RoadLink | None, RoadLink 
 
 
 # ---------------------------------------------------------------------------------------------------------- road
-def _count(el: etree._Element, tag: str) -> int:
-    return sum(1 for _ in el.iterchildren(tag))
-
-
 #: Children of ``<road>`` that may appear at most once.
 _ONCE = frozenset({"link", "planView", "elevationProfile", "lateralProfile", "objects", "signals"})
+#: Children of ``<road>`` the reader reads (the others are unknown there).
+_ROAD = _ONCE | {"lanes", "type", "surface", "railroad"}
 
 
 def build_road(ctx: Context, el: etree._Element) -> Road | None:
@@ -218,8 +228,9 @@ def build_road(ctx: Context, el: etree._Element) -> Road | None:
 
 
 def _children(ctx: Context, el: etree._Element) -> tuple[dict[str, etree._Element], list[etree._Element]]:
-    """The first of each child of a road that may appear once (a repeated one is reported and skipped), and its
-    ``<lanes>`` (one per lane layer in 1.9: :func:`build_layers` sorts them out)."""
+    """The first of each child of a road that may appear once (a repeated one is reported and skipped) or that the
+    reader reads once (``<surface>``, ``<railroad>``), and its ``<lanes>`` (one per lane layer in 1.9:
+    :func:`build_layers` sorts them out)."""
     first: dict[str, etree._Element] = {}
     lanes: list[etree._Element] = []
     for child in el:
@@ -231,6 +242,8 @@ def _children(ctx: Context, el: etree._Element) -> tuple[dict[str, etree._Elemen
                 ctx.repeated(child, first[tag], RU.GEOMETRY_ONLY_ONE_REFLINE if tag == "planView" else None)
             else:
                 first[tag] = child
+        elif (tag == "surface" or tag == "railroad") and tag not in first:
+            first[tag] = child
     return first, lanes
 
 
@@ -273,6 +286,16 @@ def _junction(ctx: Context, el: etree._Element) -> str | None:
     return junction
 
 
+def _lateral(ctx: Context, el: etree._Element | None) -> tuple[Profile, tuple[Shape, ...], CrossSectionSurface | None]:
+    """The superelevation profile, the shapes and the cross section surface of a ``<lateralProfile>``."""
+    if el is None:
+        return (), (), None
+    superelevation = cubics(ctx, el, "superelevation", RU.SUPERELEVATION_ORDER)
+    shapes = tuple(road_records.shape(ctx, child) for child in el.iterchildren("shape"))
+    surface = next((road_records.cross_section_surface(ctx, c) for c in el.iterchildren("crossSectionSurface")), None)
+    return superelevation, shapes, surface
+
+
 def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
     get = el.get
     first, lanes = _children(ctx, el)
@@ -290,24 +313,23 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
         pred, succ = _links(ctx, link)
 
     elevation: Profile = ()
-    superelevation: Profile = ()
     if "elevationProfile" in first:
         elevation = cubics(ctx, first["elevationProfile"], "elevation", RU.ELEVATION_ORDER)
-    if "lateralProfile" in first:
-        superelevation = cubics(ctx, first["lateralProfile"], "superelevation", RU.SUPERELEVATION_ORDER)
+    superelevation, shapes, cross_section = _lateral(ctx, first.get("lateralProfile"))
 
-    temporary = None
+    permanent = temporary = None
     if not lanes:
         ctx.report(
             R.MISSING_ELEMENT, f"{describe(el)} has no <lanes>; the road has no lanes", el, uid=LANE_SECTION_REQUIRED
         )
-        lane_offset: Profile = ()
-        sections: tuple = ()
     else:
-        lane_offset, sections, temporary = build_layers(ctx, lanes)
+        permanent, temporary = build_layers(ctx, lanes)
 
-    objects = first.get("objects")
-    signals = first.get("signals")
+    types: tuple[RoadType, ...] = tuple(road_records.road_type(ctx, child) for child in el.iterchildren("type"))
+    objects = NO_OBJECTS if "objects" not in first else read_objects(ctx, road_id, first["objects"])
+    signals, references = ((), ()) if "signals" not in first else read_signals(ctx, road_id, first["signals"])
+    surface = None if "surface" not in first else road_records.surface(ctx, first["surface"])
+    railroad = None if "railroad" not in first else road_records.railroad(ctx, first["railroad"])
     return model.Road(
         road_id,
         length,
@@ -319,10 +341,25 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
         plan_view,
         elevation,
         superelevation,
-        lane_offset,
-        sections,
-        0 if objects is None else _count(objects, "object"),
-        0 if signals is None else _count(signals, "signal"),
+        () if permanent is None else permanent.lane_offset,
+        () if permanent is None else permanent.lane_sections,
+        objects.objects,
+        signals,
         el.sourceline,
         temporary,
+        permanent,
+        types,
+        shapes,
+        cross_section,
+        surface,
+        railroad,
+        objects.references,
+        objects.tunnels,
+        objects.bridges,
+        references,
+        _facts(ctx, el),
     )
+
+
+def _facts(ctx: Context, el: etree._Element) -> XmlFacts:
+    return ctx.facts(el, _ROAD)
