@@ -7,55 +7,72 @@ from array import array
 from collections import Counter
 from dataclasses import dataclass, field
 from functools import cached_property
+from typing import TYPE_CHECKING
 
 from xodrcheck.model.facts import NO_FACTS, XmlFacts
 from xodrcheck.model.header import Header
-from xodrcheck.model.junctions import Junction, JunctionGroup
-from xodrcheck.model.railroad import Station
+from xodrcheck.model.junctions import Junction
 from xodrcheck.model.roads import Road
-from xodrcheck.model.signals import Controller, VmsGroup
+
+if TYPE_CHECKING:  # pragma: no cover - loaded when a file has them
+    from xodrcheck.model.junction_parts import JunctionGroup
+    from xodrcheck.model.railroad import Station
+    from xodrcheck.model.signals import Controller, VmsGroup
 
 __all__ = ["Document", "ElementTable", "document_cache"]
 
 
 class ElementTable:
-    """Every element of the file in document order: the line it starts on, its parent (``-1`` for the root) and its
-    tag. What a report needs to point into the file: :meth:`xpath` gives the XPath of the element that starts first
-    on a line, as ``lxml``'s ``getpath`` writes it (``/OpenDRIVE/road[3]/lanes/laneSection[2]``). About 12 bytes an
+    """Every element of the file in document order: the line it starts on, its number of children and its tag.
+    What a report needs to point into the file: :meth:`xpath` gives the XPath of the element that starts first on a
+    line, as ``lxml``'s ``getpath`` writes it (``/OpenDRIVE/road[3]/lanes/laneSection[2]``). About 12 bytes an
     element; the index behind :meth:`xpath` is built on its first call."""
 
-    __slots__ = ("_index", "lines", "parents", "tag_names", "tags")
+    __slots__ = ("_index", "counts", "lines", "tag_names", "tags")
 
-    def __init__(self, lines: array, parents: array, tags: array, tag_names: tuple[str, ...]) -> None:
+    def __init__(self, lines: array, counts: array, tags: array, tag_names: tuple[str, ...]) -> None:
         self.lines = lines
-        self.parents = parents
+        self.counts = counts
         self.tags = tags
         self.tag_names = tag_names
-        self._index: tuple[dict[int, int], array] | None = None
+        self._index: tuple[dict[int, int], array, array] | None = None
 
     def __len__(self) -> int:
         return len(self.lines)
 
-    def _positions(self) -> tuple[dict[int, int], array]:
-        """Line -> first element on it, and each element's position among its parent's children of its tag (1-based;
-        0 when it is the only one, which an XPath leaves unnumbered)."""
+    def _positions(self) -> tuple[dict[int, int], array, array]:
+        """Line -> first element on it; each element's parent (-1 for the root); and its position among its parent's
+        children of its tag (1-based; 0 when it is the only one, which an XPath leaves unnumbered)."""
         if self._index is None:
+            n = len(self.lines)
+            parents = array("i", bytes(4 * n))
+            nth = array("i", bytes(4 * n))
             first: dict[int, int] = {}
-            nth = array("i", bytes(4 * len(self.lines)))
-            counts: dict[tuple[int, int], list[int]] = {}
-            for i, (line, parent, tag) in enumerate(zip(self.lines, self.parents, self.tags, strict=True)):
-                first.setdefault(line, i)
-                counts.setdefault((parent, tag), []).append(i)
-            for same in counts.values():
-                if len(same) > 1:
-                    for k, i in enumerate(same, 1):
+            same: dict[tuple[int, int], list[int]] = {}
+            open_elements: list[list[int]] = []  # [element, children still to come], innermost last
+            for i in range(n):
+                first.setdefault(self.lines[i], i)
+                parent = -1
+                if open_elements:
+                    top = open_elements[-1]
+                    parent = top[0]
+                    top[1] -= 1
+                    if not top[1]:
+                        open_elements.pop()
+                parents[i] = parent
+                same.setdefault((parent, self.tags[i]), []).append(i)
+                if self.counts[i]:
+                    open_elements.append([i, self.counts[i]])
+            for siblings in same.values():
+                if len(siblings) > 1:
+                    for k, i in enumerate(siblings, 1):
                         nth[i] = k
-            self._index = (first, nth)
+            self._index = (first, parents, nth)
         return self._index
 
     def xpath(self, line: int) -> str | None:
         """The XPath of the first element that starts on ``line`` (``None``: no element does)."""
-        first, nth = self._positions()
+        first, parents, nth = self._positions()
         i = first.get(line)
         if i is None:
             return None
@@ -63,7 +80,7 @@ class ElementTable:
         while i >= 0:
             name = self.tag_names[self.tags[i]]
             steps.append(f"{name}[{nth[i]}]" if nth[i] else name)
-            i = self.parents[i]
+            i = parents[i]
         return "/" + "/".join(reversed(steps))
 
 

@@ -4,11 +4,14 @@ default regulations (6.4)."""
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from xodrcheck.model.facts import XmlFacts, facts_field
-from xodrcheck.model.signals import Semantics
 
-__all__ = ["DefaultRegulations", "GeoReference", "Header", "License", "Offset", "RoadRegulation", "SignalRegulation"]
+if TYPE_CHECKING:  # pragma: no cover - loaded when a file has them
+    from xodrcheck.model.regulations import DefaultRegulations, License
+
+__all__ = ["GeoReference", "Header", "Offset"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -28,49 +31,6 @@ class GeoReference:
     """A ``<geoReference>``: the projection of the map's coordinates as a PROJ string (its text, stripped)."""
 
     text: str
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class License:
-    """The header's ``<license>`` (1.8)."""
-
-    name: str | None = None
-    spdxid: str | None = None
-    text: str | None = None
-    resource: str | None = None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class RoadRegulation:
-    """A ``<roadRegulations>`` of the default regulations: the semantics that hold on roads of ``type``."""
-
-    type: str | None
-    semantics: Semantics | None = None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class SignalRegulation:
-    """A ``<signalRegulations>`` of the default regulations: the semantics of signals of ``type`` and ``subtype``."""
-
-    type: str | None
-    subtype: str | None = None
-    semantics: Semantics | None = None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class DefaultRegulations:
-    """The header's ``<defaultRegulations>`` (1.8, 6.4.3): a country's default speeds and priorities."""
-
-    road_regulations: tuple[RoadRegulation, ...] = ()
-    signal_regulations: tuple[SignalRegulation, ...] = ()
     line: int = 0
     xml: XmlFacts = facts_field()
 

@@ -10,38 +10,24 @@ keeps its text), the schema rule reports them.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
-from xodrcheck.model.enums import (
-    DRIVABLE_LANE_TYPES,
-    AccessRule,
-    LaneAdvisory,
-    LaneDirection,
-    LaneLayer,
-    LaneType,
-    Side,
-)
+from xodrcheck.model.enums import DRIVABLE_LANE_TYPES, LaneAdvisory, LaneDirection, LaneLayer, LaneType, Side
 from xodrcheck.model.facts import XmlFacts, facts_field
 from xodrcheck.model.planview import Profile
 
-__all__ = [
-    "Lane",
-    "LaneAccess",
-    "LaneHeight",
-    "LaneKey",
-    "LaneLinks",
-    "LaneMaterial",
-    "LaneRule",
-    "LaneSection",
-    "LaneVisibility",
-    "Lanes",
-    "RoadMark",
-    "RoadMarkExplicit",
-    "RoadMarkLine",
-    "RoadMarkSway",
-    "RoadMarkType",
-    "Speed",
-    "lane_type_name",
-]
+if TYPE_CHECKING:  # pragma: no cover - loaded when a file has them
+    from xodrcheck.model.lane_records import (
+        LaneAccess,
+        LaneMaterial,
+        LaneRule,
+        LaneVisibility,
+        RoadMarkExplicit,
+        RoadMarkSway,
+        RoadMarkType,
+    )
+
+__all__ = ["Lane", "LaneHeight", "LaneKey", "LaneLinks", "LaneSection", "Lanes", "RoadMark", "Speed", "lane_type_name"]
 
 
 @dataclass(frozen=True, slots=True, order=True)
@@ -55,56 +41,6 @@ class LaneKey:
 
     def __str__(self) -> str:
         return f"{self.road}/{self.section_s:g}/{self.lane}"
-
-
-# --------------------------------------------------------------------------------------------------------- road marks
-@dataclass(frozen=True, slots=True)
-class RoadMarkLine:
-    """A ``<line>`` of a road mark's ``<type>`` or ``<explicit>``: a stripe ``length`` long, every ``length + space``
-    (``space`` ``None`` for an explicit line), at ``t_offset`` from the lane border, from ``s`` (its ``sOffset``)."""
-
-    length: float | None
-    space: float | None
-    t_offset: float | None
-    s: float | None
-    rule: str | None = None
-    width: float | None = None
-    color: str | None = None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class RoadMarkType:
-    """A road mark's ``<type>``: its name, width and stripes."""
-
-    name: str | None
-    width: float | None
-    lines: tuple[RoadMarkLine, ...] = ()
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class RoadMarkExplicit:
-    """A road mark's ``<explicit>`` stripes (irregular marks)."""
-
-    lines: tuple[RoadMarkLine, ...] = ()
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class RoadMarkSway:
-    """A road mark's ``<sway>``: its lateral offset ``a + b ds + c ds^2 + d ds^3`` from ``ds`` on."""
-
-    ds: float | None
-    a: float | None
-    b: float | None
-    c: float | None
-    d: float | None
-    line: int = 0
-    xml: XmlFacts = facts_field()
 
 
 @dataclass(frozen=True, slots=True)
@@ -147,54 +83,6 @@ class LaneHeight:
     s: float  # sOffset
     inner: float
     outer: float
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class LaneAccess:
-    """A lane's ``<access>`` (11.8.2): from ``s`` on, ``rule`` (allow or deny) for the restriction of the attribute
-    (up to 1.7) or of the ``<restriction>`` children (1.8: their ``type`` in ``restrictions``)."""
-
-    s: float | None
-    rule: AccessRule | None = None
-    restriction: str | None = None
-    restrictions: tuple[str | None, ...] = ()
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class LaneMaterial:
-    """A lane's ``<material>`` from ``s`` on: surface, friction and roughness."""
-
-    s: float | None
-    surface: str | None = None
-    friction: float | None = None
-    roughness: float | None = None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class LaneRule:
-    """A lane's ``<rule>`` from ``s`` on: a free-text value (``no stopping at any time``...)."""
-
-    s: float | None
-    value: str | None = None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class LaneVisibility:
-    """A lane's ``<visibility>`` (1.4, 1.5): how far one sees ahead, back, left and right from ``s`` on."""
-
-    s: float | None
-    forward: float | None = None
-    back: float | None = None
-    left: float | None = None
-    right: float | None = None
     line: int = 0
     xml: XmlFacts = facts_field()
 

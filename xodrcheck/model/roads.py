@@ -1,5 +1,5 @@
-"""Roads (chapter 10): links, plan view, profiles, lane layers, road types, lateral shapes, surfaces, railroad
-switches, and the road's objects and signals.
+"""Roads (chapter 10): links, plan view, profiles, lane layers, and the road's other records (:mod:`.road_records`,
+:mod:`.surface`), objects and signals.
 
 The reference line, profiles, lanes and links are read with findings for what is wrong (a record that cannot be used
 is left out); the road's other records are read as the file gives them (``None``: absent or not of its type, the
@@ -9,26 +9,20 @@ schema rule reports it).
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+from typing import TYPE_CHECKING
 
-from xodrcheck.model.enums import ContactPoint, ElementDir, ElementType, MaxSpeed, SwitchPosition, TrafficRule
+from xodrcheck.model.enums import ContactPoint, ElementDir, ElementType, TrafficRule
 from xodrcheck.model.facts import XmlFacts, facts_field
 from xodrcheck.model.lanes import Lanes, LaneSection
-from xodrcheck.model.objects import Bridge, ObjectReference, RoadObject, Tunnel
 from xodrcheck.model.planview import Geometry, Profile
-from xodrcheck.model.signals import Signal, SignalReference
-from xodrcheck.model.surface import CrossSectionSurface, Surface
 
-__all__ = [
-    "Railroad",
-    "Road",
-    "RoadLink",
-    "RoadSpeed",
-    "RoadType",
-    "Shape",
-    "Switch",
-    "SwitchPartner",
-    "SwitchTrack",
-]
+if TYPE_CHECKING:  # pragma: no cover - loaded when a file has them
+    from xodrcheck.model.objects import Bridge, ObjectReference, RoadObject, Tunnel
+    from xodrcheck.model.road_records import Railroad, RoadType, Shape
+    from xodrcheck.model.signals import Signal, SignalReference
+    from xodrcheck.model.surface import CrossSectionSurface, Surface
+
+__all__ = ["Road", "RoadLink"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -40,88 +34,6 @@ class RoadLink:
     contact_point: ContactPoint | None = None
     element_s: float | None = None
     element_dir: ElementDir | None = None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class RoadSpeed:
-    """The ``<speed>`` of a road type: ``max`` a number (in ``unit``, km/h... ) or one of the words of
-    :class:`MaxSpeed`."""
-
-    max: float | MaxSpeed | None
-    unit: str | None = None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class RoadType:
-    """A road's ``<type>`` (10.4): from ``s`` on, the kind of road (``town``, ``motorway``...) and its speed."""
-
-    s: float | None
-    type: str | None
-    country: str | None = None
-    speed: RoadSpeed | None = None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class Shape:
-    """A ``<shape>`` of a road's lateral profile (10.5.3): ``h(dt) = a + b dt + c dt^2 + d dt^3`` from ``t`` on, at
-    ``s``."""
-
-    s: float | None
-    t: float | None
-    a: float | None
-    b: float | None
-    c: float | None
-    d: float | None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class SwitchTrack:
-    """A switch's ``<mainTrack>`` or ``<sideTrack>``: the road ``id`` the track runs on, at ``s``, in ``dir``."""
-
-    id: str | None
-    s: float | None = None
-    dir: ElementDir | None = None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class SwitchPartner:
-    """A switch's ``<partner>``: the switch its side track leads to."""
-
-    id: str | None
-    name: str | None = None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class Switch:
-    """A railroad ``<switch>`` (15.3) with its tracks and partner."""
-
-    id: str | None
-    name: str | None = None
-    position: SwitchPosition | None = None
-    main_track: SwitchTrack | None = None
-    side_track: SwitchTrack | None = None
-    partner: SwitchPartner | None = None
-    line: int = 0
-    xml: XmlFacts = facts_field()
-
-
-@dataclass(frozen=True, slots=True)
-class Railroad:
-    """A road's ``<railroad>``: its switches (of every ``<railroad>`` element, in file order)."""
-
-    switches: tuple[Switch, ...] = ()
     line: int = 0
     xml: XmlFacts = facts_field()
 

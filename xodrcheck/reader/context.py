@@ -38,6 +38,8 @@ _BOOLEANS = {"true": True, "false": False, "1": True, "0": False}
 ADDITIONAL_DATA = frozenset({"userData", "include", "dataQuality"})
 #: Children a record without child elements of its own may have.
 LEAF: frozenset[str] = frozenset()
+#: Element nodes only (an entity reference a recovering parse kept is not a child element).
+_ELEMENTS = etree.Element
 
 SKIP_RECORD = "the record is skipped"
 
@@ -123,26 +125,29 @@ class Context:
         self.numbers = Numbers()
         #: (element, attribute, text) of each invalid value met and not yet in an element's facts.
         self.pending: list[tuple[etree._Element, str, str]] = []
-        self._facts: dict[tuple[tuple[str, ...], tuple[str, ...]], XmlFacts] = {}
+        #: Facts by (attributes, children, known tags): shared between the elements that say the same.
+        self._facts: dict[tuple[tuple[str, ...], tuple[str, ...], frozenset[str] | None], XmlFacts] = {}
 
     # ---------------------------------------------------------------------------------------------------- facts
-    def facts(self, el: etree._Element, known: frozenset[str] | None = None) -> XmlFacts:
-        """The XML facts of ``el``: its attributes, its children's tags, the children not in ``known`` (the tags the
-        builder reads there; ``None``: every child is known) and the invalid values met on it. Call it after reading
-        the element's attributes."""
-        keys = tuple(el.keys())
-        if len(el):
-            children = tuple(child.tag for child in el.iterchildren(etree.Element))
-            unknown = () if known is None else _unknown(el, children, known)
-        else:
-            children = unknown = ()
+    def facts(
+        self, el: etree._Element, known: frozenset[str] | None = None, keys: tuple[str, ...] | None = None
+    ) -> XmlFacts:
+        """The XML facts of ``el``: its attributes (``keys``, when the caller has them already), its children's tags,
+        the children not in ``known`` (the tags the builder reads there; ``None``: every child is known) and the
+        invalid values met on it. Call it after reading the element's attributes."""
+        if keys is None:
+            keys = tuple(el.keys())
+        children = tuple([child.tag for child in el.iterchildren(_ELEMENTS)]) if len(el) else ()
         invalid = self._take_invalid(el) if self.pending else ()
-        if unknown or invalid:
-            return XmlFacts(keys, children, unknown, invalid)
-        key = (keys, children)
+        key = (keys, children, known)
         found = self._facts.get(key)
         if found is None:
+            unknown = _unknown(el, children, known) if children and known is not None else ()
+            if unknown or invalid:
+                return XmlFacts(keys, children, unknown, invalid)
             found = self._facts[key] = XmlFacts(keys, children) if keys or children else NO_FACTS
+        elif invalid:  # a kept entry has no unknown children (facts with some hold lines, and are never kept)
+            return XmlFacts(keys, children, (), invalid)
         return found
 
     def _take_invalid(self, el: etree._Element) -> tuple[tuple[str, str], ...]:
@@ -377,7 +382,7 @@ def _unknown(el: etree._Element, tags: tuple[str, ...], known: frozenset[str]) -
         return ()
     return tuple(
         UnknownElement(child.tag, child.sourceline or 0)
-        for child in el.iterchildren(etree.Element)
+        for child in el.iterchildren(_ELEMENTS)
         if child.tag not in known and child.tag not in ADDITIONAL_DATA
     )
 
@@ -395,7 +400,7 @@ def cubic(ctx: Context, el: etree._Element, offset: bool = False) -> Cubic | Non
     try:
         if el.keys() == (_OFFSET_CUBIC if offset else _CUBIC):  # the usual attributes in the usual order
             s, a, b, c, d = el.values()
-            usual = not len(el)
+            usual = not len(el)  # and no children: the facts most records share
         else:
             get = el.get
             s, a, b, c, d = get("sOffset" if offset else "s"), get("a"), get("b"), get("c"), get("d")

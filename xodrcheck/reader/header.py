@@ -5,17 +5,8 @@ from __future__ import annotations
 
 from lxml import etree
 
-from xodrcheck.model import (
-    DefaultRegulations,
-    GeoReference,
-    Header,
-    License,
-    Offset,
-    RoadRegulation,
-    SignalRegulation,
-)
+from xodrcheck.model import GeoReference, Header, Offset
 from xodrcheck.reader.context import LEAF, Context, describe
-from xodrcheck.reader.signals import semantics
 from xodrcheck.rules import xml as R
 
 #: Versions this reader knows: 1.1 to 1.9.
@@ -25,25 +16,6 @@ _OFFSET = ["x", "y", "z", "hdg"]
 _NONE: tuple[int, ...] = ()
 _BOUNDS = ("north", "south", "east", "west")
 _HEADER = frozenset({"geoReference", "offset", "license", "defaultRegulations"})
-_REGULATION = frozenset({"semantics"})
-
-
-def _regulations(ctx: Context, el: etree._Element) -> DefaultRegulations:
-    roads = tuple(
-        RoadRegulation(r.get("type"), semantics(ctx, r), r.sourceline, ctx.facts(r, _REGULATION))
-        for r in el.iterchildren("roadRegulations")
-    )
-    signals = tuple(
-        SignalRegulation(r.get("type"), r.get("subtype"), semantics(ctx, r), r.sourceline, ctx.facts(r, _REGULATION))
-        for r in el.iterchildren("signalRegulations")
-    )
-    known = frozenset({"roadRegulations", "signalRegulations"})
-    return DefaultRegulations(roads, signals, el.sourceline, ctx.facts(el, known))
-
-
-def _license(ctx: Context, el: etree._Element) -> License:
-    get = el.get
-    return License(get("name"), get("spdxid"), get("text"), get("resource"), el.sourceline, ctx.facts(el, LEAF))
 
 
 def build_header(ctx: Context, el: etree._Element) -> Header:
@@ -72,9 +44,13 @@ def build_header(ctx: Context, el: etree._Element) -> Header:
             if v is not None:
                 offset = Offset(v[0], v[1], v[2], v[3], child.sourceline, ctx.facts(child, LEAF))
         elif tag == "license" and licence is None:
-            licence = _license(ctx, child)
+            from xodrcheck.reader.regulations import license_of
+
+            licence = license_of(ctx, child)
         elif tag == "defaultRegulations" and regulations is None:
-            regulations = _regulations(ctx, child)
+            from xodrcheck.reader.regulations import default_regulations
+
+            regulations = default_regulations(ctx, child)
     return Header(
         rev_major,
         rev_minor,

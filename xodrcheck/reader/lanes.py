@@ -11,34 +11,39 @@ not have them (the schema reports them there); the reader ignores them.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from lxml import etree
 
 from xodrcheck import model
 from xodrcheck.model import (
     Cubic,
     Lane,
-    LaneAccess,
     LaneAdvisory,
     LaneDirection,
     LaneHeight,
     LaneLayer,
     LaneLinks,
-    LaneMaterial,
-    LaneRule,
     Lanes,
     LaneSection,
     LaneType,
-    LaneVisibility,
     RoadMark,
-    RoadMarkExplicit,
-    RoadMarkSway,
-    RoadMarkType,
     Speed,
 )
-from xodrcheck.reader import lane_records
 from xodrcheck.reader.context import LEAF, SKIP_RECORD, Context, cubic, describe
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules import xml as R
+
+if TYPE_CHECKING:  # pragma: no cover
+    from xodrcheck.model import (
+        LaneAccess,
+        LaneMaterial,
+        LaneRule,
+        LaneVisibility,
+        RoadMarkExplicit,
+        RoadMarkSway,
+        RoadMarkType,
+    )
 
 #: Lane type names in lower case -> type: the file's spelling is matched without regard to case.
 LANE_TYPES = {t.value.lower(): t for t in LaneType if t is not LaneType.UNKNOWN}
@@ -61,6 +66,12 @@ _LANE = frozenset(
     {"link", "width", "border", "roadMark", "speed", "height", "access", "material", "rule", "visibility"}
 )
 _LINK = frozenset({"predecessor", "successor"})
+#: The lane records :mod:`.lane_records` reads.
+_RECORDS = frozenset({"access", "material", "rule", "visibility"})
+#: The attributes most lanes give, in the usual orders: such a lane has none of the 1.8 ones.
+_PLAIN = frozenset({("id", "type", "level"), ("id", "type"), ("id", "level", "type"), ("type", "id", "level"), ("id",)})
+_NO_EXTRAS: tuple[None, None, None, None] = (None, None, None, None)
+_NO_RECORDS: tuple[tuple[()], tuple[()], tuple[()], tuple[()]] = ((), (), (), ())
 _ROAD_MARK = frozenset({"sway", "type", "explicit"})
 _SECTION = frozenset({"left", "center", "right"})
 _LANES = frozenset({"laneOffset", "laneSection"})
@@ -143,6 +154,8 @@ def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
     explicit: RoadMarkExplicit | None = None
     sways: tuple[RoadMarkSway, ...] = ()
     if len(el):
+        from xodrcheck.reader import lane_records  # here: most road marks have no stripes of their own
+
         for child in el:
             tag = child.tag
             if tag == "type" and lines is None:
@@ -218,6 +231,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         ctx.integer(el, "id", _SKIP_LANE)
         return None
     ctx.lane = lane_id
+    keys = tuple(el.keys())
 
     type_name = get("type")
     lane_type: LaneType | None = None if type_name is None else LANE_TYPES.get(type_name)
@@ -242,10 +256,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
     marks: list[RoadMark] = []
     speeds: list[Speed] = []
     heights: list[LaneHeight] = []
-    access: list[LaneAccess] = []
-    materials: list[LaneMaterial] = []
-    rules: list[LaneRule] = []
-    visibilities: list[LaneVisibility] = []
+    others: list[etree._Element] = []  # access, material, rule and visibility records: rare, read at the end
     for child in el:
         tag = child.tag
         if tag == "roadMark":
@@ -271,14 +282,8 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
             height = _height(ctx, child)
             if height is not None:
                 heights.append(height)
-        elif tag == "access":
-            access.append(lane_records.access(ctx, child))
-        elif tag == "material":
-            materials.append(lane_records.material(ctx, child))
-        elif tag == "rule":
-            rules.append(lane_records.rule(ctx, child))
-        elif tag == "visibility":
-            visibilities.append(lane_records.visibility(ctx, child))
+        elif tag in _RECORDS:
+            others.append(child)
     if len(widths) > 1:
         ctx.check_order(widths, "<width>", el, U.WIDTH_ORDER)
     if len(borders) > 1:
@@ -289,6 +294,8 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         ctx.check_order(speeds, "<speed>", el, U.SPEED_ORDER)
     if len(heights) > 1:
         ctx.check_order(heights, "<height>", el, U.HEIGHT_ORDER)
+    access, materials, rules, visibilities = _NO_RECORDS if not others else _records(ctx, others)
+    advisory, dynamic_type, dynamic_direction, road_works = _NO_EXTRAS if keys in _PLAIN else _extras(ctx, el)
     return model.Lane(
         lane_id,
         lane_type,
@@ -305,16 +312,39 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         links[2],
         links[3],
         direction,
-        tuple(access),
-        tuple(materials),
-        tuple(rules),
-        tuple(visibilities),
+        access,
+        materials,
+        rules,
+        visibilities,
         link_record,
+        advisory,
+        dynamic_type,
+        dynamic_direction,
+        road_works,
+        ctx.facts(el, _LANE, keys),
+    )
+
+
+def _records(
+    ctx: Context, elements: list[etree._Element]
+) -> tuple[tuple[LaneAccess, ...], tuple[LaneMaterial, ...], tuple[LaneRule, ...], tuple[LaneVisibility, ...]]:
+    """A lane's access, material, rule and visibility records (:mod:`.lane_records`, loaded for a lane with some)."""
+    from xodrcheck.reader import lane_records
+
+    access = tuple(lane_records.access(ctx, el) for el in elements if el.tag == "access")
+    materials = tuple(lane_records.material(ctx, el) for el in elements if el.tag == "material")
+    rules = tuple(lane_records.rule(ctx, el) for el in elements if el.tag == "rule")
+    visibilities = tuple(lane_records.visibility(ctx, el) for el in elements if el.tag == "visibility")
+    return access, materials, rules, visibilities
+
+
+def _extras(ctx: Context, el: etree._Element) -> tuple[LaneAdvisory | None, bool | None, bool | None, bool | None]:
+    """A lane's other 1.8 attributes: advisory, dynamicLaneType, dynamicLaneDirection, roadWorks."""
+    return (
         ctx.opt_enum(el, "advisory", _ADVISORIES),
         ctx.opt_boolean(el, "dynamicLaneType"),
         ctx.opt_boolean(el, "dynamicLaneDirection"),
         ctx.opt_boolean(el, "roadWorks"),
-        ctx.facts(el, _LANE),
     )
 
 

@@ -1,5 +1,6 @@
 """A road's records beside its reference line and lanes: ``<type>`` (with ``<speed>``), the lateral profile's
-``<shape>`` records and ``<crossSectionSurface>``, ``<surface>`` (OpenCRG, also a junction's) and ``<railroad>``.
+``<shape>`` records and ``<crossSectionSurface>``, ``<surface>`` (OpenCRG, also a junction's) and ``<railroad>``; and
+the file's ``<station>`` elements.
 
 Read as the file gives them (:meth:`Context.opt_number <xodrcheck.reader.context.Context.opt_number>` and the like):
 the schema rule reports bad values, so nothing here adds a finding.
@@ -16,10 +17,15 @@ from xodrcheck.model import (
     CrossSectionSurface,
     ElementDir,
     MaxSpeed,
+    Platform,
+    PlatformSegment,
     Railroad,
     RoadSpeed,
     RoadType,
     Shape,
+    Side,
+    Station,
+    StationType,
     Surface,
     SurfaceCoefficients,
     SurfaceCrg,
@@ -174,3 +180,36 @@ def railroad(ctx: Context, el: etree._Element) -> Railroad:
     """A road's ``<railroad>`` and its switches."""
     switches = tuple(_switch(ctx, switch) for switch in el.iterchildren("switch"))
     return Railroad(switches, el.sourceline, ctx.facts(el, frozenset({"switch"})))
+
+
+# ------------------------------------------------------------------------------------------------------ stations
+def station(ctx: Context, el: etree._Element) -> Station:
+    """A top-level ``<station>``, its platforms and their segments."""
+    platforms = []
+    for p in el.iterchildren("platform"):
+        segments = tuple(
+            PlatformSegment(
+                seg.get("roadId"),
+                ctx.opt_number(seg, "sStart"),
+                ctx.opt_number(seg, "sEnd"),
+                ctx.opt_enum(seg, "side", _SIDES),
+                seg.sourceline,
+                ctx.facts(seg, LEAF),
+            )
+            for seg in p.iterchildren("segment")
+        )
+        platforms.append(Platform(p.get("id"), p.get("name"), segments, p.sourceline, ctx.facts(p, _PLATFORM)))
+    return Station(
+        el.get("id"),
+        el.get("name"),
+        ctx.opt_enum(el, "type", _STATION_TYPES),
+        tuple(platforms),
+        el.sourceline,
+        ctx.facts(el, _STATION),
+    )
+
+
+_STATION_TYPES = {t.value: t for t in StationType}
+_SIDES = {"left": Side.LEFT, "right": Side.RIGHT}
+_PLATFORM = frozenset({"segment"})
+_STATION = frozenset({"platform"})

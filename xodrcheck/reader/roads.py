@@ -7,13 +7,14 @@ lengths (and says so).
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from lxml import etree
 
 from xodrcheck import model
 from xodrcheck.findings import Severity
 from xodrcheck.model import (
     ContactPoint,
-    CrossSectionSurface,
     ElementDir,
     ElementType,
     Geometry,
@@ -21,20 +22,30 @@ from xodrcheck.model import (
     Profile,
     Road,
     RoadLink,
-    RoadType,
-    Shape,
     TrafficRule,
     XmlFacts,
 )
 from xodrcheck.quantities import metres
-from xodrcheck.reader import road_records
 from xodrcheck.reader.context import LEAF, Context, cubics, describe
 from xodrcheck.reader.lanes import build_layers
-from xodrcheck.reader.objects import NO_OBJECTS, read_objects
-from xodrcheck.reader.signals import read_signals
 from xodrcheck.rules import road_uids as RU
 from xodrcheck.rules import xml as R
 from xodrcheck.rules.lane_uids import SECTION_REQ as LANE_SECTION_REQUIRED
+
+if TYPE_CHECKING:  # pragma: no cover
+    from xodrcheck.model import (
+        Bridge,
+        CrossSectionSurface,
+        ObjectReference,
+        Railroad,
+        RoadObject,
+        RoadType,
+        Shape,
+        Signal,
+        SignalReference,
+        Surface,
+        Tunnel,
+    )
 
 ELEMENT_TYPES = {"road": ElementType.ROAD, "junction": ElementType.JUNCTION}
 CONTACT_POINTS = {"start": ContactPoint.START, "end": ContactPoint.END}
@@ -291,9 +302,58 @@ def _lateral(ctx: Context, el: etree._Element | None) -> tuple[Profile, tuple[Sh
     if el is None:
         return (), (), None
     superelevation = cubics(ctx, el, "superelevation", RU.SUPERELEVATION_ORDER)
-    shapes = tuple(road_records.shape(ctx, child) for child in el.iterchildren("shape"))
-    surface = next((road_records.cross_section_surface(ctx, c) for c in el.iterchildren("crossSectionSurface")), None)
+    shapes: tuple[Shape, ...] = ()
+    surface = None
+    if len(el) > len(superelevation):  # more than superelevations: read here, most roads have none
+        from xodrcheck.reader import road_records
+
+        shapes = tuple(road_records.shape(ctx, child) for child in el.iterchildren("shape"))
+        found = el.find("crossSectionSurface")
+        surface = None if found is None else road_records.cross_section_surface(ctx, found)
     return superelevation, shapes, surface
+
+
+def _records(
+    ctx: Context, el: etree._Element, first: dict[str, etree._Element]
+) -> tuple[tuple[RoadType, ...], Surface | None, Railroad | None]:
+    """The road's types, surface and railroad (read by :mod:`.road_records`, loaded for a road that has one)."""
+    if el.find("type") is None and "surface" not in first and "railroad" not in first:
+        return (), None, None
+    from xodrcheck.reader import road_records
+
+    types = tuple(road_records.road_type(ctx, child) for child in el.iterchildren("type"))
+    surface = None if "surface" not in first else road_records.surface(ctx, first["surface"])
+    railroad = None if "railroad" not in first else road_records.railroad(ctx, first["railroad"])
+    return types, surface, railroad
+
+
+#: What a road without ``<objects>`` holds: no objects, references, tunnels or bridges.
+_NO_OBJECTS: tuple[tuple[RoadObject, ...], tuple[ObjectReference, ...], tuple[Tunnel, ...], tuple[Bridge, ...]] = (
+    (),
+    (),
+    (),
+    (),
+)
+
+
+def _objects(ctx: Context, road_id: str, first: dict[str, etree._Element]) -> tuple:
+    """The road's objects, object references, tunnels and bridges."""
+    if "objects" not in first:
+        return _NO_OBJECTS
+    from xodrcheck.reader.objects import read_objects
+
+    found = read_objects(ctx, road_id, first["objects"])
+    return found.objects, found.references, found.tunnels, found.bridges
+
+
+def _signals(
+    ctx: Context, road_id: str, first: dict[str, etree._Element]
+) -> tuple[tuple[Signal, ...], tuple[SignalReference, ...]]:
+    if "signals" not in first:
+        return (), ()
+    from xodrcheck.reader.signals import read_signals
+
+    return read_signals(ctx, road_id, first["signals"])
 
 
 def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
@@ -325,11 +385,9 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
     else:
         permanent, temporary = build_layers(ctx, lanes)
 
-    types: tuple[RoadType, ...] = tuple(road_records.road_type(ctx, child) for child in el.iterchildren("type"))
-    objects = NO_OBJECTS if "objects" not in first else read_objects(ctx, road_id, first["objects"])
-    signals, references = ((), ()) if "signals" not in first else read_signals(ctx, road_id, first["signals"])
-    surface = None if "surface" not in first else road_records.surface(ctx, first["surface"])
-    railroad = None if "railroad" not in first else road_records.railroad(ctx, first["railroad"])
+    types, surface, railroad = _records(ctx, el, first)
+    objects, object_references, tunnels, bridges = _objects(ctx, road_id, first)
+    signals, references = _signals(ctx, road_id, first)
     return model.Road(
         road_id,
         length,
@@ -343,7 +401,7 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
         superelevation,
         () if permanent is None else permanent.lane_offset,
         () if permanent is None else permanent.lane_sections,
-        objects.objects,
+        objects,
         signals,
         el.sourceline,
         temporary,
@@ -353,9 +411,9 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
         cross_section,
         surface,
         railroad,
-        objects.references,
-        objects.tunnels,
-        objects.bridges,
+        object_references,
+        tunnels,
+        bridges,
         references,
         _facts(ctx, el),
     )
