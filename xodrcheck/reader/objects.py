@@ -51,9 +51,9 @@ from xodrcheck.model import (
     XmlFacts,
 )
 from xodrcheck.reader.context import LEAF, Context
+from xodrcheck.reader.lanes import LAYERS, layered
 
 ORIENTATIONS = {o.value: o for o in Orientation}
-LAYERS = {layer.value: layer for layer in LaneLayer}
 _P_RANGES = {p.value: p for p in PRange}
 _PARAM_POLY3 = ("aU", "bU", "cU", "dU", "aV", "bV", "cV", "dV")
 _POINTS = frozenset({CORNER_ROAD, CORNER_LOCAL, CURVE_LOCAL})
@@ -93,11 +93,6 @@ _REPEAT_EXTRAS = {
     "radiusStart": "radius_start",
     "radiusEnd": "radius_end",
 }
-
-
-def layered(ctx: Context) -> bool:
-    """Whether the file reads 1.9's additions: OpenDRIVE 1.9 or later, or a version the reader does not know."""
-    return ctx.version is None or ctx.version >= (1, 9)
 
 
 def _numbers(ctx: Context, el: etree._Element, names: tuple[str, ...]) -> tuple[float, ...] | None:

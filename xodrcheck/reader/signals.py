@@ -26,6 +26,7 @@ from xodrcheck.model import (
     VmsGroup,
 )
 from xodrcheck.reader.context import LEAF, Context
+from xodrcheck.reader.lanes import layered
 from xodrcheck.reader.objects import ORIENTATIONS, validities
 
 _YES_NO = {"yes": True, "no": False}
@@ -215,7 +216,7 @@ def _signal(ctx: Context, road: str, el: etree._Element) -> Signal:
 
 def _layered_flags(ctx: Context, el: etree._Element) -> tuple[bool | None, bool | None]:
     """``invalidated`` and ``temporary`` (1.9; ``None`` for older files)."""
-    if ctx.version is not None and ctx.version < (1, 9):
+    if not layered(ctx):
         return None, None
     return ctx.opt_boolean(el, "invalidated"), ctx.opt_boolean(el, "temporary")
 
