@@ -248,9 +248,7 @@ def _junction(view: Any, record: Junction) -> None:
     where = f"junction {view.id}"
     assert view.type == record.type.value, where
     same(view, record, "id line s_start s_end", where)
-    if view.type == "virtual":
-        assert view.main_road == record.main_road, where
-    assert (view.main_road is None) == (not record.xml.given("mainRoad")), where
+    assert view.main_road == record.main_road, where
     assert (view.s_start_raw is None) == (not record.xml.given("sStart")), where
     assert (view.s_end_raw is None) == (not record.xml.given("sEnd")), where
     assert view.orientation == raw(record.orientation, record, "orientation"), where
@@ -391,6 +389,19 @@ def _lane(view: Any, group: str, lane: Lane, layered: bool, where: str) -> None:
         assert written_cubic == [(r.s, r.a, r.b, r.c, r.d) for r in getattr(lane, f"{tag}s")], where
     for a, b in zip(el.iterchildren("{*}access"), lane.access, strict=True):
         assert (a.get("rule"), a.get("restriction")) == (raw(b.rule, b, "rule"), b.restriction), where
+    marks = list(el.iterchildren("{*}roadMark"))
+    assert [(number(m.get("sOffset")), m.sourceline) for m in marks] == [(m.s, m.line) for m in lane.road_marks], where
+    for mark, record in zip(marks, lane.road_marks):  # what L034 reads
+        assert (next(mark.iterchildren("{*}sway"), None) is not None) == bool(record.sways), where
+        lines = [
+            (number(x.get("tOffset")), x.sourceline)
+            for holder in mark.iterchildren("{*}type", "{*}explicit")
+            for x in holder.iterchildren("{*}line")
+        ]
+        holders = [h for h in (record.type_lines, record.explicit) if h is not None]
+        assert sorted(lines, key=lambda x: x[1]) == sorted(
+            [(x.t_offset, x.line) for h in holders for x in h.lines], key=lambda x: x[1]
+        ), where
     link = next(el.iterchildren("{*}link"), None)
     assert (link is None) == (lane.link is None), where
     if link is None or lane.link is None:
@@ -514,8 +525,27 @@ def check_ids(document: Document, root: etree._Element) -> None:
     assert references == [
         (raw(r.element_type, r, "elementType"), r.element_id, r.line) for s in signals for r in s.references
     ]
-    paths = [(c.get("roadAtStart"), c.get("roadAtEnd"), c.sourceline) for c in _all(root, "junction/crossPath")]
-    assert paths == [(c.road_at_start, c.road_at_end, c.line) for j in document.junctions for c in j.cross_paths]
+    paths = [
+        (c.get("crossingRoad"), c.get("roadAtStart"), c.get("roadAtEnd"), c.sourceline)
+        for c in _all(root, "junction/crossPath")
+    ]
+    junctions = document.junctions
+    assert paths == [
+        (c.crossing_road, c.road_at_start, c.road_at_end, c.line) for j in junctions for c in j.cross_paths
+    ]
+    assert [r for r in _written(root, "junction", "mainRoad") if r[0] is not None] == [
+        (j.main_road, j.line) for j in junctions if j.main_road is not None
+    ]
+    priorities = [(p.get("high"), p.get("low"), p.sourceline) for p in _all(root, "junction/priority")]
+    assert priorities == [(p.high, p.low, p.line) for j in junctions for p in j.priorities]
+    segments = _written(root, "junction/boundary/segment", "roadId")
+    expected = [(x.road, x.line) for j in junctions for b in j.boundaries for x in b.segments]
+    expected += [(x.road, x.line) for j in junctions for b in j.boundaries for x in b.unknown]
+    assert sorted(segments, key=lambda x: x[1]) == sorted(expected, key=lambda x: x[1])
+    for tag in ("predecessor", "successor"):
+        ends = _written(root, f"junction/connection/{tag}", "elementId")
+        records = [getattr(c, tag) for j in junctions for c in j.connections]
+        assert ends == [(e.element_id, e.line) for e in records if e is not None], tag
 
 
 # ------------------------------------------------------------------------------------------------- header (H002, H003)

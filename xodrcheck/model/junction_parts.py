@@ -140,9 +140,10 @@ class JointSegment:
 
 @dataclass(frozen=True, slots=True)
 class OtherSegment:
-    """A boundary ``<segment>`` whose ``type`` is neither ``lane`` nor ``joint`` (``None``: absent)."""
+    """A boundary ``<segment>`` whose ``type`` is neither ``lane`` nor ``joint`` (``None``: absent), on ``road``."""
 
     type: str | None
+    road: str | None = None
     line: int = 0
     xml: XmlFacts = facts_field()
 

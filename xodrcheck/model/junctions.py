@@ -72,7 +72,8 @@ class Junction:
     type: JunctionType = JunctionType.DEFAULT
     connections: tuple[Connection, ...] = ()
     line: int = 0
-    #: A virtual junction's ``mainRoad`` (12.7): the road it lies on, which runs through it.
+    #: ``mainRoad`` as the file gives it: a virtual junction's main road (12.7), which runs through it (another type
+    #: has none: the schema reports one given there).
     main_road: str | None = None
     #: The roads a crossing's ``<roadSection>`` elements name (12.8): they cross each other in it.
     crossing_roads: tuple[str, ...] = ()

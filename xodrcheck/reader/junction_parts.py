@@ -123,7 +123,7 @@ def _boundary(ctx: Context, el: etree._Element) -> Boundary:
                 )
             )
         else:
-            unknown.append(OtherSegment(kind, seg.sourceline, ctx.facts(seg, LEAF)))
+            unknown.append(OtherSegment(kind, seg.get("roadId"), seg.sourceline, ctx.facts(seg, LEAF)))
     return Boundary(tuple(segments), tuple(unknown), el.sourceline, ctx.facts(el, frozenset({"segment"})))
 
 

@@ -113,8 +113,7 @@ def _junction(ctx: Context, el: etree._Element, junction_id: str) -> Junction:
     if el.get("type") is not None:
         junction_type = ctx.choice(el, "type", _JUNCTION_TYPES, "read as default") or JunctionType.DEFAULT
     connections = tuple(_connection(ctx, c) for c in el.iterchildren("connection"))
-    main_road = el.get("mainRoad") if junction_type is JunctionType.VIRTUAL else None
-    junction = Junction(junction_id, el.get("name"), junction_type, connections, el.sourceline, main_road)
+    junction = Junction(junction_id, el.get("name"), junction_type, connections, el.sourceline, el.get("mainRoad"))
     if any(child.tag in PARTS for child in el) or any(
         el.get(name) is not None for name in ("sStart", "sEnd", "orientation")
     ):
