@@ -130,14 +130,20 @@ class Context:
 
     # ---------------------------------------------------------------------------------------------------- facts
     def facts(
-        self, el: etree._Element, known: frozenset[str] | None = None, keys: tuple[str, ...] | None = None
+        self,
+        el: etree._Element,
+        known: frozenset[str] | None = None,
+        keys: tuple[str, ...] | None = None,
+        children: tuple[str, ...] | None = None,
     ) -> XmlFacts:
-        """The XML facts of ``el``: its attributes (``keys``, when the caller has them already), its children's tags,
-        the children not in ``known`` (the tags the builder reads there; ``None``: every child is known) and the
-        invalid values met on it. Call it after reading the element's attributes."""
+        """The XML facts of ``el``: its attributes, its children's tags, the children not in ``known`` (the tags the
+        builder reads there; ``None``: every child is known) and the invalid values met on it. ``keys`` and
+        ``children`` spare a second look at the element when the caller has them already. Call it after reading the
+        element's attributes."""
         if keys is None:
             keys = tuple(el.keys())
-        children = tuple([child.tag for child in el.iterchildren(_ELEMENTS)]) if len(el) else ()
+        if children is None:
+            children = tuple([child.tag for child in el.iterchildren(_ELEMENTS)]) if len(el) else ()
         invalid = self._take_invalid(el) if self.pending else ()
         key = (keys, children, known)
         found = self._facts.get(key)

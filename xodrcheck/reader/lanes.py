@@ -100,12 +100,15 @@ def layered(ctx: Context) -> bool:
     return ctx.version is None or ctx.version >= (1, 9)
 
 
-def _lane_links(ctx: Context, el: etree._Element) -> _Links:
-    """Predecessor and successor lane ids on the permanent layer, then on the temporary layer."""
+def _lane_links(ctx: Context, el: etree._Element) -> tuple[_Links, tuple[str, ...]]:
+    """Predecessor and successor lane ids on the permanent layer, then on the temporary layer; and the tags of the
+    ``<link>``'s children."""
     links: tuple[list[int], list[int], list[int], list[int]] = ([], [], [], [])
     with_layers = layered(ctx)
+    tags = []
     for child in el:
         tag = child.tag
+        tags.append(tag)
         if tag == "predecessor":
             k = 0
         elif tag == "successor":
@@ -123,7 +126,7 @@ def _lane_links(ctx: Context, el: etree._Element) -> _Links:
             links[k].append(int(raw))
         except (TypeError, ValueError):
             ctx.integer(child, "id", "the lane link is ignored")
-    return tuple(links[0]), tuple(links[1]), tuple(links[2]), tuple(links[3])
+    return (tuple(links[0]), tuple(links[1]), tuple(links[2]), tuple(links[3])), tuple(tags)
 
 
 def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
@@ -257,8 +260,10 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
     speeds: list[Speed] = []
     heights: list[LaneHeight] = []
     others: list[etree._Element] = []  # access, material, rule and visibility records: rare, read at the end
+    tags = []
     for child in el:
         tag = child.tag
+        tags.append(tag)
         if tag == "roadMark":
             mark = _road_mark(ctx, child)
             if mark is not None:
@@ -272,8 +277,8 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
                 ctx.repeated(child, link)
             else:
                 link = child
-                links = _lane_links(ctx, child)
-                link_record = LaneLinks(child.sourceline, ctx.facts(child, _LINK))
+                links, link_tags = _lane_links(ctx, child)
+                link_record = LaneLinks(child.sourceline, ctx.facts(child, _LINK, children=link_tags))
         elif tag == "speed":
             speed = _speed(ctx, child)
             if speed is not None:
@@ -321,7 +326,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         dynamic_type,
         dynamic_direction,
         road_works,
-        ctx.facts(el, _LANE, keys),
+        ctx.facts(el, _LANE, keys, tuple(tags)),
     )
 
 
@@ -368,8 +373,10 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
     center: tuple[Lane, ...] = ()
     right: tuple[Lane, ...] = ()
     seen: dict[str, etree._Element] = {}
+    tags = []
     for child in el:
         tag = child.tag
+        tags.append(tag)
         if tag == "left" or tag == "center" or tag == "right":
             if tag in seen:
                 ctx.repeated(child, seen[tag], U.CENTER_ELEM_DEFINITION if tag == "center" else None)
@@ -402,7 +409,8 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
             uid=_missing_centre_uid(ctx, el, "center" in seen),
         )
     ctx.section_s = None
-    return model.LaneSection(s, single_side, left, center, right, el.sourceline, length, ctx.facts(el, _SECTION))
+    facts = ctx.facts(el, _SECTION, children=tuple(tags))
+    return model.LaneSection(s, single_side, left, center, right, el.sourceline, length, facts)
 
 
 def build_lanes(ctx: Context, el: etree._Element, layer: LaneLayer = LaneLayer.PERMANENT) -> Lanes:
