@@ -238,14 +238,18 @@ def build_road(ctx: Context, el: etree._Element) -> Road | None:
         ctx.road = None
 
 
-def _children(ctx: Context, el: etree._Element) -> tuple[dict[str, etree._Element], list[etree._Element]]:
+def _children(
+    ctx: Context, el: etree._Element
+) -> tuple[dict[str, etree._Element], list[etree._Element], tuple[str, ...]]:
     """The first of each child of a road that may appear once (a repeated one is reported and skipped) or that the
-    reader reads once (``<surface>``, ``<railroad>``), and its ``<lanes>`` (one per lane layer in 1.9:
-    :func:`build_layers` sorts them out)."""
+    reader reads once (``<surface>``, ``<railroad>``); its ``<lanes>`` (one per lane layer in 1.9: :func:`build_layers`
+    sorts them out); and the tags of all its children."""
     first: dict[str, etree._Element] = {}
     lanes: list[etree._Element] = []
+    tags = []
     for child in el:
         tag = child.tag
+        tags.append(tag)
         if tag == "lanes":
             lanes.append(child)
         elif tag in _ONCE:
@@ -255,7 +259,7 @@ def _children(ctx: Context, el: etree._Element) -> tuple[dict[str, etree._Elemen
                 first[tag] = child
         elif (tag == "surface" or tag == "railroad") and tag not in first:
             first[tag] = child
-    return first, lanes
+    return first, lanes, tuple(tags)
 
 
 def _reference_line(ctx: Context, el: etree._Element, plan_view: etree._Element | None) -> tuple[Geometry, ...]:
@@ -336,7 +340,9 @@ _NO_OBJECTS: tuple[tuple[RoadObject, ...], tuple[ObjectReference, ...], tuple[Tu
 )
 
 
-def _objects(ctx: Context, road_id: str, first: dict[str, etree._Element]) -> tuple:
+def _objects(
+    ctx: Context, road_id: str, first: dict[str, etree._Element]
+) -> tuple[tuple[RoadObject, ...], tuple[ObjectReference, ...], tuple[Tunnel, ...], tuple[Bridge, ...]]:
     """The road's objects, object references, tunnels and bridges."""
     if "objects" not in first:
         return _NO_OBJECTS
@@ -358,7 +364,7 @@ def _signals(
 
 def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
     get = el.get
-    first, lanes = _children(ctx, el)
+    first, lanes, tags = _children(ctx, el)
     plan_view = _reference_line(ctx, el, first.get("planView"))
     length = _length(ctx, el, plan_view)
     junction = _junction(ctx, el)
@@ -415,9 +421,5 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
         tunnels,
         bridges,
         references,
-        _facts(ctx, el),
+        ctx.facts(el, _ROAD, children=tags),
     )
-
-
-def _facts(ctx: Context, el: etree._Element) -> XmlFacts:
-    return ctx.facts(el, _ROAD)
