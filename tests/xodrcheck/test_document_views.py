@@ -2,10 +2,10 @@
 
 For every corpus map and every rule fixture, what the XML views build from the tree the rules see (``Context.tree``:
 :mod:`xodrcheck.objects.read`, :mod:`xodrcheck.signals`, :mod:`xodrcheck.junction_elements`,
-:mod:`xodrcheck.rules.road_records`, :mod:`xodrcheck.rules.lane_xml`, and the walks some rules make over the tree
-themselves) is compared, field by field, with the same records of :class:`xodrcheck.model.Document`. Where the two
-spell a value differently (a raw attribute against an enumeration, a count against the records) the test converts the
-view's spelling, so that every value is compared.
+:mod:`xodrcheck.rules.lane_xml`, and the walks some rules make over the tree themselves; road types and shapes, which
+the rules read from the document, against the tree directly) is compared, field by field, with the same records of
+:class:`xodrcheck.model.Document`. Where the two spell a value differently (a raw attribute against an enumeration, a
+count against the records) the test converts the view's spelling, so that every value is compared.
 
 Where the document leaves out by design what a view keeps - elements the reader cannot name (a road, lane or junction
 without an id, a lane section without a valid ``s``), and repeats of an element the standard allows once (the reader
@@ -29,7 +29,6 @@ from xodrcheck.objects.read import read_road_objects
 from xodrcheck.reader import read
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_xml import lane_elements
-from xodrcheck.rules.road_records import road_records
 from xodrcheck.signals import read_signals
 from xodrcheck.xmlvalues import local, number
 
@@ -329,18 +328,25 @@ def _same_speed(view: tuple[str | None, str | None] | None, record: Any) -> bool
     return getattr(value, "value", None) == written or number(written) == value
 
 
-def check_road_records(document: Document, ctx: Context) -> None:
-    views = road_records(ctx)
-    assert len(views) == len(document.roads)
-    for view, road in zip(views, document.roads):
-        assert (view.road, view.line) == (road.id, road.line)
-        assert len(view.types) == len(road.types), road.id
-        for a, b in zip(view.types, road.types):
-            same(a, b, "s type country line", road.id)
-            assert _same_speed(a.speed, b.speed), road.id
-        assert len(view.shapes) == len(road.shapes), road.id
-        for a, b in zip(view.shapes, road.shapes):
-            same(a, b, "s t a b c d line", road.id)
+def check_road_records(document: Document, root: etree._Element) -> None:
+    """Every road's ``<type>`` (with its ``<speed>``) and ``<shape>`` records as written, against the document's."""
+    roads = [road for road in _all(root, "road") if _ids_or_skip(road)]
+    assert len(roads) == len(document.roads)
+    for el, road in zip(roads, document.roads):
+        assert (el.get("id"), el.sourceline) == (road.id, road.line)
+        types = list(el.iterchildren("{*}type"))
+        assert len(types) == len(road.types), road.id
+        for type_el, record in zip(types, road.types):
+            written = (number(type_el.get("s")), type_el.get("type"), type_el.get("country"), type_el.sourceline)
+            assert written == (record.s, record.type, record.country, record.line), road.id
+            speed = next(type_el.iterchildren("{*}speed"), None)
+            assert _same_speed(None if speed is None else (speed.get("max"), speed.get("unit")), record.speed)
+        shapes = list(el.iterfind("{*}lateralProfile/{*}shape"))
+        assert len(shapes) == len(road.shapes), road.id
+        for shape_el, shape in zip(shapes, road.shapes):
+            written_shape = tuple(number(shape_el.get(name)) for name in ("s", "t", "a", "b", "c", "d"))
+            assert written_shape == (shape.s, shape.t, shape.a, shape.b, shape.c, shape.d), road.id
+            assert shape_el.sourceline == shape.line, road.id
 
 
 # ------------------------------------------------------------------------------------------------------ lanes
@@ -804,7 +810,7 @@ def _check(path: Path) -> int:
     root = tree.getroot()
     for check in CHECKS:
         check(document, root)
-    check_road_records(document, ctx)
+    check_road_records(document, root)
     check_lanes(document, ctx)
     return Narrowed.count
 
