@@ -239,7 +239,8 @@ class Relations:
                 for road_id in (c.incoming_road, c.connecting_road, c.linked_road):
                     if road_id is not None:
                         groups.setdefault(road_id, set()).add(junction.id)
-            for road_id in (*junction.crossing_roads, junction.main_road):
+            main_road = junction.main_road if junction.type is JunctionType.VIRTUAL else None
+            for road_id in (*junction.crossing_roads, main_road):
                 if road_id is not None:
                     groups.setdefault(road_id, set()).add(junction.id)
         self._links = links

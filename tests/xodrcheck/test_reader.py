@@ -174,7 +174,7 @@ def test_header_fields():
     assert (h.name, h.version, h.date, h.vendor) == ("town", "2.1", "2024-01-02", "ACME")
     assert (h.north, h.south, h.east, h.west) == (10.5, -3.0, 7.0, -8.25)
     assert h.geo_reference == "+proj=utm +zone=32 +datum=WGS84"
-    assert h.offset == m.Offset(100.0, -200.5, 3.0, 0.25)
+    assert h.offset == m.Offset(100.0, -200.5, 3.0, 0.25, line=2)
     assert h.line == 2
 
 
@@ -255,7 +255,7 @@ def test_road_defaults():
     assert r.rule is m.TrafficRule.RHT  # the standard's default
     assert r.name is None
     assert (r.predecessor, r.successor, r.elevation, r.superelevation, r.lane_offset) == (None, None, (), (), ())
-    assert (r.objects, r.signals) == (0, 0)
+    assert (r.objects, r.signals, r.types, r.shapes, r.surface, r.railroad) == ((), (), (), (), None, None)
 
 
 def test_road_in_junction():
@@ -293,15 +293,19 @@ def test_road_rule_invalid_reads_rht():
     assert result.document.roads[0].rule is m.TrafficRule.RHT
 
 
-def test_objects_signals_and_top_level_counts():
+def test_objects_signals_and_top_level_elements():
     body = (
         '<objects><object id="a"/><object id="b"/><objectReference id="c"/></objects>'
         '<signals><signal id="s1"/><signal id="s2"/><signal id="s3"/></signals>'
     )
-    doc = clean(xodr(road(body), '<controller id="c1"/>', '<controller id="c2"/>', '<station id="st"/>'))
-    assert (doc.roads[0].objects, doc.roads[0].signals) == (2, 3)
-    assert doc.controllers == 2
-    assert doc.extras == {"station": 1}
+    top = ('<controller id="c1"/>', '<controller id="c2"/>', '<station id="st"/>', '<vendorThing a="1"/>')
+    doc = clean(xodr(road(body), *top))
+    assert [o.id for o in doc.roads[0].objects] == ["a", "b"]
+    assert [r.id for r in doc.roads[0].object_references] == ["c"]
+    assert [s.id for s in doc.roads[0].signals] == ["s1", "s2", "s3"]
+    assert [c.id for c in doc.controllers] == ["c1", "c2"]
+    assert [s.id for s in doc.stations] == ["st"]
+    assert doc.extras == {"vendorThing": 1}  # an element that is not OpenDRIVE at the top level
 
 
 # ------------------------------------------------------------------------------------------------------------ links

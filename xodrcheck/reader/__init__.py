@@ -7,7 +7,9 @@ Only input that cannot be opened at all (a missing file, a directory, more bytes
 
 Gzip-compressed files (``.xodrz``, the standard's compressed form) are decompressed first, within the same size limit.
 
-The model is built by :mod:`.document`, :mod:`.roads` and :mod:`.lanes`.
+The document is built by :mod:`.document` (the root), :mod:`.header`, :mod:`.roads` (with :mod:`.road_records`),
+:mod:`.lanes` (with :mod:`.lane_records`), :mod:`.objects`, :mod:`.signals` and :mod:`.junctions`; :mod:`.elements`
+tables every element for reports that point into the file, and :mod:`.context` holds what the builders share.
 """
 
 from __future__ import annotations

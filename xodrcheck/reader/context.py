@@ -1,8 +1,18 @@
-"""Where the builder is, what it found, and attribute parsing that reports instead of guessing.
+"""Where the builder is, what it found, attribute parsing, and the XML facts of each element.
 
-Every helper returns ``None`` for a value that is missing or invalid, after recording a finding that names the element,
-its line, the attribute, the raw value and what the builder does about it (``then``). The fast paths convert a whole
-element's attributes in one go and fall back to the attribute-by-attribute path only when something is wrong.
+Two ways of reading an attribute:
+
+* reporting (:meth:`Context.number`, :meth:`~Context.integer`, :meth:`~Context.choice`...): for the values the
+  geometry and topology depend on. Each returns ``None`` for a value that is missing or invalid, after recording a
+  finding that names the element, its line, the attribute, the raw value and what the builder does about it
+  (``then``). The fast paths convert a whole element's attributes in one go and fall back to the attribute-by-attribute
+  path only when something is wrong;
+* as given (:meth:`Context.opt_number`, :meth:`~Context.opt_integer`, :meth:`~Context.opt_enum`...): for the other
+  records (objects, signals, road types, junction parts...), whose bad values the schema rule reports: ``None`` for a
+  value that is absent or invalid, without a finding.
+
+Either way an invalid value's text is kept for the element's :class:`~xodrcheck.model.facts.XmlFacts`, which
+:meth:`Context.facts` builds (and shares between elements that say the same).
 """
 
 from __future__ import annotations
@@ -15,7 +25,7 @@ from lxml import etree
 
 from xodrcheck import model
 from xodrcheck.findings import Finding, Severity
-from xodrcheck.model import Cubic, Profile
+from xodrcheck.model import NO_FACTS, Cubic, Profile, UnknownElement, XmlFacts
 from xodrcheck.quantities import metres
 from xodrcheck.rules import xml as R
 from xodrcheck.rules.registry import NO_UID, Rule
@@ -24,6 +34,12 @@ T = TypeVar("T")
 
 _SHOW = 40  # characters of a raw value shown in a message
 _BOOLEANS = {"true": True, "false": False, "1": True, "0": False}
+#: The standard's additional data (6.2), allowed in nearly every element: not unknown where the reader skips it.
+ADDITIONAL_DATA = frozenset({"userData", "include", "dataQuality"})
+#: Children a record without child elements of its own may have.
+LEAF: frozenset[str] = frozenset()
+#: Element nodes only (an entity reference a recovering parse kept is not a child element).
+_ELEMENTS = etree.Element
 
 SKIP_RECORD = "the record is skipped"
 
@@ -97,7 +113,7 @@ def _show(raw: str) -> str:
 class Context:
     """Findings collected while building the model, and the road / junction / lane section / lane being built."""
 
-    __slots__ = ("findings", "junction", "lane", "numbers", "road", "section_s", "version")
+    __slots__ = ("_facts", "findings", "junction", "lane", "numbers", "pending", "road", "section_s", "version")
 
     def __init__(self, findings: list[Finding] | None = None) -> None:
         self.findings: list[Finding] = [] if findings is None else findings
@@ -107,6 +123,52 @@ class Context:
         self.section_s: float | None = None
         self.lane: int | None = None
         self.numbers = Numbers()
+        #: (element, attribute, text) of each invalid value met and not yet in an element's facts.
+        self.pending: list[tuple[etree._Element, str, str]] = []
+        #: Facts by (attributes, children, known tags): shared between the elements that say the same.
+        self._facts: dict[tuple[tuple[str, ...], tuple[str, ...], frozenset[str] | None], XmlFacts] = {}
+
+    # ---------------------------------------------------------------------------------------------------- facts
+    def facts(
+        self,
+        el: etree._Element,
+        known: frozenset[str] | None = None,
+        keys: tuple[str, ...] | None = None,
+        children: tuple[str, ...] | None = None,
+    ) -> XmlFacts:
+        """The XML facts of ``el``: its attributes, its children's tags, the children not in ``known`` (the tags the
+        builder reads there; ``None``: every child is known) and the invalid values met on it. ``keys`` and
+        ``children`` spare a second look at the element when the caller has them already. Call it after reading the
+        element's attributes."""
+        if keys is None:
+            keys = tuple(el.keys())
+        if children is None:
+            children = tuple([child.tag for child in el.iterchildren(_ELEMENTS)]) if len(el) else ()
+        invalid = self._take_invalid(el) if self.pending else ()
+        key = (keys, children, known)
+        found = self._facts.get(key)
+        if found is None:
+            unknown = _unknown(el, children, known) if children and known is not None else ()
+            if unknown or invalid:
+                return XmlFacts(keys, children, unknown, invalid)
+            found = self._facts[key] = XmlFacts(keys, children) if keys or children else NO_FACTS
+        elif invalid:  # a kept entry has no unknown children (facts with some hold lines, and are never kept)
+            return XmlFacts(keys, children, (), invalid)
+        return found
+
+    def _take_invalid(self, el: etree._Element) -> tuple[tuple[str, str], ...]:
+        mine = tuple((name, text) for owner, name, text in self.pending if owner is el)
+        if mine:
+            self.pending = [entry for entry in self.pending if entry[0] is not el]
+        return mine
+
+    def note_invalid(self, el: etree._Element, name: str, raw: str) -> None:
+        """Keep the text of an invalid value for ``el``'s facts (no finding)."""
+        self.pending.append((el, name, raw))
+
+    def forget_invalid(self) -> None:
+        """Drop what was noted for elements whose records were skipped (called after each top-level element)."""
+        self.pending.clear()
 
     # ---------------------------------------------------------------------------------------------------- findings
     def where(self) -> str:
@@ -152,6 +214,7 @@ class Context:
         self.report(R.MISSING_ATTRIBUTE, f"{describe(el)} has no '{name}' attribute; {then}", el, severity, uid=uid)
 
     def invalid(self, el: etree._Element, name: str, raw: str, why: str, then: str) -> None:
+        self.note_invalid(el, name, raw)
         self.report(R.INVALID_ATTRIBUTE, f'{describe(el)} has {name}="{_show(raw)}", {why}; {then}', el)
 
     # ---------------------------------------------------------------------------------------------------- values
@@ -253,6 +316,49 @@ class Context:
             self.invalid(el, name, raw, "which is not true or false", then)
         return value
 
+    # ---------------------------------------------------------------------------------------------------- as given
+    def opt_number(self, el: etree._Element, name: str) -> float | None:
+        """A finite float, or ``None`` (absent or invalid: the text is noted for the facts), without a finding."""
+        raw = el.get(name)
+        if raw is None:
+            return None
+        try:
+            return self.numbers[raw]
+        except ValueError:
+            self.note_invalid(el, name, raw)
+            return None
+
+    def opt_integer(self, el: etree._Element, name: str) -> int | None:
+        """An integer, or ``None`` (absent or invalid, noted), without a finding."""
+        raw = el.get(name)
+        if raw is None:
+            return None
+        try:
+            return int(raw)
+        except ValueError:
+            self.note_invalid(el, name, raw)
+            return None
+
+    def opt_boolean(self, el: etree._Element, name: str) -> bool | None:
+        """``true``/``false`` (or ``1``/``0``), or ``None`` (absent or invalid, noted), without a finding."""
+        raw = el.get(name)
+        if raw is None:
+            return None
+        value = _BOOLEANS.get(raw.strip())
+        if value is None:
+            self.note_invalid(el, name, raw)
+        return value
+
+    def opt_enum(self, el: etree._Element, name: str, values: Mapping[str, T]) -> T | None:
+        """An enumerated value spelt as the standard spells it, or ``None`` (absent or invalid, noted)."""
+        raw = el.get(name)
+        if raw is None:
+            return None
+        value = values.get(raw)
+        if value is None:
+            self.note_invalid(el, name, raw)
+        return value
+
     # ---------------------------------------------------------------------------------------------------- structure
     def repeated(self, el: etree._Element, first: etree._Element, uid: str | None = None) -> None:
         self.report(
@@ -277,9 +383,21 @@ class Context:
                 return
 
 
+def _unknown(el: etree._Element, tags: tuple[str, ...], known: frozenset[str]) -> tuple[UnknownElement, ...]:
+    if all(tag in known or tag in ADDITIONAL_DATA for tag in tags):
+        return ()
+    return tuple(
+        UnknownElement(child.tag, child.sourceline or 0)
+        for child in el.iterchildren(_ELEMENTS)
+        if child.tag not in known and child.tag not in ADDITIONAL_DATA
+    )
+
+
 _CUBIC = ["s", "a", "b", "c", "d"]
 _OFFSET_CUBIC = ["sOffset", "a", "b", "c", "d"]
 _FIRST = (0,)
+#: The facts of a record with exactly the usual attributes in the usual order and no children (most of them).
+_USUAL = {False: XmlFacts(tuple(_CUBIC)), True: XmlFacts(tuple(_OFFSET_CUBIC))}
 
 
 def cubic(ctx: Context, el: etree._Element, offset: bool = False) -> Cubic | None:
@@ -288,9 +406,11 @@ def cubic(ctx: Context, el: etree._Element, offset: bool = False) -> Cubic | Non
     try:
         if el.keys() == (_OFFSET_CUBIC if offset else _CUBIC):  # the usual attributes in the usual order
             s, a, b, c, d = el.values()
+            usual = not len(el)  # and no children: the facts most records share
         else:
             get = el.get
             s, a, b, c, d = get("sOffset" if offset else "s"), get("a"), get("b"), get("c"), get("d")
+            usual = False
         s = numbers[s]
         a = numbers[a]
         b = numbers[b]
@@ -300,9 +420,9 @@ def cubic(ctx: Context, el: etree._Element, offset: bool = False) -> Cubic | Non
         pass
     else:
         if s >= 0.0:
-            return model.Cubic(s, a, b, c, d, el.sourceline)
+            return model.Cubic(s, a, b, c, d, el.sourceline, _USUAL[offset] if usual else ctx.facts(el, LEAF))
     v = ctx.floats_slowly(el, _OFFSET_CUBIC if offset else _CUBIC, _FIRST, SKIP_RECORD)
-    return None if v is None else model.Cubic(v[0], v[1], v[2], v[3], v[4], el.sourceline)
+    return None if v is None else model.Cubic(v[0], v[1], v[2], v[3], v[4], el.sourceline, ctx.facts(el, LEAF))
 
 
 def cubics(ctx: Context, parent: etree._Element, tag: str, uid: str | None = None) -> Profile:

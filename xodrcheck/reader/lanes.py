@@ -11,25 +11,39 @@ not have them (the schema reports them there); the reader ignores them.
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from lxml import etree
 
 from xodrcheck import model
 from xodrcheck.model import (
     Cubic,
     Lane,
+    LaneAdvisory,
     LaneDirection,
     LaneHeight,
     LaneLayer,
+    LaneLinks,
+    Lanes,
     LaneSection,
     LaneType,
-    Profile,
     RoadMark,
     Speed,
-    TemporaryLanes,
 )
-from xodrcheck.reader.context import SKIP_RECORD, Context, cubic, describe
+from xodrcheck.reader.context import LEAF, SKIP_RECORD, Context, cubic, describe
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules import xml as R
+
+if TYPE_CHECKING:  # pragma: no cover
+    from xodrcheck.model import (
+        LaneAccess,
+        LaneMaterial,
+        LaneRule,
+        LaneVisibility,
+        RoadMarkExplicit,
+        RoadMarkSway,
+        RoadMarkType,
+    )
 
 #: Lane type names in lower case -> type: the file's spelling is matched without regard to case.
 LANE_TYPES = {t.value.lower(): t for t in LaneType if t is not LaneType.UNKNOWN}
@@ -46,6 +60,21 @@ _PERMANENT = "read as permanent, the standard's default"
 
 _SPEED = ["sOffset", "max"]
 _HEIGHT = ["sOffset", "inner", "outer"]
+_ADVISORIES = {a.value: a for a in LaneAdvisory}
+#: Children each element reads (the others are unknown there).
+_LANE = frozenset(
+    {"link", "width", "border", "roadMark", "speed", "height", "access", "material", "rule", "visibility"}
+)
+_LINK = frozenset({"predecessor", "successor"})
+#: The lane records :mod:`.lane_records` reads.
+_RECORDS = frozenset({"access", "material", "rule", "visibility"})
+#: The attributes most lanes give, in the usual orders: such a lane has none of the 1.8 ones.
+_PLAIN = frozenset({("id", "type", "level"), ("id", "type"), ("id", "level", "type"), ("type", "id", "level"), ("id",)})
+_NO_EXTRAS: tuple[None, None, None, None] = (None, None, None, None)
+_NO_RECORDS: tuple[tuple[()], tuple[()], tuple[()], tuple[()]] = ((), (), (), ())
+_ROAD_MARK = frozenset({"sway", "type", "explicit"})
+_SECTION = frozenset({"left", "center", "right"})
+_LANES = frozenset({"laneOffset", "laneSection"})
 
 _Links = tuple[tuple[int, ...], tuple[int, ...], tuple[int, ...], tuple[int, ...]]
 
@@ -71,12 +100,15 @@ def layered(ctx: Context) -> bool:
     return ctx.version is None or ctx.version >= (1, 9)
 
 
-def _lane_links(ctx: Context, el: etree._Element) -> _Links:
-    """Predecessor and successor lane ids on the permanent layer, then on the temporary layer."""
+def _lane_links(ctx: Context, el: etree._Element) -> tuple[_Links, tuple[str, ...]]:
+    """Predecessor and successor lane ids on the permanent layer, then on the temporary layer; and the tags of the
+    ``<link>``'s children."""
     links: tuple[list[int], list[int], list[int], list[int]] = ([], [], [], [])
     with_layers = layered(ctx)
+    tags = []
     for child in el:
         tag = child.tag
+        tags.append(tag)
         if tag == "predecessor":
             k = 0
         elif tag == "successor":
@@ -94,7 +126,7 @@ def _lane_links(ctx: Context, el: etree._Element) -> _Links:
             links[k].append(int(raw))
         except (TypeError, ValueError):
             ctx.integer(child, "id", "the lane link is ignored")
-    return tuple(links[0]), tuple(links[1]), tuple(links[2]), tuple(links[3])
+    return (tuple(links[0]), tuple(links[1]), tuple(links[2]), tuple(links[3])), tuple(tags)
 
 
 def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
@@ -120,17 +152,46 @@ def _road_mark(ctx: Context, el: etree._Element) -> RoadMark | None:
                 raise ValueError
         except ValueError:
             width = ctx.number(el, "width", "the width is read as absent", nonneg=True)
-    return model.RoadMark(s, kind, get("weight"), get("color"), width, get("laneChange"), el.sourceline)
+    height = None if get("height") is None else ctx.opt_number(el, "height")
+    lines: RoadMarkType | None = None
+    explicit: RoadMarkExplicit | None = None
+    sways: tuple[RoadMarkSway, ...] = ()
+    if len(el):
+        from xodrcheck.reader import lane_records  # here: most road marks have no stripes of their own
+
+        for child in el:
+            tag = child.tag
+            if tag == "type" and lines is None:
+                lines = lane_records.mark_type(ctx, child)
+            elif tag == "explicit" and explicit is None:
+                explicit = lane_records.explicit(ctx, child)
+            elif tag == "sway":
+                sways += (lane_records.sway(ctx, child),)
+    return model.RoadMark(
+        s,
+        kind,
+        get("weight"),
+        get("color"),
+        width,
+        get("laneChange"),
+        el.sourceline,
+        get("material"),
+        height,
+        lines,
+        explicit,
+        sways,
+        ctx.facts(el, _ROAD_MARK),
+    )
 
 
 def _speed(ctx: Context, el: etree._Element) -> Speed | None:
     v = ctx.floats(el, _SPEED, (0, 1), SKIP_RECORD)
-    return None if v is None else model.Speed(v[0], v[1], el.get("unit"), el.sourceline)
+    return None if v is None else model.Speed(v[0], v[1], el.get("unit"), el.sourceline, ctx.facts(el, LEAF))
 
 
 def _height(ctx: Context, el: etree._Element) -> LaneHeight | None:
     v = ctx.floats(el, _HEIGHT, (0,), SKIP_RECORD)
-    return None if v is None else model.LaneHeight(v[0], v[1], v[2], el.sourceline)
+    return None if v is None else model.LaneHeight(v[0], v[1], v[2], el.sourceline, ctx.facts(el, LEAF))
 
 
 def _centre_type_optional(ctx: Context, el: etree._Element) -> bool:
@@ -173,6 +234,7 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         ctx.integer(el, "id", _SKIP_LANE)
         return None
     ctx.lane = lane_id
+    keys = tuple(el.keys())
 
     type_name = get("type")
     lane_type: LaneType | None = None if type_name is None else LANE_TYPES.get(type_name)
@@ -191,13 +253,17 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
 
     links: _Links = ((), (), (), ())
     link = None
+    link_record = None
     widths: list[Cubic] = []
     borders: list[Cubic] = []
     marks: list[RoadMark] = []
     speeds: list[Speed] = []
     heights: list[LaneHeight] = []
+    others: list[etree._Element] = []  # access, material, rule and visibility records: rare, read at the end
+    tags = []
     for child in el:
         tag = child.tag
+        tags.append(tag)
         if tag == "roadMark":
             mark = _road_mark(ctx, child)
             if mark is not None:
@@ -211,7 +277,8 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
                 ctx.repeated(child, link)
             else:
                 link = child
-                links = _lane_links(ctx, child)
+                links, link_tags = _lane_links(ctx, child)
+                link_record = LaneLinks(child.sourceline, ctx.facts(child, _LINK, children=link_tags))
         elif tag == "speed":
             speed = _speed(ctx, child)
             if speed is not None:
@@ -220,6 +287,8 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
             height = _height(ctx, child)
             if height is not None:
                 heights.append(height)
+        elif tag in _RECORDS:
+            others.append(child)
     if len(widths) > 1:
         ctx.check_order(widths, "<width>", el, U.WIDTH_ORDER)
     if len(borders) > 1:
@@ -230,6 +299,8 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         ctx.check_order(speeds, "<speed>", el, U.SPEED_ORDER)
     if len(heights) > 1:
         ctx.check_order(heights, "<height>", el, U.HEIGHT_ORDER)
+    access, materials, rules, visibilities = _NO_RECORDS if not others else _records(ctx, others)
+    advisory, dynamic_type, dynamic_direction, road_works = _NO_EXTRAS if keys in _PLAIN else _extras(ctx, el)
     return model.Lane(
         lane_id,
         lane_type,
@@ -246,6 +317,39 @@ def _lane(ctx: Context, el: etree._Element) -> Lane | None:
         links[2],
         links[3],
         direction,
+        access,
+        materials,
+        rules,
+        visibilities,
+        link_record,
+        advisory,
+        dynamic_type,
+        dynamic_direction,
+        road_works,
+        ctx.facts(el, _LANE, keys, tuple(tags)),
+    )
+
+
+def _records(
+    ctx: Context, elements: list[etree._Element]
+) -> tuple[tuple[LaneAccess, ...], tuple[LaneMaterial, ...], tuple[LaneRule, ...], tuple[LaneVisibility, ...]]:
+    """A lane's access, material, rule and visibility records (:mod:`.lane_records`, loaded for a lane with some)."""
+    from xodrcheck.reader import lane_records
+
+    access = tuple(lane_records.access(ctx, el) for el in elements if el.tag == "access")
+    materials = tuple(lane_records.material(ctx, el) for el in elements if el.tag == "material")
+    rules = tuple(lane_records.rule(ctx, el) for el in elements if el.tag == "rule")
+    visibilities = tuple(lane_records.visibility(ctx, el) for el in elements if el.tag == "visibility")
+    return access, materials, rules, visibilities
+
+
+def _extras(ctx: Context, el: etree._Element) -> tuple[LaneAdvisory | None, bool | None, bool | None, bool | None]:
+    """A lane's other 1.8 attributes: advisory, dynamicLaneType, dynamicLaneDirection, roadWorks."""
+    return (
+        ctx.opt_enum(el, "advisory", _ADVISORIES),
+        ctx.opt_boolean(el, "dynamicLaneType"),
+        ctx.opt_boolean(el, "dynamicLaneDirection"),
+        ctx.opt_boolean(el, "roadWorks"),
     )
 
 
@@ -269,8 +373,10 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
     center: tuple[Lane, ...] = ()
     right: tuple[Lane, ...] = ()
     seen: dict[str, etree._Element] = {}
+    tags = []
     for child in el:
         tag = child.tag
+        tags.append(tag)
         if tag == "left" or tag == "center" or tag == "right":
             if tag in seen:
                 ctx.repeated(child, seen[tag], U.CENTER_ELEM_DEFINITION if tag == "center" else None)
@@ -303,11 +409,12 @@ def _section(ctx: Context, el: etree._Element) -> LaneSection | None:
             uid=_missing_centre_uid(ctx, el, "center" in seen),
         )
     ctx.section_s = None
-    return model.LaneSection(s, single_side, left, center, right, el.sourceline, length)
+    facts = ctx.facts(el, _SECTION, children=tuple(tags))
+    return model.LaneSection(s, single_side, left, center, right, el.sourceline, length, facts)
 
 
-def build_lanes(ctx: Context, el: etree._Element) -> tuple[Profile, tuple[LaneSection, ...]]:
-    """The laneOffset profile and the lane sections of a road's ``<lanes>``."""
+def build_lanes(ctx: Context, el: etree._Element, layer: LaneLayer = LaneLayer.PERMANENT) -> Lanes:
+    """A road's ``<lanes>`` of ``layer``: its laneOffset profile and lane sections."""
     offsets = []
     sections = []
     seen = False
@@ -333,15 +440,13 @@ def build_lanes(ctx: Context, el: etree._Element) -> tuple[Profile, tuple[LaneSe
         )
     elif len(sections) > 1:
         ctx.check_order(sections, "<laneSection>", el, U.SECTION_ORDER)
-    return tuple(offsets), tuple(sections)
+    return Lanes(tuple(offsets), tuple(sections), el.sourceline, layer, ctx.facts(el, _LANES))
 
 
-def build_layers(
-    ctx: Context, elements: list[etree._Element]
-) -> tuple[Profile, tuple[LaneSection, ...], TemporaryLanes | None]:
-    """The permanent layer's laneOffset and lane sections and the temporary layer of a road's ``<lanes>`` elements
-    (1.9: one per layer, ``layer`` defaulting to permanent; before 1.9 only the first is read). A second ``<lanes>``
-    of the same layer is reported and skipped; a road with only a temporary layer has no permanent lanes."""
+def build_layers(ctx: Context, elements: list[etree._Element]) -> tuple[Lanes | None, Lanes | None]:
+    """The permanent and the temporary layer of a road's ``<lanes>`` elements (1.9: one per layer, ``layer``
+    defaulting to permanent; before 1.9 only the first is read). A second ``<lanes>`` of the same layer is reported
+    and skipped; a road with only a temporary layer has no permanent lanes."""
     found: dict[LaneLayer, etree._Element] = {}
     for el in elements:
         layer = LaneLayer.PERMANENT
@@ -351,11 +456,10 @@ def build_layers(
             ctx.repeated(el, found[layer], U.LAYER_LIMITS if layered(ctx) else None)
         else:
             found[layer] = el
-    offset: Profile = ()
-    sections: tuple[LaneSection, ...] = ()
     permanent = found.get(LaneLayer.PERMANENT)
+    lanes = None
     if permanent is not None:
-        offset, sections = build_lanes(ctx, permanent)
+        lanes = build_lanes(ctx, permanent)
     else:
         ctx.report(
             R.MISSING_ELEMENT,
@@ -364,7 +468,4 @@ def build_layers(
             uid=U.LAYER_LIMITS,
         )
     temporary = found.get(LaneLayer.TEMPORARY)
-    if temporary is None:
-        return offset, sections, None
-    temporary_offset, temporary_sections = build_lanes(ctx, temporary)
-    return offset, sections, TemporaryLanes(temporary_offset, temporary_sections, temporary.sourceline)
+    return lanes, None if temporary is None else build_lanes(ctx, temporary, LaneLayer.TEMPORARY)

@@ -7,6 +7,8 @@ lengths (and says so).
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 from lxml import etree
 
 from xodrcheck import model
@@ -21,13 +23,29 @@ from xodrcheck.model import (
     Road,
     RoadLink,
     TrafficRule,
+    XmlFacts,
 )
 from xodrcheck.quantities import metres
-from xodrcheck.reader.context import Context, cubics, describe
+from xodrcheck.reader.context import LEAF, Context, cubics, describe
 from xodrcheck.reader.lanes import build_layers
 from xodrcheck.rules import road_uids as RU
 from xodrcheck.rules import xml as R
 from xodrcheck.rules.lane_uids import SECTION_REQ as LANE_SECTION_REQUIRED
+
+if TYPE_CHECKING:  # pragma: no cover
+    from xodrcheck.model import (
+        Bridge,
+        CrossSectionSurface,
+        ObjectReference,
+        Railroad,
+        RoadObject,
+        RoadType,
+        Shape,
+        Signal,
+        SignalReference,
+        Surface,
+        Tunnel,
+    )
 
 ELEMENT_TYPES = {"road": ElementType.ROAD, "junction": ElementType.JUNCTION}
 CONTACT_POINTS = {"start": ContactPoint.START, "end": ContactPoint.END}
@@ -48,26 +66,30 @@ SKIP_GEOMETRY = "the geometry is skipped"
 
 
 # ---------------------------------------------------------------------------------------------------------- plan view
-def _line(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
-    return model.Line(head[0], head[1], head[2], head[3], head[4], line)
+def _line(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int, xml: XmlFacts) -> Geometry | None:
+    return model.Line(head[0], head[1], head[2], head[3], head[4], line, xml)
 
 
-def _arc(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+def _arc(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int, xml: XmlFacts) -> Geometry | None:
     k = ctx.number(kind, "curvature", SKIP_GEOMETRY)
-    return None if k is None else model.Arc(head[0], head[1], head[2], head[3], head[4], k, line)
+    return None if k is None else model.Arc(head[0], head[1], head[2], head[3], head[4], k, line, xml)
 
 
-def _spiral(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+def _spiral(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int, xml: XmlFacts) -> Geometry | None:
     k = ctx.floats(kind, _SPIRAL, _NONE, SKIP_GEOMETRY)
-    return None if k is None else model.Spiral(head[0], head[1], head[2], head[3], head[4], k[0], k[1], line)
+    return None if k is None else model.Spiral(head[0], head[1], head[2], head[3], head[4], k[0], k[1], line, xml)
 
 
-def _poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+def _poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int, xml: XmlFacts) -> Geometry | None:
     c = ctx.floats(kind, _POLY3, _NONE, SKIP_GEOMETRY)
-    return None if c is None else model.Poly3(head[0], head[1], head[2], head[3], head[4], c[0], c[1], c[2], c[3], line)
+    if c is None:
+        return None
+    return model.Poly3(head[0], head[1], head[2], head[3], head[4], c[0], c[1], c[2], c[3], line, xml)
 
 
-def _param_poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int) -> Geometry | None:
+def _param_poly3(
+    ctx: Context, kind: etree._Element, head: tuple[float, ...], line: int, xml: XmlFacts
+) -> Geometry | None:
     c = ctx.floats(kind, _PARAM_POLY3, _NONE, SKIP_GEOMETRY)
     if c is None:
         return None
@@ -88,11 +110,12 @@ def _param_poly3(ctx: Context, kind: etree._Element, head: tuple[float, ...], li
             return None
         p_range = chosen
     return model.ParamPoly3(
-        head[0], head[1], head[2], head[3], head[4], c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], p_range, line
+        head[0], head[1], head[2], head[3], head[4], c[0], c[1], c[2], c[3], c[4], c[5], c[6], c[7], p_range, line, xml
     )
 
 
 _KINDS = {"line": _line, "arc": _arc, "spiral": _spiral, "poly3": _poly3, "paramPoly3": _param_poly3}
+_SHAPES = frozenset(_KINDS)
 
 
 def _geometry(ctx: Context, el: etree._Element) -> Geometry | None:
@@ -129,7 +152,7 @@ def _geometry(ctx: Context, el: etree._Element) -> Geometry | None:
         return None
     if head is None:
         return None
-    return _KINDS[kind.tag](ctx, kind, head, el.sourceline)
+    return _KINDS[kind.tag](ctx, kind, head, el.sourceline, ctx.facts(el, _SHAPES))
 
 
 def _plan_view(ctx: Context, el: etree._Element) -> tuple[Geometry, ...]:
@@ -174,7 +197,7 @@ def _road_link(ctx: Context, el: etree._Element) -> RoadLink | None:
         element_s = ctx.number(el, "elementS", "read as absent", nonneg=True)
     if el.get("elementDir") is not None:
         element_dir = ctx.choice(el, "elementDir", _ELEMENT_DIRS, "read as absent")
-    return model.RoadLink(element_type, element_id, contact, element_s, element_dir, el.sourceline)
+    return model.RoadLink(element_type, element_id, contact, element_s, element_dir, el.sourceline, ctx.facts(el, LEAF))
 
 
 def _links(ctx: Context, el: etree._Element) -> tuple[RoadLink | None, RoadLink | None]:
@@ -195,12 +218,10 @@ def _links(ctx: Context, el: etree._Element) -> tuple[RoadLink | None, RoadLink 
 
 
 # ---------------------------------------------------------------------------------------------------------- road
-def _count(el: etree._Element, tag: str) -> int:
-    return sum(1 for _ in el.iterchildren(tag))
-
-
 #: Children of ``<road>`` that may appear at most once.
 _ONCE = frozenset({"link", "planView", "elevationProfile", "lateralProfile", "objects", "signals"})
+#: Children of ``<road>`` the reader reads (the others are unknown there).
+_ROAD = _ONCE | {"lanes", "type", "surface", "railroad"}
 
 
 def build_road(ctx: Context, el: etree._Element) -> Road | None:
@@ -217,13 +238,18 @@ def build_road(ctx: Context, el: etree._Element) -> Road | None:
         ctx.road = None
 
 
-def _children(ctx: Context, el: etree._Element) -> tuple[dict[str, etree._Element], list[etree._Element]]:
-    """The first of each child of a road that may appear once (a repeated one is reported and skipped), and its
-    ``<lanes>`` (one per lane layer in 1.9: :func:`build_layers` sorts them out)."""
+def _children(
+    ctx: Context, el: etree._Element
+) -> tuple[dict[str, etree._Element], list[etree._Element], tuple[str, ...]]:
+    """The first of each child of a road that may appear once (a repeated one is reported and skipped) or that the
+    reader reads once (``<surface>``, ``<railroad>``); its ``<lanes>`` (one per lane layer in 1.9: :func:`build_layers`
+    sorts them out); and the tags of all its children."""
     first: dict[str, etree._Element] = {}
     lanes: list[etree._Element] = []
+    tags = []
     for child in el:
         tag = child.tag
+        tags.append(tag)
         if tag == "lanes":
             lanes.append(child)
         elif tag in _ONCE:
@@ -231,7 +257,9 @@ def _children(ctx: Context, el: etree._Element) -> tuple[dict[str, etree._Elemen
                 ctx.repeated(child, first[tag], RU.GEOMETRY_ONLY_ONE_REFLINE if tag == "planView" else None)
             else:
                 first[tag] = child
-    return first, lanes
+        elif (tag == "surface" or tag == "railroad") and tag not in first:
+            first[tag] = child
+    return first, lanes, tuple(tags)
 
 
 def _reference_line(ctx: Context, el: etree._Element, plan_view: etree._Element | None) -> tuple[Geometry, ...]:
@@ -273,9 +301,70 @@ def _junction(ctx: Context, el: etree._Element) -> str | None:
     return junction
 
 
+def _lateral(ctx: Context, el: etree._Element | None) -> tuple[Profile, tuple[Shape, ...], CrossSectionSurface | None]:
+    """The superelevation profile, the shapes and the cross section surface of a ``<lateralProfile>``."""
+    if el is None:
+        return (), (), None
+    superelevation = cubics(ctx, el, "superelevation", RU.SUPERELEVATION_ORDER)
+    shapes: tuple[Shape, ...] = ()
+    surface = None
+    if len(el) > len(superelevation):  # more than superelevations: read here, most roads have none
+        from xodrcheck.reader import road_records
+
+        shapes = tuple(road_records.shape(ctx, child) for child in el.iterchildren("shape"))
+        found = el.find("crossSectionSurface")
+        surface = None if found is None else road_records.cross_section_surface(ctx, found)
+    return superelevation, shapes, surface
+
+
+def _records(
+    ctx: Context, el: etree._Element, first: dict[str, etree._Element]
+) -> tuple[tuple[RoadType, ...], Surface | None, Railroad | None]:
+    """The road's types, surface and railroad (read by :mod:`.road_records`, loaded for a road that has one)."""
+    if el.find("type") is None and "surface" not in first and "railroad" not in first:
+        return (), None, None
+    from xodrcheck.reader import road_records
+
+    types = tuple(road_records.road_type(ctx, child) for child in el.iterchildren("type"))
+    surface = None if "surface" not in first else road_records.surface(ctx, first["surface"])
+    railroad = None if "railroad" not in first else road_records.railroad(ctx, first["railroad"])
+    return types, surface, railroad
+
+
+#: What a road without ``<objects>`` holds: no objects, references, tunnels or bridges.
+_NO_OBJECTS: tuple[tuple[RoadObject, ...], tuple[ObjectReference, ...], tuple[Tunnel, ...], tuple[Bridge, ...]] = (
+    (),
+    (),
+    (),
+    (),
+)
+
+
+def _objects(
+    ctx: Context, road_id: str, first: dict[str, etree._Element]
+) -> tuple[tuple[RoadObject, ...], tuple[ObjectReference, ...], tuple[Tunnel, ...], tuple[Bridge, ...]]:
+    """The road's objects, object references, tunnels and bridges."""
+    if "objects" not in first:
+        return _NO_OBJECTS
+    from xodrcheck.reader.objects import read_objects
+
+    found = read_objects(ctx, road_id, first["objects"])
+    return found.objects, found.references, found.tunnels, found.bridges
+
+
+def _signals(
+    ctx: Context, road_id: str, first: dict[str, etree._Element]
+) -> tuple[tuple[Signal, ...], tuple[SignalReference, ...]]:
+    if "signals" not in first:
+        return (), ()
+    from xodrcheck.reader.signals import read_signals
+
+    return read_signals(ctx, road_id, first["signals"])
+
+
 def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
     get = el.get
-    first, lanes = _children(ctx, el)
+    first, lanes, tags = _children(ctx, el)
     plan_view = _reference_line(ctx, el, first.get("planView"))
     length = _length(ctx, el, plan_view)
     junction = _junction(ctx, el)
@@ -290,24 +379,21 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
         pred, succ = _links(ctx, link)
 
     elevation: Profile = ()
-    superelevation: Profile = ()
     if "elevationProfile" in first:
         elevation = cubics(ctx, first["elevationProfile"], "elevation", RU.ELEVATION_ORDER)
-    if "lateralProfile" in first:
-        superelevation = cubics(ctx, first["lateralProfile"], "superelevation", RU.SUPERELEVATION_ORDER)
+    superelevation, shapes, cross_section = _lateral(ctx, first.get("lateralProfile"))
 
-    temporary = None
+    permanent = temporary = None
     if not lanes:
         ctx.report(
             R.MISSING_ELEMENT, f"{describe(el)} has no <lanes>; the road has no lanes", el, uid=LANE_SECTION_REQUIRED
         )
-        lane_offset: Profile = ()
-        sections: tuple = ()
     else:
-        lane_offset, sections, temporary = build_layers(ctx, lanes)
+        permanent, temporary = build_layers(ctx, lanes)
 
-    objects = first.get("objects")
-    signals = first.get("signals")
+    types, surface, railroad = _records(ctx, el, first)
+    objects, object_references, tunnels, bridges = _objects(ctx, road_id, first)
+    signals, references = _signals(ctx, road_id, first)
     return model.Road(
         road_id,
         length,
@@ -319,10 +405,21 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
         plan_view,
         elevation,
         superelevation,
-        lane_offset,
-        sections,
-        0 if objects is None else _count(objects, "object"),
-        0 if signals is None else _count(signals, "signal"),
+        () if permanent is None else permanent.lane_offset,
+        () if permanent is None else permanent.lane_sections,
+        objects,
+        signals,
         el.sourceline,
         temporary,
+        permanent,
+        types,
+        shapes,
+        cross_section,
+        surface,
+        railroad,
+        object_references,
+        tunnels,
+        bridges,
+        references,
+        ctx.facts(el, _ROAD, children=tags),
     )

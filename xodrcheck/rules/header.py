@@ -15,7 +15,6 @@ from xodrcheck.geometry.planview import evaluate_element
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.xmlvalues import local
 
 #: Longest stretch of a reference line between two of the points :func:`_extent` takes (metres): an arc of radius
 #: 50 m bulges 6 cm between points this far apart.
@@ -106,7 +105,6 @@ _REGULATION_CONTENT = frozenset({"speed", "priority", "userData", "include", "da
     Category.HEADER,
     Severity.ERROR,
     uids=(U.DEFAULT_REGULATIONS_ONLY_SPEED_PRIORITY,),
-    xml=True,
 )
 def default_regulations_content(ctx: Context):
     """The header's ``<defaultRegulations>`` use a signal semantic other than ``<speed>`` and ``<priority>``.
@@ -124,26 +122,26 @@ def default_regulations_content(ctx: Context):
 
         <roadRegulations type="town"><semantics><prohibited/></semantics>
     """
-    if ctx.data is None or b"defaultRegulations" not in ctx.data or ctx.tree is None:
+    header = ctx.document.header
+    regulations = None if header is None else header.default_regulations
+    if regulations is None:
         return
-    for regulations in ctx.tree.getroot().iterfind("{*}header/{*}defaultRegulations"):
-        for semantics in regulations.iterfind(".//{*}semantics"):
-            for el in semantics:
-                name = local(el)
-                if name and name not in _REGULATION_CONTENT:
-                    owner = semantics.getparent()
-                    yield default_regulations_content.finding(
-                        f"the default regulations' <{local(owner)}> (line {owner.sourceline}) use <{name}>: only "
-                        "<speed> and <priority> may be used in <defaultRegulations>; give it on the roads or "
-                        "signals it concerns",
-                        line=el.sourceline,
-                    )
+    owners = [(owner.line, "roadRegulations", owner.semantics) for owner in regulations.road_regulations]
+    owners += [(owner.line, "signalRegulations", owner.semantics) for owner in regulations.signal_regulations]
+    for line, tag, semantics in sorted(owners, key=lambda owner: owner[0]):
+        for item in () if semantics is None else semantics.items:
+            if item.kind not in _REGULATION_CONTENT:
+                yield default_regulations_content.finding(
+                    f"the default regulations' <{tag}> (line {line}) use <{item.kind}>: only <speed> and "
+                    "<priority> may be used in <defaultRegulations>; give it on the roads or signals it concerns",
+                    line=item.line,
+                )
 
 
 _PROJ_DEFINITION = re.compile(r"\+(?:proj|init)=\S+|(?<![=:\w])EPSG:\d+", re.IGNORECASE)
 
 
-@rule("H003", "projection-repeated", Category.HEADER, Severity.ERROR, uids=(U.HEADER_MAX_ONE_PROJ,), xml=True)
+@rule("H003", "projection-repeated", Category.HEADER, Severity.ERROR, uids=(U.HEADER_MAX_ONE_PROJ,))
 def projection_repeated(ctx: Context):
     """The map defines its projection more than once: several ``<geoReference>`` elements, or one whose PROJ string
     holds several definitions.
@@ -161,25 +159,21 @@ def projection_repeated(ctx: Context):
         <geoReference><![CDATA[+proj=utm +zone=32 +ellps=GRS80 +units=m +no_defs]]></geoReference>
         <geoReference><![CDATA[+proj=tmerc +lat_0=49 +lon_0=8 +ellps=GRS80 +units=m]]></geoReference>
     """
-    if ctx.tree is None:
-        return
-    header = next(ctx.tree.getroot().iterchildren("{*}header"), None)
-    if header is None:
-        return
-    found = list(header.iterchildren("{*}geoReference"))
+    header = ctx.document.header
+    found = () if header is None else header.geo_references
     if len(found) > 1:
-        lines = ", ".join(str(el.sourceline) for el in found)
+        lines = ", ".join(str(reference.line) for reference in found)
         yield projection_repeated.finding(
             f"the header has {len(found)} <geoReference> elements (lines {lines}): one projection only; keep the one "
             "the coordinates are in",
-            line=found[1].sourceline,
+            line=found[1].line,
         )
-    for el in found:
-        definitions = _PROJ_DEFINITION.findall("".join(el.itertext()))
+    for reference in found:
+        definitions = _PROJ_DEFINITION.findall(reference.text)
         if len(definitions) > 1:
             yield projection_repeated.finding(
-                f"the <geoReference> at line {el.sourceline} holds {len(definitions)} projection definitions "
+                f"the <geoReference> at line {reference.line} holds {len(definitions)} projection definitions "
                 f"({', '.join(definitions)}): one PROJ string defines one projection; keep the one the coordinates "
                 "are in",
-                line=el.sourceline,
+                line=reference.line,
             )

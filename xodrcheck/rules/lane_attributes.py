@@ -1,16 +1,17 @@
 """Lane attributes (``L014``-``L016``, ``L023``): ``level``, ``access`` and ``direction`` values that contradict each
-other or the road."""
+other or the road. Read from the document: the lanes of every lane layer."""
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import DRIVABLE_LANE_TYPES as DRIVABLE
-from xodrcheck.model import LaneType
+from xodrcheck.model import Lane, LaneAccess, LaneDirection, LaneSection, Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane import joints, pair_key, side_lanes
-from xodrcheck.rules.lane_xml import by_section
 from xodrcheck.rules.registry import rule
 
 
@@ -86,7 +87,7 @@ def lane_level_changes(ctx: Context):
                 )
 
 
-@rule("L016", "lane-access-mixed", Category.LANE, Severity.ERROR, uids=(U.ACCESS_NO_MIX,), every_version=True, xml=True)
+@rule("L016", "lane-access-mixed", Category.LANE, Severity.ERROR, uids=(U.ACCESS_NO_MIX,), every_version=True)
 def lane_access_mixed(ctx: Context):
     """A lane's ``<access>`` records mix ``rule="allow"`` and ``rule="deny"`` at one ``sOffset``.
 
@@ -101,26 +102,45 @@ def lane_access_mixed(ctx: Context):
 
         <access sOffset="0" rule="allow" restriction="bus"/><access sOffset="0" rule="deny" restriction="truck"/>
     """
-    if ctx.data is None or b"<access" not in ctx.data or ctx.tree is None:
-        return
-    for lane in ctx.tree.iter("lane"):
-        rules: dict[str, tuple[str, int]] = {}
-        for access in lane.iterchildren("access"):
-            rule_ = access.get("rule")
-            offset = (access.get("sOffset") or "").strip()
-            if rule_ is None:
-                continue
-            key = _offset_key(offset)
-            if key in rules and rules[key][0] != rule_:
-                road = next((a for a in access.iterancestors("road")), None)
-                yield lane_access_mixed.finding(
-                    f"lane {lane.get('id')} of road {road.get('id') if road is not None else '?'}: access records at "
-                    f'sOffset {offset} mix rule="{rules[key][0]}" (line {rules[key][1]}) and rule="{rule_}"',
-                    road=road.get("id") if road is not None else None,
-                    lane=_int(lane.get("id")),
-                    line=access.sourceline,
-                )
-            rules.setdefault(key, (rule_, access.sourceline or 0))
+    for road, section in _sections(ctx):
+        for lane in (*section.left, *section.center, *section.right):
+            rules: dict[str, tuple[str, int]] = {}
+            for access in lane.access:
+                rule_ = _rule(access)
+                if rule_ is None:
+                    continue
+                offset = _offset(access)
+                key = _offset_key(offset)
+                if key in rules and rules[key][0] != rule_:
+                    yield lane_access_mixed.finding(
+                        f"lane {lane.id} of road {road.id}: access records at sOffset {offset} mix "
+                        f'rule="{rules[key][0]}" (line {rules[key][1]}) and rule="{rule_}"',
+                        road=road.id,
+                        lane=lane.id,
+                        line=access.line,
+                    )
+                rules.setdefault(key, (rule_, access.line))
+
+
+def _sections(ctx: Context) -> Iterator[tuple[Road, LaneSection]]:
+    """Every lane section of every lane layer (the permanent one, then the temporary one) of every road."""
+    for road in ctx.document.roads:
+        for layer in (road.lanes, road.temporary_lanes):
+            if layer is not None:
+                for section in layer.lane_sections:
+                    yield road, section
+
+
+def _rule(access: LaneAccess) -> str | None:
+    """The access record's ``rule`` as written (``None``: absent)."""
+    return access.rule.value if access.rule is not None else access.xml.text("rule")
+
+
+def _offset(access: LaneAccess) -> str:
+    """The access record's ``sOffset``: the value, or its text when it is not a number ('' when absent)."""
+    if access.s is not None:
+        return metres(access.s)
+    return (access.xml.text("sOffset") or "").strip()
 
 
 def _offset_key(text: str) -> str:
@@ -130,24 +150,12 @@ def _offset_key(text: str) -> str:
         return text
 
 
-def _int(text: str | None) -> int | None:
-    try:
-        return int(text) if text is not None else None
-    except ValueError:
-        return None
-
-
-#: Lane types by their spelling in lower case (the reader's matching, without regard to case).
-_TYPES = {t.value.lower(): t for t in LaneType}
-
-
 @rule(
     "L023",
     "lane-direction-reverses-traffic",
     Category.LANE,
     Severity.ERROR,
     uids=(U.LANE_REVERSE_LEFT_RIGHT,),
-    xml=True,
 )
 def lane_direction_reverses_traffic(ctx: Context):
     """Every drivable lane of a lane section has ``direction="reversed"``: the road's traffic rule is turned round.
@@ -168,17 +176,24 @@ def lane_direction_reverses_traffic(ctx: Context):
         <left><lane id="1" type="driving" direction="reversed"/></left>
         <right><lane id="-1" type="driving" direction="reversed"/></right>
     """
-    for lanes in by_section(ctx):
-        drivable = [
-            lane
-            for lane in lanes
-            if lane.group != "center" and _TYPES.get((lane.element.get("type") or "").strip().lower()) in DRIVABLE
-        ]
-        if drivable and all(lane.element.get("direction") == "reversed" for lane in drivable):
+    for road, section in _sections(ctx):
+        drivable = [lane for lane in _side_lanes_as_written(section) if lane.type in DRIVABLE]
+        if drivable and all(lane.direction is LaneDirection.REVERSED for lane in drivable):
             first = drivable[0]
             ids = ", ".join(str(lane.id) for lane in drivable)
             yield lane_direction_reverses_traffic.finding(
-                f'{first.describe()}: every drivable lane of the lane section ({ids}) has direction="reversed", '
-                "which turns the road's traffic rule round; set the road's rule (RHT/LHT) instead",
-                **first.where(),
+                f"road {road.id} lane {first.id} (lane section s={metres(section.s)}): every drivable lane of the "
+                f'lane section ({ids}) has direction="reversed", which turns the road\'s traffic rule round; set the '
+                "road's rule (RHT/LHT) instead",
+                road=road.id,
+                lane=first.id,
+                section_s=section.s,
+                s=section.s,
+                line=first.line,
             )
+
+
+def _side_lanes_as_written(section: LaneSection) -> list[Lane]:
+    """The lanes of the section's ``<left>`` and ``<right>``, in the order the file lists them."""
+    groups = dict.fromkeys(tag for tag in section.xml.children if tag in ("left", "right")) or ("left", "right")
+    return [lane for group in groups for lane in (section.left if group == "left" else section.right)]

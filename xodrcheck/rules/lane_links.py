@@ -13,13 +13,14 @@ from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, link_at
 from xodrcheck.rules.lane import joints, side_lanes
 from xodrcheck.rules.lane_joints import Joint, opposed
-from xodrcheck.rules.lane_xml import lane_elements
 from xodrcheck.rules.registry import rule
 
 _WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}
+#: What a lane's ``<link>`` holds when it is not empty.
+_LINK_TARGETS = frozenset(_WORD.values())
 
 
-@rule("L024", "lane-link-not-omitted", Category.LANE, Severity.ERROR, uids=(U.LINK_NO_LINK,), xml=True)
+@rule("L024", "lane-link-not-omitted", Category.LANE, Severity.ERROR, uids=(U.LINK_NO_LINK,))
 def lane_link_not_omitted(ctx: Context):
     """A lane has a ``<link>`` with nothing in it, or lane links where its road starts or ends in a junction.
 
@@ -39,14 +40,21 @@ def lane_link_not_omitted(ctx: Context):
         <road id="1" ...><link><successor elementType="junction" elementId="100"/></link>
           ... <lane id="-1" type="driving"><link><successor id="-1"/></link><width .../></lane>
     """
-    for lane_xml in lane_elements(ctx).lanes:
-        for link in lane_xml.element.iterchildren("{*}link"):
-            if next(link.iterchildren("{*}predecessor", "{*}successor"), None) is None:
-                yield lane_link_not_omitted.finding(
-                    f"{lane_xml.describe()}: the lane's <link> (line {link.sourceline}) holds no predecessor or "
-                    "successor; leave the empty <link> out",
-                    **lane_xml.where(link.sourceline),
-                )
+    for road in ctx.document.roads:
+        for layer in (road.lanes, road.temporary_lanes):
+            for section in () if layer is None else layer.lane_sections:
+                for lane in (*section.left, *section.center, *section.right):
+                    own = lane.link
+                    if own is not None and not any(tag in _LINK_TARGETS for tag in own.xml.children):
+                        yield lane_link_not_omitted.finding(
+                            f"road {road.id} lane {lane.id} (lane section s={metres(section.s)}): the lane's <link> "
+                            f"(line {own.line}) holds no predecessor or successor; leave the empty <link> out",
+                            road=road.id,
+                            lane=lane.id,
+                            section_s=section.s,
+                            s=section.s,
+                            line=own.line,
+                        )
     for road in ctx.document.roads:
         if not road.lane_sections:
             continue

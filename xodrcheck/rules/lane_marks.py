@@ -4,13 +4,11 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from lxml import etree
-
 from xodrcheck.findings import Category, Finding, Severity
+from xodrcheck.model import Lane, RoadMark, RoadMarkLine
 from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.lane_xml import LaneXml, lane_elements, number
 from xodrcheck.rules.registry import rule
 
 _NOT_CHECKED = (
@@ -20,10 +18,11 @@ _NOT_CHECKED = (
 )
 
 
-def _lines(mark: etree._Element) -> Iterator[etree._Element]:
-    """The ``<line>`` elements of a road mark's ``<type>`` and ``<explicit>``."""
-    for holder in mark.iterchildren("{*}type", "{*}explicit"):
-        yield from holder.iterchildren("{*}line")
+def _lines(mark: RoadMark) -> Iterator[RoadMarkLine]:
+    """The ``<line>`` records of a road mark's ``<type>`` and ``<explicit>``."""
+    for holder in (mark.type_lines, mark.explicit):
+        if holder is not None:
+            yield from holder.lines
 
 
 @rule(
@@ -32,7 +31,6 @@ def _lines(mark: etree._Element) -> Iterator[etree._Element]:
     Category.LANE,
     Severity.ERROR,
     partial={U.ROAD_MARK_ONLY_OUTER: _NOT_CHECKED},
-    xml=True,
 )
 def road_mark_off_outer_border(ctx: Context) -> Iterator[Finding]:
     """A lane's ``<roadMark>`` draws its line in the inner half of the lane, not on the lane's outer border.
@@ -56,50 +54,38 @@ def road_mark_off_outer_border(ctx: Context) -> Iterator[Finding]:
         <roadMark sOffset="0" type="solid"><type name="inner" width="0.15">
           <line length="0" space="0" tOffset="3.5" sOffset="0" width="0.15"/></type></roadMark>
     """
-    for lane in lane_elements(ctx).lanes:
-        if lane.group == "center" or lane.id in (None, 0):
-            continue
-        for mark in lane.element.iterchildren("{*}roadMark"):
-            if next(mark.iterchildren("{*}sway"), None) is not None:
-                continue
-            finding = _inner_line(ctx, lane, mark)
-            if finding is not None:
-                yield finding
+    for road in ctx.document.roads:
+        for index, section in enumerate(road.lane_sections):
+            for lane in (*section.left, *section.right):
+                for mark in lane.road_marks:
+                    if mark.sways or lane.id == 0:
+                        continue
+                    lines = [(line, line.t_offset) for line in _lines(mark) if line.t_offset is not None]
+                    if not lines:
+                        continue
+                    width = ctx.lane_width(road, index, lane.id, section.s + mark.s)
+                    if width is None or width <= 0.0:
+                        continue
+                    inward = 1.0 if lane.id < 0 else -1.0  # toward lane 0: +t for right lanes, -t for left lanes
+                    for line, t in lines:
+                        if t * inward > width / 2:
+                            yield _inner_line(road.id, section.s, lane, mark, line, t, width)
+                            break
 
 
-def _inner_line(ctx: Context, lane: LaneXml, mark: etree._Element) -> Finding | None:
-    """The finding for the first line of ``mark`` nearer the lane's inner border than its outer one, if any."""
-    lines: list[tuple[etree._Element, float]] = []
-    for line in _lines(mark):
-        t = number(line.get("tOffset"))
-        if t is not None:
-            lines.append((line, t))
-    if not lines:
-        return None
-    width = _width(ctx, lane, number(mark.get("sOffset")) or 0.0)
-    if width is None or width <= 0.0:
-        return None
-    inward = 1.0 if (lane.id or 0) < 0 else -1.0  # toward lane 0: +t for right lanes, -t for left lanes
-    for line, t in lines:
-        if t * inward > width / 2:
-            return road_mark_off_outer_border.finding(
-                f"{lane.describe()}: the <roadMark> at line {mark.sourceline} draws a line with tOffset={metres(t)}, "
-                f"{metres(abs(t))} m from the lane's outer border toward its inside, in a lane {metres(width)} m wide: "
-                "a road mark describes only the outer border's line; give the inner border's line to the lane "
-                "whose outer border it is (or lane 0), and a marking inside the lane as a signal",
-                uid=U.ROAD_MARK_ONLY_OUTER,
-                **lane.where(line.sourceline),
-            )
-    return None
-
-
-def _width(ctx: Context, lane: LaneXml, s_offset: float) -> float | None:
-    """The lane's width at the road mark's start (``None`` when the model has no such lane or road)."""
-    road = ctx.road(lane.road)
-    start = lane.section.s
-    if road is None or start is None or lane.id is None:
-        return None
-    for index, section in enumerate(road.lane_sections):
-        if section.line == lane.section.element.sourceline and section.lane(lane.id) is not None:
-            return ctx.lane_width(road, index, lane.id, start + s_offset)
-    return None
+def _inner_line(
+    road: str, section_s: float, lane: Lane, mark: RoadMark, line: RoadMarkLine, t: float, width: float
+) -> Finding:
+    """The finding for a line of ``mark`` nearer the lane's inner border than its outer one."""
+    return road_mark_off_outer_border.finding(
+        f"road {road} lane {lane.id} (lane section s={metres(section_s)}): the <roadMark> at line {mark.line} draws a "
+        f"line with tOffset={metres(t)}, {metres(abs(t))} m from the lane's outer border toward its inside, in a lane "
+        f"{metres(width)} m wide: a road mark describes only the outer border's line; give the inner border's line to "
+        "the lane whose outer border it is (or lane 0), and a marking inside the lane as a signal",
+        uid=U.ROAD_MARK_ONLY_OUTER,
+        road=road,
+        lane=lane.id,
+        section_s=section_s,
+        s=section_s,
+        line=line.line,
+    )

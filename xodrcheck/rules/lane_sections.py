@@ -3,24 +3,25 @@ lane; every lane section has a lane to drive on and ends on its road."""
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+
 from xodrcheck.findings import Category, Severity
+from xodrcheck.model import Lane, Lanes, Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.lane_xml import SectionXml, lane_elements, number
 from xodrcheck.rules.registry import rule
 
 #: A lane section starting this close to s=0 starts at 0 (written-number noise, not a tolerance).
 _ZERO = 1e-9
 
 
-def permanent_sections(ctx: Context) -> dict[str, list[SectionXml]]:
-    """Road id -> the lane sections of its permanent lane layer (every ``<lanes>`` not marked temporary)."""
-    out: dict[str, list[SectionXml]] = {}
-    for section in lane_elements(ctx).sections:
-        if section.layer != "temporary" and section.road is not None:
-            out.setdefault(section.road, []).append(section)
-    return out
+def _layers(ctx: Context) -> Iterator[tuple[Road, Lanes]]:
+    """Every lane layer of every road: its permanent ``<lanes>``, then its temporary one."""
+    for road in ctx.document.roads:
+        for layer in (road.lanes, road.temporary_lanes):
+            if layer is not None:
+                yield road, layer
 
 
 @rule(
@@ -29,7 +30,6 @@ def permanent_sections(ctx: Context) -> dict[str, list[SectionXml]]:
     Category.LANE,
     Severity.ERROR,
     uids=(U.CENTER_ELEM_DEFINITION, U.LANE_SECT_FIRST),
-    xml=True,
 )
 def lane_sections_from_start(ctx: Context):
     """A road's first lane section starts after s=0: from the road's start to there, no lane section, no centre lane.
@@ -49,20 +49,20 @@ def lane_sections_from_start(ctx: Context):
 
         <road id="1" length="100"> ... <lanes><laneSection s="5"> ...
     """
-    for road, sections in permanent_sections(ctx).items():
-        starts = [(section.s, section) for section in sections if section.s is not None]
-        if not starts:
+    for road in ctx.document.roads:
+        if not road.lane_sections:
             continue
-        s, first = min(starts, key=lambda item: item[0])
+        first = min(road.lane_sections, key=lambda section: section.s)
+        s = first.s
         if s > _ZERO:
             yield lane_sections_from_start.finding(
-                f"road {road}: the first lane section starts at s={metres(s)}; from s=0 to there the road has no lane "
-                "section and no centre lane: start the first lane section at s=0",
+                f"road {road.id}: the first lane section starts at s={metres(s)}; from s=0 to there the road has no "
+                "lane section and no centre lane: start the first lane section at s=0",
                 uid=U.LANE_SECT_FIRST if ctx.version is None or ctx.version >= (1, 9) else U.CENTER_ELEM_DEFINITION,
-                road=road,
+                road=road.id,
                 section_s=s,
                 s=0.0,
-                line=first.element.sourceline,
+                line=first.line,
             )
 
 
@@ -72,7 +72,6 @@ def lane_sections_from_start(ctx: Context):
     Category.LANE,
     Severity.WARNING,
     uids=(U.LANE_SECTION_DRIVABLE,),
-    xml=True,
 )
 def lane_section_without_lanes(ctx: Context):
     """A lane section has no side lane whose width is given from the section's start: nothing to drive on.
@@ -91,37 +90,32 @@ def lane_section_without_lanes(ctx: Context):
 
         <laneSection s="0"><center><lane id="0" type="none"/></center></laneSection>
     """
-    lanes_of: dict[int, list] = {}
-    for lane in lane_elements(ctx).lanes:
-        lanes_of.setdefault(id(lane.section), []).append(lane)
-    for section in lane_elements(ctx).sections:
-        side = [lane for lane in lanes_of.get(id(section), ()) if lane.group != "center"]
-        if not any(_from_start(lane) for lane in side):
-            what = "has no <left> or <right> lane" if not side else "has no side lane whose width starts at sOffset 0"
-            yield lane_section_without_lanes.finding(
-                f"road {section.road}: the {section.layer} layer's lane section at s={_s(section)} {what}: no part of "
-                "it is valid for the section's whole length, so it is not drivable",
-                road=section.road,
-                section_s=section.s,
-                s=section.s,
-                line=section.element.sourceline,
-            )
+    for road, layer in _layers(ctx):
+        for section in layer.lane_sections:
+            side = (*section.left, *section.right)
+            if not any(_from_start(lane) for lane in side):
+                what = (
+                    "has no <left> or <right> lane" if not side else "has no side lane whose width starts at sOffset 0"
+                )
+                yield lane_section_without_lanes.finding(
+                    f"road {road.id}: the {layer.layer.value} layer's lane section at s={metres(section.s)} {what}: no "
+                    "part of it is valid for the section's whole length, so it is not drivable",
+                    road=road.id,
+                    section_s=section.s,
+                    s=section.s,
+                    line=section.line,
+                )
 
 
-def _from_start(lane) -> bool:
-    for tag in ("width", "border"):
-        read = [number(r.get("sOffset")) for r in lane.element.iterchildren(f"{{*}}{tag}")]
-        starts = [s for s in read if s is not None]
-        if starts:
-            return min(starts) <= _ZERO
+def _from_start(lane: Lane) -> bool:
+    """Whether the lane's width (its width records, else its border records) is given from the section's start."""
+    for records in (lane.widths, lane.borders):
+        if records:
+            return min(record.s for record in records) <= _ZERO
     return False
 
 
-def _s(section: SectionXml) -> str:
-    return "?" if section.s is None else f"{metres(section.s)}"
-
-
-@rule("L028", "lane-section-beyond-road", Category.LANE, Severity.ERROR, uids=(U.SECTION_LENGTH_LIMIT_ROAD,), xml=True)
+@rule("L028", "lane-section-beyond-road", Category.LANE, Severity.ERROR, uids=(U.SECTION_LENGTH_LIMIT_ROAD,))
 def lane_section_beyond_road(ctx: Context):
     """A lane section with a ``length`` runs past the end of its road.
 
@@ -136,18 +130,19 @@ def lane_section_beyond_road(ctx: Context):
 
         <lanes layer="temporary"><laneSection s="80" length="30"> ...
     """
-    for section in lane_elements(ctx).sections:
-        length = number(section.element.get("length"))
-        road = ctx.road(section.road)
-        if length is None or section.s is None or road is None:
-            continue
-        end = section.s + length
-        if end > road.length + ctx.tolerances.length_abs:
-            yield lane_section_beyond_road.finding(
-                f"road {road.id}: the lane section at s={metres(section.s)} with length={metres(length)} ends at "
-                f"s={metres(end)}, {end - road.length:.4g} m past the road's end ({metres(road.length)}); shorten it",
-                road=road.id,
-                section_s=section.s,
-                s=section.s,
-                line=section.element.sourceline,
-            )
+    for road, layer in _layers(ctx):
+        for section in layer.lane_sections:
+            length = section.length
+            if length is None:
+                continue
+            end = section.s + length
+            if end > road.length + ctx.tolerances.length_abs:
+                yield lane_section_beyond_road.finding(
+                    f"road {road.id}: the lane section at s={metres(section.s)} with length={metres(length)} ends at "
+                    f"s={metres(end)}, {end - road.length:.4g} m past the road's end ({metres(road.length)}); shorten "
+                    "it",
+                    road=road.id,
+                    section_s=section.s,
+                    s=section.s,
+                    line=section.line,
+                )

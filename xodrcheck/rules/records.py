@@ -11,12 +11,11 @@ import math
 from collections.abc import Iterator
 
 from xodrcheck.findings import Category, Finding, Severity
-from xodrcheck.model import Cubic, Lane, LaneSection, Line, Profile, Road
+from xodrcheck.model import Cubic, Lane, LaneSection, Line, Profile, Road, RoadType
 from xodrcheck.quantities import metres
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.road_records import road_records
 
 #: Relative floating-point noise under which two coefficients count as equal (a representation limit of the written
 #: numbers, not a checking tolerance).
@@ -50,7 +49,6 @@ def _redundant(profile: Profile) -> list[tuple[Cubic, Cubic]]:
     Severity.INFO,
     uids=(U.AVOID_REDUNDANT_INFO,),
     every_version=True,
-    xml=True,
 )
 def redundant_record(ctx: Context):
     """A record repeats what the previous one already says.
@@ -203,27 +201,33 @@ def _sections_with_unread_records(ctx: Context) -> set[int]:
     """Source lines of lane sections whose lanes carry records the model does not read (access, height, material,
     rule, a road mark's own lines...): such a section may differ from its neighbour in ways not compared here."""
     out: set[int] = set()
-    if ctx.tree is None:
-        return out
-    for section in ctx.tree.iter("{*}laneSection"):
-        for lane in section.iter("{*}lane"):
-            children = [c for c in lane if isinstance(c.tag, str)]
-            marks = [c for c in children if c.tag.rsplit("}", 1)[-1] == "roadMark"]
-            if any(c.tag.rsplit("}", 1)[-1] not in _READ for c in children) or any(len(m) for m in marks):
-                out.add(section.sourceline or 0)
-                break
+    for road in ctx.document.roads:
+        for section in road.lane_sections:
+            for lane in (*section.left, *section.center, *section.right):
+                if any(tag not in _READ for tag in lane.xml.children) or any(m.xml.children for m in lane.road_marks):
+                    out.add(section.line)
+                    break
     return out
 
 
 # ---------------------------------------------------------------------------------------------------- road types
 def _types(ctx: Context) -> Iterator[Finding]:
-    for road in road_records(ctx):
+    for road in ctx.document.roads:
         for prev, nxt in itertools.pairwise(t for t in road.types if t.s is not None):
-            if (prev.type, prev.country, prev.speed) == (nxt.type, nxt.country, nxt.speed):
+            if _type_key(prev) == _type_key(nxt):
                 yield redundant_record.finding(
-                    f"road {road.road}: the <type> at s={metres(nxt.s)} repeats the one at s={metres(prev.s)} (type "
+                    f"road {road.id}: the <type> at s={metres(nxt.s)} repeats the one at s={metres(prev.s)} (type "
                     f"{nxt.type}); a road type holds until the next one, so delete it",
-                    road=road.road,
+                    road=road.id,
                     s=nxt.s,
                     line=nxt.line,
                 )
+
+
+def _type_key(record: RoadType) -> tuple:
+    """What a road type says: its type, country and speed (``max`` as a value, or its text when that is not one)."""
+    speed = record.speed
+    if speed is None:
+        return (record.type, record.country, None)
+    written = speed.max if speed.max is not None else speed.xml.text("max")
+    return (record.type, record.country, (written, speed.unit))

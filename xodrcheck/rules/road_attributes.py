@@ -1,6 +1,6 @@
 """Road types, country codes, lateral shapes and the elevation profile's extent (``G052``-``G059``).
 
-Road types and shapes are not part of the model; they come from the file's XML (:mod:`.road_records`). Each rule
+Read from the document: a road's types, shapes and the country codes of its types, signals and signs. Each rule
 enforces a rule of ASAM OpenDRIVE 1.9.0 Annex F, named in its docstring.
 """
 
@@ -14,18 +14,17 @@ from collections.abc import Iterator
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.model import Road
+from xodrcheck.model import Road, Shape
 from xodrcheck.quantities import metres
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.road_records import Shape, road_records
 from xodrcheck.rules.sampled import section_lines, usable
 
 _ALPHA_2 = re.compile(r"[A-Z]{2}")
 
 
-@rule("G052", "road-type-out-of-order", Category.GEOMETRY, Severity.ERROR, uids=(U.TYPE_ORDER,), xml=True)
+@rule("G052", "road-type-out-of-order", Category.GEOMETRY, Severity.ERROR, uids=(U.TYPE_ORDER,))
 def road_type_out_of_order(ctx: Context):
     """A road's ``<type>`` records are not in ascending order of ``s``.
 
@@ -41,28 +40,28 @@ def road_type_out_of_order(ctx: Context):
 
         <type s="50" type="rural"/><type s="0" type="town"/>
     """
-    for road in road_records(ctx):
+    for road in ctx.document.roads:
         for prev, nxt in itertools.pairwise(t for t in road.types if t.s is not None):
             if nxt.s is not None and prev.s is not None and nxt.s < prev.s:  # (both are: filtered above)
                 yield road_type_out_of_order.finding(
-                    f"road {road.road}: the <type> at line {nxt.line} starts at s={metres(nxt.s)}, before the one at "
+                    f"road {road.id}: the <type> at line {nxt.line} starts at s={metres(nxt.s)}, before the one at "
                     f"line {prev.line} (s={metres(prev.s)}); write the road's types in ascending order of s",
-                    road=road.road,
+                    road=road.id,
                     s=nxt.s,
                     line=nxt.line,
                 )
                 break
 
 
-@rule("G053", "country-code-not-alpha2", Category.GEOMETRY, Severity.ERROR, uids=(U.TYPE_ALPHA_2,), xml=True)
+@rule("G053", "country-code-not-alpha2", Category.GEOMETRY, Severity.ERROR, uids=(U.TYPE_ALPHA_2,))
 def country_code_not_alpha2(ctx: Context):
     """A ``country`` attribute is not an ISO 3166-1 ALPHA-2 code (two capital letters).
 
     Only ALPHA-2 codes may be used, not ALPHA-3 codes, because only ALPHA-2 codes take the ISO 3166-2 state
     identifiers (Annex F ``road.type.only_alpha_2_country_codes``, 10.4). The schema still admits the deprecated
-    ALPHA-3 codes and country names (``USA``, ``Germany``); this rule does not. Every element with a ``country``
-    attribute is checked: road types, signals and signal boards alike, except that a signal's (or a sign's)
-    ``country="OpenDRIVE"`` names the types of the OpenDRIVE signal reference (traffic lights and the like, 14.1).
+    ALPHA-3 codes and country names (``USA``, ``Germany``); this rule does not. Every ``country`` is checked: of road
+    types, signals and the signs of static boards alike, except that a signal's (or a sign's) ``country="OpenDRIVE"``
+    names the types of the OpenDRIVE signal reference (traffic lights and the like, 14.1).
 
     Passes::
 
@@ -72,21 +71,29 @@ def country_code_not_alpha2(ctx: Context):
 
         <type s="0" type="town" country="DEU"/>
     """
-    if ctx.data is None or b"country" not in ctx.data or ctx.tree is None:
-        return
-    for el in ctx.tree.iterfind(".//*[@country]"):
-        code = el.get("country")
-        tag = el.tag.rsplit("}", 1)[-1] if isinstance(el.tag, str) else "?"
-        if _ALPHA_2.fullmatch(code) or (code == "OpenDRIVE" and tag != "type"):
-            continue
-        road = next(el.iterancestors("{*}road"), None)
-        road_id = road.get("id") if road is not None else None
-        yield country_code_not_alpha2.finding(
-            f"{f'road {road_id}: ' if road_id else ''}the <{tag}> at line {el.sourceline} has "
-            f'country="{code}", {_what_code(code)}; use the ISO 3166-1 ALPHA-2 code (two capital letters, e.g. "DE")',
-            road=road_id,
-            line=el.sourceline,
-        )
+    for road in ctx.document.roads:
+        for tag, line, code in _countries(road):
+            if _ALPHA_2.fullmatch(code) or (code == "OpenDRIVE" and tag != "type"):
+                continue
+            yield country_code_not_alpha2.finding(
+                f'{f"road {road.id}: " if road.id else ""}the <{tag}> at line {line} has country="{code}", '
+                f'{_what_code(code)}; use the ISO 3166-1 ALPHA-2 code (two capital letters, e.g. "DE")',
+                road=road.id,
+                line=line,
+            )
+
+
+def _countries(road: Road) -> Iterator[tuple[str, int, str]]:
+    """The tag, line and ``country`` of every element of ``road`` that gives one: its types, signals and signs."""
+    for record in road.types:
+        if record.country is not None:
+            yield "type", record.line, record.country
+    for signal in road.signals:
+        if signal.country is not None:
+            yield "signal", signal.line, signal.country
+        for sign in signal.signs:
+            if sign.country is not None:
+                yield "sign", sign.line, sign.country
 
 
 def _what_code(code: str) -> str:
@@ -97,7 +104,7 @@ def _what_code(code: str) -> str:
     return "not a country code" if code.strip() else "empty"
 
 
-@rule("G054", "shape-out-of-order", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPE_ORDER,), xml=True)
+@rule("G054", "shape-out-of-order", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPE_ORDER,))
 def shape_out_of_order(ctx: Context):
     """A road's ``<shape>`` records are not in ascending order, first of ``s``, then of ``t``.
 
@@ -113,16 +120,16 @@ def shape_out_of_order(ctx: Context):
 
         <shape s="0" t="0" .../><shape s="0" t="-4" .../>
     """
-    for road in road_records(ctx):
+    for road in ctx.document.roads:
         shapes = [sh for sh in road.shapes if sh.s is not None and sh.t is not None]
         for prev, nxt in itertools.pairwise(shapes):
             if (nxt.s, nxt.t) < (prev.s, prev.t):
                 which = "s" if nxt.s != prev.s else f"t at s={metres(nxt.s)}"
                 yield shape_out_of_order.finding(
-                    f"road {road.road}: the <shape> at line {nxt.line} (s={metres(nxt.s)}, t={metres(nxt.t)}) comes "
+                    f"road {road.id}: the <shape> at line {nxt.line} (s={metres(nxt.s)}, t={metres(nxt.t)}) comes "
                     f"after the one at line {prev.line} (s={metres(prev.s)}, t={metres(prev.t)}): {which} descends; "
                     "order the shapes by s, then by t",
-                    road=road.road,
+                    road=road.id,
                     s=nxt.s,
                     line=nxt.line,
                 )
@@ -157,7 +164,7 @@ def _right_edge(ctx: Context, road: Road) -> tuple[float, float] | None:
     return best
 
 
-@rule("G055", "shape-t-coverage", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPE_T_COVERAGE,), xml=True)
+@rule("G055", "shape-t-coverage", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPE_T_COVERAGE,))
 def shape_t_coverage(ctx: Context):
     """The ``<shape>`` records at some ``s`` do not cover the road's full width: the first starts left of the road's
     right edge.
@@ -177,25 +184,24 @@ def shape_t_coverage(ctx: Context):
         <shape s="0" t="-3.5" a="0" b="0.02" c="0" d="0"/>
     """
     tol = ctx.tolerances.position
-    for records in road_records(ctx):
-        if not records.shapes:
+    for road in ctx.document.roads:
+        if not road.shapes:
             continue
-        road = ctx.road(records.road)
-        edge = None if road is None else _right_edge(ctx, road)
+        edge = _right_edge(ctx, road)
         if edge is None:
             continue
         t_edge, s_edge = edge
-        geometry = ctx.geometry(records.road)
-        for s, group in shape_groups(records.shapes):
+        geometry = ctx.geometry(road.id)
+        for s, group in shape_groups(road.shapes):
             t_first = group[0].t
             if geometry is not None and t_first is not None and t_first > t_edge + tol:
                 first = group[0]
                 pose = geometry.reference(np.array([s]))
                 yield shape_t_coverage.finding(
-                    f"road {records.road}: the shapes at s={metres(s)} start at t={metres(t_first)}, but the road "
+                    f"road {road.id}: the shapes at s={metres(s)} start at t={metres(t_first)}, but the road "
                     f"reaches t={t_edge:.4g} (at s={s_edge:.4g}): the lateral profile leaves {t_first - t_edge:.4g} m "
                     f"of the road's width uncovered; start the first shape at t <= {t_edge:.4g}",
-                    road=records.road,
+                    road=road.id,
                     s=s,
                     x=float(pose.x[0]),
                     y=float(pose.y[0]),
@@ -203,7 +209,7 @@ def shape_t_coverage(ctx: Context):
                 )
 
 
-@rule("G056", "shapes-start-left", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPES_START_RIGHT,), xml=True)
+@rule("G056", "shapes-start-left", Category.GEOMETRY, Severity.ERROR, uids=(U.SHAPES_START_RIGHT,))
 def shapes_start_left(ctx: Context):
     """The ``<shape>`` records at some ``s`` do not start at the right side of the road: the first ``t`` is not
     negative.
@@ -220,14 +226,14 @@ def shapes_start_left(ctx: Context):
 
         <shape s="0" t="0" a="-0.1" b="0.02" c="0" d="0"/><shape s="0" t="3.5" a="-0.03" b="-0.02" c="0" d="0"/>
     """
-    for records in road_records(ctx):
-        for s, group in shape_groups(records.shapes):
+    for road in ctx.document.roads:
+        for s, group in shape_groups(road.shapes):
             first = group[0]
             if first.t is not None and first.t >= 0:  # (it has a t: shape_groups keeps those only)
                 yield shapes_start_left.finding(
-                    f"road {records.road}: the shapes at s={metres(s)} start at t={metres(first.t)}: shapes start at "
+                    f"road {road.id}: the shapes at s={metres(s)} start at t={metres(first.t)}: shapes start at "
                     "the right side of the road (a negative t) and run leftwards; add a shape at the right edge",
-                    road=records.road,
+                    road=road.id,
                     s=s,
                     line=first.line,
                 )
