@@ -14,6 +14,7 @@ import itertools
 from collections.abc import Iterable
 from dataclasses import dataclass
 
+from xodrcheck.findings import XodrError
 from xodrcheck.fix.xmltext import Element, XmlText, encode_value
 
 __all__ = [
@@ -29,7 +30,7 @@ __all__ = [
 ]
 
 
-class OverlapError(ValueError):
+class OverlapError(XodrError, ValueError):
     """Two edits of one pass touch the same bytes."""
 
 

@@ -18,10 +18,12 @@ import codecs
 import re
 from dataclasses import dataclass, field
 
+from xodrcheck.findings import XodrError
+
 __all__ = ["Attribute", "Element", "ScanError", "XmlText", "decode_value", "encode_value", "scan"]
 
 
-class ScanError(ValueError):
+class ScanError(XodrError, ValueError):
     """The bytes are not XML text this scanner can edit safely; the message says why."""
 
 

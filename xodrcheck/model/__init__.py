@@ -1,7 +1,7 @@
 """The OpenDRIVE document as plain, frozen, typed data: what :mod:`xodrcheck.reader` builds from a file and every
 rule, view and writer reads.
 
-Nothing here parses XML or evaluates geometry (:mod:`xodrcheck.geometry` and :mod:`xodrcheck.lanes` evaluate). One
+Nothing here parses XML or evaluates geometry (:mod:`xodrcheck.geometry` evaluates). One
 small class per element kind of the standard, numbers parsed once, enumerations where the standard has a closed list
 (:mod:`.enums`). Every record keeps its element's ``line`` and ``xml``, the facts about the XML itself (attributes
 given or defaulted, child order, unknown children, unparsable text: :mod:`.facts`, the one place they are kept).
