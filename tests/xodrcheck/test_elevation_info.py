@@ -6,8 +6,8 @@ import json
 
 import pytest
 
+from xodrcheck.analysis.elevation import elevation_info
 from xodrcheck.cli import main
-from xodrcheck.elevation_info import elevation_info
 from xodrcheck.reader import read
 
 ROAD = """  <road name="" length="100.0" id="{id}" junction="-1">

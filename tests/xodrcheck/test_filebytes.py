@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
-from xodrcheck import filebytes
-from xodrcheck.filebytes import FileBytes
+from xodrcheck.support import filebytes
+from xodrcheck.support.filebytes import FileBytes
 
 
 @pytest.mark.parametrize("chunk", [1, 3, 4, 7, 1 << 22])

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from xodrcheck.geometry.junction_grid import edge_polynomial, grid_points, grid_surface
 from xodrcheck.junction_elements import ElevationGrid, GridRow
-from xodrcheck.junction_grid import edge_polynomial, grid_points, grid_surface
 
 
 def _grid(rows: list[tuple[list[float], float, list[float]]], s0: float = 0.0, spacing: float = 1.0) -> ElevationGrid:

@@ -1,4 +1,4 @@
-"""Freed memory goes back to the system between the steps of a check (xodrcheck.memory)."""
+"""Freed memory goes back to the system between the steps of a check (xodrcheck.support.memory)."""
 
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import sys
 import pytest
 from lxml import etree
 
-from xodrcheck import memory
+from xodrcheck.support import memory
 
 GLIBC = sys.platform.startswith("linux") and ctypes.util.find_library("c") is not None
 

@@ -13,8 +13,8 @@ from scipy.integrate import quad
 
 from tests.xodrcheck.roadbuild import lane, section, width
 from xodrcheck.cli import main
-from xodrcheck.mesh import build_surfaces
-from xodrcheck.mesh_export import COLOURS, vertex_colours
+from xodrcheck.mesh.export import COLOURS, vertex_colours
+from xodrcheck.mesh.surfaces import build_surfaces
 from xodrcheck.model import (
     Arc,
     Cubic,
@@ -230,9 +230,9 @@ def test_derived_caches_die_with_their_document():
     import weakref
 
     from tests.xodrcheck.rules.helpers import fixture
-    from xodrcheck.footprint import overlap_index
     from xodrcheck.geometry.lanes import geometry_of
-    from xodrcheck.mesh import surfaces_of
+    from xodrcheck.mesh.footprint import overlap_index
+    from xodrcheck.mesh.surfaces import surfaces_of
     from xodrcheck.reader import read
 
     document = read(fixture("road-overlap", "fail.xodr")).document

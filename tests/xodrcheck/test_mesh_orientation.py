@@ -63,7 +63,7 @@ def sloped(tmp_path_factory) -> Path:
 @pytest.fixture(scope="module")
 def reference(sloped) -> np.ndarray:
     """The mesh's vertices in OpenDRIVE's own axes (x, y, z), as xodrcheck builds them."""
-    from xodrcheck.mesh import build_surfaces
+    from xodrcheck.mesh.surfaces import build_surfaces
     from xodrcheck.reader import read
 
     return build_surfaces(read(sloped).document, chord=0.05).vertices

@@ -14,9 +14,9 @@ import math
 
 import pytest
 
+from xodrcheck.analysis.metrics import LOOKBACK, complexity, map_metrics
 from xodrcheck.cli import main as cli_main
 from xodrcheck.config import Tolerances
-from xodrcheck.metrics import LOOKBACK, complexity, map_metrics
 from xodrcheck.model import JunctionType
 from xodrcheck.reader import read
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 from importlib import resources
 from pathlib import Path
 
-from xodrcheck import packagedata
+from xodrcheck.support import packagedata
 
 
 def test_data_folders_on_disk_are_paths_with_the_same_files():

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from xodrcheck.quantities import metres
+from xodrcheck.support.quantities import metres
 
 
 @pytest.mark.parametrize(

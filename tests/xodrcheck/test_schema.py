@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 from lxml import etree
 
-from xodrcheck import schema
+from xodrcheck.schema import validate as schema
 
 
 @pytest.mark.parametrize("version", sorted(schema.SCHEMA_FOLDERS))

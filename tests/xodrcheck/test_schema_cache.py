@@ -1,6 +1,6 @@
-"""The XSD 1.1 schemas of OpenDRIVE 1.8 and 1.9 cached in the user's cache folder (:func:`xodrcheck.schema._xsd11`):
-a schema loaded from the cache gives the same verdicts and the same errors as one just built, and the cache is only a
-cache (damaged, foreign, of other files: built again)."""
+"""The XSD 1.1 schemas of OpenDRIVE 1.8 and 1.9 cached in the user's cache folder
+(:func:`xodrcheck.schema.validate._xsd11`): a schema loaded from the cache gives the same verdicts and the same errors
+as one just built, and the cache is only a cache (damaged, foreign, of other files: built again)."""
 
 from __future__ import annotations
 
@@ -12,7 +12,7 @@ from pathlib import Path
 import pytest
 from lxml import etree
 
-from xodrcheck import schema
+from xodrcheck.schema import validate as schema
 
 ROOT = Path(__file__).resolve().parent
 

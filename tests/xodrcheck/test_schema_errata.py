@@ -1,4 +1,4 @@
-"""The corrected copies of the official 1.8.1 and 1.9.0 XSDs (xodrcheck.schema_errata): shipped exactly as the errata
+"""The corrected copies of the official 1.8.1 and 1.9.0 XSDs (xodrcheck.schema.errata): shipped exactly as the errata
 make them, each correction lets valid documents through that the official file rejects (or catches what it meant to
 catch and never did), and the defect each guards against stays an error, for the full validator and the fast verdict."""
 
@@ -11,7 +11,9 @@ import pytest
 import xmlschema
 
 from tests.xodrcheck import schemadocs as D
-from xodrcheck import schema, schema_errata, schema_fast
+from xodrcheck.schema import errata as schema_errata
+from xodrcheck.schema import fast as schema_fast
+from xodrcheck.schema import validate as schema
 
 REPO = Path(__file__).resolve().parents[2]
 MINORS = {"1.8.1": 8, "1.9.0": 9}

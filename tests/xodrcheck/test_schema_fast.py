@@ -1,4 +1,4 @@
-"""The fast XSD 1.1 verdict (xodrcheck.schema_fast) against the full validator (xmlschema), for OpenDRIVE 1.8 and 1.9:
+"""The fast XSD 1.1 verdict (xodrcheck.schema.fast) against the full validator (xmlschema), for OpenDRIVE 1.8 and 1.9:
 it may only say "valid" where xmlschema finds no error, and it must say so for valid files, or the speed is lost."""
 
 from __future__ import annotations
@@ -13,7 +13,8 @@ from lxml import etree
 import junctionart as ja
 from junctionart.fuzz.documents import opendrive_documents
 from junctionart.fuzz.mutations import damaged_documents
-from xodrcheck import schema, schema_fast
+from xodrcheck.schema import fast as schema_fast
+from xodrcheck.schema import validate as schema
 
 V18 = (1, 8)
 V19 = (1, 9)

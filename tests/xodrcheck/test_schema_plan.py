@@ -1,4 +1,4 @@
-"""The fast verdict's schema plans (xodrcheck.schema_plan): shipped as xmlschema's compiled schemas give them, every
+"""The fast verdict's schema plans (xodrcheck.schema.plan): shipped as xmlschema's compiled schemas give them, every
 test of OpenDRIVE 1.8 and 1.9 translated, and each translated XPath 1.0 test gives elementpath's result on the same
 element (untyped, the element as the root of a fragment), or an error, which the fast verdict reads as "not shown
 valid"; a plain check of a valid 1.8 file imports neither xmlschema nor elementpath."""
@@ -19,7 +19,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 from lxml import etree
 
-from xodrcheck import schema, schema_fast, schema_plan
+from xodrcheck.schema import fast as schema_fast
+from xodrcheck.schema import plan as schema_plan
+from xodrcheck.schema import validate as schema
 
 REPO = Path(__file__).resolve().parents[2]
 VERSIONS = sorted(schema.XSD11)
@@ -205,7 +207,7 @@ def test_checking_an_18_file_imports_the_xsd11_validator_only_for_errors_outside
     )
     subprocess.run([sys.executable, "-c", probe, str(path), str(out)], check=True, timeout=300)
     modules, codes = json.loads(out.read_text())
-    assert "S001" not in codes and "xodrcheck.schema_fast" in modules
+    assert "S001" not in codes and "xodrcheck.schema.fast" in modules
     assert {m.split(".")[0] for m in modules}.isdisjoint({"xmlschema", "elementpath"})
     path.write_text(VALID_18.replace('type="pole"', 'type="crosswalk"'))
     subprocess.run([sys.executable, "-c", probe, str(path), str(out)], check=True, timeout=300)

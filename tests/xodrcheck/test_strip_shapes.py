@@ -1,4 +1,4 @@
-"""Shapes of lane strips: turns, pieces and lane sections known to overlap nowhere (xodrcheck.strip_shapes)."""
+"""Shapes of lane strips: turns, pieces and lane sections known to overlap nowhere (xodrcheck.mesh.strip_shapes)."""
 
 from __future__ import annotations
 
@@ -7,8 +7,8 @@ import pytest
 import shapely
 
 from tests.xodrcheck.rules.helpers import fixture
-from xodrcheck import strip_shapes
-from xodrcheck.mesh import surfaces_of
+from xodrcheck.mesh import strip_shapes
+from xodrcheck.mesh.surfaces import surfaces_of
 from xodrcheck.reader import read
 
 

@@ -1,4 +1,4 @@
-"""Plan-view shapes of lane strips beyond their outline (:mod:`xodrcheck.footprint` builds on them): the pieces a
+"""Plan-view shapes of lane strips beyond their outline (:mod:`xodrcheck.mesh.footprint` builds on them): the pieces a
 folded strip is united from, the full circles a strip turns through, and the lane sections whose strips are known not
 to overlap at all.
 
@@ -15,8 +15,8 @@ from __future__ import annotations
 import numpy as np
 import shapely
 
-from xodrcheck.arrays import ranges
-from xodrcheck.mesh import LaneSurfaces
+from xodrcheck.mesh.surfaces import LaneSurfaces
+from xodrcheck.support.arrays import ranges
 
 __all__ = ["PIECE", "covers_twice", "pieces", "run_outlines", "strip_turns", "tiled_sections", "turns"]
 
@@ -122,10 +122,11 @@ def pieces(surfaces: LaneSurfaces, lane: int) -> np.ndarray:
 
 def tiled_sections(surfaces: LaneSurfaces, overlapping: np.ndarray | None = None) -> np.ndarray:
     """For each strip, the index of its lane section's first strip when no two triangles of that section overlap
-    (see the module docstring), else -1. ``surfaces`` must hold every lane (:func:`xodrcheck.mesh.surfaces_of`). A
-    section is the run of consecutive strips of one road id and section ``s``; a run that holds a lane id twice (two
-    roads of one id) is not judged, nor one holding a strip of ``overlapping`` (indexes of strips known to cover
-    themselves twice: a section that holds one is no tiling, and its outline may cross itself at every step)."""
+    (see the module docstring), else -1. ``surfaces`` must hold every lane
+    (:func:`xodrcheck.mesh.surfaces.surfaces_of`). A section is the run of consecutive strips of one road id and section
+    ``s``; a run that holds a lane id twice (two roads of one id) is not judged, nor one holding a strip of
+    ``overlapping`` (indexes of strips known to cover themselves twice: a section that holds one is no tiling, and its
+    outline may cross itself at every step)."""
     count = len(surfaces)
     out = np.full(count, -1, dtype=np.int64)
     if count == 0:

@@ -31,7 +31,7 @@ from xodrcheck.model import (
 from xodrcheck.reader import ReadResult
 
 if TYPE_CHECKING:
-    from xodrcheck.elevation_info import ElevationInfo
+    from xodrcheck.analysis.elevation import ElevationInfo
 
 #: OpenDRIVE element names of the plan-view geometry kinds.
 GEOMETRY_NAMES = {Line: "line", Arc: "arc", Spiral: "spiral", Poly3: "poly3", ParamPoly3: "paramPoly3"}
@@ -83,7 +83,7 @@ class MapInfo:
     bbox: BoundingBox | None
     #: Reader findings by severity name (``error``, ``warning``, ``info``; all three always present).
     findings: Mapping[str, int]
-    #: Height range, steepest grade and largest z step at a road link (:mod:`xodrcheck.elevation_info`).
+    #: Height range, steepest grade and largest z step at a road link (:mod:`xodrcheck.analysis.elevation`).
     elevation: ElevationInfo | None = None
 
 
@@ -195,7 +195,7 @@ def _finding_counts(findings: Iterable[Finding]) -> dict[str, int]:
 
 def map_info(result: ReadResult, tolerances: Tolerances | None = None) -> MapInfo:
     """Summarise a read file."""
-    from xodrcheck.elevation_info import elevation_info  # here: the meshes' lane_type_name loads no elevation
+    from xodrcheck.analysis.elevation import elevation_info  # here: the meshes' lane_type_name loads no elevation
 
     doc = result.document
     findings = _finding_counts(result.findings)

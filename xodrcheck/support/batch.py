@@ -127,9 +127,8 @@ def _warm(paths: Sequence[str]) -> None:
     """Load in this process what every worker would load for itself (the geometry and overlap modules, the schema of
     each declared version): forked workers share it instead of each building it again. Nothing here changes a
     result; a file whose header cannot be read here is simply not warmed for."""
-    import xodrcheck.footprint
-    import xodrcheck.geometry.batch  # noqa: F401
-    from xodrcheck import schema, schema_fast
+    from xodrcheck.schema import fast as schema_fast
+    from xodrcheck.schema import validate as schema
 
     versions = set()
     for path in paths:

@@ -3,7 +3,7 @@
 Versions 1.1 to 1.7 use XSD 1.0 and compile in lxml in milliseconds. 1.8 and 1.9 use XSD 1.1 (``xs:assert``,
 ``xs:alternative``), which lxml cannot compile: xmlschema's ``XMLSchema11`` validator is used, and since building it
 takes about half a second, the compiled schema is cached per version. xmlschema validates about 1 MB/s, so a file is
-first given a fast verdict (:mod:`xodrcheck.schema_fast`: lxml on the XSD 1.0 part, with the alternatives made
+first given a fast verdict (:mod:`xodrcheck.schema.fast`: lxml on the XSD 1.0 part, with the alternatives made
 explicit and the assertions evaluated one by one, from the schema's plan, without importing xmlschema). A file whose
 only errors are false assertions gets them from there too, worded and ordered as xmlschema gives them (the fast path
 knows them to be all when lxml finds the rest valid); any other file not shown valid goes through xmlschema, which
@@ -15,7 +15,7 @@ minor release. Each minor version therefore gets its latest patch release shippe
 1.8 -> 1.8.1, 1.9 -> 1.9.0. 1.8.1 is the 1.8 errata release (it adds id-uniqueness asserts and fixes the signal-board
 and outline definitions); a 1.8.0 map that 1.8.1 rejects is also wrong by 1.8.0's prose. 1.8.1 and 1.9.0 are used in
 their corrected copies (``1.8.1-corrected``, ``1.9.0-corrected``: the official files with the edits of
-:mod:`xodrcheck.schema_errata`, without which every multiBoard signal, vmsGroup and defaultRegulations is invalid).
+:mod:`xodrcheck.schema.errata`, without which every multiBoard signal, vmsGroup and defaultRegulations is invalid).
 """
 
 from __future__ import annotations
@@ -29,7 +29,7 @@ from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
 
-from xodrcheck import packagedata, usercache
+from xodrcheck.support import packagedata, usercache
 
 #: (revMajor, revMinor) -> (folder under the package data ``xodrcheck.schemas``, main file).
 SCHEMA_FOLDERS: dict[tuple[int, int], tuple[str, str]] = {
@@ -93,7 +93,7 @@ def _build(version: tuple[int, int], path: Path):
 
 def _xsd11(version: tuple[int, int], path: Path):
     """xmlschema's XSD 1.1 schema of ``path``, from the user's cache when an identical build is there (building it
-    takes seconds, loading it a tenth of that; :mod:`xodrcheck.usercache`), else built and stored."""
+    takes seconds, loading it a tenth of that; :mod:`xodrcheck.support.usercache`), else built and stored."""
     import xmlschema
 
     cached = _xsd11_cache_file(version, path)
@@ -191,7 +191,7 @@ def in_namespace(tree, found: str | None, namespace: str | None):
 def validate(tree, version: tuple[int, int]) -> Iterator[SchemaError]:
     """Validate an lxml tree against the schema of ``version``, yielding each error with its source line."""
     if version in XSD11:
-        from xodrcheck import schema_fast
+        from xodrcheck.schema import fast as schema_fast
 
         folder, main = SCHEMA_FOLDERS[version]
         failures = schema_fast.assertion_failures(tree, folder, main)

@@ -22,14 +22,14 @@ from functools import cached_property
 
 import numpy as np
 
-from xodrcheck import work
-from xodrcheck.arrays import batches, ranges
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import XodrError
 from xodrcheck.geometry.batch import Evaluation
 from xodrcheck.geometry.lanes import RoadGeometry, geometry_of, road_geometry
 from xodrcheck.geometry.sampling import sample_sections
 from xodrcheck.model import Document, Lane, LaneKey, document_cache, lane_type_name
+from xodrcheck.support import work
+from xodrcheck.support.arrays import batches, ranges
 
 __all__ = ["MAX_COORDINATE", "LaneSurfaces", "MeshTooLarge", "build_surfaces", "cached_per_chord", "surfaces_of"]
 

@@ -109,7 +109,7 @@ ERRATA: tuple[Erratum, ...] = (
 CORRECTED: dict[str, str] = {"1.8.1": "1.8.1-corrected", "1.9.0": "1.9.0-corrected"}
 
 MARK = (
-    "<!--xodrcheck: corrected copy of the official file: the edits listed in xodrcheck/schema_errata.py "
+    "<!--xodrcheck: corrected copy of the official file: the edits listed in xodrcheck/schema/errata.py "
     "(see NOTICE.md)-->"
 )
 

@@ -4,12 +4,13 @@ A snapshot is a small JSON object meant to be committed beside a map and compare
 writes the map (``xodrcheck snapshot``, ``xodrcheck diff``, the ``xodr_snapshot`` pytest fixture). It holds:
 
 * counts of roads (and of roads inside junctions), junctions by type, lane sections, lanes by type (counted once per
-  lane section, centre lanes excluded) and the legs histogram of the junctions (:func:`xodrcheck.info.junction_legs`);
+  lane section, centre lanes excluded) and the legs histogram of the junctions
+  (:func:`xodrcheck.analysis.info.junction_legs`);
 * the total length of the lanes: every lane's centre line, measured on the sampled polyline, summed (m);
 * the lane graph: its number of links and a hash of its topology (every lane link between lane sections, across road
   links and every junction laneLink, as unordered pairs of lanes named ``road/section index/lane id``; see
   :func:`lane_links`), so a dropped, added or re-targeted link changes the hash whatever the order of the file;
-* the bounding box of the lane borders (:func:`xodrcheck.info.bounding_box`);
+* the bounding box of the lane borders (:func:`xodrcheck.analysis.info.bounding_box`);
 * the findings of a full check, counted by code;
 * reachability (:mod:`xodrcheck.graph.invariants`): the lane graph's strongly connected parts, the entries and exits
   at the map's open edges and the (entry, exit) pairs no route joins, so that ``diff`` names a route that vanished
@@ -31,13 +32,13 @@ from typing import Any
 
 import numpy as np
 
+from xodrcheck.analysis.info import bounding_box, junction_legs
 from xodrcheck.check import check
 from xodrcheck.config import Config, Tolerances
 from xodrcheck.findings import XodrError
 from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.graph.invariants import KEYS as REACH_KEYS
 from xodrcheck.graph.invariants import reach_differences, reach_invariants
-from xodrcheck.info import bounding_box, junction_legs
 from xodrcheck.model import ContactPoint, Document, ElementType, Road, lane_type_name
 from xodrcheck.reader import read
 

@@ -1,4 +1,4 @@
-"""The plan of an XSD 1.1 schema that the fast verdict (:mod:`xodrcheck.schema_fast`) walks, so that showing an
+"""The plan of an XSD 1.1 schema that the fast verdict (:mod:`xodrcheck.schema.fast`) walks, so that showing an
 OpenDRIVE 1.8 or 1.9 file valid needs neither xmlschema nor elementpath (importing them and loading the compiled
 schema cost several times the check of a small file).
 
@@ -15,7 +15,7 @@ The translation is exact for the fast verdict's evaluation (untyped, on the elem
 (``if (c) then a else b`` -> ``(c and a) or (not(c) and b)``, as an assertion takes the effective boolean value),
 ``exists``, ``count``, ``count(distinct-values(@...))``, ``name(parent::*)``, ``true``/``false``, string ``=``/``!=`` on
 attributes, and numeric comparisons of counts with integers. An attribute compared with a number goes to the
-extension function ``x:compare`` (:func:`xodrcheck.schema_fast.compare`), which raises on a value that is not a
+extension function ``x:compare`` (:func:`xodrcheck.schema.fast.compare`), which raises on a value that is not a
 plain decimal number instead of comparing NaN as XPath 1.0 would: an error is "not shown valid", never "valid". A
 test outside the subset is kept untranslated (``null``); an element whose type needs it goes to the full validator.
 """

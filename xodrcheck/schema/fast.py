@@ -16,14 +16,14 @@ times the file's size, and a 50 MB map's copy alone cost gigabytes):
 3. the ``xsi:type`` attributes (and the namespace declarations they brought) are removed again, whatever happened,
    so the caller's tree is as it was.
 
-The declarations, types and tests come from the schema's plan (:mod:`xodrcheck.schema_plan`: written from xmlschema's
+The declarations, types and tests come from the schema's plan (:mod:`xodrcheck.schema.plan`: written from xmlschema's
 compiled schema, shipped beside the schema files, tests translated to XPath 1.0), walked along the instance, so
 nothing here knows OpenDRIVE and neither xmlschema nor elementpath is imported. :func:`assertion_failures` says
 "valid", "only these assertions are false" (the XSD 1.0 part valid: then they are all the full validator's errors,
-which :mod:`xodrcheck.schema` words as it does) or "don't know": then (anything goes wrong, a test is not translated,
-or the file already uses ``xsi:`` attributes) :mod:`xodrcheck.schema` runs the full XSD 1.1 validator, which gives
-the errors with their lines. Both are compared on the corpus, generated maps, documents breaking assertions and
-damaged documents in ``tests/xodrcheck/test_schema_fast.py``.
+which :mod:`xodrcheck.schema.validate` words as it does) or "don't know": then (anything goes wrong, a test is not
+translated, or the file already uses ``xsi:`` attributes) :mod:`xodrcheck.schema.validate` runs the full XSD 1.1
+validator, which gives the errors with their lines. Both are compared on the corpus, generated maps, documents breaking
+assertions and damaged documents in ``tests/xodrcheck/test_schema_fast.py``.
 """
 
 from __future__ import annotations
@@ -36,9 +36,9 @@ from typing import Any, NamedTuple
 
 from lxml import etree
 
-from xodrcheck import packagedata
 from xodrcheck.findings import XodrError
-from xodrcheck.schema_plan import EXTENSIONS, FORMAT, PLAN_FILE
+from xodrcheck.schema.plan import EXTENSIONS, FORMAT, PLAN_FILE
+from xodrcheck.support import packagedata
 
 XS = "http://www.w3.org/2001/XMLSchema"
 XSI = "http://www.w3.org/2001/XMLSchema-instance"
@@ -141,7 +141,7 @@ def _compiled(text: str | None) -> etree.XPath | None:
 
 @cache
 def plan(folder_name: str) -> _Plan:
-    """The plan of the schema in ``folder_name`` (:mod:`xodrcheck.schema_plan`), its tests compiled by lxml."""
+    """The plan of the schema in ``folder_name`` (:mod:`xodrcheck.schema.plan`), its tests compiled by lxml."""
     source = packagedata.folder("xodrcheck.schemas") / folder_name / PLAN_FILE
     data = json.loads(source.read_bytes())
     if data.get("format") != FORMAT:

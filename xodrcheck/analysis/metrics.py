@@ -41,7 +41,7 @@ Per-junction metrics
 * ``area``: area (m^2) of the union of the connection-lane polygons, U-turn lanes excluded as in the paper. Each
   polygon is a lane piece (one lane of one lane section) bounded by its exact inner and outer borders, sampled under the
   chord tolerance (:attr:`Tolerances.chord`), not 11 points per lane: its footprint in the lane mesh the overlap rules
-  use (:mod:`xodrcheck.footprint`, which also computes the union and the overlaps).
+  use (:mod:`xodrcheck.mesh.footprint`, which also computes the union and the overlaps).
 * ``conflict_area``: area of the union of the pairwise intersections of those lane pieces, over pairs on different
   connecting roads whose intersection is at least :attr:`Tolerances.overlap_area` (smaller ones are lanes touching
   side by side, whose sampled borders cross by the chord error).
@@ -61,8 +61,8 @@ import numpy as np
 import shapely
 
 from xodrcheck.config import Tolerances
-from xodrcheck.footprint import area_and_conflict, overlap_index
 from xodrcheck.geometry.lanes import RoadGeometry, geometry_of
+from xodrcheck.mesh.footprint import area_and_conflict, overlap_index
 from xodrcheck.model import (
     ContactPoint,
     Document,
@@ -321,7 +321,7 @@ def _drivable_lane_count(road: Road) -> int:
 
 def _junction_footprints(document: Document, roads: list[Road], chord: float) -> tuple[list, list[str]]:
     """Plan-view footprints of the drivable lane pieces (lane x lane section) of ``roads``, U-turns left out, from the
-    shared lane mesh (:mod:`xodrcheck.footprint`), with the road id of each."""
+    shared lane mesh (:mod:`xodrcheck.mesh.footprint`), with the road id of each."""
     index = overlap_index(document, chord)
     strip_of = index.strip_of
     polygons = index.footprints.polygons

@@ -1,10 +1,10 @@
 """The user's cache folder: what xodrcheck keeps between runs to start faster (results never depend on it).
 
 ``$XODRCHECK_CACHE_DIR`` (set but empty: no cache), else ``$XDG_CACHE_HOME/xodrcheck``, else ``~/.cache/xodrcheck``.
-It holds the compiled XSD 1.1 schemas of OpenDRIVE 1.8 and 1.9 (:mod:`xodrcheck.schema`). Loading a cache file runs code
-from it, as a ``.pyc`` does, so a file is read only when its owner is the user and nobody else may write it; nothing is
-written when Python is told not to write byte code (``PYTHONDONTWRITEBYTECODE``, ``-B``). A file that cannot be read or
-written means building what it held, never an error.
+It holds the compiled XSD 1.1 schemas of OpenDRIVE 1.8 and 1.9 (:mod:`xodrcheck.schema.validate`). Loading a cache file
+runs code from it, as a ``.pyc`` does, so a file is read only when its owner is the user and nobody else may write it;
+nothing is written when Python is told not to write byte code (``PYTHONDONTWRITEBYTECODE``, ``-B``). A file that cannot
+be read or written means building what it held, never an error.
 """
 
 from __future__ import annotations

@@ -16,9 +16,9 @@ from pathlib import Path
 
 import numpy as np
 
-from xodrcheck.atomic import write_bytes
 from xodrcheck.findings import XodrError
-from xodrcheck.mesh import LaneSurfaces
+from xodrcheck.mesh.surfaces import LaneSurfaces
+from xodrcheck.support.atomic import write_bytes
 
 #: Output formats by file extension.
 FORMATS = {".glb": "glb", ".obj": "obj", ".ply": "ply"}
@@ -121,7 +121,7 @@ def encode(surfaces: LaneSurfaces, fmt: str) -> bytes:
 
 def write(surfaces: LaneSurfaces, path: str | Path) -> int:
     """Write the mesh to ``path`` (format from its extension) atomically; return the number of bytes written. A
-    target that cannot be written raises :class:`~xodrcheck.atomic.OutputError` naming ``path``."""
+    target that cannot be written raises :class:`~xodrcheck.support.atomic.OutputError` naming ``path``."""
     data = encode(surfaces, format_of(path))
     write_bytes(path, data)
     return len(data)

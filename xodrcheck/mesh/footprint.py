@@ -1,8 +1,8 @@
 """Plan-view footprints of lanes (shapely 2) and the spatial questions the overlap rules and the metrics ask.
 
-The footprint of a lane strip is the polygon its mesh covers in plan view (:mod:`xodrcheck.mesh`): its inner border
-followed by its outer border reversed, from the same samples as the mesh. A strip whose outline is not a valid polygon
-(zero width over a stretch, a fold) is the union of its mesh triangles instead. Candidate pairs come from a
+The footprint of a lane strip is the polygon its mesh covers in plan view (:mod:`xodrcheck.mesh.surfaces`): its inner
+border followed by its outer border reversed, from the same samples as the mesh. A strip whose outline is not a valid
+polygon (zero width over a stretch, a fold) is the union of its mesh triangles instead. Candidate pairs come from a
 :class:`shapely.STRtree` over all footprints, so the work grows with the number of lanes that are near each other, not
 with the square of the number of lanes.
 
@@ -19,11 +19,12 @@ from functools import cached_property
 import numpy as np
 import shapely
 
-from xodrcheck import strip_shapes, work
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import OutOfTime
-from xodrcheck.mesh import LaneSurfaces, cached_per_chord, surfaces_of
+from xodrcheck.mesh import strip_shapes
+from xodrcheck.mesh.surfaces import LaneSurfaces, cached_per_chord, surfaces_of
 from xodrcheck.model import DRIVABLE_LANE_TYPES, Document, ElementType, JunctionType, LaneKey
+from xodrcheck.support import work
 
 DRIVABLE_TYPE_NAMES = frozenset(t.value for t in DRIVABLE_LANE_TYPES)
 #: Pieces united in one GEOS call when a lane strip's outline is not a simple polygon.
@@ -98,8 +99,8 @@ class Footprints:
         return s.vertices[faces][..., :2]
 
     def _union(self, lane: int):
-        """Union of a lane strip's triangles, made from its pieces (:func:`xodrcheck.strip_shapes.pieces`) in blocks of
-        :data:`_UNION_BLOCK` merged pairwise, so that the time budget can stop it between two GEOS calls
+        """Union of a lane strip's triangles, made from its pieces (:func:`xodrcheck.mesh.strip_shapes.pieces`) in
+        blocks of :data:`_UNION_BLOCK` merged pairwise, so that the time budget can stop it between two GEOS calls
         (:class:`OutOfTime`)."""
         polys = strip_shapes.pieces(self.surfaces, lane)
         work.add("union coordinates", int(shapely.get_num_coordinates(polys).sum()))
@@ -126,7 +127,7 @@ class Footprints:
     @cached_property
     def tiled(self) -> np.ndarray:
         """Per strip, its lane section's first strip when the section's strips overlap nowhere, else -1
-        (:func:`xodrcheck.strip_shapes.tiled_sections`)."""
+        (:func:`xodrcheck.mesh.strip_shapes.tiled_sections`)."""
         return strip_shapes.tiled_sections(self.surfaces, self.invalid)
 
     def near_pairs(self) -> np.ndarray:
