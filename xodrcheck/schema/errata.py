@@ -4,8 +4,8 @@ The official files (``schemas/1.8.1``, ``schemas/1.9.0``) are shipped unchanged.
 *every* file using some element invalid, or a constraint that can never fire. S001 validates against corrected copies
 (``schemas/1.8.1-corrected``, ``schemas/1.9.0-corrected``), which are the official files with exactly the edits of
 :data:`ERRATA` (a comment before ``<xs:schema>`` marks each edited file). ``scripts/schema_errata.py`` writes them;
-``tests/xodrcheck/test_schema_errata.py`` checks that the shipped copies are exactly that, and that each correction
-lets a valid document through while the defect it guards against is still an error.
+``tests/xodrcheck/schema/test_schema_errata.py`` checks that the shipped copies are exactly that, and that each
+correction lets a valid document through while the defect it guards against is still an error.
 
 Each correction does what the schema's own text evidently meant (the spec section named in :attr:`Erratum.why`),
 nothing more. The same defects are also reported by rules with their Annex F UIDs (road.signal: multiBoard, vmsGroup;

@@ -23,7 +23,7 @@ nothing here knows OpenDRIVE and neither xmlschema nor elementpath is imported. 
 which :mod:`xodrcheck.schema.validate` words as it does) or "don't know": then (anything goes wrong, a test is not
 translated, or the file already uses ``xsi:`` attributes) :mod:`xodrcheck.schema.validate` runs the full XSD 1.1
 validator, which gives the errors with their lines. Both are compared on the corpus, generated maps, documents breaking
-assertions and damaged documents in ``tests/xodrcheck/test_schema_fast.py``.
+assertions and damaged documents in ``tests/xodrcheck/schema/test_schema_fast.py``.
 """
 
 from __future__ import annotations

@@ -14,7 +14,7 @@ from lxml import etree
 
 from xodrcheck.schema import validate as schema
 
-ROOT = Path(__file__).resolve().parent
+ROOT = Path(__file__).resolve().parents[1]  # tests/xodrcheck
 
 
 def _files(minor: int, count: int = 12) -> list[Path]:

@@ -173,7 +173,7 @@ def test_mesh_is_a_trimesh_with_the_same_faces():
 
 
 # ---------------------------------------------------------------------------------------------------------- CLI
-MAP = Path(__file__).parent / "rules" / "fixtures" / "connection-overlap" / "pass.xodr"
+MAP = Path(__file__).parents[1] / "rules" / "fixtures" / "connection-overlap" / "pass.xodr"
 
 
 @pytest.fixture(scope="module")

@@ -15,7 +15,7 @@ from xodrcheck.schema import errata as schema_errata
 from xodrcheck.schema import fast as schema_fast
 from xodrcheck.schema import validate as schema
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 MINORS = {"1.8.1": 8, "1.9.0": 9}
 
 

@@ -23,7 +23,7 @@ from xodrcheck.schema import fast as schema_fast
 from xodrcheck.schema import plan as schema_plan
 from xodrcheck.schema import validate as schema
 
-REPO = Path(__file__).resolve().parents[2]
+REPO = Path(__file__).resolve().parents[3]
 VERSIONS = sorted(schema.XSD11)
 
 
