@@ -19,7 +19,7 @@ import time
 from pathlib import Path
 
 from xodrcheck.check import check
-from xodrcheck.mesh import build_surfaces
+from xodrcheck.mesh.surfaces import build_surfaces
 from xodrcheck.reader import read
 
 REPO = Path(__file__).resolve().parents[1]

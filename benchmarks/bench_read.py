@@ -32,9 +32,9 @@ from pathlib import Path
 
 from lxml import etree
 
+from xodrcheck.analysis.sample import sample_lanes
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.reader import read
-from xodrcheck.sample import sample_lanes
 
 REPO = Path(__file__).resolve().parents[1]
 STEP = 0.5

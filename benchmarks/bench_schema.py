@@ -1,4 +1,4 @@
-"""OpenDRIVE 1.8 and 1.9 schema validation of valid files: the fast verdict (``xodrcheck.schema_fast``: lxml on the
+"""OpenDRIVE 1.8 and 1.9 schema validation of valid files: the fast verdict (``xodrcheck.schema.fast``: lxml on the
 XSD 1.0 part, alternatives made explicit, assertions one by one) against xmlschema's XSD 1.1 validator, as ratios
 measured in one run on generated maps (random lanes, 500 m to 2 km, written as 1.8 and as 1.9).
 
@@ -20,7 +20,8 @@ from lxml import etree
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 import junctionart as ja
-from xodrcheck import schema, schema_fast
+from xodrcheck.schema import fast as schema_fast
+from xodrcheck.schema import validate as schema
 
 SIZES = (500, 1000, 2000)
 

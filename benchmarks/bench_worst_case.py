@@ -3,8 +3,8 @@
 Runs the hunt (``python -m junctionart.fuzz --runs slow``, :mod:`junctionart.fuzz.hunt`) for ``--minutes`` and writes
 its slowest documents to ``--out``, then checks every ``.xodr`` there and in the regression documents
 (``tests/fuzz/slow`` and the winding fixtures of O002) again, one at a time in this process after a warm-up, and
-prints the 20 slowest per kB (CPU seconds, size, seconds per kB, the work counted by :mod:`xodrcheck.work`) and the
-maximum, against the bound: no document under 100 kB over 5 s of CPU. ``--minutes 0`` measures the documents only.
+prints the 20 slowest per kB (CPU seconds, size, seconds per kB, the work counted by :mod:`xodrcheck.support.work`) and
+the maximum, against the bound: no document under 100 kB over 5 s of CPU. ``--minutes 0`` measures the documents only.
 
     python benchmarks/bench_worst_case.py [--minutes 10] [--out DIR] [DIR ...]
 """
@@ -18,8 +18,8 @@ import warnings
 from pathlib import Path
 
 from junctionart.fuzz import hunt
-from xodrcheck import work
 from xodrcheck.check import check
+from xodrcheck.support import work
 
 REPO = Path(__file__).resolve().parents[1]
 REGRESSIONS = (REPO / "tests" / "fuzz" / "slow", REPO / "tests" / "xodrcheck" / "rules" / "fixtures" / "lane-fold")

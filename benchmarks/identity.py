@@ -35,7 +35,7 @@ def _report_json(path: Path) -> str:
 
 
 def _mesh_hash(path: Path, chord: float) -> str:
-    from xodrcheck.mesh import build_surfaces
+    from xodrcheck.mesh.surfaces import build_surfaces
     from xodrcheck.reader import read
 
     surfaces = build_surfaces(read(path).document, chord=chord)

@@ -2,7 +2,8 @@
 
 Bad input (a parameter out of range, a map too large to finish in reasonable time, an unreadable control-line file,
 an unwritable output) gives one line on stderr and exit code 2, never a traceback, and no output file. Output files
-are written atomically (:mod:`xodrcheck.atomic`); Ctrl-C (exit 130) and SIGTERM (exit 143) leave no partial file.
+are written atomically (:mod:`xodrcheck.support.atomic`); Ctrl-C (exit 130) and SIGTERM (exit 143) leave no partial
+file.
 """
 
 from __future__ import annotations
@@ -337,9 +338,9 @@ def _render(args: argparse.Namespace) -> int:
 
 
 def _check_target(path: str | Path) -> None:
-    """Fail before any work when ``path`` cannot be an output file (:func:`xodrcheck.atomic.check_target`)."""
-    from xodrcheck.atomic import OutputError as TargetError
-    from xodrcheck.atomic import check_target
+    """Fail before any work when ``path`` cannot be an output file (:func:`xodrcheck.support.atomic.check_target`)."""
+    from xodrcheck.support.atomic import OutputError as TargetError
+    from xodrcheck.support.atomic import check_target
 
     try:
         check_target(path)
@@ -425,7 +426,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         if name == chosen:  # the others parse nothing and are never run
             add_arguments(p)
     args = parser.parse_args(argv)
-    from xodrcheck.atomic import EXIT_INTERRUPTED, EXIT_TERMINATED, Terminated, signals_raise
+    from xodrcheck.support.atomic import EXIT_INTERRUPTED, EXIT_TERMINATED, Terminated, signals_raise
 
     try:
         with signals_raise():

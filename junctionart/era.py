@@ -6,8 +6,8 @@ How a run goes
   ("two-lane") and with lane counts drawn from the paper's distributions ("random-lane": ``lane_distribution_side``
   [0.15, 0.6, 0.2, 0.05] and ``lane_distribution_control_lines`` [0.05, 0.45, 0.4, 0.1], the :class:`Params` defaults).
 * Map ``k`` of a run is generated with seed ``k`` (0, 1, 2, ...), written as OpenDRIVE bytes and read back through the
-  independent reader; :func:`xodrcheck.metrics.map_metrics` measures every junction. Results therefore depend only on
-  the seeds, never on how many workers computed them or in which order they finished.
+  independent reader; :func:`xodrcheck.analysis.metrics.map_metrics` measures every junction. Results therefore depend
+  only on the seeds, never on how many workers computed them or in which order they finished.
 * An *intersection* is a junction with at least 3 legs (the paper's 3 to 7). The analysis takes the first N
   intersections in (seed, junction order in the file) order: the smallest prefix of seeds that holds N of them.
 * Every finished map appends its rows to ``legs.csv`` (one row per junction leg, the junction's columns repeated; see
@@ -119,8 +119,8 @@ def _cell(value):
 
 
 def metric_rows(run: str, seed: int, metrics, kinds: dict[str, str] | None = None) -> list[dict]:
-    """``legs.csv`` rows of one map's :class:`xodrcheck.metrics.JunctionMetrics` (a junction without legs: one row);
-    ``kinds``: junction id -> the kind of the structure it is part of (:mod:`xodrcheck.structures`)."""
+    """``legs.csv`` rows of one map's :class:`xodrcheck.analysis.metrics.JunctionMetrics` (a junction without legs: one
+    row); ``kinds``: junction id -> the kind of the structure it is part of (:mod:`xodrcheck.structures`)."""
     out = []
     for index, m in enumerate(metrics):
         head = {
@@ -166,7 +166,7 @@ def structure_rows(run: str, seed: int, structures) -> list[dict]:
 
 def measure_map(run: str, params: Params, seed: int) -> MapResult:
     """Generate map ``seed`` of a run, read it back with xodrcheck and measure it (runs in a worker)."""
-    from xodrcheck.metrics import map_metrics
+    from xodrcheck.analysis.metrics import map_metrics
     from xodrcheck.reader import read
     from xodrcheck.structures import map_structures
 
@@ -203,8 +203,8 @@ def measure_folder(folder: Path) -> list[dict]:
     unreadable files are skipped with a note on stderr."""
     import sys
 
+    from xodrcheck.analysis.metrics import map_metrics
     from xodrcheck.findings import ReadError
-    from xodrcheck.metrics import map_metrics
     from xodrcheck.reader import read
     from xodrcheck.structures import map_structures
 
@@ -354,7 +354,7 @@ def _write_header(path: Path, columns: Iterable[str]) -> None:
 
 
 def _rewrite(path: Path, columns, rows) -> None:
-    from xodrcheck.atomic import atomic_file
+    from xodrcheck.support.atomic import atomic_file
 
     with atomic_file(path, "w") as stream:
         writer = csv.DictWriter(stream, columns, lineterminator="\n")

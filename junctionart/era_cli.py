@@ -125,8 +125,8 @@ def run(args) -> int:
             f"{args.intersections} intersections (junctions with 3+ legs) of each run in seed order."
         ),
         (
-            "Metrics: `xodrcheck.metrics` (definitions in its docstring), computed on each map after writing it "
-            "and reading it back with the independent reader."
+            "Metrics: `xodrcheck.analysis.metrics` (definitions in its docstring), computed on each map after writing "
+            "it and reading it back with the independent reader."
         ),
         f"Generator: junctionart {era.generator_version()} (package version + source hash, also in maps.csv).",
     ]

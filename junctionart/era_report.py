@@ -13,7 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
-from xodrcheck.atomic import atomic_file
+from xodrcheck.support.atomic import atomic_file
 
 from .extras import pyplot
 

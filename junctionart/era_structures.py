@@ -13,8 +13,8 @@ from pathlib import Path
 
 import numpy as np
 
-from xodrcheck.atomic import atomic_file
 from xodrcheck.structures import KINDS, Kind
+from xodrcheck.support.atomic import atomic_file
 
 from .extras import pyplot
 

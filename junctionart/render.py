@@ -16,8 +16,8 @@ from typing import NamedTuple
 
 import numpy as np
 
-from xodrcheck.atomic import OutputError as TargetError
-from xodrcheck.atomic import atomic_file
+from xodrcheck.support.atomic import OutputError as TargetError
+from xodrcheck.support.atomic import atomic_file
 
 from .errors import InputError, OutputError, ParamsError
 from .extras import pyplot

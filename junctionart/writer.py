@@ -9,7 +9,7 @@ time); element order follows the schema of the declared version. Floats are writ
 string that reads back to the same double), so the file round-trips exactly; the output bytes depend only on the
 document.
 Files are written atomically: a temporary file in the target folder, then ``os.replace``
-(:func:`xodrcheck.atomic.atomic_file`).
+(:func:`xodrcheck.support.atomic.atomic_file`).
 """
 
 from __future__ import annotations
@@ -341,11 +341,11 @@ def to_bytes(doc: Document, version: str = "1.8") -> bytes:
 
 
 def write(doc: Document, path: str | os.PathLike[str], version: str = "1.8") -> Path:
-    """Write ``doc`` to ``path`` atomically (:mod:`xodrcheck.atomic`, shared by every command of both tools): on any
-    error, Ctrl-C or SIGTERM no file and no temporary file is left behind. Raises :class:`OutputError` naming
+    """Write ``doc`` to ``path`` atomically (:mod:`xodrcheck.support.atomic`, shared by every command of both tools): on
+    any error, Ctrl-C or SIGTERM no file and no temporary file is left behind. Raises :class:`OutputError` naming
     ``path`` and the cause when it cannot be written."""
-    from xodrcheck.atomic import OutputError as _TargetError
-    from xodrcheck.atomic import check_target, write_bytes
+    from xodrcheck.support.atomic import OutputError as _TargetError
+    from xodrcheck.support.atomic import check_target, write_bytes
 
     try:
         check_target(path)  # before the document is serialised

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Write the corrected copies of the official OpenDRIVE XSDs (``schemas/1.8.1-corrected``, ``schemas/1.9.0-corrected``)
-from the official folders, applying :data:`xodrcheck.schema_errata.ERRATA`.
+from the official folders, applying :data:`xodrcheck.schema.errata.ERRATA`.
 
 Usage: ``scripts/schema_errata.py`` (from the repository; re-run after changing the errata, then commit the folders).
 """
@@ -13,7 +13,7 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-from xodrcheck.schema_errata import CORRECTED, corrected_files  # noqa: E402
+from xodrcheck.schema.errata import CORRECTED, corrected_files  # noqa: E402
 
 
 def main() -> int:

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Write the fast verdict's plan of each XSD 1.1 schema (``schemas/<folder>/fast-plan.json``, for OpenDRIVE 1.8 and
-1.9) from xmlschema's compiled schema (:mod:`xodrcheck.schema_plan`).
+1.9) from xmlschema's compiled schema (:mod:`xodrcheck.schema.plan`).
 
 Usage: ``scripts/schema_plan.py`` (from the repository; re-run after changing a schema folder, the errata or the
 translation, then commit the plans).
@@ -14,7 +14,8 @@ from pathlib import Path
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(REPO))
 
-from xodrcheck import schema, schema_plan  # noqa: E402
+from xodrcheck.schema import plan as schema_plan  # noqa: E402
+from xodrcheck.schema import validate as schema  # noqa: E402
 
 
 def main() -> int:

@@ -1,7 +1,7 @@
 """One error tree per package: every exception class xodrcheck defines derives from ``XodrError``, every one
 junctionart defines from ``JunctionArtError`` (so ``except XodrError`` catches whatever the checker raises on purpose,
-as ``except shapely.errors.ShapelyError`` does for shapely). Signals are not errors: ``xodrcheck.atomic.Terminated``
-is a ``BaseException`` like ``KeyboardInterrupt``."""
+as ``except shapely.errors.ShapelyError`` does for shapely). Signals are not errors:
+``xodrcheck.support.atomic.Terminated`` is a ``BaseException`` like ``KeyboardInterrupt``."""
 
 from __future__ import annotations
 

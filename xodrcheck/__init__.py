@@ -25,13 +25,13 @@ from types import ModuleType
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from xodrcheck.atomic import OutputError
     from xodrcheck.check import Report, check, is_valid, is_valid_reason
     from xodrcheck.config import Config, ConfigError, Tolerances
     from xodrcheck.findings import Category, Finding, ReadError, Severity, XodrError
     from xodrcheck.fix import FixResult, fix
     from xodrcheck.model import Document, LaneKey
     from xodrcheck.reader import ReadResult, read
+    from xodrcheck.support.atomic import OutputError
 
 #: Public name -> module that defines it.
 _EXPORTS = {
@@ -42,7 +42,7 @@ _EXPORTS = {
     "Finding": "xodrcheck.findings",
     "FixResult": "xodrcheck.fix.result",
     "LaneKey": "xodrcheck.model",
-    "OutputError": "xodrcheck.atomic",
+    "OutputError": "xodrcheck.support.atomic",
     "ReadError": "xodrcheck.findings",
     "ReadResult": "xodrcheck.reader",
     "Report": "xodrcheck.check",

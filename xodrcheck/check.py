@@ -20,9 +20,7 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
-from xodrcheck import memory
 from xodrcheck.config import Config, ConfigError
-from xodrcheck.filebytes import FileBytes
 from xodrcheck.findings import Finding, OutOfTime, Severity
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.context import Context
@@ -30,6 +28,8 @@ from xodrcheck.rules.internal import ENGINE_CODES as _ENGINE_CODES
 from xodrcheck.rules.internal import RULE_CRASHED, RULE_OUT_OF_TIME
 from xodrcheck.rules.registry import Rule
 from xodrcheck.standard import annex_rules, is_uid, uid_matches
+from xodrcheck.support import memory
+from xodrcheck.support.filebytes import FileBytes
 from xodrcheck.verdict import judge
 
 __all__ = ["Report", "Selection", "check", "is_valid", "is_valid_reason", "run_rules", "validate_selectors"]
@@ -230,8 +230,8 @@ def _run_timed(rule: Rule, ctx: Context, findings: list[Finding], ran: set[str])
         memory.release()  # a rule that ran long built and dropped much: give it back before the next
 
 
-#: Seconds a rule runs before the memory it freed is handed back to the system (:func:`xodrcheck.memory.release`);
-#: quick rules on small files skip it.
+#: Seconds a rule runs before the memory it freed is handed back to the system
+#: (:func:`xodrcheck.support.memory.release`); quick rules on small files skip it.
 _RELEASE_AFTER = 0.2
 
 

@@ -1,7 +1,7 @@
 """pytest plugin (entry point ``pytest11``): assert a map against its committed snapshot.
 
 The fixture ``xodr_snapshot`` is a function ``xodr_snapshot(source, snapshot=None)``: ``source`` is an OpenDRIVE file
-(path or bytes), ``snapshot`` the JSON file of its invariants (see :mod:`xodrcheck.snapshot`; by default
+(path or bytes), ``snapshot`` the JSON file of its invariants (see :mod:`xodrcheck.analysis.snapshot`; by default
 ``snapshots/<file stem>.json`` beside the test module). The test fails with one readable line per change when the
 map's invariants differ from the snapshot, or when there is no snapshot yet. ``pytest --xodr-snapshot-update``
 writes the snapshots instead (new and changed ones), and the test passes::
@@ -39,9 +39,9 @@ class SnapshotAssertion:
         self.update = update
 
     def __call__(self, source: str | Path | bytes, snapshot: str | Path | None = None) -> None:
+        from xodrcheck.analysis.snapshot import SnapshotError, differences, snapshot_of
         from xodrcheck.cli.diff import load
         from xodrcheck.cli.snapshot import dumps
-        from xodrcheck.snapshot import SnapshotError, differences, snapshot_of
 
         if snapshot is None:
             if isinstance(source, bytes):

@@ -1,11 +1,11 @@
 """The slow-input hunt: the checker's cost on hostile documents, which Hypothesis's target phase climbs.
 
 :func:`check_is_bounded` checks one document in this process and measures the CPU seconds it took and the work it
-counted (:mod:`xodrcheck.work`); it hands Hypothesis the cost per kB and the cost itself (``hypothesis.target``), so
-that the search moves toward the worst cases (tiny radii, huge lengths, thousands of records on one road, dense
-repeats), and keeps the slowest documents seen (:data:`SLOWEST`). It fails when a document needs more work of some
-kind than :data:`WORK_BOUNDS` allows (counted, so the verdict is the same on any machine), or crashes the checker;
-how many documents under :data:`LARGE` bytes took more than :data:`SLOW_SECONDS` of CPU is reported beside it.
+counted (:mod:`xodrcheck.support.work`); it hands Hypothesis the cost per kB and the cost itself
+(``hypothesis.target``), so that the search moves toward the worst cases (tiny radii, huge lengths, thousands of records
+on one road, dense repeats), and keeps the slowest documents seen (:data:`SLOWEST`). It fails when a document needs more
+work of some kind than :data:`WORK_BOUNDS` allows (counted, so the verdict is the same on any machine), or crashes the
+checker; how many documents under :data:`LARGE` bytes took more than :data:`SLOW_SECONDS` of CPU is reported beside it.
 
 Run it for a few minutes with ``python -m junctionart.fuzz --runs slow --minutes 10 --slowest DIR`` (the slowest
 documents are written to ``DIR``); ``benchmarks/bench_worst_case.py`` measures them again and prints the slowest per
@@ -26,8 +26,8 @@ from hypothesis import target
 
 from junctionart.fuzz import properties as P
 from junctionart.fuzz.profiles import tolerated
-from xodrcheck import work
 from xodrcheck.findings import ReadError
+from xodrcheck.support import work
 
 __all__ = [
     "KEPT",
@@ -46,9 +46,9 @@ SLOW_SECONDS = 5.0
 LARGE = 100 * 1024
 #: How many of the slowest documents :data:`SLOWEST` keeps.
 KEPT = 40
-#: Most work of each kind (:mod:`xodrcheck.work`) a check of one hostile document may do: about two lane sections
-#: sampled at the sample budget (``max_samples_per_section``, 200,000 samples) with every lane meshed, and bounded
-#: GEOS work; about what 5 s of CPU buys here. Kinds not listed may not occur.
+#: Most work of each kind (:mod:`xodrcheck.support.work`) a check of one hostile document may do: about two lane
+#: sections sampled at the sample budget (``max_samples_per_section``, 200,000 samples) with every lane meshed, and
+#: bounded GEOS work; about what 5 s of CPU buys here. Kinds not listed may not occur.
 WORK_BOUNDS: dict[str, int] = {
     "line points": 10_000_000,
     "mesh vertices": 3_000_000,
@@ -59,7 +59,7 @@ WORK_BOUNDS: dict[str, int] = {
 
 @dataclass(frozen=True)
 class Cost:
-    """What checking one document cost: CPU seconds, its size and the work counted (:mod:`xodrcheck.work`)."""
+    """What checking one document cost: CPU seconds, its size and the work counted (:mod:`xodrcheck.support.work`)."""
 
     cpu: float
     size: int

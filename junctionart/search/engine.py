@@ -161,7 +161,7 @@ def _describe(s: Settings) -> str:
 
 
 def save(folder: Path, state: State) -> None:
-    from xodrcheck.atomic import atomic_file
+    from xodrcheck.support.atomic import atomic_file
 
     with atomic_file(folder / CHECKPOINT, "wb") as stream:
         pickle.dump(state, stream, protocol=pickle.HIGHEST_PROTOCOL)

@@ -1,6 +1,7 @@
 """What the search measures on each candidate: the written map, read back and checked by xodrcheck.
 
-Metrics (names for ``--descriptors`` and ``--where``), all from :mod:`xodrcheck.metrics` on the map's one junction:
+Metrics (names for ``--descriptors`` and ``--where``), all from :mod:`xodrcheck.analysis.metrics` on the map's one
+junction:
 
 ========================  ==========================================================  ================  =======
 name                      meaning                                                      descriptor range  cells
@@ -77,7 +78,7 @@ def objective(area: float) -> float:
 
 def measure_document(document: Any, junction: Any = None) -> dict[str, float]:
     """Every metric of ``junction`` (default: the first) of a document read by xodrcheck's reader."""
-    from xodrcheck.metrics import junction_legs, junction_metrics, smallest_leg_angle
+    from xodrcheck.analysis.metrics import junction_legs, junction_metrics, smallest_leg_angle
 
     junction = document.junctions[0] if junction is None else junction
     m = junction_metrics(document, junction)

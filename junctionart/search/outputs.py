@@ -42,7 +42,7 @@ def _rows(state: State, where: Predicate | None) -> list[dict[str, Any]]:
 
 def write_elites(folder: Path, rows: list[dict[str, Any]], kind: str = "junction") -> None:
     """Each elite's map (regenerated from its vector) and its description as JSON beside it; fills ``sha256``."""
-    from xodrcheck.atomic import atomic_file
+    from xodrcheck.support.atomic import atomic_file
 
     module = kinds.get(kind)
     (folder / "elites").mkdir(exist_ok=True)
@@ -58,7 +58,7 @@ def write_elites(folder: Path, rows: list[dict[str, Any]], kind: str = "junction
 
 
 def write_csv(folder: Path, rows: list[dict[str, Any]], names: tuple[str, ...]) -> Path:
-    from xodrcheck.atomic import atomic_file
+    from xodrcheck.support.atomic import atomic_file
 
     path = folder / "archive.csv"
     columns = [*HEAD, *names, "genome"]
@@ -103,7 +103,7 @@ def heatmaps(folder: Path, state: State) -> list[Path]:
 
 
 def report(folder: Path, state: State, where: Predicate | None, rows: list[dict[str, Any]], images: list[Path]) -> Path:
-    from xodrcheck.atomic import atomic_file
+    from xodrcheck.support.atomic import atomic_file
 
     archive = state.scheduler.archive
     stats = archive.stats

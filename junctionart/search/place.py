@@ -199,7 +199,7 @@ def place_genome(genome: list[float], where: str | None, legs: float, seed: int 
 def place_all(folder: Path, rows: list[dict[str, Any]], where: str | None, jobs: int, progress: bool) -> Path:
     """Place every elite of ``rows`` (``archive.csv``'s, those meeting ``where`` when given) into its own map under
     ``folder/network`` and list them in ``folder/network.csv``; that file's path."""
-    from xodrcheck.atomic import atomic_file
+    from xodrcheck.support.atomic import atomic_file
 
     from .. import era
 

@@ -1,6 +1,6 @@
 """The slow-input hunt: hostile documents grow as asked, the hunt keeps its slowest documents, and the regression
 documents it found (``tests/fuzz/slow``) and the winding roads of O002 check within a fixed amount of counted work
-(:mod:`xodrcheck.work`: counted, not timed)."""
+(:mod:`xodrcheck.support.work`: counted, not timed)."""
 
 from __future__ import annotations
 
@@ -14,8 +14,8 @@ from junctionart.fuzz import campaign, hunt
 from junctionart.fuzz.documents import opendrive_documents
 from junctionart.fuzz.hostile import Growth, hostile_documents
 from junctionart.fuzz.xodrbuild import DocumentSpec, Element, LaneSpec, Pose, RoadSpec, to_bytes
-from xodrcheck import work
 from xodrcheck.check import check
+from xodrcheck.support import work
 
 SLOW = Path(__file__).parent / "slow"
 WINDING = Path(__file__).parents[1] / "xodrcheck" / "rules" / "fixtures" / "lane-fold"

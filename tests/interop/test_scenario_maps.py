@@ -26,9 +26,9 @@ from junctionart import controllines
 from junctionart.params import Params
 from tests.interop.asam_harness import AsamRun
 from tests.interop.tools import asam_problems, carla, run_netconvert, start_asam, xodrcheck_errors
+from xodrcheck.analysis.elevation import elevation_info
 from xodrcheck.check import check
 from xodrcheck.config import Config
-from xodrcheck.elevation_info import elevation_info
 from xodrcheck.reader import read
 
 #: Generated maps are judged as junctionart guarantees them: every rule at its own severity.

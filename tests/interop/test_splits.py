@@ -26,8 +26,8 @@ from junctionart.splits.build import build
 from junctionart.splits.spec import PRESETS, from_dict
 from tests.interop.asam_harness import AsamRun
 from tests.interop.tools import asam_problems, carla, run_netconvert, start_asam, xodrcheck_errors
+from xodrcheck.analysis.metrics import Leg
 from xodrcheck.check import check
-from xodrcheck.metrics import Leg
 from xodrcheck.model import ContactPoint
 from xodrcheck.reader import read
 from xodrcheck.structures import map_structures

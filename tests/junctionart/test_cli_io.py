@@ -190,7 +190,7 @@ def test_summary_explains_repairs_and_verbose_lists_them(tmp_path, capsys):
 
 def test_sigterm_while_writing_leaves_no_temporary_file(tmp_path, capsys, monkeypatch):
     """A real SIGTERM to this process while the map's temporary file is open: it is removed, exit 143."""
-    import xodrcheck.atomic
+    import xodrcheck.support.atomic
 
     fsync = os.fsync
 
@@ -199,7 +199,7 @@ def test_sigterm_while_writing_leaves_no_temporary_file(tmp_path, capsys, monkey
         os.kill(os.getpid(), signal.SIGTERM)
         time.sleep(5)  # the handler raises before this ends
 
-    monkeypatch.setattr(xodrcheck.atomic.os, "fsync", fsync_then_sigterm)
+    monkeypatch.setattr(xodrcheck.support.atomic.os, "fsync", fsync_then_sigterm)
     out = tmp_path / "m.xodr"
     out.write_text("old")
     assert main(["generate", "-q", "-o", str(out)]) == 143

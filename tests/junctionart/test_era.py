@@ -66,7 +66,7 @@ def test_results_do_not_depend_on_the_number_of_workers(tmp_path):
 
 
 def test_rows_are_the_metrics_of_the_written_map(tmp_path):
-    from xodrcheck.metrics import map_metrics
+    from xodrcheck.analysis.metrics import map_metrics
     from xodrcheck.reader import read
 
     params = SMALL["two-lane"]

@@ -8,10 +8,10 @@ import pytest
 
 from junctionart.cli import main
 from junctionart.intersection import IntersectionSpec, LegSpec, build, from_dict, to_dict
+from xodrcheck.analysis.metrics import junction_legs, map_metrics, smallest_leg_angle
 from xodrcheck.check import check
 from xodrcheck.config import Config
 from xodrcheck.findings import Severity
-from xodrcheck.metrics import junction_legs, map_metrics, smallest_leg_angle
 from xodrcheck.reader import read
 
 #: Generated maps are judged as junctionart guarantees them: every rule at its own severity.

@@ -16,10 +16,10 @@ from junctionart import controllines
 from junctionart.params import Params, Terrain
 from junctionart.scenario import terrain
 from junctionart.scenario.overpass import RAMP_LIMITS, RISE
+from xodrcheck.analysis.elevation import elevation_info
 from xodrcheck.check import check
 from xodrcheck.config import Config
-from xodrcheck.elevation_info import elevation_info
-from xodrcheck.footprint import overlap_index
+from xodrcheck.mesh.footprint import overlap_index
 from xodrcheck.reader import read
 
 #: Generated maps are judged as junctionart guarantees them: every rule at its own severity.

@@ -13,10 +13,10 @@ from lxml import etree
 import junctionart as ja
 from junctionart.params import Params
 from junctionart.writer import write
+from xodrcheck.analysis.sample import sample_lanes
 from xodrcheck.check import check
 from xodrcheck.config import Config
 from xodrcheck.reader import read
-from xodrcheck.sample import sample_lanes
 
 #: Generated maps are judged as junctionart guarantees them: every rule at its own severity.
 GENERATOR = Config(profile="generator")

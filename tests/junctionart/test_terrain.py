@@ -118,7 +118,7 @@ def test_terrain_changes_heights_only():
 
 def test_xodrcheck_info_reports_grade_and_link_steps_within_the_limits(hilly):
     """The acceptance figures as ``xodrcheck info`` reports them: max grade <= 8 %, largest z step at a link ~ 0."""
-    from xodrcheck.elevation_info import elevation_info
+    from xodrcheck.analysis.elevation import elevation_info
     from xodrcheck.reader import read
 
     for path in hilly:

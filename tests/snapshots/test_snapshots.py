@@ -18,9 +18,7 @@ import pytest
 
 import junctionart as ja
 from tests.conftest import corpus_root
-from xodrcheck.cli import main
-from xodrcheck.reader import read
-from xodrcheck.snapshot import (
+from xodrcheck.analysis.snapshot import (
     Snapshot,
     SnapshotError,
     differences,
@@ -28,6 +26,8 @@ from xodrcheck.snapshot import (
     snapshot_of,
     topology_hash,
 )
+from xodrcheck.cli import main
+from xodrcheck.reader import read
 
 pytest_plugins = ("pytester",)
 

@@ -179,7 +179,7 @@ def test_footprint_union_stops_when_out_of_time():
     """A lane strip that folds over itself is united triangle block by triangle block; the time check between GEOS
     calls stops it (what makes a damaged 1e9 m spiral end near the budget instead of minutes past it)."""
     from xodrcheck.findings import OutOfTime
-    from xodrcheck.footprint import OverlapIndex
+    from xodrcheck.mesh.footprint import OverlapIndex
     from xodrcheck.reader import read
 
     document = read(fixture("lane-fold", "fail.xodr")).document

@@ -1,5 +1,6 @@
 """The geometric rules' shared caches stay within their byte budgets on a map bigger than them, and the findings are
-those of an unbounded run (xodrcheck.budget, xodrcheck.geometry.lanes.EVALUATION_BUDGET, xodrcheck.rules.sampled)."""
+those of an unbounded run (xodrcheck.support.budget, xodrcheck.geometry.lanes.EVALUATION_BUDGET,
+xodrcheck.rules.sampled)."""
 
 from __future__ import annotations
 
@@ -8,7 +9,6 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from xodrcheck.budget import ByteBudget
 from xodrcheck.check import Selection, run_rules
 from xodrcheck.config import Config
 from xodrcheck.geometry import lanes
@@ -16,6 +16,7 @@ from xodrcheck.model import ContactPoint
 from xodrcheck.reader import read
 from xodrcheck.rules import road_ends, sampled
 from xodrcheck.rules.context import Context
+from xodrcheck.support.budget import ByteBudget
 
 #: The modules whose rules read the shared section lines, road ends and lane evaluations.
 _MODULES = ("curvature", "link", "road_attributes", "junction_shapes", "junction_geometry", "junction_direct")
@@ -126,7 +127,7 @@ def test_lane_meshes_built_in_batches_are_the_one_pass_mesh(
 ):
     """The lane meshes of a big map are built in batches of border points (the temporaries scale with a batch, not
     the map), its sections sampled in batches of sections."""
-    from xodrcheck import mesh
+    from xodrcheck.mesh import surfaces as mesh
 
     document = read(corpus_dir / name).document
     monkeypatch.setattr(mesh, "_MESH_BATCH", 1 << 40)
@@ -162,7 +163,8 @@ def test_lane_outlines_made_in_blocks_are_the_outlines_made_at_once(corpus_dir: 
     """The footprints' polygons of a big map are made a block of lanes at a time (bounded temporaries)."""
     import shapely
 
-    from xodrcheck import footprint, mesh
+    from xodrcheck.mesh import footprint
+    from xodrcheck.mesh import surfaces as mesh
 
     surfaces = mesh.surfaces_of(read(corpus_dir / "carla-towns/OpenDrive/Town07.xodr").document)
     order, owner = surfaces.outline_order()

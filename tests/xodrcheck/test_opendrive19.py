@@ -13,7 +13,9 @@ import xmlschema
 from lxml import etree
 
 from tests.xodrcheck import schemadocs as D
-from xodrcheck import check, schema, schema_fast
+from xodrcheck import check
+from xodrcheck.schema import fast as schema_fast
+from xodrcheck.schema import validate as schema
 
 HERE = Path(__file__).parent
 REPO = HERE.parents[1]

@@ -129,7 +129,7 @@ def test_overlap_findings_are_the_listed_ones(corpus_dir, path):
 
 def test_overlaps_in_blocks_of_pairs_are_the_same(monkeypatch: pytest.MonkeyPatch):
     """Bounded memory: the lane-strip pairs are intersected a block at a time; any block size gives the same list."""
-    from xodrcheck import footprint
+    from xodrcheck.mesh import footprint
     from xodrcheck.reader import read
 
     document = read(corpus_root() / "carla-towns/OpenDrive/Town03.xodr").document

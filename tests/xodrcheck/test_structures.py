@@ -10,7 +10,7 @@ import pytest
 import junctionart
 from junctionart.params import Params
 from xodrcheck import structures
-from xodrcheck.metrics import junction_legs, smallest_leg_angle
+from xodrcheck.analysis.metrics import junction_legs, smallest_leg_angle
 from xodrcheck.reader import read
 
 

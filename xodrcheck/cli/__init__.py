@@ -73,7 +73,7 @@ def build_parser(only: str | None = None) -> argparse.ArgumentParser:
 def main(argv: list[str] | None = None) -> int:
     parser = build_parser(only=_chosen(argv) or "")
     args = parser.parse_args(argv)
-    from xodrcheck.atomic import EXIT_INTERRUPTED, EXIT_TERMINATED, Terminated, signals_raise
+    from xodrcheck.support.atomic import EXIT_INTERRUPTED, EXIT_TERMINATED, Terminated, signals_raise
 
     try:
         with signals_raise():

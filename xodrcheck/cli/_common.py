@@ -2,7 +2,7 @@
 
 The rules every subcommand follows (the README's table): an input that cannot be opened or read whole gives one line
 and exit 2, and nothing is written for it; ``-o FILE`` is checked before any work and written whole or not at all
-(:mod:`xodrcheck.atomic`), also on Ctrl-C (exit 130) and SIGTERM (exit 143); exit 2 never leaves a new file.
+(:mod:`xodrcheck.support.atomic`), also on Ctrl-C (exit 130) and SIGTERM (exit 143); exit 2 never leaves a new file.
 """
 
 from __future__ import annotations
@@ -14,8 +14,8 @@ from collections.abc import Callable, Iterator
 from contextlib import contextmanager
 from typing import IO, TYPE_CHECKING
 
-from xodrcheck.atomic import OutputError, atomic_file, check_target
 from xodrcheck.findings import ReadError, Severity
+from xodrcheck.support.atomic import OutputError, atomic_file, check_target
 
 if TYPE_CHECKING:
     from xodrcheck.reader import ReadResult
@@ -88,8 +88,8 @@ def target_ok(path: str | None) -> bool:
 @contextmanager
 def output(path: str | None) -> Iterator[IO[str]]:
     """A text stream for ``path`` (stdout for ``None`` or ``-``). A file is written whole or not at all
-    (:func:`xodrcheck.atomic.atomic_file`): a failed or interrupted run leaves no partial file, and a problem with the
-    target raises :class:`~xodrcheck.atomic.OutputError` naming ``path``."""
+    (:func:`xodrcheck.support.atomic.atomic_file`): a failed or interrupted run leaves no partial file, and a problem
+    with the target raises :class:`~xodrcheck.support.atomic.OutputError` naming ``path``."""
     if path is None or path == "-":
         yield sys.stdout
         sys.stdout.flush()

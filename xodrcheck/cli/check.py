@@ -30,13 +30,13 @@ import dataclasses
 import sys
 from pathlib import Path
 
-from xodrcheck.atomic import OutputError
 from xodrcheck.cli._common import error, output, target_ok
 from xodrcheck.config import PROFILES, SEVERITY_NAMES, ConfigError, load_config
 from xodrcheck.findings import ReadError, Severity
 from xodrcheck.report import FORMATS, least_severity, render, shown
 from xodrcheck.report.verdict import count, verdict
 from xodrcheck.rules.internal import ENGINE_CODES
+from xodrcheck.support.atomic import OutputError
 
 NAME = "check"
 HELP = "Check OpenDRIVE files against the conformance rules (exit 1 when an error is found)."
@@ -145,8 +145,8 @@ def _expand(files: list[str]) -> list[str]:
 
 
 def run(args: argparse.Namespace) -> int:
-    from xodrcheck.batch import BatchError, check_files
     from xodrcheck.check import Selection
+    from xodrcheck.support.batch import BatchError, check_files
 
     try:
         config = load_config(overrides=tolerance_overrides(args.tolerance), profile=args.profile)

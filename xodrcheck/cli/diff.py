@@ -8,9 +8,9 @@ from __future__ import annotations
 import argparse
 import json
 
+from xodrcheck.analysis.snapshot import Snapshot, SnapshotError, differences
 from xodrcheck.cli._common import error, guarded
 from xodrcheck.cli.snapshot import config_or_error, snapshot_or_error
-from xodrcheck.snapshot import Snapshot, SnapshotError, differences
 
 NAME = "diff"
 HELP = "Compare a map with its snapshot (from 'xodrcheck snapshot'): print what changed, exit 1 if anything did."

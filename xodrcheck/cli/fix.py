@@ -19,13 +19,13 @@ import dataclasses
 import sys
 from typing import TYPE_CHECKING
 
-from xodrcheck.atomic import OutputError, write_bytes
 from xodrcheck.cli._common import error, guarded, target_ok
 from xodrcheck.cli.check import exit_code, split_selectors, tolerance_overrides
 from xodrcheck.config import PROFILES, ConfigError, load_config
 from xodrcheck.findings import ReadError
 from xodrcheck.report import FORMATS, least_severity, render, shown
 from xodrcheck.report.text import not_shown
+from xodrcheck.support.atomic import OutputError, write_bytes
 
 if TYPE_CHECKING:
     from xodrcheck.check import Report

@@ -10,8 +10,8 @@ from __future__ import annotations
 
 import argparse
 
-from xodrcheck.atomic import OutputError
 from xodrcheck.cli._common import error, guarded, output, read_file, report_errors, target_ok
+from xodrcheck.support.atomic import OutputError
 
 NAME = "graph"
 HELP = "Write the lane graph of a map (lanes, links, lane changes) as JSON, Graphviz DOT or GeoJSON."

@@ -4,14 +4,14 @@ JSON output (``--format json``) is one object per file, one per line (JSON Lines
 
 ``file`` (str), ``opendrive_version`` ("major.minor" or null), ``roads`` (int), ``junction_roads`` (int: roads inside a
 junction), ``junctions`` ({``total``: int, ``by_type``: {type: int}, ``by_legs``: {"legs": int}}; legs as in
-:func:`xodrcheck.info.junction_legs`), ``lane_sections``
+:func:`xodrcheck.analysis.info.junction_legs`), ``lane_sections``
 (int), ``lanes`` ({``total``: int, ``by_type``: {type: int}, ``counted``: "per lane section, centre lanes excluded"}),
 ``reference_line_length_m`` (float), ``geometry`` ({kind: int}), ``bounding_box`` ({``min_x``, ``min_y``, ``max_x``,
 ``max_y``: float, ``basis``: "lane borders" | "reference line" | "lane borders and reference line"} or null),
 ``findings`` ({``error``, ``warning``, ``info``: int}: what the reader found; the rules are not run, so a file
 ``xodrcheck check`` fails may show 0 errors here), ``findings_counted`` (str, says so), ``elevation`` ({``min_z``,
 ``max_z`` (m), ``max_grade`` (fraction), ``max_link_step_m``, ``links``: int} or null: see
-:mod:`xodrcheck.elevation_info`).
+:mod:`xodrcheck.analysis.elevation`).
 
 A file that cannot be read whole (not well-formed, not OpenDRIVE) prints nothing and exits 2, as in every command; a
 file read whole with reader errors is summarised and exits 1.
@@ -24,9 +24,9 @@ import dataclasses
 import json
 import sys
 
+from xodrcheck.analysis.elevation import ElevationInfo
+from xodrcheck.analysis.info import MapInfo, map_info
 from xodrcheck.cli._common import guarded, read_file, report_errors
-from xodrcheck.elevation_info import ElevationInfo
-from xodrcheck.info import MapInfo, map_info
 
 NAME = "info"
 HELP = "Summarise OpenDRIVE files: version, roads, junctions, lanes, geometry, extent and reader findings."

@@ -2,7 +2,7 @@
 
 Lanes are meshed under a chord tolerance (``--chord``, default the configured ``Tolerances.chord``), elevation and
 superelevation applied; ``--lane-types`` keeps only some lane types. Colours and grouping by lane type, axes and
-atomic writing: :mod:`xodrcheck.mesh_export`. Exit 0 when written, 1 when written but the reader found errors in the
+atomic writing: :mod:`xodrcheck.mesh.export`. Exit 0 when written, 1 when written but the reader found errors in the
 file (or there was nothing to mesh: no file then), 2 for a usage or I/O error (unknown extension, an input that cannot
 be read whole, an unwritable output, a mesh of more than ``max_output_points`` vertices): nothing written.
 """
@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import argparse
 
-from xodrcheck.atomic import OutputError
 from xodrcheck.cli._common import (
     error,
     guarded,
@@ -21,9 +20,10 @@ from xodrcheck.cli._common import (
     target_ok,
 )
 from xodrcheck.config import ConfigError, load_config
-from xodrcheck.mesh import MeshTooLarge, build_surfaces
-from xodrcheck.mesh_export import FORMATS, ExportError, format_of, write
+from xodrcheck.mesh.export import FORMATS, ExportError, format_of, write
+from xodrcheck.mesh.surfaces import MeshTooLarge, build_surfaces
 from xodrcheck.model import LaneType
+from xodrcheck.support.atomic import OutputError
 
 NAME = "mesh"
 HELP = "Write the lane surfaces as a 3D mesh (.glb, .obj or .ply), coloured by lane type."

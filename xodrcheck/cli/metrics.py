@@ -1,7 +1,7 @@
 """``xodrcheck metrics FILE... --format json|csv [-o OUT]``: expressive-range metrics of every junction.
 
-The metrics are defined in :mod:`xodrcheck.metrics`. Column names carry their unit: ``_m`` metres, ``_m2`` square
-metres, ``_deg`` degrees, ``_deg_per_m`` degrees per metre; ``conflict_ratio`` (conflict area / area) and
+The metrics are defined in :mod:`xodrcheck.analysis.metrics`. Column names carry their unit: ``_m`` metres, ``_m2``
+square metres, ``_deg`` degrees, ``_deg_per_m`` degrees per metre; ``conflict_ratio`` (conflict area / area) and
 ``complexity`` are ratios in [0, 1], ``legs`` and the ``n_`` columns counts. A value that does not apply is null (JSON)
 or empty (CSV).
 
@@ -20,9 +20,9 @@ import sys
 from collections.abc import Iterator
 from typing import IO
 
-from xodrcheck.atomic import OutputError
+from xodrcheck.analysis.metrics import JunctionMetrics, LegMetrics, map_metrics
 from xodrcheck.cli._common import error, guarded, output, read_file, report_errors, target_ok
-from xodrcheck.metrics import JunctionMetrics, LegMetrics, map_metrics
+from xodrcheck.support.atomic import OutputError
 
 NAME = "metrics"
 HELP = "Expressive-range metrics of every junction: FOV, maxCurvature, cornerDeviation, complexity, area, conflicts."

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import argparse
 
-from xodrcheck.atomic import OutputError
 from xodrcheck.cli._common import error, guarded, output, read_file, target_ok
+from xodrcheck.support.atomic import OutputError
 
 NAME = "route"
 HELP = "Find the shortest route between two lanes (ROAD:LANE[:S]): its length, lanes and polyline."

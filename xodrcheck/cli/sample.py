@@ -20,7 +20,7 @@ import json
 import math
 from typing import IO
 
-from xodrcheck.atomic import OutputError
+from xodrcheck.analysis.sample import LaneLine, sample_count, sample_lanes
 from xodrcheck.cli._common import (
     error,
     guarded,
@@ -32,7 +32,7 @@ from xodrcheck.cli._common import (
 )
 from xodrcheck.config import ConfigError, load_config
 from xodrcheck.model import Document
-from xodrcheck.sample import LaneLine, sample_count, sample_lanes
+from xodrcheck.support.atomic import OutputError
 
 NAME = "sample"
 HELP = "Sample every lane's centre line (and borders) at a fixed step, as CSV or GeoJSON."

@@ -1,5 +1,5 @@
 """``xodrcheck snapshot FILE.xodr [-o SNAP.json]``: write the invariants of a map as JSON (see
-:mod:`xodrcheck.snapshot`). Exit 0 when the snapshot was written, 2 when the file cannot be read whole, the
+:mod:`xodrcheck.analysis.snapshot`). Exit 0 when the snapshot was written, 2 when the file cannot be read whole, the
 configuration cannot be read or the output cannot be written (nothing written then).
 """
 
@@ -8,11 +8,11 @@ from __future__ import annotations
 import argparse
 import json
 
-from xodrcheck.atomic import OutputError
+from xodrcheck.analysis.snapshot import NotReadWhole, Snapshot, snapshot_of
 from xodrcheck.cli._common import error, guarded, not_whole_message, output, target_ok
 from xodrcheck.config import Config, ConfigError, load_config
 from xodrcheck.findings import ReadError
-from xodrcheck.snapshot import NotReadWhole, Snapshot, snapshot_of
+from xodrcheck.support.atomic import OutputError
 
 NAME = "snapshot"
 HELP = (

@@ -27,9 +27,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from xodrcheck.atomic import OutputError
     from xodrcheck.mapview import CHORD, map_data
     from xodrcheck.mapview.page import FilePage, render_page
+    from xodrcheck.support.atomic import OutputError
 
     if not target_ok(args.output):
         return 2

@@ -26,14 +26,14 @@ from collections.abc import Iterator, Sequence
 
 import numpy as np
 
-from xodrcheck import work
-from xodrcheck.arrays import batches
 from xodrcheck.geometry.jet import Jet
 from xodrcheck.geometry.lines import LanePoints, Lines, split
 from xodrcheck.geometry.planview import poses
 from xodrcheck.geometry.pose import Pose
 from xodrcheck.geometry.profile import Laws
 from xodrcheck.geometry.rows import ADD, BORDER, SUBTRACT, SectionRows, Step, layout_of
+from xodrcheck.support import work
+from xodrcheck.support.arrays import batches
 
 _WHERE = ("centre", "inner", "outer")
 #: Codes of the lines asked for: a lane's outer border (or lane 0's line), its centre, its inner border.

@@ -57,7 +57,6 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.budget import ByteBudget, array_bytes
 from xodrcheck.config import Tolerances
 from xodrcheck.geometry import profile
 from xodrcheck.geometry.batch import Evaluation
@@ -67,12 +66,14 @@ from xodrcheck.geometry.pose import Pose, as_array
 from xodrcheck.geometry.rows import SectionRows, lay_out
 from xodrcheck.geometry.sampling import sample_sections
 from xodrcheck.model import Document, Lane, LaneLayer, Road, document_cache
+from xodrcheck.support.budget import ByteBudget, array_bytes
 
 _WHERE = ("centre", "inner", "outer")
 
 
-#: Bytes of lane evaluations the roads of one document keep cached together (:class:`~xodrcheck.budget.ByteBudget`;
-#: each road also keeps at most its last few): a 10 km map's roads kept 466 MB after the curvature rules without it.
+#: Bytes of lane evaluations the roads of one document keep cached together
+#: (:class:`~xodrcheck.support.budget.ByteBudget`; each road also keeps at most its last few): a 10 km map's roads kept
+#: 466 MB after the curvature rules without it.
 EVALUATION_BUDGET = 32 << 20
 
 

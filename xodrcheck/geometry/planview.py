@@ -20,10 +20,10 @@ from collections.abc import Callable, Sequence
 
 import numpy as np
 
-from xodrcheck.arrays import ranges
 from xodrcheck.geometry import arc, line, parampoly3, poly3, spiral
 from xodrcheck.geometry.pose import Pose, as_array
 from xodrcheck.model import Arc, Geometry, Line, ParamPoly3, Poly3, Spiral
+from xodrcheck.support.arrays import ranges
 
 _EVALUATORS: dict[type, Callable[..., Pose]] = {
     Line: line.evaluate,

@@ -24,9 +24,9 @@ from functools import lru_cache
 
 import numpy as np
 
-from xodrcheck.arrays import ranges
 from xodrcheck.geometry.pose import as_array
 from xodrcheck.model import Cubic, Profile
+from xodrcheck.support.arrays import ranges
 
 
 class Piecewise:

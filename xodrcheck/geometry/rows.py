@@ -16,10 +16,10 @@ from typing import Protocol
 
 import numpy as np
 
-from xodrcheck.arrays import ranges
 from xodrcheck.geometry.planview import ReferenceLine
 from xodrcheck.geometry.profile import Piecewise, Table
 from xodrcheck.model import Cubic, Lane
+from xodrcheck.support.arrays import ranges
 
 #: Kinds of a row: no record (the outer border is the inner one), a width added or subtracted, a border record.
 NONE, ADD, SUBTRACT, BORDER = 0, 1, -1, 2

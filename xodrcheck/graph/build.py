@@ -37,7 +37,7 @@ from xodrcheck.model import (
     document_cache,
     lane_type_name,
 )
-from xodrcheck.quantities import metres
+from xodrcheck.support.quantities import metres
 
 __all__ = ["LANE_CHANGE", "LINK", "LaneGraph", "Node", "Stop", "lane_graph", "zero_wide"]
 

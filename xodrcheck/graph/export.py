@@ -19,7 +19,7 @@ from xodrcheck.graph.build import KINDS, LaneGraph, Node
 from xodrcheck.graph.lengths import centre_line, node_lengths
 from xodrcheck.graph.routes import Route
 from xodrcheck.model import Document
-from xodrcheck.quantities import metres
+from xodrcheck.support.quantities import metres
 
 __all__ = ["graph_dot", "graph_geojson", "graph_json", "route_geojson", "route_json", "route_text"]
 

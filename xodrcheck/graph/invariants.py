@@ -1,5 +1,5 @@
-"""Reachability invariants of a map, for its snapshot (:mod:`xodrcheck.snapshot`): the lane graph's strongly connected
-parts, where traffic enters and leaves the map, and which (entry, exit) pairs no route joins.
+"""Reachability invariants of a map, for its snapshot (:mod:`xodrcheck.analysis.snapshot`): the lane graph's strongly
+connected parts, where traffic enters and leaves the map, and which (entry, exit) pairs no route joins.
 
 An entry or exit is named ``ROAD:LANE:END``: the road, the lane id of its lane section there and the road's end
 (``start`` or ``end``) where traffic comes in or goes out. The snapshot keeps the pairs *without* a route (few on a

@@ -24,8 +24,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.arrays import ranges
 from xodrcheck.graph.build import LaneGraph
+from xodrcheck.support.arrays import ranges
 
 __all__ = [
     "Reachability",

@@ -24,7 +24,7 @@ from xodrcheck.graph import paths
 from xodrcheck.graph.build import LANE_CHANGE, LINK, LaneGraph, Node
 from xodrcheck.graph.lengths import CentreLine, centre_line, node_lengths
 from xodrcheck.model import Document
-from xodrcheck.quantities import metres
+from xodrcheck.support.quantities import metres
 
 __all__ = ["Place", "PlaceError", "Route", "RouteStep", "parse_place", "route"]
 

@@ -34,7 +34,7 @@ from xodrcheck.model import (
     Road,
     RoadLink,
 )
-from xodrcheck.quantities import metres
+from xodrcheck.support.quantities import metres
 
 __all__ = ["BROKEN", "JUNCTION", "OPEN", "ROAD", "SECTION", "UNFOLLOWED", "Onward", "Target", "Topology"]
 

@@ -26,7 +26,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xodrcheck.objects.model import RoadObject
-from xodrcheck.quantities import metres
+from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:  # pragma: no cover
     from xodrcheck.geometry.lanes import RoadGeometry

@@ -26,9 +26,9 @@ from lxml import etree
 from xodrcheck import model
 from xodrcheck.findings import Finding, Severity
 from xodrcheck.model import NO_FACTS, Cubic, Profile, UnknownElement, XmlFacts
-from xodrcheck.quantities import metres
 from xodrcheck.rules import xml as R
 from xodrcheck.rules.registry import NO_UID, Rule
+from xodrcheck.support.quantities import metres
 
 T = TypeVar("T")
 

@@ -35,11 +35,11 @@ from xodrcheck.model import (
 if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree
 
-    from xodrcheck.filebytes import FileBytes
     from xodrcheck.geometry.lanes import RoadGeometry
     from xodrcheck.junction_elements import JunctionParts
     from xodrcheck.objects import RoadObject, RoadObjects
     from xodrcheck.signals import Signals
+    from xodrcheck.support.filebytes import FileBytes
 
 
 _T = TypeVar("_T")
@@ -111,7 +111,8 @@ class Context:
         self.config = config or Config()
         self.path = path
         #: The file's raw bytes (``None`` when the document was built in memory), or, when the caller passed the
-        #: reader's tree, the file searched on disk (:class:`~xodrcheck.filebytes.FileBytes`: ``b"..." in ctx.data``).
+        #: reader's tree, the file searched on disk (:class:`~xodrcheck.support.filebytes.FileBytes`: ``b"..." in
+        #: ctx.data``).
         self.data = data
         #: ``time.monotonic()`` value after which expensive rules should stop (``None``: no limit).
         self.deadline = deadline

@@ -29,10 +29,10 @@ from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.geometry.batch import centre_lines
 from xodrcheck.geometry.lines import tightest
 from xodrcheck.model import Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context, placed_lane_ids
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import BATCH_SAMPLES, lines_in_order, section_lines, section_samples, usable
+from xodrcheck.support.quantities import metres
 
 
 def _sections(ctx: Context):

@@ -10,11 +10,11 @@ from typing import NamedTuple
 from xodrcheck.findings import Category, Severity
 from xodrcheck.geometry.cubic import CubicCurve
 from xodrcheck.model import Arc, ParamPoly3, PRange
-from xodrcheck.quantities import metres
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.geometry import _at, _finite
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 
 class LengthVerdict(NamedTuple):

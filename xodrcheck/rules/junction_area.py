@@ -16,7 +16,6 @@ import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import ElementType, Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts
 from xodrcheck.rules.junction_shapes import (
@@ -29,6 +28,7 @@ from xodrcheck.rules.junction_shapes import (
     signed_area,
 )
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
     from xodrcheck.junction_elements import JunctionParts

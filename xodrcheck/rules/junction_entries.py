@@ -31,16 +31,16 @@ import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import ContactPoint, Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts
 from xodrcheck.rules.junction_shapes import boundary_pieces, joint_lanes, reference_line
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import end_s, usable
+from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
+    from xodrcheck.geometry.junction_grid import GridSurface
     from xodrcheck.junction_elements import JointSegment, JunctionParts
-    from xodrcheck.junction_grid import GridSurface
     from xodrcheck.rules.junction_shapes import Piece, ReferenceLine
 
 #: Step (m) into the road over which its grade at the end is measured (a difference quotient of the exact surface).
@@ -198,7 +198,7 @@ def elevation_grid_entry_exit(ctx: Context) -> Iterator[Finding]:
         grid, line = j.grid, reference_line(j)
         if grid is None or j.type != "default":
             continue
-        from xodrcheck.junction_grid import grid_surface  # here: only a junction with a grid loads it
+        from xodrcheck.geometry.junction_grid import grid_surface  # here: only a junction with a grid loads it
 
         surface = grid_surface(grid)
         if surface is None or line is None:

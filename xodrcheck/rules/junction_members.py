@@ -15,11 +15,11 @@ from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, JunctionType, Lane, LaneType, Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts
 from xodrcheck.rules.junction_roles import legs
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
     from xodrcheck.junction_elements import CrossPath, JunctionParts

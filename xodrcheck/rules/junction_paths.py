@@ -17,12 +17,12 @@ import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts
 from xodrcheck.rules.junction_shapes import boundary_pieces, gaps, ring, road_points, strip
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import left_of, usable
+from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
     from xodrcheck.junction_elements import CrossPath, CrossPathLink, JunctionParts

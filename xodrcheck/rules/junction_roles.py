@@ -17,10 +17,10 @@ from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts, link_at, other_end
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 from xodrcheck.xmlvalues import local, number
 
 if TYPE_CHECKING:

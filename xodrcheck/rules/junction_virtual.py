@@ -18,11 +18,11 @@ import numpy as np
 from xodrcheck.findings import Basis, Category, Finding, Severity
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import ContactPoint, ElementType, Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, junction_parts, link_at
 from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.rules.sampled import angle_between, end_s, left_of, usable, warning_note
+from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
     from xodrcheck.junction_elements import JunctionParts

@@ -12,13 +12,13 @@ from typing import Any
 
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, Lane, LaneType
-from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_joints import WORD, joints, opposed, pair_key, side_lanes
 from xodrcheck.rules.lane_joints import Joint as Joint  # named here as before
 from xodrcheck.rules.lane_joints import Side as Side
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 # ------------------------------------------------------------------------------------------------ centre lane, ids
 _CENTRE_ID = U.CENTER_LANE_ID

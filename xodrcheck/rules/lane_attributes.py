@@ -8,11 +8,11 @@ from collections.abc import Iterator
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import DRIVABLE_LANE_TYPES as DRIVABLE
 from xodrcheck.model import Lane, LaneAccess, LaneDirection, LaneSection, Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane import joints, pair_key, side_lanes
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 
 @rule("L014", "lane-level-one-side", Category.LANE, Severity.ERROR, uids=(U.LEVEL_TRUE_ONE_SIDE,), every_version=True)

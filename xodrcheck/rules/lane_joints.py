@@ -13,8 +13,8 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context, link_at, travel_direction
+from xodrcheck.support.quantities import metres
 
 #: The lane link that crosses each end: ``predecessor`` at a start, ``successor`` at an end.
 WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}

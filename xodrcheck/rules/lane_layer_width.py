@@ -5,11 +5,11 @@ from __future__ import annotations
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import grid_step, usable
+from xodrcheck.support.quantities import metres
 
 
 def _edges(geometry, index: int, s: np.ndarray) -> tuple[np.ndarray | None, np.ndarray | None]:

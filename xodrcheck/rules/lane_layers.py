@@ -12,11 +12,11 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import DRIVABLE_LANE_TYPES, Cubic, LaneType
-from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_xml import LaneXml, SectionXml, lane_elements, number
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 _TYPES = {t.value.lower(): t for t in LaneType}
 

@@ -8,12 +8,12 @@ from collections import defaultdict
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Lane
-from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, link_at
 from xodrcheck.rules.lane import joints, side_lanes
 from xodrcheck.rules.lane_joints import Joint, opposed
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 _WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}
 #: What a lane's ``<link>`` holds when it is not empty.

@@ -6,10 +6,10 @@ from collections.abc import Iterator
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Lane, RoadMark, RoadMarkLine
-from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 _NOT_CHECKED = (
     "a <roadMark> says which border it styles only through the tOffset of its <line> elements (in <type> or "

@@ -13,11 +13,11 @@ import itertools
 from lxml import etree
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_xml import LaneXml, by_section, lane_elements, local, number
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 #: An ``sOffset`` this close to 0 is 0 (written-number noise, not a tolerance).
 _ZERO = 1e-9

@@ -7,10 +7,10 @@ from collections.abc import Iterator
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Lane, Lanes, Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 #: A lane section starting this close to s=0 starts at 0 (written-number noise, not a tolerance).
 _ZERO = 1e-9

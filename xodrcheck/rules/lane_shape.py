@@ -18,11 +18,11 @@ import numpy as np
 from xodrcheck.findings import Category, Severity
 from xodrcheck.geometry.batch import Evaluation
 from xodrcheck.model import Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import BATCH_SAMPLES, usable
+from xodrcheck.support.quantities import metres
 
 _NODES = np.array([0.125, 0.375, 0.625, 0.875])
 _FIT = np.linalg.inv(np.vander(_NODES, 4, increasing=True))  # values at the nodes -> coefficients in u
@@ -81,7 +81,7 @@ _BORDER_BATCH_SAMPLES = BATCH_SAMPLES // 2
 def _all_borders(ctx: Context, nodes: dict) -> Iterator[tuple[tuple[int, int], dict[int, np.ndarray]]]:
     """(key, :meth:`RoadGeometry.borders` at the piece nodes) of every section with pieces, evaluated in batches of
     sections (the same numbers as section by section, with a fraction of the numpy calls)."""
-    from xodrcheck.arrays import batches
+    from xodrcheck.support.arrays import batches
 
     keys, sections, samples = [], [], []
     for key, (road, found) in nodes.items():

@@ -15,8 +15,8 @@ from dataclasses import dataclass
 
 from lxml import etree
 
-from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context
+from xodrcheck.support.quantities import metres
 from xodrcheck.xmlvalues import integer, local, number
 
 GROUPS = ("left", "center", "right")

@@ -13,12 +13,12 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Lane, Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_shape import lane_width_bounds
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import usable
+from xodrcheck.support.quantities import metres
 
 
 def _zero_records(

@@ -33,7 +33,6 @@ import math
 
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, LaneSection, Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as JU
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules import road_uids as RU
@@ -62,6 +61,7 @@ from xodrcheck.rules.link_joints import (
 )
 from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.rules.sampled import angle_between, reference_end, road_end, section_lines, usable, warning_note
+from xodrcheck.support.quantities import metres
 
 
 @rule(

@@ -14,10 +14,10 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import TrafficRule
-from xodrcheck.quantities import metres
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
     from xodrcheck.objects import LaneValidity, ObjectReference, RoadObject, Structure

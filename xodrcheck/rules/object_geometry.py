@@ -16,13 +16,13 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xodrcheck.findings import Basis, Category, Severity
-from xodrcheck.quantities import metres
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import all_objects, label
 from xodrcheck.rules.object_outlines import name_of
 from xodrcheck.rules.object_skeletons import polyline_name
 from xodrcheck.rules.registry import NO_UID, rule
+from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
     from xodrcheck.objects import Outline, RoadObject, Vertex

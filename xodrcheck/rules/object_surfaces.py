@@ -2,7 +2,7 @@
 patches, described by an OpenCRG file in the object's local frame (13.13), and objects set perpendicular to the road.
 
 Bounding volumes are placed by the road's exact reference line (:mod:`xodrcheck.objects.place`); roads' lane areas
-come from the overlap rules' footprints (:mod:`xodrcheck.footprint`, built once per file and shared).
+come from the overlap rules' footprints (:mod:`xodrcheck.mesh.footprint`, built once per file and shared).
 """
 
 from __future__ import annotations
@@ -16,11 +16,11 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.quantities import metres
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import all_objects, at, label
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:  # pragma: no cover
     import shapely
@@ -277,7 +277,7 @@ def _crossed_roads(ctx: Context, box: Box, wanted: Callable[[str], bool] | None 
     """Road id -> plan-view area of the road's lanes under a surface box (the box's height range within
     ``clearance`` of the lane surface there), for the roads ``wanted`` asks about (all by default): lanes of other
     roads are passed over before their areas and heights are computed."""
-    from xodrcheck.footprint import overlap_index, sample_points
+    from xodrcheck.mesh.footprint import overlap_index, sample_points
 
     index = overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time, ctx.tolerances.max_turns)
     footprints, lanes = index.footprints, index.surfaces.lanes

@@ -17,11 +17,11 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Arc, Line, ParamPoly3, PRange
-from xodrcheck.quantities import metres
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.elements import length_verdict
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
     from xodrcheck.objects import CurveLocal, Outline, RoadObject

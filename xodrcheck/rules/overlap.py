@@ -1,12 +1,12 @@
 """Overlap rules (``O0xx``): lane surfaces that occupy the same place, from the plan-view footprints of the lane
-meshes (:mod:`xodrcheck.footprint`, sampled under ``Tolerances.chord``).
+meshes (:mod:`xodrcheck.mesh.footprint`, sampled under ``Tolerances.chord``).
 
-Two roads may overlap when they are *related* (:class:`xodrcheck.footprint.Relations`): consecutive roads (a road
+Two roads may overlap when they are *related* (:class:`xodrcheck.mesh.footprint.Relations`): consecutive roads (a road
 link either way: ASAM OpenDRIVE 10.3 tolerates an overlap where properly linked roads meet; such roads are not
 compared anywhere, so an overlap away from their joint goes unreported: ``O001``'s partial note), members of one
 junction (only roads with the same junction id may overlap, Annex F ``road.overlap_inside_junction``; their connection
-lanes cross by design, :func:`xodrcheck.footprint.conflict_areas`), and the roads of one direct junction. Other pairs
-overlap when their footprints share more than ``Tolerances.overlap_area`` square metres where their surfaces are
+lanes cross by design, :func:`xodrcheck.mesh.footprint.conflict_areas`), and the roads of one direct junction. Other
+pairs overlap when their footprints share more than ``Tolerances.overlap_area`` square metres where their surfaces are
 closer in height than ``Tolerances.clearance`` (a bridge with clearance is no overlap). Heights are compared at a
 point inside each shared piece and at up to 24 points of its outline; a piece counts in proportion to its points
 within the clearance. Borders that merely touch share no area. A road overlapping itself is ``O002`` (a lane folds) or
@@ -28,14 +28,14 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from xodrcheck.findings import Basis, Category, Severity
-from xodrcheck.quantities import metres
 from xodrcheck.rules import junction_uids as JU
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
-    from xodrcheck.footprint import Overlap, OverlapIndex
+    from xodrcheck.mesh.footprint import Overlap, OverlapIndex
 
 
 #: Height (m) between two overlapping surfaces from which the message treats the upper one as a bridge lacking
@@ -44,8 +44,8 @@ BRIDGE_HEIGHT = 1.0
 
 
 def _overlap_index(ctx: Context) -> OverlapIndex:
-    """The file's :class:`~xodrcheck.footprint.OverlapIndex` (shapely loads here, when an overlap rule runs)."""
-    from xodrcheck.footprint import overlap_index
+    """The file's :class:`~xodrcheck.mesh.footprint.OverlapIndex` (shapely loads here, when an overlap rule runs)."""
+    from xodrcheck.mesh.footprint import overlap_index
 
     return overlap_index(ctx.document, ctx.tolerances.chord, ctx.out_of_time, ctx.tolerances.max_turns)
 
@@ -69,7 +69,7 @@ def _pairs(ctx: Context, drivable: bool) -> dict[tuple[str, str], _Pair]:
     cache = ctx.__dict__.setdefault("_overlap_pairs", {})  # per file: O001, O003 and O004 share one pass
     if drivable in cache:
         return cache[drivable]
-    from xodrcheck.footprint import DRIVABLE_TYPE_NAMES
+    from xodrcheck.mesh.footprint import DRIVABLE_TYPE_NAMES
 
     tol = ctx.tolerances
     index = _overlap_index(ctx)

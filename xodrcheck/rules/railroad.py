@@ -9,10 +9,10 @@ from lxml import etree
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Lane, LaneSection, LaneType, Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context, placed_lane_ids
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 _RAIL = (LaneType.RAIL, LaneType.TRAM)
 

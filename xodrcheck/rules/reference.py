@@ -11,12 +11,12 @@ from typing import Any
 
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, LaneSection, Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules import feature_uids as F
 from xodrcheck.rules import junction_uids as JU
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, link_at
 from xodrcheck.rules.registry import NO_UID, Rule, rule
+from xodrcheck.support.quantities import metres
 
 
 def _duplicates(rule_: Rule, items: Iterable, what: str, **where):

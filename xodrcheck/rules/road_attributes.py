@@ -15,11 +15,11 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Road, Shape
-from xodrcheck.quantities import metres
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import section_lines, usable
+from xodrcheck.support.quantities import metres
 
 _ALPHA_2 = re.compile(r"[A-Z]{2}")
 

@@ -15,12 +15,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.arrays import batches
 from xodrcheck.geometry.batch import Evaluation
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.geometry.lines import LanePoints
 from xodrcheck.model import ContactPoint, Road
 from xodrcheck.rules.context import Context
+from xodrcheck.support.arrays import batches
 
 
 def left_of(s: float) -> float:

@@ -19,15 +19,12 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.arrays import batches
-from xodrcheck.budget import ByteBudget, array_bytes
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Severity
 from xodrcheck.geometry.batch import Evaluation
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.geometry.lines import LanePoints
 from xodrcheck.model import Road
-from xodrcheck.quantities import metres
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.road_ends import END_CURVES as _END_CURVES
 from xodrcheck.rules.road_ends import ENDS as _ENDS
@@ -38,6 +35,9 @@ from xodrcheck.rules.road_ends import end_s as end_s
 from xodrcheck.rules.road_ends import left_of as left_of
 from xodrcheck.rules.road_ends import reference_end as reference_end
 from xodrcheck.rules.road_ends import road_end as road_end
+from xodrcheck.support.arrays import batches
+from xodrcheck.support.budget import ByteBudget, array_bytes
+from xodrcheck.support.quantities import metres
 
 
 def usable(ctx: Context, road: Road) -> RoadGeometry | None:

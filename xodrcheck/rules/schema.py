@@ -5,10 +5,10 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Iterator
 
-from xodrcheck import schema
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.schema import validate as schema
 
 #: Schema errors reported one by one per file; the rest are counted in one last finding.
 MAX_REPORTED = 200
@@ -51,12 +51,12 @@ def schema_invalid(ctx: Context):
     """The file does not validate against the XSD of the OpenDRIVE version its header declares.
 
     1.1 to 1.7 are validated with lxml, 1.8 and 1.9 with an XSD 1.1 validator (their schemas use assertions and type
-    alternatives; a fast verdict, :mod:`xodrcheck.schema_fast`, spares valid files the slow one). A 1.6 file is
+    alternatives; a fast verdict, :mod:`xodrcheck.schema.fast`, spares valid files the slow one). A 1.6 file is
     checked against the 1.6.1 schema, 1.7 against 1.7.0, 1.8 against 1.8.1, 1.9 against 1.9.0 (see
-    :mod:`xodrcheck.schema`; 1.8.1 and 1.9.0 with the corrections of :mod:`xodrcheck.schema_errata`, without which
-    every multiBoard signal, vmsGroup and defaultRegulations would be invalid). Each schema error is one finding at
-    its line, up to 200 per file; what the validator reports several times for one cause (one attribute of one element:
-    xmlschema gives a bad number once per check it fails) is one finding.
+    :mod:`xodrcheck.schema.validate`; 1.8.1 and 1.9.0 with the corrections of :mod:`xodrcheck.schema.errata`, without
+    which every multiBoard signal, vmsGroup and defaultRegulations would be invalid). Each schema error is one finding
+    at its line, up to 200 per file; what the validator reports several times for one cause (one attribute of one
+    element: xmlschema gives a bad number once per check it fails) is one finding.
 
     The elements are validated in the namespace the schema declares them in: a file whose elements are in another
     one (the 1.1 and 1.2 schemas put them in ``www.vires.com``, which the files those versions' tools wrote do not

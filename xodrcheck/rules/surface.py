@@ -10,10 +10,10 @@ from collections.abc import Iterator
 from lxml import etree
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.quantities import metres
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 from xodrcheck.xmlvalues import local
 
 _POLYNOMIALS = ("width", "constant", "linear", "quadratic", "cubic")

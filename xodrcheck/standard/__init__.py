@@ -21,8 +21,8 @@ import functools
 import re
 from dataclasses import dataclass
 
-from xodrcheck import packagedata
 from xodrcheck.findings import Severity
+from xodrcheck.support import packagedata
 
 #: Where the annex is published (each UID's section number is given beside it).
 ANNEX_URL = (

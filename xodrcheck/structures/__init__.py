@@ -3,8 +3,8 @@
 A *structure* is a junction, or several junctions together, that a driver meets as one thing. Its *kind* is one of
 :data:`KINDS`: an ordinary ``junction``, or a special layout with its own measures (a ``fork`` or merge: one road
 splitting into two, or two joining; a ``ramp``: an exit or entry lane leaving or joining a road; a ``roundabout``...).
-Like :mod:`xodrcheck.metrics`, everything is read from the document the independent reader builds, so a generated map
-and a third-party one are classified the same way, and never from what a generator remembers.
+Like :mod:`xodrcheck.analysis.metrics`, everything is read from the document the independent reader builds, so a
+generated map and a third-party one are classified the same way, and never from what a generator remembers.
 
 Recognition runs the kinds' recognisers in :data:`KINDS` order. Each one looks at the junctions no earlier recogniser
 claimed and returns the structures it recognises; the junctions left at the end are each a ``junction``. A kind's

@@ -4,8 +4,9 @@ A junction is fork-shaped when it has three legs and one of them, the *stem*, is
 from (a split: the stem feeds both other legs, the *branches*) or goes to (a merge: both branches feed the stem):
 every flow through the junction (:mod:`.flows`) joins the stem and a branch, none goes from one branch to the other,
 and both branches leave within 90 degrees of straight on. A direct junction (12.6) is the standard's model of one;
-a common junction with connecting roads qualifies too. Directions are the legs' (:func:`xodrcheck.metrics.make_leg`:
-from the incident point to the point 50 m back along the road), so they compare with the junction kind's angles.
+a common junction with connecting roads qualifies too. Directions are the legs'
+(:func:`xodrcheck.analysis.metrics.make_leg`: from the incident point to the point 50 m back along the road), so they
+compare with the junction kind's angles.
 
 Measures: ``split_angle``, the largest angle between the two branches' headings (away from the junction) at equal
 distances along their roads up to :data:`REACH` metres (or the shorter road's end): the angle the branches part by,
@@ -23,8 +24,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck.analysis.metrics import Leg, leg_ends, make_leg
 from xodrcheck.geometry.lanes import geometry_of
-from xodrcheck.metrics import Leg, leg_ends, make_leg
 from xodrcheck.model import ContactPoint, Document, Junction, JunctionType, Road
 
 from . import Kind, Measure, Structure

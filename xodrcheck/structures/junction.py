@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
-from xodrcheck.metrics import junction_legs, smallest_leg_angle
+from xodrcheck.analysis.metrics import junction_legs, smallest_leg_angle
 from xodrcheck.model import Document, Junction
 
 from . import Kind, Measure, Structure

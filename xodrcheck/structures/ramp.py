@@ -20,8 +20,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from xodrcheck.analysis.metrics import Leg
 from xodrcheck.geometry.lanes import geometry_of
-from xodrcheck.metrics import Leg
 from xodrcheck.model import ContactPoint, Document, Junction
 
 from . import Kind, Measure, Structure

@@ -28,8 +28,8 @@ from collections.abc import Sequence
 
 import numpy as np
 
+from xodrcheck.analysis.metrics import leg_ends
 from xodrcheck.geometry.lanes import geometry_of
-from xodrcheck.metrics import leg_ends
 from xodrcheck.model import ContactPoint, Document, ElementType, Junction, Road
 
 from . import Kind, Measure, Structure

@@ -10,8 +10,8 @@ from pathlib import Path
 import pytest
 
 from tests.xodrcheck.rules.helpers import fixture
-from xodrcheck.batch import Outcome, check_files
 from xodrcheck.cli import main
+from xodrcheck.support.batch import Outcome, check_files
 
 FILES = [
     fixture("road-link-target-missing", "fail.xodr"),

@@ -14,10 +14,10 @@ from pathlib import Path
 import pytest
 
 from tests.xodrcheck.cli import maps
-from xodrcheck.atomic import EXIT_TERMINATED, OutputError, Terminated, atomic_file, signals_raise
+from xodrcheck.analysis.sample import sample_count
 from xodrcheck.cli import main
 from xodrcheck.reader import read
-from xodrcheck.sample import sample_count
+from xodrcheck.support.atomic import EXIT_TERMINATED, OutputError, Terminated, atomic_file, signals_raise
 
 REPO = Path(__file__).resolve().parents[3]
 T_JUNCTION = (REPO / "examples" / "t-junction.xodr").read_bytes()

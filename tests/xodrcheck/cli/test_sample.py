@@ -13,8 +13,8 @@ import pytest
 
 import xodrcheck.cli.sample as sample_cli
 from tests.xodrcheck.cli import maps
+from xodrcheck.analysis.sample import section_s_values
 from xodrcheck.cli import main
-from xodrcheck.sample import section_s_values
 
 
 def write(tmp_path: Path, text: str, name: str = "map.xodr") -> Path:

@@ -9,11 +9,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from xodrcheck.analysis.sample import sample_lanes
 from xodrcheck.check import Report, check
 from xodrcheck.findings import Finding, Severity
 from xodrcheck.fix.result import FixResult
 from xodrcheck.reader import read
-from xodrcheck.sample import sample_lanes
 
 
 def place(f: Finding) -> tuple:

@@ -14,18 +14,18 @@ from hypothesis import HealthCheck, given, settings
 from junctionart.fuzz.documents import opendrive_documents
 from junctionart.fuzz.mutations import damaged_documents
 from tests.conftest import corpus_root
-from xodrcheck import arrays
 from xodrcheck.check import Selection, run_rules
 from xodrcheck.config import Config
 from xodrcheck.geometry.batch import Evaluation, centre_lines
 from xodrcheck.geometry.lanes import RoadGeometry, geometry_of, road_geometry
 from xodrcheck.geometry.lines import tightest
 from xodrcheck.geometry.sampling import sample_sections
-from xodrcheck.mesh import MAX_COORDINATE, build_surfaces
+from xodrcheck.mesh.surfaces import MAX_COORDINATE, build_surfaces
 from xodrcheck.model import LaneKey
 from xodrcheck.reader import read
 from xodrcheck.rules import curvature, junction_geometry, sampled
 from xodrcheck.rules.context import Context, placed_lane_ids
+from xodrcheck.support import arrays
 
 CHORD, MAX_STEP, BUDGET = 0.01, 5.0, 200_000
 #: Corpus maps with many sections, lane offsets, multi-record widths, border records, spirals and paramPoly3.

@@ -2,7 +2,7 @@
 junction's own conflict areas are not."""
 
 from tests.xodrcheck.rules.helpers import findings, fixture
-from xodrcheck.footprint import conflict_areas, junction_area
+from xodrcheck.mesh.footprint import conflict_areas, junction_area
 from xodrcheck.reader import read
 
 RULE = "connection-overlap"

@@ -17,9 +17,9 @@ def test_lane_wider_than_the_radius_folds():
 def test_a_road_winding_round_itself_is_named_not_united():
     """A 3 km arc of radius 0.5 m (issue 31): each lane says it winds round itself 955 times, and the union of its
     triangles (minutes of GEOS work) is never made: the footprint is left empty."""
-    from xodrcheck import work
-    from xodrcheck.footprint import OverlapIndex
+    from xodrcheck.mesh.footprint import OverlapIndex
     from xodrcheck.reader import read
+    from xodrcheck.support import work
 
     path = fixture(RULE, "fail-winding.xodr")
     found = findings(path, RULE)

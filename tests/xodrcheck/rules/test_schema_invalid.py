@@ -40,7 +40,7 @@ def test_one_finding_per_cause():
 
 def test_causes_are_told_apart_by_line_element_and_attribute():
     from xodrcheck.rules.schema import one_per_cause
-    from xodrcheck.schema import SchemaError
+    from xodrcheck.schema.validate import SchemaError
 
     errors = [
         SchemaError(5, "Element 'road': attribute length='abc': value doesn't match any pattern of ['x']"),
