@@ -9,15 +9,19 @@ else where the next section of its layer starts, else at the road's end).
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.model import Lane, LaneHeight, LaneMaterial, LaneSection, Road
+from xodrcheck.model import Lane, LaneHeight, LaneSection, Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:  # pragma: no cover - the model's lane records load for a file with some
+    from xodrcheck.model import LaneMaterial
 
 _PERMANENT, _TEMPORARY = "permanent", "temporary"
 

@@ -12,13 +12,17 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.model import Lane, LaneAccess, LaneMaterial, LaneRule, Lanes, LaneSection, LaneVisibility, Road
+from xodrcheck.model import Lane, Lanes, LaneSection, Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:  # pragma: no cover - the model's lane records load for a file with some
+    from xodrcheck.model import LaneAccess, LaneMaterial, LaneRule, LaneVisibility
 
 #: An ``sOffset`` this close to 0 is 0 (written-number noise, not a tolerance).
 _ZERO = 1e-9

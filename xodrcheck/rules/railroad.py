@@ -3,15 +3,19 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
-from xodrcheck.model import Lane, LaneSection, LaneType, Road, Station, Switch
+from xodrcheck.model import Lane, LaneSection, LaneType, Road
 from xodrcheck.quantities import metres
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context, placed_lane_ids
 from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:  # pragma: no cover - the model's railroad modules load for a file with stations or switches
+    from xodrcheck.model import Station, Switch
 
 _RAIL = (LaneType.RAIL, LaneType.TRAM)
 

@@ -25,16 +25,19 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from xodrcheck.findings import Basis, Category, Severity
-from xodrcheck.model import ContactPoint, Controller, ElementType, Junction, JunctionType, LaneValidity, Road
+from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
 from xodrcheck.rules.context import Context, link_at, travel_direction
 from xodrcheck.rules.junction_geometry import _centre_path, _parted
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import usable
+
+if TYPE_CHECKING:  # pragma: no cover - the model's signal module loads for a file with signals
+    from xodrcheck.model import Controller, LaneValidity
 
 #: Dynamic signals of the OpenDRIVE signal reference that are not for vehicles on the lanes they stand beside:
 #: pedestrian light (1000002, the spec's own example of 14.4), pedestrian and bicycle light (1000007), bicycle light

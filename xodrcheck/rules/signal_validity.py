@@ -5,13 +5,16 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.model import LaneValidity, SignalReference, TrafficRule
+from xodrcheck.model import TrafficRule
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:  # pragma: no cover - the model's signal module loads for a file with signals
+    from xodrcheck.model import LaneValidity, SignalReference
 
 _ORIENTATIONS = ("+", "-", "none")
 

@@ -5,14 +5,16 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.model import CrossSectionSurface, Road, SurfaceCrg, SurfaceStrip
 from xodrcheck.quantities import metres
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+
+if TYPE_CHECKING:  # pragma: no cover - the model's surface module loads for a file with surfaces
+    from xodrcheck.model import CrossSectionSurface, Road, SurfaceCrg, SurfaceStrip
 
 _POLYNOMIALS = ("width", "constant", "linear", "quadratic", "cubic")
 
