@@ -132,6 +132,9 @@ FEATURE_MODULES = {
     "xodrcheck.objects.shape",
     "xodrcheck.objects.place",
     "xodrcheck.signals",
+    "xodrcheck.model.signals",
+    "xodrcheck.model.surface",
+    "xodrcheck.model.railroad",
 }
 
 # PLAIN with one of each: a junction, an object and a signal (and their ids' references left dangling: findings
@@ -147,7 +150,7 @@ FEATURES = PLAIN.replace(
 
 def test_plain_check_loads_no_junction_object_or_signal_module(tmp_path: Path, plain: Path) -> None:
     # the junction, object and signal rules are loaded and run; what they would read loads only for a file that
-    # has junctions, objects or signals (Context.road_objects, rules.context.junction_parts, has_signals)
+    # has junctions, objects or signals (Context.road_objects, rules.context.junction_parts, the model's signals)
     names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(plain))
     rules = {"xodrcheck.rules.junction_roles", "xodrcheck.rules.junction_entries", "xodrcheck.rules.object_geometry"}
     assert rules | {"xodrcheck.rules.signal_control", "xodrcheck.rules.junction_shapes"} <= names
@@ -174,7 +177,7 @@ def test_check_of_junctions_objects_and_signals_loads_their_modules(tmp_path: Pa
     path.write_text(FEATURES)
     names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(path))
     assert {"xodrcheck.junction_elements", "xodrcheck.objects.model", "xodrcheck.objects.read"} <= names
-    assert "xodrcheck.signals" in names
+    assert "xodrcheck.model.signals" in names  # the signal rules read the document's signals
 
 
 def test_check_without_overlap_rules_loads_no_shapely(tmp_path: Path, plain: Path) -> None:

@@ -2,7 +2,8 @@
 
 For every corpus map and every rule fixture, what the XML views build from the tree the rules see (``Context.tree``:
 :mod:`xodrcheck.objects.read`, :mod:`xodrcheck.signals`, :mod:`xodrcheck.junction_elements`,
-:mod:`xodrcheck.rules.lane_xml`, and the walks some rules make over the tree themselves; road types and shapes, which
+the walks some rules make over the tree themselves, and the lanes as written (:func:`lane_elements`, the walk the
+lane rules made before they read the document); road types and shapes, which
 the rules read from the document, against the tree directly) is compared, field by field, with the same records of
 :class:`xodrcheck.model.Document`. Where the two spell a value differently (a raw attribute against an enumeration, a
 count against the records) the test converts the view's spelling, so that every value is compared.
@@ -16,6 +17,7 @@ happens on the corpus.
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -28,9 +30,8 @@ from xodrcheck.model import ContactPoint, Document, Junction, Lane, LaneSection,
 from xodrcheck.objects.read import read_road_objects
 from xodrcheck.reader import read
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.lane_xml import lane_elements
 from xodrcheck.signals import read_signals
-from xodrcheck.xmlvalues import local, number
+from xodrcheck.xmlvalues import integer, local, number
 
 HERE = Path(__file__).parent
 FIXTURES = sorted((HERE / "rules" / "fixtures").rglob("*.xodr")) + sorted((HERE / "opendrive19").glob("*.xodr"))
@@ -423,16 +424,54 @@ def _lane(view: Any, group: str, lane: Lane, layered: bool, where: str) -> None:
     assert targets.get(("successor", "temporary"), []) == list(lane.temporary_successors), where
 
 
-def check_lanes(document: Document, ctx: Context) -> None:
-    view = lane_elements(ctx)
+@dataclass(frozen=True)
+class SectionXml:
+    """A ``<laneSection>`` element and where it sits (``s`` ``None``: missing or not a number)."""
+
+    road: str | None
+    lanes_element: etree._Element
+    element: etree._Element
+    s: float | None
+    layer: str  # the ``layer`` of its ``<lanes>`` (``permanent`` when absent)
+
+
+@dataclass(frozen=True)
+class LaneXml:
+    """A ``<lane>`` element of a lane section's ``<left>``, ``<center>`` or ``<right>`` (``id`` ``None``: not an
+    integer)."""
+
+    section: SectionXml
+    group: str
+    element: etree._Element
+    id: int | None
+
+
+def lane_elements(root: etree._Element) -> tuple[list[SectionXml], list[LaneXml]]:
+    """Every ``<road>/<lanes>/<laneSection>`` and its ``<left|center|right>/<lane>`` elements, in file order."""
+    sections: list[SectionXml] = []
+    lanes: list[LaneXml] = []
+    for road_el in root.iterchildren("{*}road"):
+        for lanes_el in road_el.iterchildren("{*}lanes"):
+            for section_el in lanes_el.iterchildren("{*}laneSection"):
+                layer = lanes_el.get("layer") or "permanent"
+                section = SectionXml(road_el.get("id"), lanes_el, section_el, number(section_el.get("s")), layer)
+                sections.append(section)
+                for group_el in section_el.iterchildren(*(f"{{*}}{g}" for g in _GROUPS)):
+                    for lane_el in group_el.iterchildren("{*}lane"):
+                        lanes.append(LaneXml(section, local(group_el), lane_el, integer(lane_el.get("id"))))
+    return sections, lanes
+
+
+def check_lanes(document: Document, root: etree._Element) -> None:
+    view_sections, view_lanes = lane_elements(root)
     layered = document.version is None or document.version >= (1, 9)
     lanes_of: dict[int, list[Any]] = {}
-    for lane in view.lanes:
+    for lane in view_lanes:
         lanes_of.setdefault(id(lane.section), []).append(lane)
     read = {lanes.line for _, _, lanes in _layers(document)}  # a repeated <lanes> of a layer is reported, not read
     sections = [
         s
-        for s in view.sections
+        for s in view_sections
         if (s.road is not None and s.s is not None and s.lanes_element.sourceline in read) or _narrow()
     ]
     records = [
@@ -811,7 +850,7 @@ def _check(path: Path) -> int:
     for check in CHECKS:
         check(document, root)
     check_road_records(document, root)
-    check_lanes(document, ctx)
+    check_lanes(document, root)
     return Narrowed.count
 
 

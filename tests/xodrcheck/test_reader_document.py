@@ -207,6 +207,19 @@ def test_facts_say_given_defaulted_unknown_and_invalid():
     assert width.xml.attributes == ("sOffset", "a", "b", "c", "d") and width.xml.unknown == ()
 
 
+def test_links_the_reader_cannot_read_are_kept_as_written():
+    link = '<link><predecessor elementId="7" contactPoint="end"/><successor elementType="road" elementId="2"/></link>'
+    result = read(xodr(road(link), road(attrs='id="2" length="10" junction="-1"')))
+    assert result.document is not None
+    first = result.document.roads[0]
+    assert first.predecessor is None and first.successor is not None  # the link without elementType is no link
+    (unread,) = first.unread_links
+    assert (unread.tag, unread.element_type, unread.element_id, unread.line) == ("predecessor", None, "7", 3)
+    assert unread.xml.attributes == ("elementId", "contactPoint")
+    assert result.document.roads[1].unread_links == ()
+    assert any("elementType" in f.message for f in result.findings)  # and the reader reports it
+
+
 def test_facts_are_shared_and_left_out_of_equality():
     doc = clean(xodr(road(), road(attrs='id="2" length="10" junction="-1"')))
     first, second = doc.roads

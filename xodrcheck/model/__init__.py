@@ -53,7 +53,7 @@ _MODULES = {
         "CrgPurpose ElementDir ElementType JunctionGroupType JunctionType LaneAdvisory LaneDirection LaneLayer "
         "LaneType MaxSpeed Orientation PRange ReferenceType Side StationType SwitchPosition TrafficRule"
     ),
-    "facts": "NO_FACTS UnknownElement XmlFacts facts_field",
+    "facts": "NO_FACTS UnknownElement UnreadLink XmlFacts facts_field",
     "planview": "Arc Cubic Geometry Line ParamPoly3 Poly3 Profile Spiral",
     "lanes": "Lane LaneHeight LaneKey LaneLinks LaneSection Lanes RoadMark Speed lane_type_name",
     "lane_records": (

@@ -11,6 +11,9 @@ Records whose elements say the same share one :class:`XmlFacts` (the reader keep
 elements has a few thousand distinct ones, so the facts cost a pointer per record. Where the standard allows one
 element and a file gives several, the record holds the first (the reader reports the others) and ``children`` still
 lists them all. A record built in code (tests, the generator) has :data:`NO_FACTS`.
+
+An element the reader reports and leaves out is no record; where a rule asks how such elements are written, it is
+kept here: :class:`UnreadLink` (a road link without ``elementType`` or ``elementId``, on ``Road.unread_links``).
 """
 
 from __future__ import annotations
@@ -18,7 +21,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any
 
-__all__ = ["NO_FACTS", "UnknownElement", "XmlFacts", "facts_field"]
+__all__ = ["NO_FACTS", "UnknownElement", "UnreadLink", "XmlFacts", "facts_field"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -67,3 +70,17 @@ def facts_field() -> Any:
     """The ``xml`` field of a record: :data:`NO_FACTS` unless the reader gives it, left out of equality and ``repr``
     (two records of the same values are equal however the file spelt them)."""
     return field(default=NO_FACTS, compare=False, repr=False)
+
+
+@dataclass(frozen=True, slots=True)
+class UnreadLink:
+    """A road's ``<predecessor>`` or ``<successor>`` the reader could not read: without ``elementType`` or
+    ``elementId``, or with an ``elementType`` that is neither road nor junction. The reader reports it and the road
+    has no such link; what the file wrote is kept here for the rules on how links are written (``K004``)."""
+
+    tag: str
+    #: ``elementType`` and ``elementId`` as written (``None``: absent).
+    element_type: str | None
+    element_id: str | None
+    line: int = 0
+    xml: XmlFacts = facts_field()

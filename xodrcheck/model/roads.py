@@ -12,7 +12,7 @@ from dataclasses import dataclass, replace
 from typing import TYPE_CHECKING
 
 from xodrcheck.model.enums import ContactPoint, ElementDir, ElementType, TrafficRule
-from xodrcheck.model.facts import XmlFacts, facts_field
+from xodrcheck.model.facts import UnreadLink, XmlFacts, facts_field
 from xodrcheck.model.lanes import Lanes, LaneSection
 from xodrcheck.model.planview import Geometry, Profile
 
@@ -71,6 +71,8 @@ class Road:
     bridges: tuple[Bridge, ...] = ()
     signal_references: tuple[SignalReference, ...] = ()
     xml: XmlFacts = facts_field()
+    #: Links the reader could not read (without elementType or elementId): not links, facts about the file.
+    unread_links: tuple[UnreadLink, ...] = ()
 
     def section_end(self, index: int) -> float:
         """End s of lane section ``index`` (the next section's start or the road length; earlier when the section

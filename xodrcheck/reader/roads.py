@@ -23,6 +23,7 @@ from xodrcheck.model import (
     Road,
     RoadLink,
     TrafficRule,
+    UnreadLink,
     XmlFacts,
 )
 from xodrcheck.reader.context import LEAF, Context, cubics, describe
@@ -200,7 +201,8 @@ def _road_link(ctx: Context, el: etree._Element) -> RoadLink | None:
     return model.RoadLink(element_type, element_id, contact, element_s, element_dir, el.sourceline, ctx.facts(el, LEAF))
 
 
-def _links(ctx: Context, el: etree._Element) -> tuple[RoadLink | None, RoadLink | None]:
+def _links(ctx: Context, el: etree._Element) -> tuple[RoadLink | None, RoadLink | None, tuple[UnreadLink, ...]]:
+    """The road's predecessor and successor, and the links among them it could not read."""
     found: dict[str, etree._Element] = {}
     for child in el:
         tag = child.tag
@@ -209,12 +211,17 @@ def _links(ctx: Context, el: etree._Element) -> tuple[RoadLink | None, RoadLink 
                 ctx.repeated(child, found[tag])
             else:
                 found[tag] = child
-    pred = found.get("predecessor")
-    succ = found.get("successor")
-    return (
-        None if pred is None else _road_link(ctx, pred),
-        None if succ is None else _road_link(ctx, succ),
-    )
+    links: dict[str, RoadLink | None] = {}
+    unread = []
+    for tag, child in found.items():
+        links[tag] = link = _road_link(ctx, child)
+        if link is None:
+            unread.append(
+                UnreadLink(
+                    tag, child.get("elementType"), child.get("elementId"), child.sourceline, ctx.facts(child, LEAF)
+                )
+            )
+    return links.get("predecessor"), links.get("successor"), tuple(unread)
 
 
 # ---------------------------------------------------------------------------------------------------------- road
@@ -374,9 +381,10 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
         rule = ctx.choice(el, "rule", _TRAFFIC_RULES, "read as RHT, the standard's default") or TrafficRule.RHT
 
     pred = succ = None
+    unread: tuple[UnreadLink, ...] = ()
     link = first.get("link")
     if link is not None:
-        pred, succ = _links(ctx, link)
+        pred, succ, unread = _links(ctx, link)
 
     elevation: Profile = ()
     if "elevationProfile" in first:
@@ -422,4 +430,5 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
         bridges,
         references,
         ctx.facts(el, _ROAD, children=tags),
+        unread,
     )

@@ -1,53 +1,65 @@
-"""Which attributes a road's ``<predecessor>`` and ``<successor>`` use (``K004``), read from the file's XML.
+"""Which attributes a road's ``<predecessor>`` and ``<successor>`` use (``K004``), read from the document.
 
 Roads and junctions are linked with different attribute sets (10.3, Table 24): a road by ``elementType``,
 ``elementId`` and ``contactPoint``; a junction by ``elementType`` and ``elementId`` alone; a road joined inside
 another road (a virtual junction's connection, 12.7) by ``elementType``, ``elementId``, ``elementS`` and
 ``elementDir``. A road link without ``contactPoint`` is ``link-contact-point-missing`` (``K002``).
+
+Read from the document: a road's links, and the links the reader could not read (``Road.unread_links``: without
+``elementType`` or ``elementId``); which attributes a link gives, from its XML facts.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator
-from typing import TYPE_CHECKING
+from dataclasses import dataclass
 
 from xodrcheck.findings import Basis, Category, Severity
-from xodrcheck.model import Document, JunctionType
+from xodrcheck.model import Document, JunctionType, RoadLink, UnreadLink, XmlFacts
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.standard import applies
 
-if TYPE_CHECKING:  # pragma: no cover
-    from lxml import etree
-
 _USAGE = (U.LINKAGE_ROAD_ATTRIBUTES, U.LINKAGE_JUNCTION_ATTRIBUTES, U.LINKAGE_VIRTUAL_ATTRIBUTES)
 _NOT_FOR_JUNCTIONS = ("contactPoint", "elementS", "elementDir")
 
 
-def _links(ctx: Context) -> Iterator[tuple[str, str | None, etree._Element]]:
-    """(road id, the road's junction attribute, link element) for every road's predecessor and successor."""
-    tree = ctx.tree
-    if tree is None:
-        return
-    for road in tree.getroot().iterchildren("{*}road"):
-        road_id = road.get("id")
-        if road_id is None:
-            continue
-        for link in road.iterchildren("{*}link"):
-            for el in link.iterchildren("{*}predecessor", "{*}successor"):
-                yield road_id, road.get("junction"), el
+@dataclass(frozen=True, slots=True)
+class _Written:
+    """A road's ``<predecessor>`` or ``<successor>`` as written: ``elementType`` (``None``: absent), ``elementId``,
+    its line and facts."""
+
+    tag: str
+    kind: str | None
+    target: str | None
+    line: int
+    xml: XmlFacts
+
+
+def _links(ctx: Context) -> Iterator[tuple[str, str | None, _Written]]:
+    """(road id, the road's junction, link) for every road's predecessor and successor, read or not, in file order."""
+    for road in ctx.document.roads:
+        found: list[_Written] = [
+            _Written(tag, link.element_type.value, link.element_id, link.line, link.xml)
+            for tag, link in (("predecessor", road.predecessor), ("successor", road.successor))
+            if isinstance(link, RoadLink)
+        ]
+        found += [_unread(link) for link in road.unread_links]
+        for link in sorted(found, key=lambda link: link.line):
+            yield road.id, road.junction, link
+
+
+def _unread(link: UnreadLink) -> _Written:
+    return _Written(link.tag, link.element_type, link.element_id, link.line, link.xml)
 
 
 def _main_roads(ctx: Context) -> dict[str, str]:
     """Virtual junction id -> its ``mainRoad``."""
-    tree = ctx.tree
     out: dict[str, str] = {}
-    if tree is None:
-        return out
-    for el in tree.getroot().iterchildren("{*}junction"):
-        if el.get("type") == "virtual" and el.get("id") is not None and el.get("mainRoad") is not None:
-            out.setdefault(el.get("id"), el.get("mainRoad"))
+    for junction in ctx.document.junctions:
+        if junction.type is JunctionType.VIRTUAL and junction.main_road is not None:
+            out.setdefault(junction.id, junction.main_road)
     return out
 
 
@@ -58,7 +70,6 @@ def _main_roads(ctx: Context) -> dict[str, str]:
     Severity.ERROR,
     uids=_USAGE,
     basis=Basis.PLAUSIBILITY,
-    xml=True,
 )
 def link_attribute_usage(ctx: Context):
     """A road's ``<predecessor>`` or ``<successor>`` does not use the attribute set of what it links to.
@@ -85,24 +96,22 @@ def link_attribute_usage(ctx: Context):
     document = ctx.document
     main_roads = _main_roads(ctx)
     junction_rule = applies(U.LINKAGE_JUNCTION_ATTRIBUTES, ctx.version)
-    for road_id, junction_id, el in _links(ctx):
-        for message, uid in _misuses(document, main_roads, road_id, junction_id, el):
+    for road_id, junction_id, link in _links(ctx):
+        for message, uid in _misuses(document, main_roads, road_id, junction_id, link):
             if uid is None and not junction_rule:
                 continue  # as the junction attribute rule: from OpenDRIVE 1.7 on
             yield link_attribute_usage.finding(
-                message, uid=NO_UID if uid is None else uid, road=road_id, line=el.sourceline
+                message, uid=NO_UID if uid is None else uid, road=road_id, line=link.line or None
             )
 
 
 def _misuses(
-    document: Document, main_roads: dict[str, str], road_id: str, junction_id: str | None, el: etree._Element
+    document: Document, main_roads: dict[str, str], road_id: str, junction_id: str | None, link: _Written
 ) -> Iterator[tuple[str, str | None]]:
-    """What road ``road_id``'s link ``el`` gets wrong: (message, the Annex F UID it breaks, or None: no UID's words
-    forbid it, a plausibility finding)."""
-    kind = el.get("elementType")
-    target = el.get("elementId")
-    tag = el.tag.rsplit("}", 1)[-1]
-    mine = f"road {road_id}: the {tag} {target!r} (line {el.sourceline})"
+    """What road ``road_id``'s link gets wrong: (message, the Annex F UID it breaks, or None: no UID's words forbid
+    it, a plausibility finding)."""
+    kind, target, gives = link.kind, link.target, link.xml.given
+    mine = f"road {road_id}: the {link.tag} {target!r} (line {link.line or None})"
     if kind is None:
         if target in document.road_by_id and target not in document.junction_by_id:
             yield (
@@ -116,7 +125,7 @@ def _misuses(
             )
         return
     if kind == "junction":
-        extra = [name for name in _NOT_FOR_JUNCTIONS if el.get(name) is not None]
+        extra = [name for name in _NOT_FOR_JUNCTIONS if gives(name)]
         if extra:
             junction = document.junction_by_id.get(target or "")
             what = f"{junction.type.value} junction" if junction is not None else "junction"
@@ -128,7 +137,7 @@ def _misuses(
         return
     if kind != "road":
         return  # not a link type (schema, reader)
-    has_s, has_dir = el.get("elementS") is not None, el.get("elementDir") is not None
+    has_s, has_dir = gives("elementS"), gives("elementDir")
     if has_s != has_dir:
         given, missing = ("elementS", "elementDir") if has_s else ("elementDir", "elementS")
         yield (

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 import numpy as np
-from lxml import etree
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Lane, LaneSection, LaneType, Road
@@ -13,6 +13,9 @@ from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context, placed_lane_ids
 from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
+
+if TYPE_CHECKING:  # pragma: no cover - the model's railroad modules load for a file with stations or switches
+    from xodrcheck.model import Station, Switch
 
 _RAIL = (LaneType.RAIL, LaneType.TRAM)
 
@@ -92,10 +95,8 @@ def rail_reference_line_off_centre(ctx: Context):
                 )
 
 
-def _stations(ctx: Context) -> Iterator[etree._Element]:
-    if ctx.tree is None or (ctx.data is not None and b"station" not in ctx.data):
-        return
-    yield from ctx.tree.getroot().iterchildren("{*}station")
+def _stations(ctx: Context) -> tuple[Station, ...]:
+    return ctx.document.stations
 
 
 @rule(
@@ -104,7 +105,6 @@ def _stations(ctx: Context) -> Iterator[etree._Element]:
     Category.RAILROAD,
     Severity.ERROR,
     uids=(U.PLATFORMS_MIN_AMOUNT, U.ONE_PLATFORM_PER_STATION, U.PLATFORMS_MIN_SEGMENTS, U.SEGMENTS_PER_PLATFORM),
-    xml=True,
 )
 def station_without_platform(ctx: Context):
     """A ``<station>`` has no ``<platform>``, or a ``<platform>`` has no ``<segment>``.
@@ -123,41 +123,38 @@ def station_without_platform(ctx: Context):
         <station id="1" name="Main"/>
     """
     for station in _stations(ctx):
-        platforms = list(station.iterchildren("{*}platform"))
-        name = f"station {station.get('id')!r} ({station.get('name')})"
+        platforms = station.platforms
+        name = f"station {station.id!r} ({station.name})"
         if not platforms:
             for uid in (U.PLATFORMS_MIN_AMOUNT, U.ONE_PLATFORM_PER_STATION):
                 yield station_without_platform.finding(
                     f"{name} has no <platform>: a station has at least one platform, where passengers get on and off",
                     uid=uid,
-                    line=station.sourceline,
+                    line=station.line or None,
                 )
         for platform in platforms:
-            if next(platform.iterchildren("{*}segment"), None) is None:
+            if not platform.segments:
                 for uid in (U.PLATFORMS_MIN_SEGMENTS, U.SEGMENTS_PER_PLATFORM):
                     yield station_without_platform.finding(
-                        f"platform {platform.get('id')!r} of {name} has no <segment>: a segment names the track "
+                        f"platform {platform.id!r} of {name} has no <segment>: a segment names the track "
                         "(road, sStart, sEnd, side) the platform lies beside",
                         uid=uid,
-                        line=platform.sourceline,
+                        line=platform.line or None,
                     )
 
 
-def _switches(ctx: Context) -> list[tuple[str, etree._Element]]:
-    """(road id, ``<switch>``) for every switch of the file."""
-    if ctx.tree is None or (ctx.data is not None and b"switch" not in ctx.data):
-        return []
+def _switches(ctx: Context) -> list[tuple[str, Switch]]:
+    """(road id, switch) for every switch of the file."""
     return [
-        (road.get("id", "?"), switch)
-        for road in ctx.tree.getroot().iterchildren("{*}road")
-        for railroad in road.iterchildren("{*}railroad")
-        for switch in railroad.iterchildren("{*}switch")
+        (road.id, switch)
+        for road in ctx.document.roads
+        if road.railroad is not None
+        for switch in road.railroad.switches
     ]
 
 
-def _track(switch: etree._Element, kind: str) -> str | None:
-    el = next(switch.iterchildren(f"{{*}}{kind}"), None)
-    return None if el is None else el.get("id")
+def _id(switch: Switch) -> str:
+    return "?" if switch.id is None else switch.id
 
 
 @rule(
@@ -166,7 +163,6 @@ def _track(switch: etree._Element, kind: str) -> str | None:
     Category.RAILROAD,
     Severity.ERROR,
     uids=(U.SWITCH_CONNECTION, U.SINGLE_SWITCH_NO_PARTNER),
-    xml=True,
 )
 def switch_topology(ctx: Context):
     """Switches are connected through a main track, or a single switch names a partner.
@@ -189,11 +185,13 @@ def switch_topology(ctx: Context):
     switches = _switches(ctx)
     side_of: dict[str, list[str]] = {}
     for _, switch in switches:
-        side = _track(switch, "sideTrack")
+        side = None if switch.side_track is None else switch.side_track.id
         if side is not None:
-            side_of.setdefault(side, []).append(switch.get("id", "?"))
+            side_of.setdefault(side, []).append(_id(switch))
     for road_id, switch in switches:
-        sid, main, side = switch.get("id", "?"), _track(switch, "mainTrack"), _track(switch, "sideTrack")
+        sid = _id(switch)
+        main = None if switch.main_track is None else switch.main_track.id
+        side = None if switch.side_track is None else switch.side_track.id
         others = [other for other in side_of.get(main or "", []) if other != sid]
         if others:
             yield switch_topology.finding(
@@ -201,20 +199,20 @@ def switch_topology(ctx: Context):
                 f"switch {others[0]!r}: two switches are connected by a side track, not a main track",
                 uid=U.SWITCH_CONNECTION,
                 road=road_id,
-                line=switch.sourceline,
+                line=switch.line or None,
             )
-        partner = next(switch.iterchildren("{*}partner"), None)
+        partner = switch.partner
         if partner is None:
             continue
         linked = [other for other in side_of.get(side or "", []) if other != sid]
         if not linked:
             yield switch_topology.finding(
-                f"switch {sid!r} on road {road_id} names partner {partner.get('id')!r}, but its side track "
+                f"switch {sid!r} on road {road_id} names partner {partner.id!r}, but its side track "
                 f"{side} reaches no other switch: a single switch has no partner (remove <partner>, or give both "
                 "switches the side track that links them)",
                 uid=U.SINGLE_SWITCH_NO_PARTNER,
                 road=road_id,
-                line=partner.sourceline,
+                line=partner.line or None,
             )
 
 

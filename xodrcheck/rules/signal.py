@@ -1,6 +1,6 @@
 """Signals (chapter 14): type, country, signal boards, semantics, controllers, variable message board groups
-(``T001``-``T007``). The signals come from :mod:`xodrcheck.signals` (``ctx.signals``); lane validities and signal
-references are :mod:`.signal_validity`'s.
+(``T001``-``T007``), read from the document: each road's signals, the file's controllers and vmsGroups; lane
+validities and signal references are :mod:`.signal_validity`'s.
 """
 
 from __future__ import annotations
@@ -13,15 +13,20 @@ from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 
-if TYPE_CHECKING:
-    from xodrcheck.signals import Signal
+if TYPE_CHECKING:  # pragma: no cover - the model's signal module loads for a file with signals
+    from xodrcheck.model import Signal
 
 
-def has_signals(ctx: Context) -> bool:
-    """Whether the file may hold signals, controllers or vmsGroups (a byte search, so files without any skip the XML
-    walk)."""
-    data = ctx.data
-    return ctx.tree is not None and (data is None or b"signal" in data or b"controller" in data or b"vmsGroup" in data)
+def _signals(ctx: Context) -> list[Signal]:
+    """Every road's signals, in file order."""
+    return [signal for road in ctx.document.roads for signal in road.signals]
+
+
+def _dynamic(signal: Signal) -> str | None:
+    """The signal's ``dynamic`` as written (``None``: absent)."""
+    if signal.dynamic is None:
+        return signal.xml.text("dynamic")
+    return "yes" if signal.dynamic else "no"
 
 
 def _blank(value: str | None) -> bool:
@@ -37,7 +42,6 @@ def _blank(value: str | None) -> bool:
         U.SIGNAL_TYPE: "whether the type and subtype name a sign of the country's catalogue is not checked (the "
         "catalogues are outside the file)"
     },
-    xml=True,
 )
 def signal_type_unspecified(ctx: Context):
     """A signal (or a sign on a static board) has no ``type`` or no ``subtype``, or an empty one.
@@ -54,13 +58,11 @@ def signal_type_unspecified(ctx: Context):
 
         <signal id="1" ... country="DE" type="274" subtype="" .../>
     """
-    if not has_signals(ctx):
-        return
-    for signal in ctx.signals.signals:
+    for signal in _signals(ctx):
         items: list[tuple[str, str | None, str | None, str | None, int]] = [
             ("signal", signal.id, signal.type, signal.subtype, signal.line)
         ]
-        items += [("sign", s.id, s.type, s.subtype, s.line) for board in signal.static_boards for s in board]
+        items += [("sign", s.id, s.type, s.subtype, s.line) for board in signal.static_boards for s in board.signs]
         for what, ident, kind, subtype, line in items:
             missing = [name for name, value in (("type", kind), ("subtype", subtype)) if _blank(value)]
             if missing:
@@ -68,11 +70,11 @@ def signal_type_unspecified(ctx: Context):
                     f"{what} {ident!r} has no {' and no '.join(missing)}: give the sign's type and subtype from the "
                     'country\'s catalogue ("-1" or "none" where it has none)',
                     road=signal.road,
-                    line=line,
+                    line=line or None,
                 )
 
 
-@rule("T002", "signal-country-missing", Category.SIGNAL, Severity.ERROR, uids=(U.SIGNAL_COUNTRY,), xml=True)
+@rule("T002", "signal-country-missing", Category.SIGNAL, Severity.ERROR, uids=(U.SIGNAL_COUNTRY,))
 def signal_country_missing(ctx: Context):
     """A signal (or a sign on a static board) has no ``country``.
 
@@ -88,24 +90,22 @@ def signal_country_missing(ctx: Context):
 
         <signal id="1" ... type="274" subtype="100" .../>
     """
-    if not has_signals(ctx):
-        return
-    for signal in ctx.signals.signals:
+    for signal in _signals(ctx):
         items = [("signal", signal.id, signal.country, signal.line)]
-        items += [("sign", s.id, s.country, s.line) for board in signal.static_boards for s in board]
+        items += [("sign", s.id, s.country, s.line) for board in signal.static_boards for s in board.signs]
         for what, ident, country, line in items:
             if _blank(country):
                 yield signal_country_missing.finding(
                     f'{what} {ident!r} has no country: add @country (ISO 3166-1 alpha-2, or "OpenDRIVE" for the '
                     "OpenDRIVE signal reference's types) so that its type and subtype can be looked up",
                     road=signal.road,
-                    line=line,
+                    line=line or None,
                 )
 
 
 def _board_problems(signal: Signal) -> Iterator[tuple[str, str]]:
     """(UID, what is wrong) for one signal's boards."""
-    static, vms = len(signal.static_boards), signal.vms_boards
+    static, vms = len(signal.static_boards), len(signal.vms_boards)
     is_multi = signal.type == "multiBoard" or (static and vms)
     if static and vms and signal.type != "multiBoard":
         yield (
@@ -125,10 +125,11 @@ def _board_problems(signal: Signal) -> Iterator[tuple[str, str]]:
                 "of each (a board of one kind is a staticBoard or a vmsBoard)"
             ),
         )
-    if is_multi and signal.dynamic != "yes":
+    dynamic = _dynamic(signal)
+    if is_multi and dynamic != "yes":
         yield (
             U.MULTI_BOARD_DYNAMIC,
-            (f'is a multi board with dynamic={signal.dynamic!r}: its variable message part changes, set dynamic="yes"'),
+            (f'is a multi board with dynamic={dynamic!r}: its variable message part changes, set dynamic="yes"'),
         )
 
 
@@ -138,7 +139,6 @@ def _board_problems(signal: Signal) -> Iterator[tuple[str, str]]:
     Category.SIGNAL,
     Severity.ERROR,
     uids=(U.MULTI_BOARD_TYPE, U.STATIC_BOARD_TYPE, U.MULTI_BOARD_SUB_BOARDS, U.MULTI_BOARD_DYNAMIC),
-    xml=True,
 )
 def signal_board_type(ctx: Context):
     """A signal board's ``type`` or ``dynamic`` does not match its boards (14.7).
@@ -156,14 +156,14 @@ def signal_board_type(ctx: Context):
 
         <signal ... type="multiBoard" dynamic="no"><vmsBoard .../></signal>
     """
-    if not has_signals(ctx) or (ctx.data is not None and b"Board" not in ctx.data):
-        return
-    for signal in ctx.signals.signals:
+    for signal in _signals(ctx):
         for uid, why in _board_problems(signal):
-            yield signal_board_type.finding(f"signal {signal.id!r} {why}", uid=uid, road=signal.road, line=signal.line)
+            yield signal_board_type.finding(
+                f"signal {signal.id!r} {why}", uid=uid, road=signal.road, line=signal.line or None
+            )
 
 
-@rule("T004", "static-board-single-sign", Category.SIGNAL, Severity.ERROR, uids=(U.STATIC_BOARD_SINGLE,), xml=True)
+@rule("T004", "static-board-single-sign", Category.SIGNAL, Severity.ERROR, uids=(U.STATIC_BOARD_SINGLE,))
 def static_board_single_sign(ctx: Context):
     """A static board carries a single sign (or none).
 
@@ -179,18 +179,16 @@ def static_board_single_sign(ctx: Context):
 
         <signal ... type="staticBoard"><staticBoard><sign type="206" .../></staticBoard></signal>
     """
-    if not has_signals(ctx) or (ctx.data is not None and b"staticBoard" not in ctx.data):
-        return
-    for signal in ctx.signals.signals:
+    for signal in _signals(ctx):
         if not signal.static_boards or signal.vms_boards or signal.type == "multiBoard":
             continue
-        signs = sum(len(board) for board in signal.static_boards)
+        signs = sum(len(board.signs) for board in signal.static_boards)
         if signs < 2:
             yield static_board_single_sign.finding(
                 f"static board {signal.id!r} carries {signs} sign{'' if signs == 1 else 's'}: a single sign is "
                 "written as a <signal> with the sign's own type and subtype, not as a board",
                 road=signal.road,
-                line=signal.line,
+                line=signal.line or None,
             )
 
 
@@ -203,7 +201,6 @@ def static_board_single_sign(ctx: Context):
         U.SEMANTICS_CATEGORY: "whether the categories given fit the sign's traffic behaviour is not checked (that "
         "needs the country's sign catalogue); only semantics without any category are found"
     },
-    xml=True,
 )
 def signal_semantics_empty(ctx: Context):
     """A signal's (or sign's) ``<semantics>`` names no traffic behaviour.
@@ -220,20 +217,19 @@ def signal_semantics_empty(ctx: Context):
 
         <semantics/>
     """
-    if not has_signals(ctx) or (ctx.data is not None and b"semantics" not in ctx.data):
-        return
-    for signal in ctx.signals.signals:
-        for line, names in signal.semantics:
-            if not names:
+    for signal in _signals(ctx):
+        owners = [signal.semantics, *(sign.semantics for board in signal.static_boards for sign in board.signs)]
+        for semantics in owners:
+            if semantics is not None and not semantics.items:
                 yield signal_semantics_empty.finding(
                     f"signal {signal.id!r} has a <semantics> without any behaviour element: give the category "
                     "(<speed>, <priority>, <prohibited>, ...) or leave <semantics> out when none fits",
                     road=signal.road,
-                    line=line,
+                    line=semantics.line or None,
                 )
 
 
-@rule("T006", "controller-without-signals", Category.SIGNAL, Severity.ERROR, uids=(U.CONTROLLER_SIGNALS,), xml=True)
+@rule("T006", "controller-without-signals", Category.SIGNAL, Severity.ERROR, uids=(U.CONTROLLER_SIGNALS,))
 def controller_without_signals(ctx: Context):
     """A ``<controller>`` controls no signal of the file.
 
@@ -248,12 +244,12 @@ def controller_without_signals(ctx: Context):
 
         <controller id="1"><control signalId="99"/></controller>  <!-- no signal 99 -->
     """
-    if not has_signals(ctx) or not ctx.signals.controllers:
+    controllers = ctx.document.controllers
+    if not controllers:
         return
-    known = {s.id for s in ctx.signals.signals} | {
-        sign.id for s in ctx.signals.signals for board in s.static_boards for sign in board
-    }
-    for controller in ctx.signals.controllers:
+    signals = _signals(ctx)
+    known = {s.id for s in signals} | {sign.id for s in signals for board in s.static_boards for sign in board.signs}
+    for controller in controllers:
         named = [c.signal_id for c in controller.controls]
         if any(signal_id in known for signal_id in named):
             continue
@@ -265,7 +261,7 @@ def controller_without_signals(ctx: Context):
         yield controller_without_signals.finding(
             f"controller {controller.id!r} {why}: a controller is valid for one or more signals; add a <control> "
             "for each signal it switches",
-            line=controller.line,
+            line=controller.line or None,
         )
 
 
@@ -278,7 +274,6 @@ def controller_without_signals(ctx: Context):
         U.GANTRY_VMS_GROUP: "whether every gantry has one <vmsGroup> is vms-boards-gantry's (T008), as far as the "
         "boards' positions tell"
     },
-    xml=True,
 )
 def vms_group_without_boards(ctx: Context):
     """A ``<vmsGroup>`` references no variable message board.
@@ -295,10 +290,11 @@ def vms_group_without_boards(ctx: Context):
 
         <vmsGroup id="1"/>
     """
-    if not has_signals(ctx) or not ctx.signals.vms_groups:
+    groups = ctx.document.vms_groups
+    if not groups:
         return
-    boards = {s.id for s in ctx.signals.signals if s.vms_boards}
-    for group in ctx.signals.vms_groups:
+    boards = {s.id for s in _signals(ctx) if s.vms_boards}
+    for group in groups:
         named = [r.signal_id for r in group.references]
         if any(signal_id in boards for signal_id in named):
             continue
@@ -310,5 +306,5 @@ def vms_group_without_boards(ctx: Context):
         yield vms_group_without_boards.finding(
             f"vmsGroup {group.id!r} {why}: list the variable message boards of its gantry, one <vmsBoardReference> "
             "each",
-            line=group.line,
+            line=group.line or None,
         )

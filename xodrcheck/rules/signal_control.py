@@ -25,7 +25,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -35,10 +35,9 @@ from xodrcheck.rules.context import Context, link_at, travel_direction
 from xodrcheck.rules.junction_geometry import _centre_path, _parted
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import usable
-from xodrcheck.rules.signal import has_signals
 
-if TYPE_CHECKING:
-    from xodrcheck.signals import Controller, Validity
+if TYPE_CHECKING:  # pragma: no cover - the model's signal module loads for a file with signals
+    from xodrcheck.model import Controller, LaneValidity
 
 #: Dynamic signals of the OpenDRIVE signal reference that are not for vehicles on the lanes they stand beside:
 #: pedestrian light (1000002, the spec's own example of 14.4), pedestrian and bicycle light (1000007), bicycle light
@@ -55,7 +54,7 @@ class Placement:
     s: float | None
     line: int
     orientation: str | None
-    validities: tuple[Validity, ...]
+    validities: tuple[LaneValidity, ...]
     reference: bool = False  #: placed by a ``<signalReference>``
 
     def describe(self) -> str:
@@ -83,15 +82,28 @@ def is_vehicle_light(dynamic: str | None, kind: str | None) -> bool:
     return (dynamic or "").strip().lower() in ("yes", "true") and (kind or "").strip() not in NOT_FOR_VEHICLES
 
 
+def _written(record: Any, name: str) -> str | None:
+    """An enumerated attribute as the file wrote it (``None``: absent); a yes/no one as ``yes`` or ``no``."""
+    value = getattr(record, name)
+    if value is None:
+        return record.xml.text(name)
+    if isinstance(value, bool):
+        return "yes" if value else "no"
+    return value.value
+
+
 def placements(ctx: Context) -> dict[str, list[Placement]]:
     """Signal id -> the placements of that vehicle traffic light (its signal first, then its references)."""
     out: dict[str, list[Placement]] = {}
-    for sig in ctx.signals.signals:
-        if sig.id is not None and is_vehicle_light(sig.dynamic, sig.type) and sig.id not in out:
-            out[sig.id] = [Placement(sig.id, sig.road, sig.s, sig.line, sig.orientation, sig.validities)]
-    for ref in ctx.signals.references:
-        if ref.id in out:
-            out[ref.id].append(Placement(ref.id, ref.road, ref.s, ref.line, ref.orientation, ref.validities, True))
+    roads = ctx.document.roads
+    for sig in (signal for road in roads for signal in road.signals):
+        if sig.id is not None and is_vehicle_light(_written(sig, "dynamic"), sig.type) and sig.id not in out:
+            where = (sig.road, sig.s, sig.line, _written(sig, "orientation"), sig.validities)
+            out[sig.id] = [Placement(sig.id, *where)]
+    for ref in (ref for road in roads for ref in road.signal_references):
+        if ref.id is not None and ref.id in out:
+            where = (ref.road, ref.s, ref.line, _written(ref, "orientation"), ref.validities)
+            out[ref.id].append(Placement(ref.id, *where, True))
     return out
 
 
@@ -245,7 +257,6 @@ def _lights(placed: list[Placement]) -> str:
     "conflicting-signals-same-controller",
     Category.SIGNAL_CONTROL,
     Severity.WARNING,
-    xml=True,
     basis=Basis.PLAUSIBILITY,
 )
 def conflicting_signals_same_controller(ctx: Context):
@@ -271,11 +282,12 @@ def conflicting_signals_same_controller(ctx: Context):
 
         <controller id="1"><control signalId="12"/><control signalId="13"/></controller>
     """
-    if not has_signals(ctx) or not ctx.signals.controllers:
+    controllers = ctx.document.controllers
+    if not controllers:
         return
     lights = placements(ctx)
     cache: dict = {}
-    for controller in ctx.signals.controllers:
+    for controller in controllers:
         for p, q, a, b, point, count in _conflicts(ctx, controller, lights, cache):
             more = f" ({count - 1} more crossing pair{'s' if count > 2 else ''} of these lights)" if count > 1 else ""
             yield conflicting_signals_same_controller.finding(

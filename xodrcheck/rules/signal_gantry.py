@@ -16,7 +16,6 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.signal import has_signals
 
 _LEFT_OUT = (
     "boards are placed on the gantry object whose bounding box (length x width around its s/t, plus gantry_reach) "
@@ -38,13 +37,14 @@ def _place(ctx: Context, road_id: str, s: float, t: float) -> tuple[float, float
     return x - t * math.sin(hdg), y + t * math.cos(hdg), hdg
 
 
-def _gantry_boxes(ctx: Context) -> list[tuple[str, float, float, float, float, float, str, int]]:
+def _gantry_boxes(ctx: Context) -> list[tuple[str, float, float, float, float, float, str, int | None]]:
     """(gantry id, centre x, centre y, heading, half length, half width, road, line) of every gantry with a bounding
     box."""
     reach = ctx.tolerances.gantry_reach
     out = []
-    for road_id, objects in ctx.objects.items():
-        for obj in objects:
+    for road in ctx.document.roads:
+        road_id = road.id
+        for obj in road.objects:
             s, t, length, width = obj.s, obj.t, obj.length, obj.width
             if obj.type != "gantry" or s is None or t is None or length is None or width is None:
                 continue
@@ -53,7 +53,7 @@ def _gantry_boxes(ctx: Context) -> list[tuple[str, float, float, float, float, f
                 continue
             x, y, hdg = placed
             half_l, half_w = length / 2 + reach, width / 2 + reach
-            out.append((obj.id, x, y, hdg + (obj.hdg or 0.0), half_l, half_w, road_id, obj.line))
+            out.append((obj.id, x, y, hdg + (obj.hdg or 0.0), half_l, half_w, road_id, obj.line or None))
     return out
 
 
@@ -73,7 +73,6 @@ def _gantry_of(boxes, x: float, y: float) -> str | None:
     Category.SIGNAL,
     Severity.ERROR,
     partial={U.GANTRY_SAME: _LEFT_OUT, U.GANTRY_VMS_GROUP: _LEFT_OUT},
-    xml=True,
 )
 def vms_boards_gantry(ctx: Context):
     """A ``<vmsGroup>`` lists boards of different gantries, or a gantry's boards are not in exactly one group.
@@ -94,20 +93,19 @@ def vms_boards_gantry(ctx: Context):
         <object id="g1" type="gantry" s="25" .../> <object id="g2" type="gantry" s="75" .../>
         <vmsGroup id="1"><vmsBoardReference signalId="30" .../><vmsBoardReference signalId="40" .../></vmsGroup>
     """
-    if not has_signals(ctx) or (ctx.data is not None and (b"gantry" not in ctx.data or b"vmsBoard" not in ctx.data)):
-        return
+    document = ctx.document
     boxes = _gantry_boxes(ctx)
     if not boxes:
         return
     on: dict[str, str] = {}  # board signal id -> gantry id
-    for signal in ctx.signals.signals:
+    for signal in (signal for road in document.roads for signal in road.signals):
         if signal.vms_boards and signal.id is not None and signal.s is not None and signal.t is not None:
             placed = _place(ctx, signal.road, signal.s, signal.t)
             gantry = None if placed is None else _gantry_of(boxes, placed[0], placed[1])
             if gantry is not None:
                 on[signal.id] = gantry
     groups_of: dict[str, list[str]] = {}
-    for group in ctx.signals.vms_groups:
+    for group in document.vms_groups:
         gantries = {on[r.signal_id]: r.signal_id for r in group.references if r.signal_id in on}
         for gantry in gantries:
             groups_of.setdefault(gantry, []).append(str(group.id))
@@ -117,7 +115,7 @@ def vms_boards_gantry(ctx: Context):
                 f"vmsGroup {group.id!r} lists boards of {len(gantries)} gantries ({listed}): a group holds the boards "
                 "of one gantry; give each gantry its own <vmsGroup>",
                 uid=U.GANTRY_SAME,
-                line=group.line,
+                line=group.line or None,
             )
     where = {box[0]: (box[6], box[7]) for box in boxes}
     for gantry in dict.fromkeys(on.values()):

@@ -5,22 +5,31 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import TrafficRule
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.signal import has_signals
 
-if TYPE_CHECKING:
-    from xodrcheck.signals import Validity
+if TYPE_CHECKING:  # pragma: no cover - the model's signal module loads for a file with signals
+    from xodrcheck.model import LaneValidity, SignalReference
 
 _ORIENTATIONS = ("+", "-", "none")
 
 
-def _spans(validities: Iterable[Validity]) -> tuple[bool, bool]:
+def _orientation(record: Any) -> str | None:
+    """A signal's or reference's ``orientation`` as written (``None``: absent)."""
+    value = record.orientation
+    return record.xml.text("orientation") if value is None else value.value
+
+
+def _references(ctx: Context) -> list[SignalReference]:
+    return [ref for road in ctx.document.roads for ref in road.signal_references]
+
+
+def _spans(validities: Iterable[LaneValidity]) -> tuple[bool, bool]:
     """Whether the validities span negative and positive lane ids."""
     negative = positive = False
     for v in validities:
@@ -59,7 +68,6 @@ def _direction_problem(orientation: str | None, rht: bool, negative: bool, posit
     Category.SIGNAL,
     Severity.ERROR,
     uids=(U.VALIDITY_RHT, U.VALIDITY_LHT, U.REFERENCE_RHT, U.REFERENCE_LHT),
-    xml=True,
 )
 def signal_validity_direction(ctx: Context):
     """A signal's (or signal reference's) lane validity lies on the side its ``orientation`` does not apply to.
@@ -78,12 +86,9 @@ def signal_validity_direction(ctx: Context):
 
         <road rule="RHT"> ... <signal orientation="+" ...><validity fromLane="1" toLane="1"/></signal>
     """
-    if not has_signals(ctx) or (ctx.data is not None and b"validity" not in ctx.data):
-        return
-    items = [("signal", s.road, s.id, s.orientation, s.validities, s.line, False) for s in ctx.signals.signals]
-    items += [
-        ("signal reference", r.road, r.id, r.orientation, r.validities, r.line, True) for r in ctx.signals.references
-    ]
+    signals = [signal for road in ctx.document.roads for signal in road.signals]
+    items = [("signal", s.road, s.id, _orientation(s), s.validities, s.line, False) for s in signals]
+    items += [("signal reference", r.road, r.id, _orientation(r), r.validities, r.line, True) for r in _references(ctx)]
     for what, road_id, ident, orientation, validities, line, is_reference in items:
         if not validities:
             continue
@@ -97,11 +102,11 @@ def signal_validity_direction(ctx: Context):
         else:
             uid = U.VALIDITY_RHT if rht else U.VALIDITY_LHT
         yield signal_validity_direction.finding(
-            f"{what} {ident!r} on road {road_id}: {problem}", uid=uid, road=road_id, line=line
+            f"{what} {ident!r} on road {road_id}: {problem}", uid=uid, road=road_id, line=line or None
         )
 
 
-@rule("T011", "signal-reference-lane-order", Category.SIGNAL, Severity.ERROR, uids=(U.REFERENCE_LANE_ORDER,), xml=True)
+@rule("T011", "signal-reference-lane-order", Category.SIGNAL, Severity.ERROR, uids=(U.REFERENCE_LANE_ORDER,))
 def signal_reference_lane_order(ctx: Context):
     """A signal reference's ``<validity>`` has ``fromLane`` greater than ``toLane``.
 
@@ -116,20 +121,18 @@ def signal_reference_lane_order(ctx: Context):
 
         <signalReference ...><validity fromLane="-1" toLane="-2"/></signalReference>
     """
-    if not has_signals(ctx) or not ctx.signals.references:
-        return
-    for ref in ctx.signals.references:
+    for ref in _references(ctx):
         for v in ref.validities:
             if v.from_lane is not None and v.to_lane is not None and v.from_lane > v.to_lane:
                 yield signal_reference_lane_order.finding(
                     f'signal reference {ref.id!r} on road {ref.road}: <validity fromLane="{v.from_lane}" '
                     f'toLane="{v.to_lane}">: fromLane shall not exceed toLane; swap them',
                     road=ref.road,
-                    line=v.line,
+                    line=v.line or None,
                 )
 
 
-@rule("T012", "signal-reference-orientation", Category.SIGNAL, Severity.ERROR, uids=(U.REFERENCE_DIRECTION,), xml=True)
+@rule("T012", "signal-reference-orientation", Category.SIGNAL, Severity.ERROR, uids=(U.REFERENCE_DIRECTION,))
 def signal_reference_orientation(ctx: Context):
     """A ``<signalReference>`` does not say the direction it applies to.
 
@@ -144,22 +147,19 @@ def signal_reference_orientation(ctx: Context):
 
         <signalReference s="10" t="-4" id="5"/>
     """
-    if not has_signals(ctx) or not ctx.signals.references:
-        return
-    for ref in ctx.signals.references:
-        if ref.orientation not in _ORIENTATIONS:
-            got = "no orientation" if ref.orientation is None else f"orientation={ref.orientation!r}"
+    for ref in _references(ctx):
+        orientation = _orientation(ref)
+        if orientation not in _ORIENTATIONS:
+            got = "no orientation" if orientation is None else f"orientation={orientation!r}"
             yield signal_reference_orientation.finding(
                 f"signal reference {ref.id!r} on road {ref.road} has {got}: say which traffic it applies to with "
                 'orientation="+" (along s), "-" (against s) or "none" (both)',
                 road=ref.road,
-                line=ref.line,
+                line=ref.line or None,
             )
 
 
-@rule(
-    "T013", "signal-reference-not-signal", Category.SIGNAL, Severity.ERROR, uids=(U.REFERENCE_SIGNALS_ONLY,), xml=True
-)
+@rule("T013", "signal-reference-not-signal", Category.SIGNAL, Severity.ERROR, uids=(U.REFERENCE_SIGNALS_ONLY,))
 def signal_reference_not_signal(ctx: Context):
     """A ``<signalReference>`` names an object (or another element that is not a signal).
 
@@ -175,26 +175,27 @@ def signal_reference_not_signal(ctx: Context):
 
         <signalReference s="10" t="-4" id="7" orientation="+"/>   <!-- 7 is an <object> -->
     """
-    if not has_signals(ctx) or not ctx.signals.references or ctx.tree is None:
+    references = _references(ctx)
+    if not references:
         return
-    signals = set(ctx.signals.by_id)
+    document = ctx.document
+    signals = {signal.id for road in document.roads for signal in road.signals if signal.id is not None}
     others: dict[str, str] = {}
-    root = ctx.tree.getroot()
-    for path, what in (
-        ("{*}road/{*}objects/{*}object", "an object"),
-        ("{*}road", "a road"),
-        ("{*}junction", "a junction"),
-        ("{*}controller", "a controller"),
+    for records, what in (
+        ([obj for road in document.roads for obj in road.objects], "an object"),
+        (document.roads, "a road"),
+        (document.junctions, "a junction"),
+        (document.controllers, "a controller"),
     ):
-        for el in root.iterfind(path):
-            if el.get("id") is not None:
-                others.setdefault(el.get("id"), f"{what} (line {el.sourceline})")
-    for ref in ctx.signals.references:
+        for record in records:
+            if record.id is not None:
+                others.setdefault(record.id, f"{what} (line {record.line or None})")
+    for ref in references:
         if ref.id is None or ref.id in signals or ref.id not in others:
             continue
         yield signal_reference_not_signal.finding(
             f"signal reference {ref.id!r} on road {ref.road} names {others[ref.id]}, not a signal: a signal "
             "reference places a signal on another road; use <objectReference> for objects",
             road=ref.road,
-            line=ref.line,
+            line=ref.line or None,
         )

@@ -4,61 +4,57 @@
 
 from __future__ import annotations
 
-import math
 from collections.abc import Iterator
-
-from lxml import etree
+from typing import TYPE_CHECKING, Any
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.support.quantities import metres
-from xodrcheck.xmlvalues import local
+
+if TYPE_CHECKING:  # pragma: no cover - the model's surface module loads for a file with surfaces
+    from xodrcheck.model import CrossSectionSurface, Road, SurfaceCrg, SurfaceStrip
 
 _POLYNOMIALS = ("width", "constant", "linear", "quadratic", "cubic")
 
 
-def _number(el: etree._Element, name: str) -> float | None:
-    try:
-        value = float(el.get(name))
-    except (TypeError, ValueError):
-        return None
-    return value if math.isfinite(value) else None
+def _written(record: Any, name: str, attribute: str) -> str | None:
+    """An enumerated attribute as the file wrote it (``None``: absent)."""
+    value = getattr(record, name)
+    return record.xml.text(attribute) if value is None else value.value
 
 
-def _crg_owners(ctx: Context) -> Iterator[tuple[str, str, list[etree._Element]]]:
-    """(``"road"`` or ``"junction"``, its id, its ``<CRG>`` elements) for every owner with some."""
-    if ctx.tree is None or (ctx.data is not None and b"CRG" not in ctx.data):
-        return
-    for owner in ctx.tree.getroot():
-        kind = local(owner)
-        if kind not in ("road", "junction"):
-            continue
-        crgs = [crg for surface in owner.iterchildren("{*}surface") for crg in surface.iterchildren("{*}CRG")]
-        if crgs:
-            yield kind, owner.get("id", "?"), crgs
+def _crg_owners(ctx: Context) -> Iterator[tuple[str, str, tuple[SurfaceCrg, ...]]]:
+    """(``"road"`` or ``"junction"``, its id, its ``<CRG>`` records) for every owner with some."""
+    for road in ctx.document.roads:
+        if road.surface is not None and road.surface.crgs:
+            yield "road", road.id, road.surface.crgs
+    for junction in ctx.document.junctions:
+        if junction.surface is not None and junction.surface.crgs:
+            yield "junction", junction.id, junction.surface.crgs
 
 
-def _crg_problems(crg: etree._Element) -> Iterator[tuple[str, str]]:
+def _crg_problems(crg: SurfaceCrg) -> Iterator[tuple[str, str]]:
     """(UID, what is wrong) for one ``<CRG>``'s attributes."""
-    mode, purpose = crg.get("mode"), crg.get("purpose", "elevation")
+    mode, purpose = _written(crg, "mode", "mode"), _written(crg, "purpose", "purpose")
+    purpose = "elevation" if purpose is None else purpose
+    given = crg.xml.given
     if mode == "attached" and purpose == "friction":
         yield U.CRG_ATTACH_FRICTION, 'mode="attached" adds to the road\'s height and cannot carry friction values'
     if purpose == "friction":
-        given = [name for name in ("zOffset", "zScale") if crg.get(name) is not None]
-        if given:
-            yield U.CRG_FRICTION_Z, f"friction values take no {' or '.join(given)} (only elevation data is scaled)"
-    if crg.get("hOffset") is not None and mode not in ("genuine", "global"):
+        scaled = [name for name in ("zOffset", "zScale") if given(name)]
+        if scaled:
+            yield U.CRG_FRICTION_Z, f"friction values take no {' or '.join(scaled)} (only elevation data is scaled)"
+    if given("hOffset") and mode not in ("genuine", "global"):
         yield U.CRG_H_OFFSET, f"hOffset is for modes genuine and global only, not mode={mode!r}"
-    if crg.get("orientation") == "opposite" and mode not in ("attached", "attached0"):
+    if _written(crg, "orientation", "orientation") == "opposite" and mode not in ("attached", "attached0"):
         yield U.CRG_NO_OPPOSITE, f'orientation="opposite" is for modes attached and attached0 only, not mode={mode!r}'
     if mode == "global":
-        given = [name for name in ("sOffset", "tOffset") if crg.get(name) is not None]
-        if given:
+        placed = [name for name in ("sOffset", "tOffset") if given(name)]
+        if placed:
             yield (
                 U.CRG_ST_OFFSET_GLOBAL,
-                f'mode="global" places the data by x/y/z/hOffset; it takes no {" or ".join(given)}',
+                f'mode="global" places the data by x/y/z/hOffset; it takes no {" or ".join(placed)}',
             )
 
 
@@ -68,7 +64,6 @@ def _crg_problems(crg: etree._Element) -> Iterator[tuple[str, str]]:
     Category.SURFACE,
     Severity.ERROR,
     uids=(U.CRG_ATTACH_FRICTION, U.CRG_FRICTION_Z, U.CRG_H_OFFSET, U.CRG_NO_OPPOSITE, U.CRG_ST_OFFSET_GLOBAL),
-    xml=True,
 )
 def crg_attribute_for_mode(ctx: Context):
     """A ``<CRG>`` uses an attribute its mode or purpose does not allow.
@@ -91,14 +86,14 @@ def crg_attribute_for_mode(ctx: Context):
         for crg in crgs:
             for uid, why in _crg_problems(crg):
                 yield crg_attribute_for_mode.finding(
-                    f"<CRG file={crg.get('file')!r}> of {kind} {owner_id}: {why}",
+                    f"<CRG file={crg.file!r}> of {kind} {owner_id}: {why}",
                     uid=uid,
                     road=owner_id if kind == "road" else None,
-                    line=crg.sourceline,
+                    line=crg.line or None,
                 )
 
 
-@rule("U002", "crg-junction-and-connecting-road", Category.SURFACE, Severity.ERROR, uids=(U.CRG_JUNCTION,), xml=True)
+@rule("U002", "crg-junction-and-connecting-road", Category.SURFACE, Severity.ERROR, uids=(U.CRG_JUNCTION,))
 def crg_junction_and_connecting_road(ctx: Context):
     """A junction and one of its connecting roads both have ``<CRG>`` data.
 
@@ -123,13 +118,13 @@ def crg_junction_and_connecting_road(ctx: Context):
             continue
         yield crg_junction_and_connecting_road.finding(
             f"road {owner_id} has <CRG> data but belongs to junction {road.junction}, whose own <CRG> (line "
-            f"{junctions[road.junction].sourceline}) covers it: remove one of them",
+            f"{junctions[road.junction].line or None}) covers it: remove one of them",
             road=owner_id,
-            line=crgs[0].sourceline,
+            line=crgs[0].line or None,
         )
 
 
-@rule("U003", "crg-overlap", Category.SURFACE, Severity.WARNING, uids=(U.CRG_ONE_PER_S,), xml=True)
+@rule("U003", "crg-overlap", Category.SURFACE, Severity.WARNING, uids=(U.CRG_ONE_PER_S,))
 def crg_overlap(ctx: Context):
     """Two ``<CRG>`` entries of one road or junction with the same purpose overlap in ``s``.
 
@@ -148,30 +143,28 @@ def crg_overlap(ctx: Context):
     for kind, owner_id, crgs in _crg_owners(ctx):
         spans = []
         for crg in crgs:
-            start, end = _number(crg, "sStart"), _number(crg, "sEnd")
+            start, end = crg.s_start, crg.s_end
             if start is not None and end is not None:
-                spans.append((min(start, end), max(start, end), crg.get("purpose", "elevation"), crg))
+                purpose = _written(crg, "purpose", "purpose")
+                spans.append((min(start, end), max(start, end), "elevation" if purpose is None else purpose, crg))
         for i, (a0, a1, purpose, a) in enumerate(spans):
             for b0, b1, other, b in spans[i + 1 :]:
                 if purpose == other and min(a1, b1) - max(a0, b0) > ctx.tolerances.position:
                     yield crg_overlap.finding(
-                        f"<CRG file={b.get('file')!r}> of {kind} {owner_id} overlaps <CRG file={a.get('file')!r}> "
-                        f"(line {a.sourceline}) from s={metres(max(a0, b0))} to {metres(min(a1, b1))} for purpose "
+                        f"<CRG file={b.file!r}> of {kind} {owner_id} overlaps <CRG file={a.file!r}> "
+                        f"(line {a.line or None}) from s={metres(max(a0, b0))} to {metres(min(a1, b1))} for purpose "
                         f"{purpose}: give one CRG file per position and purpose",
                         road=owner_id if kind == "road" else None,
                         s=max(a0, b0) if kind == "road" else None,
-                        line=b.sourceline,
+                        line=b.line or None,
                     )
 
 
-def _surfaces(ctx: Context) -> Iterator[tuple[etree._Element, etree._Element]]:
-    """(road element, its ``<crossSectionSurface>``) for every road with one."""
-    if ctx.tree is None or (ctx.data is not None and b"crossSectionSurface" not in ctx.data):
-        return
-    for road in ctx.tree.getroot().iterchildren("{*}road"):
-        for profile in road.iterchildren("{*}lateralProfile"):
-            for surface in profile.iterchildren("{*}crossSectionSurface"):
-                yield road, surface
+def _surfaces(ctx: Context) -> Iterator[tuple[Road, CrossSectionSurface]]:
+    """(road, its cross section surface) for every road with one."""
+    for road in ctx.document.roads:
+        if road.cross_section_surface is not None:
+            yield road, road.cross_section_surface
 
 
 @rule(
@@ -180,7 +173,6 @@ def _surfaces(ctx: Context) -> Iterator[tuple[etree._Element, etree._Element]]:
     Category.SURFACE,
     Severity.ERROR,
     uids=(U.SURFACE_NO_SHAPE,),
-    xml=True,
 )
 def cross_section_surface_with_shape(ctx: Context):
     """A road has a cross section surface and also ``<shape>`` or ``<superelevation>`` records.
@@ -197,16 +189,18 @@ def cross_section_surface_with_shape(ctx: Context):
         <lateralProfile><superelevation s="0" a="0.02" .../><crossSectionSurface>...</crossSectionSurface>
     """
     for road, surface in _surfaces(ctx):
-        profile = surface.getparent()
-        others = [el for el in profile if local(el) in ("shape", "superelevation")]
+        others = sorted(
+            [(record.line, "superelevation") for record in road.superelevation]
+            + [(record.line, "shape") for record in road.shapes]
+        )
         if others:
-            names = sorted({local(el) for el in others})
+            names = sorted({name for _, name in others})
             yield cross_section_surface_with_shape.finding(
-                f"road {road.get('id')} has a <crossSectionSurface> and {len(others)} "
-                f"<{'>/<'.join(names)}> record(s) (first at line {others[0].sourceline}): the cross section surface "
+                f"road {road.id} has a <crossSectionSurface> and {len(others)} "
+                f"<{'>/<'.join(names)}> record(s) (first at line {others[0][0] or None}): the cross section surface "
                 "replaces them; remove one description",
-                road=road.get("id"),
-                line=surface.sourceline,
+                road=road.id,
+                line=surface.line or None,
             )
 
 
@@ -216,7 +210,6 @@ def cross_section_surface_with_shape(ctx: Context):
     Category.SURFACE,
     Severity.ERROR,
     uids=(U.SURFACE_START_END,),
-    xml=True,
 )
 def cross_section_surface_extent(ctx: Context):
     """A cross section surface's polynomials do not start at the road's start, or start beyond its end.
@@ -234,25 +227,24 @@ def cross_section_surface_extent(ctx: Context):
         <tOffset><coefficients s="10" a="0"/></tOffset>
     """
     tol = ctx.tolerances.position
-    for road_el, surface in _surfaces(ctx):
-        road_id = road_el.get("id")
+    for owner, surface in _surfaces(ctx):
+        road_id = owner.id
         road = ctx.road(road_id)
         length = None if road is None else road.length
-        lists = [(el, "<tOffset>") for el in surface.iterchildren("{*}tOffset")]
-        for strips in surface.iterchildren("{*}surfaceStrips"):
-            for strip in strips.iterchildren("{*}strip"):
-                lists += [
-                    (el, f"<{local(el)}> of strip {strip.get('id')}") for el in strip if local(el) in _POLYNOMIALS
-                ]
-        for el, what in lists:
-            records = [(c, s) for c in el.iterchildren("{*}coefficients") if (s := _number(c, "s")) is not None]
+        lists = [] if surface.t_offset is None else [(surface.t_offset, "<tOffset>")]
+        for strip in surface.strips:
+            lists += [
+                (p, f"<{p.kind}> of strip {_strip_id(strip)}") for p in strip.polynomials if p.kind in _POLYNOMIALS
+            ]
+        for polynomial, what in lists:
+            records = [(c, c.s) for c in polynomial.coefficients if c.s is not None]
             if records and abs(records[0][1]) > tol:
                 yield cross_section_surface_extent.finding(
                     f"road {road_id}: the cross section surface's {what} starts at s={metres(records[0][1])}, not at "
                     'the road\'s start: its first <coefficients> shall be at s="0"',
                     road=road_id,
                     s=records[0][1],
-                    line=records[0][0].sourceline,
+                    line=records[0][0].line or None,
                 )
             beyond = [(c, s) for c, s in records if length is not None and s > length + tol]
             if beyond:
@@ -261,7 +253,7 @@ def cross_section_surface_extent(ctx: Context):
                     f"road {road_id}: the cross section surface's {what} has <coefficients> from s={metres(s)}, beyond "
                     f"the road's end (length {metres(length)}): the surface ends with the road",
                     road=road_id,
-                    line=c.sourceline,
+                    line=c.line or None,
                 )
 
 
@@ -271,7 +263,6 @@ def cross_section_surface_extent(ctx: Context):
     Category.SURFACE,
     Severity.ERROR,
     uids=(U.SURFACE_USE_STRIP, U.SURFACE_USE_WIDTH),
-    xml=True,
 )
 def cross_section_surface_strips(ctx: Context):
     """A side of a cross section surface uses its strips wrongly.
@@ -289,15 +280,15 @@ def cross_section_surface_strips(ctx: Context):
 
         <strip id="-1"><width>...</width><constant>...</constant></strip>   <!-- the only strip on the right -->
     """
-    for road_el, surface in _surfaces(ctx):
-        road_id = road_el.get("id")
-        strips = [s for group in surface.iterchildren("{*}surfaceStrips") for s in group.iterchildren("{*}strip")]
+    for road, surface in _surfaces(ctx):
+        road_id = road.id
+        strips = surface.strips
         for sign, side in ((1, "left"), (-1, "right")):
-            mine = [s for s in strips if (_int(s.get("id")) or 0) * sign > 0]
-            has_width = {id(s): any(local(el) == "width" for el in s) for s in mine}
+            mine = [s for s in strips if (s.id or 0) * sign > 0]
+            has_width = {id(s): s.polynomial("width") is not None for s in mine}
             if len(mine) == 1:
                 (strip,) = mine
-                wrong = [f"id {strip.get('id')} instead of {sign}"] if _int(strip.get("id")) != sign else []
+                wrong = [f"id {_strip_id(strip)} instead of {sign}"] if strip.id != sign else []
                 wrong += ["a <width>"] if has_width[id(strip)] else []
                 if wrong:
                     yield cross_section_surface_strips.finding(
@@ -305,24 +296,20 @@ def cross_section_surface_strips(ctx: Context):
                         f'id="{sign}" and no width (it reaches the outer edge of the {side} lanes)',
                         uid=U.SURFACE_USE_STRIP,
                         road=road_id,
-                        line=strip.sourceline,
+                        line=strip.line or None,
                     )
             elif len(mine) == 2:
-                inner = [s for s in mine if _int(s.get("id")) == sign]
+                inner = [s for s in mine if s.id == sign]
                 if inner and not has_width[id(inner[0])]:
                     yield cross_section_surface_strips.finding(
                         f"road {road_id}: the inner {side} strip (id {sign}) has no <width>, so it is not known where "
                         f"the outer strip starts: give the inner strip's width",
                         uid=U.SURFACE_USE_WIDTH,
                         road=road_id,
-                        line=inner[0].sourceline,
+                        line=inner[0].line or None,
                     )
 
 
-def _int(raw: str | None) -> int | None:
-    if raw is None:
-        return None
-    try:
-        return int(raw)
-    except (TypeError, ValueError):
-        return None
+def _strip_id(strip: SurfaceStrip) -> str | None:
+    """A strip's id as the file wrote it (``None``: absent)."""
+    return strip.xml.text("id") if strip.id is None else str(strip.id)
