@@ -11,6 +11,7 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import feature_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:  # pragma: no cover - the model's surface module loads for a file with surfaces
     from xodrcheck.model import CrossSectionSurface, Road, SurfaceCrg, SurfaceStrip
