@@ -8,11 +8,12 @@ from collections.abc import Iterable, Iterator
 from xodrcheck.findings import Finding
 from xodrcheck.fix import places
 from xodrcheck.fix.edits import Edit, remove_element
-from xodrcheck.fix.linking import WORD, Side, across, add_link
+from xodrcheck.fix.linking import across, add_link
 from xodrcheck.fix.registry import Repair, Skip, fixer
 from xodrcheck.fix.workspace import Workspace, link_at
 from xodrcheck.fix.xmltext import Element
 from xodrcheck.model import ContactPoint, ElementType, Lane, Road
+from xodrcheck.rules.lane_joints import WORD, Side
 
 _WORD = WORD
 #: How far along the road (m) a lane's centre may lie from the joint and still count as there.

@@ -4,37 +4,13 @@ road link both roads make), and the edit that puts a ``<predecessor>`` or ``<suc
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from xodrcheck.fix.edits import Edit, child_indent, insert_child
 from xodrcheck.fix.workspace import Workspace, link_at
 from xodrcheck.fix.xmltext import Element
-from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, Road
+from xodrcheck.model import ContactPoint, ElementType
+from xodrcheck.rules.lane_joints import Side
 
-__all__ = ["WORD", "Side", "across", "add_link"]
-
-#: The link that crosses each end: ``predecessor`` at a start, ``successor`` at an end.
-WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}
-
-
-@dataclass(frozen=True, slots=True)
-class Side:
-    """One side of a joint: lane section ``index`` of ``road``, at its start or end."""
-
-    road: Road
-    index: int
-    end: ContactPoint
-
-    @property
-    def section(self) -> LaneSection:
-        return self.road.lane_sections[self.index]
-
-    @property
-    def s(self) -> float:
-        return self.section.s if self.end is ContactPoint.START else self.road.section_end(self.index)
-
-    def links(self, lane: Lane) -> tuple[int, ...]:
-        return lane.predecessors if self.end is ContactPoint.START else lane.successors
+__all__ = ["across", "add_link"]
 
 
 def across(ws: Workspace, side: Side) -> Side | None:

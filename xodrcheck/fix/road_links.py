@@ -7,11 +7,12 @@ from collections.abc import Iterator
 
 from xodrcheck.findings import Finding
 from xodrcheck.fix import places
-from xodrcheck.fix.linking import WORD, add_link
+from xodrcheck.fix.linking import add_link
 from xodrcheck.fix.registry import Repair, Skip, fixer
 from xodrcheck.fix.workspace import Workspace, link_at
 from xodrcheck.fix.xmltext import encode_value
 from xodrcheck.model import ContactPoint, ElementType, Road
+from xodrcheck.rules.lane_joints import WORD
 
 
 def _link_markup(ws: Workspace, end: ContactPoint, road: Road, contact: ContactPoint) -> bytes:
