@@ -17,10 +17,12 @@ import xodrcheck
 from xodrcheck.check import check
 from xodrcheck.findings import Severity
 
+REPO = Path(__file__).resolve().parents[1]
+
 
 def main(argv: list[str]) -> int:
-    default = os.environ.get("XODR_CORPUS") or str(Path(__file__).resolve().parents[2] / "shared" / "corpus")
-    root = Path(argv[0] if argv else default)
+    default = Path(os.environ.get("XODR_CORPUS", REPO.parent / "shared" / "corpus"))
+    root = Path(argv[0]) if argv else default
     before: collections.Counter[str] = collections.Counter()
     after: collections.Counter[str] = collections.Counter()
     files = sorted(root.rglob("*.xodr"))
