@@ -275,11 +275,12 @@ def run(args: argparse.Namespace) -> int:
     width = max((len(r.name) for r in rules), default=0)
     kind = max((len(r.category.value) for r in rules), default=0)
     bases = max((len(basis_label(r)) for r in rules), default=0)
-    for r in rules:
+    for r in rules:  # the severity a finding gets under the default profile (the rule's own: `rules CODE`)
         fix = fixable(r.code)
         mark = f"fix:{fix}" if fix else ""
+        most = default_severity(r)
         print(
-            f"{r.code}  {r.name:<{width}}  {r.category.value:<{kind}}  {r.severity!s:<7}  {basis_label(r):<{bases}}  "
+            f"{r.code}  {r.name:<{width}}  {r.category.value:<{kind}}  {most!s:<7}  {basis_label(r):<{bases}}  "
             f"{mark:<15} {r.summary}"
         )
     return 0
