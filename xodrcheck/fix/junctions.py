@@ -148,14 +148,13 @@ def correct_junction_lane_link(ws: Workspace, findings: list[Finding]) -> Iterat
         if any((other.from_lane, other.to_lane) == new for other in c.lane_links):
             yield Skip(finding, f"the connection links lane {new[0]} to lane {new[1]} already")
             continue
-        element = ws.connection_element(junction, c)
-        links = [e for e in element.findall("laneLink") if e.line == ll.line] if element is not None else []
-        if len(links) != 1:
+        element = ws.lane_link_element(junction, c, ll)
+        if element is None:
             yield Skip(finding, "the <laneLink> is not found in the file")
             continue
         yield Repair(
             (finding,),
-            tuple(set_attribute(ws.text, links[0], name, str(value)) for name, value in changes.items()),
+            tuple(set_attribute(ws.text, element, name, str(value)) for name, value in changes.items()),
             f"junction {junction.id} connection {c.id}: laneLink from {ll.from_lane} to {ll.to_lane} -> from "
             f"{new[0]} to {new[1]}",
         )

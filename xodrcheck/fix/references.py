@@ -93,13 +93,12 @@ def drop_junction_lane_link(ws: Workspace, findings: list[Finding]) -> Iterator[
         if found is None or ll is None:
             continue
         junction, c = found
-        element = ws.connection_element(junction, c)
-        links = [e for e in element.findall("laneLink") if e.line == ll.line] if element is not None else []
-        if len(links) != 1:
+        element = ws.lane_link_element(junction, c, ll)
+        if element is None:
             yield Skip(finding, "the <laneLink> is not found in the file")
             continue
         yield Repair(
             (finding,),
-            (remove_element(ws.text, links[0]),),
+            (remove_element(ws.text, element),),
             f"junction {junction.id} connection {c.id}: dropped laneLink from {ll.from_lane} to {ll.to_lane}",
         )

@@ -14,7 +14,7 @@ from typing import TYPE_CHECKING
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Finding
 from xodrcheck.fix.xmltext import Element, XmlText, scan
-from xodrcheck.model import Connection, ContactPoint, Document, Junction, Lane, Road, RoadLink
+from xodrcheck.model import Connection, ContactPoint, Document, Junction, JunctionLaneLink, Lane, Road, RoadLink
 
 if TYPE_CHECKING:
     from xodrcheck.geometry.lanes import RoadGeometry
@@ -84,6 +84,14 @@ class Workspace:
         if parent is None:
             return None
         return _pick(self._children(parent, "connection", "id", connection.id), connection.line)
+
+    def lane_link_element(
+        self, junction: Junction, connection: Connection, lane_link: JunctionLaneLink
+    ) -> Element | None:
+        """The connection's ``<laneLink>`` read as ``lane_link`` (found by its line; ``None`` unless exactly one)."""
+        element = self.connection_element(junction, connection)
+        links = [e for e in element.findall("laneLink") if e.line == lane_link.line] if element is not None else []
+        return links[0] if len(links) == 1 else None
 
     def road_link_element(self, road: Road, end: ContactPoint) -> Element | None:
         """The ``<predecessor>`` or ``<successor>`` of the road's ``<link>``."""
