@@ -131,7 +131,6 @@ FEATURE_MODULES = {
     "xodrcheck.objects.read",
     "xodrcheck.objects.shape",
     "xodrcheck.objects.place",
-    "xodrcheck.signals",
     "xodrcheck.model.signals",
     "xodrcheck.model.surface",
     "xodrcheck.model.railroad",

@@ -30,7 +30,6 @@ from xodrcheck.model import ContactPoint, Document, Junction, Lane, LaneSection,
 from xodrcheck.objects.read import read_road_objects
 from xodrcheck.reader import read
 from xodrcheck.rules.context import Context
-from xodrcheck.signals import read_signals
 from xodrcheck.xmlvalues import integer, local, number
 
 HERE = Path(__file__).parent
@@ -192,39 +191,65 @@ def _has_objects(road: Road) -> bool:
 
 
 # ------------------------------------------------------------------------------------------------------ signals
+def _children(element: etree._Element, name: str) -> Iterator[etree._Element]:
+    return element.iterchildren(f"{{*}}{name}")
+
+
+def _attributes(element: etree._Element, record: Any, names: str, where: str) -> None:
+    """Each named attribute (``xmlName:field``, or one name for both) as the file spelt it equals the record's value
+    in the file's spelling; numbers compare by value."""
+    for name in names.split():
+        xml_name, _, field = name.partition(":")
+        value, text = raw(getattr(record, field or xml_name), record, xml_name), element.get(xml_name)
+        if isinstance(value, float):
+            assert number(text) == value, f"{where}: {xml_name}"
+        else:
+            assert value == text, f"{where}: {xml_name}"
+
+
+def _validities_of(element: etree._Element, records: tuple, where: str) -> None:
+    written = [
+        (integer(v.get("fromLane")), integer(v.get("toLane")), v.sourceline) for v in _children(element, "validity")
+    ]
+    assert written == [(v.from_lane, v.to_lane, v.line) for v in records], where
+
+
 def check_signals(document: Document, root: etree._Element) -> None:
-    view = read_signals(root)
-    signals = [s for road in document.roads for s in road.signals]
-    references = [s for road in document.roads for s in road.signal_references]
-    assert len(view.signals) == len(signals)
-    for a, b in zip(view.signals, signals):
-        where = f"signal {a.id} line {a.line}"
-        same(a, b, "road id type subtype country s t line", where)
-        assert a.dynamic == raw(b.dynamic, b, "dynamic"), where
-        assert a.orientation == raw(b.orientation, b, "orientation"), where
-        _validities(a.validities, b.validities, where, layers=False)
-        assert len(a.static_boards) == len(b.static_boards), where
-        for signs, board in zip(a.static_boards, b.static_boards):
-            for sign, record in zip(signs, board.signs, strict=True):
-                same(sign, record, "id type subtype country line", where)
-        assert a.vms_boards == len(b.vms_boards), where
-        semantics = [(s.line, tuple(item.kind for item in s.items)) for s in b.all_semantics()]
-        assert list(a.semantics) == semantics, where
-    assert len(view.references) == len(references)
-    for a, b in zip(view.references, references):
-        same(a, b, "road id line s", f"signal reference {a.id}")
-        assert a.orientation == raw(b.orientation, b, "orientation")
-        _validities(a.validities, b.validities, f"signal reference {a.id}", layers=False)
-    assert len(view.controllers) == len(document.controllers)
-    for a, b in zip(view.controllers, document.controllers):
-        same(a, b, "id line", f"controller {a.id}")
-        assert [(c.signal_id, c.line) for c in a.controls] == [(c.signal_id, c.line) for c in b.controls]
-    assert len(view.vms_groups) == len(document.vms_groups)
-    for a, b in zip(view.vms_groups, document.vms_groups):
-        same(a, b, "id line", f"vmsGroup {a.id}")
-        assert [(r.signal_id, number(r.vms_index), r.line) for r in a.references] == [
-            (r.signal_id, r.vms_index, r.line) for r in b.references
+    """Signals, signal references, controllers and vmsGroups against the tree's elements."""
+    roads = [r for r in _children(root, "road") if _ids_or_skip(r)]
+    signals = [(r, e) for r in roads for g in _children(r, "signals") for e in _children(g, "signal")]
+    records = [s for road in document.roads for s in road.signals]
+    assert len(signals) == len(records)
+    for (road, element), record in zip(signals, records):
+        where = f"signal {record.id} line {record.line}"
+        assert (road.get("id"), element.sourceline) == (record.road, record.line), where
+        _attributes(element, record, "id type subtype country s t dynamic orientation", where)
+        _validities_of(element, record.validities, where)
+        boards = [[sign.sourceline for sign in _children(b, "sign")] for b in _children(element, "staticBoard")]
+        assert boards == [[sign.line for sign in b.signs] for b in record.static_boards], where
+        assert len(list(_children(element, "vmsBoard"))) == len(record.vms_boards), where
+        semantics = [e.sourceline for e in element.iter("{*}semantics")]
+        assert semantics == [s.line for s in record.all_semantics()], where
+    references = [(r, e) for r in roads for g in _children(r, "signals") for e in _children(g, "signalReference")]
+    records = [s for road in document.roads for s in road.signal_references]
+    assert len(references) == len(records)
+    for (_, element), record in zip(references, records):
+        where = f"signal reference {record.id} line {record.line}"
+        assert element.sourceline == record.line, where
+        _attributes(element, record, "id s orientation", where)
+        _validities_of(element, record.validities, where)
+    controllers = list(_children(root, "controller"))
+    assert [(c.get("id"), c.sourceline) for c in controllers] == [(c.id, c.line) for c in document.controllers]
+    for element, record in zip(controllers, document.controllers):
+        controls = [(c.get("signalId"), c.sourceline) for c in _children(element, "control")]
+        assert controls == [(c.signal_id, c.line) for c in record.controls], f"controller {record.id}"
+    groups = list(_children(root, "vmsGroup"))
+    assert [(g.get("id"), g.sourceline) for g in groups] == [(g.id, g.line) for g in document.vms_groups]
+    for element, record in zip(groups, document.vms_groups):
+        written = [
+            (r.get("signalId"), number(r.get("vmsIndex")), r.sourceline) for r in element.iter("{*}vmsBoardReference")
         ]
+        assert written == [(r.signal_id, r.vms_index, r.line) for r in record.references], f"vmsGroup {record.id}"
 
 
 # ------------------------------------------------------------------------------------------------------ junctions

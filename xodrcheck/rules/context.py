@@ -38,7 +38,6 @@ if TYPE_CHECKING:  # pragma: no cover
     from xodrcheck.geometry.lanes import RoadGeometry
     from xodrcheck.junction_elements import JunctionParts
     from xodrcheck.objects import RoadObject, RoadObjects
-    from xodrcheck.signals import Signals
     from xodrcheck.support.filebytes import FileBytes
 
 
@@ -51,7 +50,7 @@ class TreeReleased(XodrError, RuntimeError):
 
 
 #: What :meth:`Context.release_tree` drops with the tree: the cached views built from it.
-_TREE_VIEWS = ("road_objects", "objects", "signals", "_surface_boxes")
+_TREE_VIEWS = ("road_objects", "objects", "_surface_boxes")
 
 
 def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
@@ -183,7 +182,7 @@ class Context:
         return self._views[key]
 
     def release_tree(self) -> None:
-        """Drop :attr:`tree` and every view built from it (:meth:`xml_view`, :attr:`road_objects`, :attr:`signals`):
+        """Drop :attr:`tree` and every view built from it (:meth:`xml_view`, :attr:`road_objects`):
         called by the runner once the rules declared ``xml=True`` have run, so that the tree (about 900 bytes per
         element) never lies under the geometry rules' caches. Reading the tree afterwards raises
         :class:`TreeReleased`."""
@@ -210,15 +209,6 @@ class Context:
         """Road id -> the road's ``<object>`` elements as typed data (of :attr:`road_objects`; roads without objects
         are left out)."""
         return {road: found.objects for road, found in self.road_objects.items() if found.objects}
-
-    @cached_property
-    def signals(self) -> Signals:
-        """The file's signals, signal references, controllers and vmsGroups as typed data (:mod:`xodrcheck.signals`),
-        built from :attr:`tree` once per file; empty when the file is not well-formed."""
-        from xodrcheck.signals import Signals, read_signals
-
-        tree = self.tree
-        return Signals() if tree is None else read_signals(tree.getroot())
 
     # ---------------------------------------------------------------------------------------------------- geometry
     def geometry(self, road_id: str) -> RoadGeometry | None:
