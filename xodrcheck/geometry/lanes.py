@@ -175,6 +175,11 @@ class RoadGeometry:
             self._sides[section_index] = cached
         return cached
 
+    def placed_lane_ids(self, section_index: int) -> frozenset[int]:
+        """Ids of the lanes placed in the section: positive ids in ``<left>``, negative in ``<right>`` (a lane filed
+        on the wrong side has no border to evaluate), ``singleSide`` sections resolved."""
+        return frozenset(lane.id for side in self.side_lanes(section_index) for lane in side.lanes)
+
     def _side(self, section_index: int, sign: int) -> SideLanes:
         sections = self.road.lane_sections
         i = section_index

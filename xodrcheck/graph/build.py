@@ -20,6 +20,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterable
 from dataclasses import dataclass
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -39,7 +40,10 @@ from xodrcheck.model import (
 )
 from xodrcheck.support.quantities import metres
 
-__all__ = ["LANE_CHANGE", "LINK", "LaneGraph", "Node", "Stop", "lane_graph", "zero_wide"]
+if TYPE_CHECKING:  # pragma: no cover
+    from scipy.sparse import csr_matrix
+
+__all__ = ["LANE_CHANGE", "LINK", "LaneGraph", "Node", "Stop", "lane_graph", "matrix", "zero_wide"]
 
 LINK, LANE_CHANGE = "link", "lane_change"
 #: Edge kinds by their code in :attr:`LaneGraph.kind`.
@@ -226,3 +230,17 @@ def _lane_changes(
                 else:
                     at = (length - max(s1 for _, s1 in stretches)) / length
                 edges[(x, y, 1)] = at
+
+
+def matrix(graph: LaneGraph, weights: np.ndarray | None = None) -> csr_matrix:
+    """The graph as a sparse matrix: one entry per (source, target), the least weight of the edges joining them
+    (1 without ``weights``)."""
+    from scipy.sparse import csr_matrix
+
+    n = len(graph.nodes)
+    w = np.ones(len(graph.source)) if weights is None else np.asarray(weights, dtype=float)
+    order = np.lexsort((w, graph.target, graph.source))
+    src, dst, w = graph.source[order], graph.target[order], w[order]
+    first = np.ones(len(src), dtype=bool)
+    first[1:] = (src[1:] != src[:-1]) | (dst[1:] != dst[:-1])
+    return csr_matrix((w[first], (src[first], dst[first])), shape=(n, n))

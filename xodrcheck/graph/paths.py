@@ -3,32 +3,14 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.graph.build import LaneGraph
+from xodrcheck.graph.build import LaneGraph, matrix
 from xodrcheck.graph.reach import reached
 from xodrcheck.model import Document
 
-if TYPE_CHECKING:  # pragma: no cover
-    from scipy.sparse import csr_matrix
-
-__all__ = ["best_partial", "matrix", "shortest_from", "unwind"]
-
-
-def matrix(graph: LaneGraph, weights: np.ndarray | None = None) -> csr_matrix:
-    """The graph as a sparse matrix: one entry per (source, target), the least weight of the edges joining them
-    (1 without ``weights``)."""
-    from scipy.sparse import csr_matrix
-
-    n = len(graph.nodes)
-    w = np.ones(len(graph.source)) if weights is None else np.asarray(weights, dtype=float)
-    order = np.lexsort((w, graph.target, graph.source))
-    src, dst, w = graph.source[order], graph.target[order], w[order]
-    first = np.ones(len(src), dtype=bool)
-    first[1:] = (src[1:] != src[:-1]) | (dst[1:] != dst[:-1])
-    return csr_matrix((w[first], (src[first], dst[first])), shape=(n, n))
+__all__ = ["best_partial", "shortest_from", "unwind"]
 
 
 def shortest_from(graph: LaneGraph, weights: np.ndarray, start: int) -> tuple[np.ndarray, np.ndarray]:

@@ -24,7 +24,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.graph.build import LaneGraph
+from xodrcheck.graph.build import LaneGraph, matrix
 from xodrcheck.support.arrays import ranges
 
 __all__ = [
@@ -100,8 +100,6 @@ def goes_on(graph: LaneGraph) -> np.ndarray:
 def components(graph: LaneGraph) -> tuple[int, np.ndarray]:
     """The strongly connected parts: their number and each node's label."""
     from scipy.sparse import csgraph  # here: a check that needs no components loads no scipy
-
-    from xodrcheck.graph.paths import matrix
 
     count, labels = csgraph.connected_components(matrix(graph), directed=True, connection="strong")
     return int(count), labels

@@ -29,6 +29,7 @@ from html import escape
 from importlib import resources
 
 from xodrcheck.findings import Finding, Severity
+from xodrcheck.report import tool_version
 
 #: Script files, in the order they run (one inline script).
 SCRIPTS = ("decode.js", "map.js", "render.js", "route.js", "report.js")
@@ -51,15 +52,6 @@ class FilePage:
     note: str | None = None
     #: The file's verdict line (:func:`xodrcheck.report.verdict.verdict`); ``None`` for a map alone.
     verdict: str | None = None
-
-
-def tool_version() -> str:
-    from importlib.metadata import PackageNotFoundError, version
-
-    try:
-        return version("junctionart")
-    except PackageNotFoundError:
-        return "unknown"
 
 
 def asset(name: str) -> str:

@@ -34,6 +34,7 @@ __all__ = [
     "rule_bases",
     "shown",
     "summary",
+    "tool_version",
 ]
 
 
@@ -107,3 +108,14 @@ def summary(reports: Sequence[Report]) -> dict:
         "by_code": dict(sorted(by_code.items())),
         "ok": all(r.ok for r in reports),
     }
+
+
+def tool_version() -> str:
+    """The installed package's version, as every report names the tool ("unknown" from a source tree without
+    package metadata)."""
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("junctionart")
+    except PackageNotFoundError:  # pragma: no cover - running from a source tree without metadata
+        return "unknown"

@@ -17,7 +17,7 @@ from collections.abc import Sequence
 from pathlib import Path
 
 from xodrcheck.findings import Finding, Severity
-from xodrcheck.report import rule_bases
+from xodrcheck.report import rule_bases, tool_version
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.docformat import markdown
 from xodrcheck.rules.plaintext import plain
@@ -33,15 +33,6 @@ def _uri(path: str | None) -> str:
         return "-"
     p = Path(path)
     return p.as_uri() if p.is_absolute() else p.as_posix()
-
-
-def _tool_version() -> str:
-    from importlib.metadata import PackageNotFoundError, version
-
-    try:
-        return version("junctionart")
-    except PackageNotFoundError:  # pragma: no cover - running from a source tree without metadata
-        return "0"
 
 
 def _result(f: Finding, uri: str, index: int) -> dict:
@@ -110,7 +101,7 @@ def document(reports: Sequence) -> dict:
         "version": "2.1.0",
         "runs": [
             {
-                "tool": {"driver": {"name": "xodrcheck", "version": _tool_version(), "rules": descriptors}},
+                "tool": {"driver": {"name": "xodrcheck", "version": tool_version(), "rules": descriptors}},
                 "artifacts": [{"location": {"uri": _uri(r.path)}} for r in reports],
                 "results": results,
             }

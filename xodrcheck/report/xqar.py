@@ -148,7 +148,7 @@ def _metadata(checker: etree._Element, found: list[Finding]) -> None:
 
 
 def document(reports: Sequence) -> etree._Element:
-    from xodrcheck.report.sarif import _tool_version
+    from xodrcheck.report import tool_version
 
     rules = load_rules()
     root = etree.Element("CheckerResults", version=REPORT_VERSION)
@@ -165,7 +165,7 @@ def document(reports: Sequence) -> etree._Element:
             build_date=today,
             description="xodrcheck: OpenDRIVE conformance checks, the standard's Annex F checker rules among them",
             name=name,
-            version=_tool_version(),
+            version=tool_version(),
             summary=f"{len(codes)} checker(s) completed; {len(report.findings)} issue(s) found.",
         )
         etree.SubElement(bundle, "Param", name="InputFile", value=report.path or "-")

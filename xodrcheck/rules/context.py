@@ -251,7 +251,7 @@ class Context:
             return float(profile.evaluate(lane.widths, np.array([s]), origin=section.s)[0])
         if lane.borders:
             geometry = self.geometry(road.id)
-            if geometry is None or lane_id not in placed_lane_ids(geometry, section_index):
+            if geometry is None or lane_id not in geometry.placed_lane_ids(section_index):
                 return None  # a lane on the wrong side has no place in the road (lane-id-sequence reports it)
             inner, outer = geometry.inner_outer(section_index, lane_id, np.array([s]))
             return float(abs(np.asarray(outer)[0] - np.asarray(inner)[0]))
@@ -470,12 +470,6 @@ class Context:
                 if incoming is not None and contact is not None:
                     out.append(Neighbour(incoming, contact, connection, junction))
         return tuple(out)
-
-
-def placed_lane_ids(geometry: RoadGeometry, section_index: int) -> frozenset[int]:
-    """Ids of the lanes the geometry places in a lane section: positive ids in ``<left>``, negative in ``<right>``
-    (a lane filed on the wrong side has no border to evaluate), ``singleSide`` sections resolved."""
-    return frozenset(lane.id for side in geometry.side_lanes(section_index) for lane in side.lanes)
 
 
 def junction_parts(ctx: Context) -> tuple[JunctionParts, ...]:

@@ -29,7 +29,7 @@ from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.geometry.batch import centre_lines
 from xodrcheck.geometry.lines import tightest
 from xodrcheck.model import Road
-from xodrcheck.rules.context import Context, placed_lane_ids
+from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import BATCH_SAMPLES, lines_in_order, section_lines, section_samples, usable
 from xodrcheck.support.quantities import metres
@@ -81,7 +81,7 @@ def lane_radius_too_small(ctx: Context):
     bound = 1.0 / ctx.tolerances.min_radius if ctx.tolerances.min_radius > 0 else math.inf
     together = _centre_hits(ctx, bound)
     for road, index, geometry, s in _sections(ctx):
-        placed = placed_lane_ids(geometry, index)
+        placed = geometry.placed_lane_ids(index)
         hits = together[(road.id, index)]
         for lane in road.lane_sections[index].lanes:
             if lane.id not in placed or not lane.drivable:
@@ -121,7 +121,7 @@ def _centre_hits(ctx: Context, bound: float) -> dict[tuple[str, int], dict[int, 
     entries, keys, grids, wanted = [], [], [], []
     out: dict[tuple[str, int], dict[int, _Hit]] = {}
     for road, index, geometry, s in _sections(ctx):
-        placed = placed_lane_ids(geometry, index)
+        placed = geometry.placed_lane_ids(index)
         lanes = [lane.id for lane in road.lane_sections[index].lanes if lane.id in placed and lane.drivable]
         out[(road.id, index)] = {}
         if lanes:

@@ -25,7 +25,7 @@ import numpy as np
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.geometry.batch import centre_lines
 from xodrcheck.model import Connection, ContactPoint, JunctionType, Road
-from xodrcheck.rules.context import Context, placed_lane_ids, travel_direction
+from xodrcheck.rules.context import Context, travel_direction
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import BATCH_SAMPLES, end_s, road_end, section_samples, usable
 
@@ -71,7 +71,7 @@ def _walk(ctx: Context, road: Road, lane_id: int, contact: ContactPoint) -> list
     current: int | None = lane_id
     for index in order:
         lane = sections[index].lane(current) if current is not None else None
-        if lane is None or current is None or current not in placed_lane_ids(geometry, index):
+        if lane is None or current is None or current not in geometry.placed_lane_ids(index):
             break
         steps.append((index, current))
         links = lane.successors if contact is ContactPoint.START else lane.predecessors

@@ -26,14 +26,12 @@ Point = tuple[float, float, float] | None
 
 def lane_placed(geometry: RoadGeometry, s: float, lane: int | None, section_s: float | None) -> tuple[int, int] | None:
     """(lane section index, lane) whose centre is the place; ``None``: the reference line."""
-    from xodrcheck.rules.context import placed_lane_ids
-
     sections = geometry.road.lane_sections
     if not lane or not sections:
         return None
     starts = [i for i, section in enumerate(sections) if section.s == section_s]
     index = starts[0] if starts else int(geometry.section_index(np.array([float(s)]))[0])
-    return (index, lane) if lane in placed_lane_ids(geometry, index) else None
+    return (index, lane) if lane in geometry.placed_lane_ids(index) else None
 
 
 def points_at(geometry: RoadGeometry, at: np.ndarray, placed: tuple[int, int] | None) -> list[Point]:

@@ -10,7 +10,7 @@ import numpy as np
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Lane, LaneSection, LaneType, Road
 from xodrcheck.rules import feature_uids as U
-from xodrcheck.rules.context import Context, placed_lane_ids
+from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 
@@ -75,7 +75,7 @@ def rail_reference_line_off_centre(ctx: Context):
                 continue  # none, or several (rail-lanes-per-road)
             geometry = ctx.geometry(road.id)
             lane = rails[0]
-            if geometry is None or lane.id not in placed_lane_ids(geometry, index):
+            if geometry is None or lane.id not in geometry.placed_lane_ids(index):
                 continue
             start, end = section.s, road.section_end(index)
             s = np.array([start, (start + end) / 2, end])

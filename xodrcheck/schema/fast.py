@@ -32,13 +32,13 @@ import json
 import operator
 import re
 from functools import cache
+from importlib import resources
 from typing import Any, NamedTuple
 
 from lxml import etree
 
 from xodrcheck.findings import XodrError
 from xodrcheck.schema.plan import EXTENSIONS, FORMAT, PLAN_FILE
-from xodrcheck.support import packagedata
 
 XS = "http://www.w3.org/2001/XMLSchema"
 XSI = "http://www.w3.org/2001/XMLSchema-instance"
@@ -64,7 +64,7 @@ def derived(folder_name: str, main: str) -> etree.XMLSchema:
     change nothing in validation but take a third of the compilation, no annotations, comments or blank text)."""
     texts = {}
     reading = etree.XMLParser(resolve_entities=False, no_network=True, remove_blank_text=True, remove_comments=True)
-    for entry in sorted((packagedata.folder("xodrcheck.schemas") / folder_name).iterdir(), key=lambda e: e.name):
+    for entry in sorted((resources.files("xodrcheck.schemas") / folder_name).iterdir(), key=lambda e: e.name):
         if not entry.name.endswith(".xsd"):
             continue
         root = etree.fromstring(entry.read_bytes(), reading)
@@ -142,7 +142,7 @@ def _compiled(text: str | None) -> etree.XPath | None:
 @cache
 def plan(folder_name: str) -> _Plan:
     """The plan of the schema in ``folder_name`` (:mod:`xodrcheck.schema.plan`), its tests compiled by lxml."""
-    source = packagedata.folder("xodrcheck.schemas") / folder_name / PLAN_FILE
+    source = resources.files("xodrcheck.schemas") / folder_name / PLAN_FILE
     data = json.loads(source.read_bytes())
     if data.get("format") != FORMAT:
         raise ValueError(f"{folder_name}/{PLAN_FILE}: format {data.get('format')}, expected {FORMAT}")

@@ -27,9 +27,10 @@ import threading
 from collections.abc import Iterator
 from dataclasses import dataclass
 from functools import cache
+from importlib import resources
 from pathlib import Path
 
-from xodrcheck.support import packagedata, usercache
+from xodrcheck.support import usercache
 
 #: (revMajor, revMinor) -> (folder under the package data ``xodrcheck.schemas``, main file).
 SCHEMA_FOLDERS: dict[tuple[int, int], tuple[str, str]] = {
@@ -68,7 +69,7 @@ def schema_name(version: tuple[int, int]) -> str | None:
 
 def _schema_file(version: tuple[int, int]):
     folder, main = SCHEMA_FOLDERS[version]
-    return packagedata.folder("xodrcheck.schemas") / folder / main
+    return resources.files("xodrcheck.schemas") / folder / main
 
 
 @cache

@@ -20,9 +20,9 @@ import fnmatch
 import functools
 import re
 from dataclasses import dataclass
+from importlib import resources
 
 from xodrcheck.findings import Severity
-from xodrcheck.support import packagedata
 
 #: Where the annex is published (each UID's section number is given beside it).
 ANNEX_URL = (
@@ -65,7 +65,7 @@ class AnnexRule:
 @functools.cache
 def annex_rules() -> dict[str, AnnexRule]:
     """Every Annex F rule by UID, in the annex's order."""
-    text = (packagedata.folder(__name__) / "annex_f.tsv").read_text(encoding="utf-8")
+    text = (resources.files(__name__) / "annex_f.tsv").read_text(encoding="utf-8")
     out: dict[str, AnnexRule] = {}
     for row in text.splitlines():
         if row and not row.startswith("#"):

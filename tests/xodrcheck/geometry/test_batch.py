@@ -24,7 +24,7 @@ from xodrcheck.mesh.surfaces import MAX_COORDINATE, build_surfaces
 from xodrcheck.model import LaneKey
 from xodrcheck.reader import read
 from xodrcheck.rules import curvature, junction_geometry, sampled
-from xodrcheck.rules.context import Context, placed_lane_ids
+from xodrcheck.rules.context import Context
 from xodrcheck.support import arrays
 
 CHORD, MAX_STEP, BUDGET = 0.01, 5.0, 200_000
@@ -220,7 +220,7 @@ def test_centre_lines_in_batches_are_each_lanes_own(corpus_dir: Path, name: str)
             for index in range(len(road.lane_sections)) if geometry is not None else ():
                 entries.append((geometry, index))
                 grids.append(sampled.section_samples(ctx, road, index))
-                wanted.append(sorted(placed_lane_ids(geometry, index), reverse=True))
+                wanted.append(sorted(geometry.placed_lane_ids(index), reverse=True))
         limit = sum(len(s) * len(w) for s, w in zip(grids, wanted)) // 3  # three batches or more
         batches = list(centre_lines([g.rows(i) for g, i in entries], grids, wanted, limit))
         assert len(batches) > 1 and batches[-1][1] == len(entries)

@@ -9,8 +9,7 @@ from scipy.sparse import csgraph
 
 from tests.xodrcheck.graph.maps import FIXTURES, LOOP, T_JUNCTION, TRAP, document
 from xodrcheck.graph import lane_graph
-from xodrcheck.graph.build import LaneGraph, Node
-from xodrcheck.graph.paths import matrix
+from xodrcheck.graph.build import LaneGraph, Node, matrix
 from xodrcheck.graph.reach import components, goes_on, reachability, reached, traps, unentered
 from xodrcheck.model import LaneKey
 
