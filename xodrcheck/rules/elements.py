@@ -12,7 +12,7 @@ from xodrcheck.geometry.cubic import CubicCurve
 from xodrcheck.model import Arc, ParamPoly3, PRange
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.geometry import _at, _finite
+from xodrcheck.rules.places import element_place, finite
 from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 
@@ -75,7 +75,7 @@ def parampoly3_length_mismatch(ctx: Context):
         for g in road.plan_view:
             if not isinstance(g, ParamPoly3) or not g.length > 0 or not math.isfinite(g.length):
                 continue
-            if not _finite(g.aU, g.bU, g.cU, g.dU, g.aV, g.bV, g.cV, g.dV):
+            if not finite(g.aU, g.bU, g.cU, g.dU, g.aV, g.bV, g.cV, g.dV):
                 continue
             normalized = g.p_range is PRange.NORMALIZED
             verdict = length_verdict((g.aU, g.bU, g.cU, g.dU), (g.aV, g.bV, g.cV, g.dV), normalized, g.length, tol)
@@ -100,7 +100,7 @@ def parampoly3_length_mismatch(ctx: Context):
             else:
                 text += "; fix @length or the coefficients"
             severity = Severity.WARNING if uid == U.PARAMPOLY3_LENGTH_MATCH else Severity.ERROR
-            yield parampoly3_length_mismatch.finding(text, uid=uid, severity=severity, **_at(road, g))
+            yield parampoly3_length_mismatch.finding(text, uid=uid, severity=severity, **element_place(road, g))
 
 
 @rule(
@@ -131,7 +131,7 @@ def parampoly3_not_aligned(ctx: Context):
     tol = ctx.tolerances
     for road in ctx.document.roads:
         for g in road.plan_view:
-            if not isinstance(g, ParamPoly3) or not _finite(g.aU, g.bU, g.aV, g.bV):
+            if not isinstance(g, ParamPoly3) or not finite(g.aU, g.bU, g.aV, g.bV):
                 continue
             wrong = []
             if math.hypot(g.aU, g.aV) > tol.position:
@@ -147,7 +147,7 @@ def parampoly3_not_aligned(ctx: Context):
                     f"road {road.id}: the paramPoly3 at s={metres(g.s)} is not aligned with its start point: "
                     + "; ".join(wrong)
                     + "; write the curve with aU = aV = bV = 0 and bU > 0 (shift x, y and hdg instead)",
-                    **_at(road, g),
+                    **element_place(road, g),
                 )
 
 
@@ -171,5 +171,5 @@ def arc_zero_curvature(ctx: Context):
             if isinstance(g, Arc) and g.curvature == 0.0:
                 yield arc_zero_curvature.finding(
                     f"road {road.id}: the arc at s={metres(g.s)} has curvature 0: it is a straight line; write <line/>",
-                    **_at(road, g),
+                    **element_place(road, g),
                 )

@@ -26,6 +26,7 @@ from xodrcheck.model import Cubic, Geometry, Road, Spiral
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_uids import SECTION_VALID_LENGTH
+from xodrcheck.rules.places import element_place, finite
 from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.rules.sampled import angle_between, grid_step, usable, warning_note
 from xodrcheck.support.quantities import metres
@@ -37,26 +38,17 @@ def _kind(g: Geometry) -> str:
     return _KIND.get(type(g).__name__, type(g).__name__)
 
 
-def _finite(*values: float) -> bool:
-    return all(math.isfinite(v) for v in values)
-
-
 def _pairs(road: Road):
     """Consecutive plan-view elements (sorted by ``s`` as the reference line uses them) with finite attributes."""
     elements = ReferenceLine(road.plan_view).elements
     for a, b in itertools.pairwise(elements):
-        if _finite(a.s, a.x, a.y, a.hdg, a.length, b.s, b.x, b.y, b.hdg) and a.length >= 0:
+        if finite(a.s, a.x, a.y, a.hdg, a.length, b.s, b.x, b.y, b.hdg) and a.length >= 0:
             yield a, b
 
 
 def _end_of(g: Geometry):
     pose = evaluate_element(g, np.array([g.length]))
     return float(pose.x[0]), float(pose.y[0]), float(pose.hdg[0])
-
-
-def _at(road: Road, element) -> dict:
-    """Where a finding about plan-view element ``element`` of ``road`` points: its start s, x, y and line."""
-    return {"road": road.id, "s": element.s, "x": element.x, "y": element.y, "line": element.line or road.line or None}
 
 
 @rule(
@@ -99,7 +91,7 @@ def plan_view_gap(ctx: Context):
                     f"at s={metres(b.s)} or the previous element's parameters{warning_note(severity, tol)}",
                     severity=severity,
                     uid=None if severity is Severity.ERROR else NO_UID,
-                    **_at(road, b),
+                    **element_place(road, b),
                 )
 
 
@@ -144,7 +136,7 @@ def plan_view_kink(ctx: Context):
                     f"agree{warning_note(severity, tol, 'heading')}",
                     severity=severity,
                     uid=None if severity is Severity.ERROR else NO_UID,
-                    **_at(road, b),
+                    **element_place(road, b),
                 )
 
 
@@ -173,7 +165,7 @@ def plan_view_s_jump(ctx: Context):
             first = elements[0]
             yield plan_view_s_jump.finding(
                 f"road {road.id}: the plan view starts at s={metres(first.s)}, not at s=0",
-                **_at(road, first),
+                **element_place(road, first),
             )
         for a, b in _pairs(road):
             expected = a.s + a.length
@@ -183,7 +175,7 @@ def plan_view_s_jump(ctx: Context):
                     f"road {road.id}: the element at s={metres(b.s)} follows a {_kind(a)} at s={metres(a.s)} of length "
                     f"{metres(a.length)}, so it should start at s={metres(expected)} "
                     f"({'overlap' if b.s < expected else 'gap'} of {abs(b.s - expected):.4g} m in s)",
-                    **_at(road, b),
+                    **element_place(road, b),
                 )
 
 
@@ -215,7 +207,7 @@ def road_length_mismatch(ctx: Context):
     tol = ctx.tolerances
     for road in ctx.document.roads:
         elements = ReferenceLine(road.plan_view).elements
-        if not elements or not _finite(road.length, elements[-1].s, elements[-1].length):
+        if not elements or not finite(road.length, elements[-1].s, elements[-1].length):
             continue
         end = elements[-1].s + elements[-1].length
         total = math.fsum(g.length for g in elements)
@@ -308,7 +300,7 @@ def spiral_constant_curvature(ctx: Context):
                 yield spiral_constant_curvature.finding(
                     f"road {road.id}: the spiral at s={metres(g.s)} has curvStart = curvEnd = {g.curv_start:g}; write "
                     f"{shape} instead",
-                    **_at(road, g),
+                    **element_place(road, g),
                 )
 
 

@@ -26,11 +26,12 @@ from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.geometry.batch import centre_lines
 from xodrcheck.model import Connection, ContactPoint, JunctionType, Road
 from xodrcheck.rules.context import Context, travel_direction
+from xodrcheck.rules.lane_paths import Known, centre_path, crossing, walk
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import BATCH_SAMPLES, end_s, road_end, section_samples, usable
 
 if TYPE_CHECKING:
-    import shapely
+    pass
 
 
 @dataclass(frozen=True)
@@ -61,48 +62,6 @@ def _enters(ctx: Context, incoming: Road, end: ContactPoint, lane_id: int) -> bo
     return lane is not None and travel_direction(incoming, lane) == (1 if end is ContactPoint.END else -1)
 
 
-def _walk(ctx: Context, road: Road, lane_id: int, contact: ContactPoint) -> list[tuple[int, int]]:
-    """(section index, lane id) of the lane from ``contact`` through the road, following its lane links across
-    sections while each is placed."""
-    geometry = ctx.road_geometry(road)
-    sections = road.lane_sections
-    order = range(len(sections)) if contact is ContactPoint.START else range(len(sections) - 1, -1, -1)
-    steps = []
-    current: int | None = lane_id
-    for index in order:
-        lane = sections[index].lane(current) if current is not None else None
-        if lane is None or current is None or current not in geometry.placed_lane_ids(index):
-            break
-        steps.append((index, current))
-        links = lane.successors if contact is ContactPoint.START else lane.predecessors
-        current = links[0] if len(links) == 1 else None
-    return steps
-
-
-#: Centre lines evaluated ahead, by (road id, section index, lane id): plan-view points (n, 2) at the section samples.
-_Known = dict[tuple[str, int, int], np.ndarray]
-
-
-def _centre_path(
-    ctx: Context, road: Road, lane_id: int, contact: ContactPoint, known: _Known | None = None
-) -> np.ndarray | None:
-    """The lane's centre from ``contact`` through the road, following its lane links across sections (the lines in
-    ``known`` are taken from there)."""
-    geometry = ctx.road_geometry(road)
-    pieces = []
-    for index, current in _walk(ctx, road, lane_id, contact):
-        xy = known.get((road.id, index, current)) if known is not None else None
-        if xy is None:
-            points = geometry.lane_points(index, current, section_samples(ctx, road, index), "centre")
-            xy = np.column_stack((points.x, points.y))
-        pieces.append(xy if contact is ContactPoint.START else xy[::-1])
-    if not pieces:
-        return None
-    xy = np.concatenate(pieces)
-    xy = xy[np.all(np.isfinite(xy), axis=1)]
-    return xy if len(xy) >= 2 else None
-
-
 def _groups(ctx: Context):
     """(junction, incoming road, its end at the junction, connections from it) for every default junction."""
     for junction in ctx.document.junctions:
@@ -125,7 +84,7 @@ def _groups(ctx: Context):
 
 
 def _paths(
-    ctx: Context, incoming: Road, end: ContactPoint, connections: list[_Connected], known: _Known | None = None
+    ctx: Context, incoming: Road, end: ContactPoint, connections: list[_Connected], known: Known | None = None
 ) -> list[_Path]:
     out: list[_Path] = []
     seen: set[tuple[str, int]] = set()
@@ -133,7 +92,7 @@ def _paths(
         for link in c.lane_links:
             if not _enters(ctx, incoming, end, link.from_lane) or (connecting.id, link.to_lane) in seen:
                 continue
-            xy = _centre_path(ctx, connecting, link.to_lane, contact, known)
+            xy = centre_path(ctx, connecting, link.to_lane, contact, known)
             if xy is None:
                 continue
             seen.add((connecting.id, link.to_lane))
@@ -142,7 +101,7 @@ def _paths(
 
 
 def _ahead(ctx: Context):
-    """:func:`_groups`, each with the centre lines its paths follow (:data:`_Known`), evaluated ahead for a run of
+    """:func:`_groups`, each with the centre lines its paths follow (:data:`Known`), evaluated ahead for a run of
     groups at a time (:func:`_known`; at most about ``BATCH_SAMPLES`` points kept)."""
     run: list[tuple] = []
     wanted: dict[tuple[str, int], tuple[Road, list[int]]] = {}
@@ -153,7 +112,7 @@ def _ahead(ctx: Context):
             for link in k.connection.lane_links:
                 if not _enters(ctx, incoming, end, link.from_lane):
                     continue
-                for index, lane_id in _walk(ctx, k.road, link.to_lane, k.contact):
+                for index, lane_id in walk(ctx, k.road, link.to_lane, k.contact):
                     road, lanes = wanted.setdefault((k.road.id, index), (k.road, []))
                     if lane_id not in lanes:
                         lanes.append(lane_id)
@@ -168,7 +127,7 @@ def _ahead(ctx: Context):
         yield from ((*g, known) for g in run)
 
 
-def _known(ctx: Context, wanted: dict[tuple[str, int], tuple[Road, list[int]]]) -> _Known:
+def _known(ctx: Context, wanted: dict[tuple[str, int], tuple[Road, list[int]]]) -> Known:
     """The centre lines of ``wanted`` lanes ((road id, section index) -> road, lane ids), evaluated together
     (:func:`xodrcheck.geometry.batch.centre_lines`: the points of ``lane_points`` lane by lane)."""
     sections, keys, grids, lanes = [], [], [], []
@@ -177,7 +136,7 @@ def _known(ctx: Context, wanted: dict[tuple[str, int], tuple[Road, list[int]]]) 
         keys.append((road_id, index))
         grids.append(section_samples(ctx, road, index))
         lanes.append(ids)
-    out: _Known = {}
+    out: Known = {}
     for lo, hi, found in centre_lines(sections, grids, lanes, BATCH_SAMPLES):
         x, y = found.xy()
         line = 0
@@ -187,35 +146,6 @@ def _known(ctx: Context, wanted: dict[tuple[str, int], tuple[Road, list[int]]]) 
                 out[(keys[k][0], keys[k][1], lane_id)] = np.column_stack((x[a:b], y[a:b]))
                 line += 1
     return out
-
-
-def _parted(a: np.ndarray, b: shapely.LineString, tol: float) -> np.ndarray | None:
-    """The part of polyline ``a`` from its first vertex further than ``tol`` from ``b`` on (``None``: never)."""
-    import shapely
-
-    distance = shapely.distance(shapely.points(a), b)
-    far = np.nonzero(distance > tol)[0]
-    if not len(far) or len(a) - far[0] < 2:
-        return None
-    return a[far[0] :]
-
-
-def _crossing(p: _Path, q: _Path, tol: float) -> np.ndarray | None:
-    """A point where two paths meet other than their shared start (``None`` when they do not)."""
-    import shapely  # here: shapely loads only for junctions with paths to compare
-
-    a, b = p.xy, q.xy
-    if p.from_lane == q.from_lane:
-        line_a, line_b = shapely.LineString(a), shapely.LineString(b)
-        part_a, part_b = _parted(a, line_b, tol), _parted(b, line_a, tol)
-        if part_a is None or part_b is None:
-            return None
-        a, b = part_a, part_b
-    meet = shapely.intersection(shapely.LineString(a), shapely.LineString(b))
-    if meet.is_empty:
-        return None
-    point = shapely.get_coordinates(meet)[0]
-    return point
 
 
 def _describe(p: _Path) -> str:
@@ -248,7 +178,7 @@ def connection_lanes_cross(ctx: Context):
         paths = _paths(ctx, incoming, end, group, known)
         for i, p in enumerate(paths):
             for q in paths[i + 1 :]:
-                point = _crossing(p, q, tol)
+                point = crossing(p.xy, q.xy, p.from_lane == q.from_lane, tol)
                 if point is None:
                     continue
                 yield connection_lanes_cross.finding(

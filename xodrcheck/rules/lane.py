@@ -128,7 +128,7 @@ def lane_id_sequence(ctx: Context):
     Readers number lanes outward from the centre and place each lane outside the previous id; a gap or a positive id
     under ``<right>`` makes them disagree about where a lane is. Annex F: a lane on the wrong side breaks
     ``road.lane.lanes_numbered_correctly``, a side whose numbering does not start at 1 (-1) ``road.lane.lane_order``,
-    a gap further out ``road.lane.lane_order_no_gaps``.
+    a gap further out ``road.lane.lane_order_noid_gaps``.
 
     Passes::
 
@@ -155,7 +155,7 @@ def lane_id_sequence(ctx: Context):
                             **where,
                         )
                 ids = sorted({abs(lane.id) for lane in lanes if lane.id * sign > 0})
-                gaps = _gaps(ids)
+                gaps = id_gaps(ids)
                 if not gaps:
                     continue
                 first = next(lane for lane in lanes if lane.id * sign > 0)
@@ -171,7 +171,7 @@ def lane_id_sequence(ctx: Context):
                     gaps = gaps[1:]
                 if gaps:
                     yield lane_id_sequence.finding(
-                        f"{here}: {name} lanes skip id(s) {_gap_text(gaps, sign)}",
+                        f"{here}: {name} lanes skip id(s) {gap_text(gaps, sign)}",
                         uid=U.LANE_ORDER_NO_GAPS,
                         lane=gaps[0][0] * sign,
                         line=first.line or None,
@@ -179,7 +179,7 @@ def lane_id_sequence(ctx: Context):
                     )
 
 
-def _gaps(ids: list[int]) -> list[tuple[int, int]]:
+def id_gaps(ids: list[int]) -> list[tuple[int, int]]:
     """Runs ``(first, last)`` of the ids missing from 1 .. max(ids) (sorted, positive): by runs, not one by one, so that
     a damaged id of 10**12 costs nothing."""
     out, prev = [], 0
@@ -190,7 +190,7 @@ def _gaps(ids: list[int]) -> list[tuple[int, int]]:
     return out
 
 
-def _gap_text(gaps: list[tuple[int, int]], sign: int, most: int = 5) -> str:
+def gap_text(gaps: list[tuple[int, int]], sign: int, most: int = 5) -> str:
     parts = [str(a * sign) if a == b else f"{a * sign} to {b * sign}" for a, b in gaps[:most]]
     more = len(gaps) - most
     count = sum(b - a + 1 for a, b in gaps)

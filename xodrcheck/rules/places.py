@@ -16,12 +16,23 @@ import numpy as np
 if TYPE_CHECKING:
     from xodrcheck.findings import Finding
     from xodrcheck.geometry.lanes import RoadGeometry
+    from xodrcheck.model import Geometry, Road
     from xodrcheck.rules.context import Context
 
 #: (road id, s, lane, section_s): a place as a finding names it.
 Key = tuple[str, float, int | None, float | None]
 #: Inertial (x, y, z) of a place (z NaN where not finite), or ``None`` where it is not finite.
 Point = tuple[float, float, float] | None
+
+
+def finite(*values: float) -> bool:
+    """Whether every value is a finite number (a record's attributes before placing it)."""
+    return all(math.isfinite(v) for v in values)
+
+
+def element_place(road: Road, element: Geometry) -> dict:
+    """Where a finding about plan-view element ``element`` of ``road`` points: its start s, x, y and line."""
+    return {"road": road.id, "s": element.s, "x": element.x, "y": element.y, "line": element.line or road.line or None}
 
 
 def lane_placed(geometry: RoadGeometry, s: float, lane: int | None, section_s: float | None) -> tuple[int, int] | None:

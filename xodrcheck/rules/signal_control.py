@@ -32,7 +32,7 @@ import numpy as np
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
 from xodrcheck.rules.context import Context, link_at, travel_direction
-from xodrcheck.rules.junction_geometry import _centre_path, _parted
+from xodrcheck.rules.lane_paths import centre_path, parted
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import usable
 
@@ -173,7 +173,7 @@ def movements(ctx: Context, p: Placement, cache: dict) -> list[Movement]:
                     continue
                 key = (connecting.id, ll.to_lane, c.contact_point)
                 if key not in cache:
-                    cache[key] = _centre_path(ctx, connecting, ll.to_lane, c.contact_point)
+                    cache[key] = centre_path(ctx, connecting, ll.to_lane, c.contact_point)
                 xy = cache[key]
                 if xy is not None:
                     out.append(Movement(junction, road.id, end_lane, connecting, ll.to_lane, xy))
@@ -189,12 +189,12 @@ def crossing(a: Movement, b: Movement, tol: float) -> np.ndarray | None:
         return None
     pa, pb = a.xy, b.xy
     if a.incoming == b.incoming and a.lane == b.lane:
-        ta, tb = _parted(pa, shapely.LineString(pb), tol), _parted(pb, shapely.LineString(pa), tol)
+        ta, tb = parted(pa, shapely.LineString(pb), tol), parted(pb, shapely.LineString(pa), tol)
         if ta is None or tb is None:
             return None
         pa, pb = ta, tb
     if float(np.hypot(*(pa[-1] - pb[-1]))) <= tol:
-        ra, rb = _parted(pa[::-1], shapely.LineString(pb), tol), _parted(pb[::-1], shapely.LineString(pa), tol)
+        ra, rb = parted(pa[::-1], shapely.LineString(pb), tol), parted(pb[::-1], shapely.LineString(pa), tol)
         if ra is None or rb is None:
             return None
         pa, pb = ra[::-1], rb[::-1]

@@ -2,7 +2,6 @@
 
 import re
 from pathlib import Path
-from types import SimpleNamespace
 
 import numpy as np
 import pytest
@@ -10,7 +9,7 @@ import pytest
 from tests.xodrcheck.rules.helpers import findings, fixture
 from xodrcheck.config import Tolerances, load_config
 from xodrcheck.findings import Severity
-from xodrcheck.rules.junction_geometry import _crossing
+from xodrcheck.rules.lane_paths import crossing
 
 RULE = "connection-lanes-cross"
 
@@ -24,10 +23,6 @@ def test_left_turn_from_the_right_lane_crosses_straight_on():
     assert [g.severity for g in findings(path, RULE, "generator")] == [Severity.ERROR]  # a generator invariant
     assert "road 10 lane -1" in f.message and "road 12 lane -1" in f.message
     assert f.y == pytest.approx(-1.75, abs=0.01)  # on the straight-on path of lane -1
-
-
-def _path(from_lane: int, xy):
-    return SimpleNamespace(from_lane=from_lane, xy=np.asarray(xy, dtype=float))
 
 
 def _weave(excursion: float) -> tuple[np.ndarray, np.ndarray]:
@@ -45,18 +40,18 @@ def test_paths_from_one_lane_weaving_under_a_metre_do_not_cross(excursion):
     """CARLA Town06 junctions 79, 393, 508: a turn and the straight-on path from one lane part with a weave of
     7-80 cm before the turn leaves to the right; vehicles of one lane follow each other there (no crossing)."""
     straight, turn = _weave(excursion)
-    assert _crossing(_path(-1, straight), _path(-1, turn), Tolerances().junction_start) is None
+    assert crossing(straight, turn, True, Tolerances().junction_start) is None
 
 
 def test_paths_from_one_lane_crossing_after_they_parted():
     """A turn that leaves 1.5 m to the left of the straight-on path, then crosses it, is a crossing; with the strict
     profile's 5 cm the 7 cm weave is one too."""
     straight, turn = _weave(1.5)
-    point = _crossing(_path(-1, straight), _path(-1, turn), Tolerances().junction_start)
+    point = crossing(straight, turn, True, Tolerances().junction_start)
     assert point is not None and point[0] == pytest.approx(20.0, abs=0.05)
     straight, turn = _weave(0.07)
     strict = load_config(Path("/nonexistent"), profile="strict").tolerances.junction_start
-    assert strict == 0.05 and _crossing(_path(-1, straight), _path(-1, turn), strict) is not None
+    assert strict == 0.05 and crossing(straight, turn, True, strict) is not None
 
 
 def test_carla_towns_keep_only_crossings_of_different_lanes(corpus_dir):

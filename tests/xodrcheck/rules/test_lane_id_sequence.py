@@ -24,10 +24,10 @@ def test_a_huge_lane_id_is_reported_as_one_run_of_missing_ids(tmp_path):
     assert len(f.message) < 300
 
 
-def test_gaps_are_listed_by_runs():
-    from xodrcheck.rules.lane import _gap_text, _gaps
+def testid_gaps_are_listed_by_runs():
+    from xodrcheck.rules.lane import gap_text, id_gaps
 
-    assert _gaps([1, 2, 3]) == []
-    assert _gaps([2, 5, 6, 9]) == [(1, 1), (3, 4), (7, 8)]
-    assert _gap_text(_gaps([2, 5, 6, 9]), -1) == "-1, -3 to -4, -7 to -8 (5 ids)"
-    assert _gap_text(_gaps([2]), 1) == "1"
+    assert id_gaps([1, 2, 3]) == []
+    assert id_gaps([2, 5, 6, 9]) == [(1, 1), (3, 4), (7, 8)]
+    assert gap_text(id_gaps([2, 5, 6, 9]), -1) == "-1, -3 to -4, -7 to -8 (5 ids)"
+    assert gap_text(id_gaps([2]), 1) == "1"
