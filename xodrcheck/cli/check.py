@@ -30,7 +30,7 @@ import dataclasses
 import sys
 from pathlib import Path
 
-from xodrcheck.cli._common import error, output, target_ok
+from xodrcheck.cli.common import error, output, target_ok
 from xodrcheck.config import PROFILES, SEVERITY_NAMES, ConfigError, load_config
 from xodrcheck.findings import ReadError, Severity
 from xodrcheck.report import FORMATS, least_severity, render, shown

@@ -9,7 +9,7 @@ import argparse
 import json
 
 from xodrcheck.analysis.snapshot import Snapshot, SnapshotError, differences
-from xodrcheck.cli._common import error, guarded
+from xodrcheck.cli.common import error, guarded
 from xodrcheck.cli.snapshot import config_or_error, snapshot_or_error
 
 NAME = "diff"

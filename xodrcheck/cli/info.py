@@ -26,7 +26,7 @@ import sys
 
 from xodrcheck.analysis.elevation import ElevationInfo
 from xodrcheck.analysis.info import MapInfo, map_info
-from xodrcheck.cli._common import guarded, read_file, report_errors
+from xodrcheck.cli.common import guarded, read_file, report_errors
 
 NAME = "info"
 HELP = "Summarise OpenDRIVE files: version, roads, junctions, lanes, geometry, extent and reader findings."

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import argparse
 
-from xodrcheck.cli._common import (
+from xodrcheck.cli.common import (
     error,
     guarded,
     positive_number,

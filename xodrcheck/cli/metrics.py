@@ -21,7 +21,7 @@ from collections.abc import Iterator
 from typing import IO
 
 from xodrcheck.analysis.metrics import JunctionMetrics, LegMetrics, map_metrics
-from xodrcheck.cli._common import error, guarded, output, read_file, report_errors, target_ok
+from xodrcheck.cli.common import error, guarded, output, read_file, report_errors, target_ok
 from xodrcheck.support.atomic import OutputError
 
 NAME = "metrics"

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import argparse
 
-from xodrcheck.cli._common import error, guarded, output, read_file, target_ok
+from xodrcheck.cli.common import error, guarded, output, read_file, target_ok
 from xodrcheck.support.atomic import OutputError
 
 NAME = "route"

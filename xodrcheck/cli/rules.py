@@ -25,7 +25,7 @@ from __future__ import annotations
 import argparse
 import json
 
-from xodrcheck.cli._common import error
+from xodrcheck.cli.common import error
 from xodrcheck.findings import Severity
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.plaintext import plain

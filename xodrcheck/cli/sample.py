@@ -21,7 +21,7 @@ import math
 from typing import IO
 
 from xodrcheck.analysis.sample import LaneLine, sample_count, sample_lanes
-from xodrcheck.cli._common import (
+from xodrcheck.cli.common import (
     error,
     guarded,
     output,

@@ -9,7 +9,7 @@ import argparse
 import json
 
 from xodrcheck.analysis.snapshot import NotReadWhole, Snapshot, snapshot_of
-from xodrcheck.cli._common import error, guarded, not_whole_message, output, target_ok
+from xodrcheck.cli.common import error, guarded, not_whole_message, output, target_ok
 from xodrcheck.config import Config, ConfigError, load_config
 from xodrcheck.findings import ReadError
 from xodrcheck.support.atomic import OutputError

@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from xodrcheck.cli._common import error, guarded, output, positive_number, read_file, report_errors, target_ok
+from xodrcheck.cli.common import error, guarded, output, positive_number, read_file, report_errors, target_ok
 
 NAME = "view"
 HELP = "Write the map of a file as one self-contained HTML page (pan, zoom, hover a lane for its name and s)."
