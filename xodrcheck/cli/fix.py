@@ -19,8 +19,8 @@ import dataclasses
 import sys
 from typing import TYPE_CHECKING
 
-from xodrcheck.cli.common import error, guarded, target_ok
 from xodrcheck.cli.check import exit_code, split_selectors, tolerance_overrides
+from xodrcheck.cli.common import error, guarded, target_ok
 from xodrcheck.config import PROFILES, ConfigError, load_config
 from xodrcheck.findings import ReadError
 from xodrcheck.report import FORMATS, least_severity, render, shown
