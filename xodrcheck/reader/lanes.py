@@ -11,6 +11,7 @@ not have them (the schema reports them there); the reader ignores them.
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 from lxml import etree
@@ -206,6 +207,11 @@ def _centre_type_optional(ctx: Context, el: etree._Element) -> bool:
 
 
 def _lane_type(ctx: Context, el: etree._Element, name: str | None) -> LaneType:
+    """The lane's type: as spelt by the standard, else matched without case or blanks (an unknown one, or none where
+    it is required, is read as unknown with a finding)."""
+    exact = None if name is None else LANE_TYPES.get(name)
+    if exact is not None:
+        return exact
     if name is None:
         if not _centre_type_optional(ctx, el):
             ctx.missing(el, "type", "the lane type is read as unknown")
@@ -223,111 +229,118 @@ def _lane_type(ctx: Context, el: etree._Element, name: str | None) -> LaneType:
 
 
 def _lane(ctx: Context, el: etree._Element) -> Lane | None:
-    """The lane of ``el`` with its records, or ``None`` (with a finding) when its id is not an integer.
-
-    One function rather than steps on purpose: it runs for every lane of a map, and handing its attributes or
-    records to helpers measured 0.4 % of a CARLA town's read more (callgrind)."""
-    get = el.get
+    """The lane of ``el`` with its records, or ``None`` (with a finding) when its id is not an integer."""
     try:
-        lane_id = int(get("id"))
+        lane_id = int(el.get("id"))
     except (TypeError, ValueError):
         ctx.integer(el, "id", _SKIP_LANE)
         return None
     ctx.lane = lane_id
     keys = tuple(el.keys())
-
-    type_name = get("type")
-    lane_type: LaneType | None = None if type_name is None else LANE_TYPES.get(type_name)
-    if lane_type is None:
-        lane_type = _lane_type(ctx, el, type_name)
-    level = get("level")
-    if level is not None:
-        level = _LEVELS.get(level)
-        if level is None:
-            level = bool(ctx.boolean(el, "level", "read as false, the standard's default"))
-    else:
-        level = False
+    type_name = el.get("type")
+    lane_type, level = _lane_type(ctx, el, type_name), _level(ctx, el)
     direction = None
-    if get("direction") is not None and directed(ctx):
+    if el.get("direction") is not None and directed(ctx):
         direction = ctx.choice(el, "direction", DIRECTIONS, _STANDARD)
+    records = _LaneRecords()
+    tags = [records.add(ctx, child) for child in el]
+    records.check_order(ctx, el)
+    access, materials, rules, visibilities = _NO_RECORDS if not records.others else _records(ctx, records.others)
+    advisory, dynamic_type, dynamic_direction, road_works = _NO_EXTRAS if keys in _PLAIN else _extras(ctx, el)
+    links = records.links
+    return model.Lane(
+        id=lane_id,
+        type=lane_type,
+        level=level,
+        predecessors=links[0],
+        successors=links[1],
+        widths=tuple(records.widths),
+        borders=tuple(records.borders),
+        road_marks=tuple(records.marks),
+        speeds=tuple(records.speeds),
+        type_name="" if type_name is None else type_name,
+        line=el.sourceline,
+        heights=tuple(records.heights),
+        temporary_predecessors=links[2],
+        temporary_successors=links[3],
+        direction=direction,
+        access=access,
+        materials=materials,
+        rules=rules,
+        visibilities=visibilities,
+        link=records.link_record,
+        advisory=advisory,
+        dynamic_lane_type=dynamic_type,
+        dynamic_lane_direction=dynamic_direction,
+        road_works=road_works,
+        xml=ctx.facts(el, _LANE, keys, tuple(tags)),
+    )
+
+
+def _level(ctx: Context, el: etree._Element) -> bool:
+    """``@level``: false when absent (the standard's default) or not a boolean (with a finding)."""
+    level = el.get("level")
+    if level is None:
+        return False
+    value = _LEVELS.get(level)
+    if value is None:
+        return bool(ctx.boolean(el, "level", "read as false, the standard's default"))
+    return value
+
+
+@dataclass
+class _LaneRecords:
+    """A lane's child records as they are read, in file order; access, material, rule and visibility records, rare,
+    are kept as elements and read at the end."""
 
     links: _Links = ((), (), (), ())
-    link = None
-    link_record = None
-    widths: list[Cubic] = []
-    borders: list[Cubic] = []
-    marks: list[RoadMark] = []
-    speeds: list[Speed] = []
-    heights: list[LaneHeight] = []
-    others: list[etree._Element] = []  # access, material, rule and visibility records: rare, read at the end
-    tags = []
-    for child in el:
+    link: etree._Element | None = None
+    link_record: LaneLinks | None = None
+    widths: list[Cubic] = field(default_factory=list)
+    borders: list[Cubic] = field(default_factory=list)
+    marks: list[RoadMark] = field(default_factory=list)
+    speeds: list[Speed] = field(default_factory=list)
+    heights: list[LaneHeight] = field(default_factory=list)
+    others: list[etree._Element] = field(default_factory=list)
+
+    def add(self, ctx: Context, child: etree._Element) -> str:
+        """Read one child of the ``<lane>``; its tag."""
         tag = child.tag
-        tags.append(tag)
         if tag == "roadMark":
-            mark = _road_mark(ctx, child)
-            if mark is not None:
-                marks.append(mark)
+            self._keep(self.marks, _road_mark(ctx, child))
         elif tag == "width" or tag == "border":
-            record = cubic(ctx, child, True)
-            if record is not None:
-                (widths if tag == "width" else borders).append(record)
+            self._keep(self.widths if tag == "width" else self.borders, cubic(ctx, child, True))
         elif tag == "link":
-            if link is not None:
-                ctx.repeated(child, link)
+            if self.link is not None:
+                ctx.repeated(child, self.link)
             else:
-                link = child
-                links, link_tags = _lane_links(ctx, child)
-                link_record = LaneLinks(child.sourceline, ctx.facts(child, _LINK, children=link_tags))
+                self.link = child
+                self.links, link_tags = _lane_links(ctx, child)
+                self.link_record = LaneLinks(child.sourceline, ctx.facts(child, _LINK, children=link_tags))
         elif tag == "speed":
-            speed = _speed(ctx, child)
-            if speed is not None:
-                speeds.append(speed)
+            self._keep(self.speeds, _speed(ctx, child))
         elif tag == "height":
-            height = _height(ctx, child)
-            if height is not None:
-                heights.append(height)
+            self._keep(self.heights, _height(ctx, child))
         elif tag in _RECORDS:
-            others.append(child)
-    if len(widths) > 1:
-        ctx.check_order(widths, "<width>", el, U.WIDTH_ORDER)
-    if len(borders) > 1:
-        ctx.check_order(borders, "<border>", el, U.BORDER_ORDER)
-    if len(marks) > 1:
-        ctx.check_order(marks, "<roadMark>", el, U.ROAD_MARK_ORDER)
-    if len(speeds) > 1:
-        ctx.check_order(speeds, "<speed>", el, U.SPEED_ORDER)
-    if len(heights) > 1:
-        ctx.check_order(heights, "<height>", el, U.HEIGHT_ORDER)
-    access, materials, rules, visibilities = _NO_RECORDS if not others else _records(ctx, others)
-    advisory, dynamic_type, dynamic_direction, road_works = _NO_EXTRAS if keys in _PLAIN else _extras(ctx, el)
-    return model.Lane(
-        lane_id,
-        lane_type,
-        level,
-        links[0],
-        links[1],
-        tuple(widths),
-        tuple(borders),
-        tuple(marks),
-        tuple(speeds),
-        "" if type_name is None else type_name,
-        el.sourceline,
-        tuple(heights),
-        links[2],
-        links[3],
-        direction,
-        access,
-        materials,
-        rules,
-        visibilities,
-        link_record,
-        advisory,
-        dynamic_type,
-        dynamic_direction,
-        road_works,
-        ctx.facts(el, _LANE, keys, tuple(tags)),
-    )
+            self.others.append(child)
+        return tag
+
+    @staticmethod
+    def _keep(records: list, record: object) -> None:
+        if record is not None:
+            records.append(record)
+
+    def check_order(self, ctx: Context, el: etree._Element) -> None:
+        """Each kind of record in ascending ``sOffset`` (a finding for each out of order)."""
+        for records, name, uid in (
+            (self.widths, "<width>", U.WIDTH_ORDER),
+            (self.borders, "<border>", U.BORDER_ORDER),
+            (self.marks, "<roadMark>", U.ROAD_MARK_ORDER),
+            (self.speeds, "<speed>", U.SPEED_ORDER),
+            (self.heights, "<height>", U.HEIGHT_ORDER),
+        ):
+            if len(records) > 1:
+                ctx.check_order(records, name, el, uid)
 
 
 def _records(
