@@ -370,27 +370,20 @@ def _signals(
 
 
 def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
-    get = el.get
     first, lanes, tags = _children(ctx, el)
     plan_view = _reference_line(ctx, el, first.get("planView"))
     length = _length(ctx, el, plan_view)
     junction = _junction(ctx, el)
-
-    rule = TrafficRule.RHT
-    if get("rule") is not None:
-        rule = ctx.choice(el, "rule", _TRAFFIC_RULES, "read as RHT, the standard's default") or TrafficRule.RHT
-
+    rule = _traffic_rule(ctx, el)
     pred = succ = None
     unread: tuple[UnreadLink, ...] = ()
     link = first.get("link")
     if link is not None:
         pred, succ, unread = _links(ctx, link)
-
     elevation: Profile = ()
     if "elevationProfile" in first:
         elevation = cubics(ctx, first["elevationProfile"], "elevation", RU.ELEVATION_ORDER)
     superelevation, shapes, cross_section = _lateral(ctx, first.get("lateralProfile"))
-
     permanent = temporary = None
     if not lanes:
         ctx.report(
@@ -398,37 +391,43 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
         )
     else:
         permanent, temporary = build_layers(ctx, lanes)
-
     types, surface, railroad = _records(ctx, el, first)
     objects, object_references, tunnels, bridges = _objects(ctx, road_id, first)
     signals, references = _signals(ctx, road_id, first)
     return model.Road(
-        road_id,
-        length,
-        junction,
-        get("name"),
-        rule,
-        pred,
-        succ,
-        plan_view,
-        elevation,
-        superelevation,
-        () if permanent is None else permanent.lane_offset,
-        () if permanent is None else permanent.lane_sections,
-        objects,
-        signals,
-        el.sourceline,
-        temporary,
-        permanent,
-        types,
-        shapes,
-        cross_section,
-        surface,
-        railroad,
-        object_references,
-        tunnels,
-        bridges,
-        references,
-        ctx.facts(el, _ROAD, children=tags),
-        unread,
+        id=road_id,
+        length=length,
+        junction=junction,
+        name=el.get("name"),
+        rule=rule,
+        predecessor=pred,
+        successor=succ,
+        plan_view=plan_view,
+        elevation=elevation,
+        superelevation=superelevation,
+        lane_offset=() if permanent is None else permanent.lane_offset,
+        lane_sections=() if permanent is None else permanent.lane_sections,
+        objects=objects,
+        signals=signals,
+        line=el.sourceline,
+        temporary_lanes=temporary,
+        lanes=permanent,
+        types=types,
+        shapes=shapes,
+        cross_section_surface=cross_section,
+        surface=surface,
+        railroad=railroad,
+        object_references=object_references,
+        tunnels=tunnels,
+        bridges=bridges,
+        signal_references=references,
+        xml=ctx.facts(el, _ROAD, children=tags),
+        unread_links=unread,
     )
+
+
+def _traffic_rule(ctx: Context, el: etree._Element) -> TrafficRule:
+    """``@rule``: right-hand traffic when absent (the standard's default) or not a value of its type."""
+    if el.get("rule") is None:
+        return TrafficRule.RHT
+    return ctx.choice(el, "rule", _TRAFFIC_RULES, "read as RHT, the standard's default") or TrafficRule.RHT
