@@ -31,7 +31,7 @@ import sys
 from pathlib import Path
 
 from xodrcheck.cli.common import error, output, target_ok
-from xodrcheck.config import PROFILES, SEVERITY_NAMES, ConfigError, load_config
+from xodrcheck.config import PROFILES, SEVERITY_NAMES, Config, ConfigError, load_config
 from xodrcheck.findings import ReadError, Severity
 from xodrcheck.report import FORMATS, least_severity, render, shown
 from xodrcheck.report.verdict import count, verdict
@@ -145,8 +145,43 @@ def _expand(files: list[str]) -> list[str]:
 
 
 def run(args: argparse.Namespace) -> int:
-    from xodrcheck.check import Selection
     from xodrcheck.support.batch import BatchError, check_files
+
+    config = _config(args)
+    if config is None or not target_ok(args.output):
+        return 2
+    try:
+        files = _expand(args.files)
+    except ReadError as exc:
+        error(str(exc))
+        return 2
+    try:
+        outcomes = check_files(
+            files, config, jobs=args.jobs, scheduler=args.scheduler, progress=len(files) > 1 and sys.stderr.isatty()
+        )
+    except BatchError as exc:
+        error(f"check: {exc}")
+        return 2
+    reports = []
+    unreadable: list[str] = []  # files that could not be checked: exit 2
+    for outcome in outcomes:  # in the order given, however the files were checked
+        if outcome.report is not None:
+            reports.append(outcome.report)
+        else:
+            error(outcome.error or f"cannot check {outcome.path}")
+            unreadable.append(outcome.path)
+    if unreadable and args.output not in (None, "-"):
+        if reports:  # the others could be: say why their findings are not in the file either
+            error(f"nothing written to {args.output}: a file could not be checked")
+        return 2
+    if not _write_report(args, config, reports, unreadable):
+        return 2
+    return exit_code(reports, bool(unreadable))
+
+
+def _config(args: argparse.Namespace) -> Config | None:
+    """The configuration the options and the configuration file give (``None``, said on stderr, when it is bad)."""
+    from xodrcheck.check import Selection
 
     try:
         config = load_config(overrides=tolerance_overrides(args.tolerance), profile=args.profile)
@@ -161,38 +196,17 @@ def run(args: argparse.Namespace) -> int:
         Selection(config.select, config.ignore)  # validates the selectors before any file is read
     except ConfigError as exc:
         error(f"check: {exc}")
-        return 2
+        return None
     except (OSError, ValueError) as exc:  # an unreadable or malformed configuration file
         error(f"check: configuration: {exc}")
-        return 2
+        return None
+    return config
 
-    if not target_ok(args.output):
-        return 2
-    reports = []
-    unreadable: list[str] = []  # files that could not be checked: exit 2
-    try:
-        files = _expand(args.files)
-    except ReadError as exc:
-        error(str(exc))
-        return 2
-    try:
-        outcomes = check_files(
-            files, config, jobs=args.jobs, scheduler=args.scheduler, progress=len(files) > 1 and sys.stderr.isatty()
-        )
-    except BatchError as exc:
-        error(f"check: {exc}")
-        return 2
-    for outcome in outcomes:  # in the order given, however the files were checked
-        if outcome.report is not None:
-            reports.append(outcome.report)
-        else:
-            error(outcome.error or f"cannot check {outcome.path}")
-            unreadable.append(outcome.path)
+
+def _write_report(args: argparse.Namespace, config: Config, reports: list, unreadable: list[str]) -> bool:
+    """Render the reports in the asked format to the output, and the verdict to stderr; ``False`` when the output
+    cannot be written (said on stderr)."""
     to_file = args.output not in (None, "-")
-    if unreadable and to_file:
-        if reports:  # the others could be: say why their findings are not in the file either
-            error(f"nothing written to {args.output}: a file could not be checked")
-        return 2
     least = least_severity(config.min_severity, args.format)
     visible = shown(reports, least)[0]
     if args.format == "text":  # shows its own verdict, what it left out and the failing files: it takes every report
@@ -204,13 +218,13 @@ def run(args: argparse.Namespace) -> int:
             stream.write(text)
     except OutputError as exc:
         error(str(exc))
-        return 2
+        return False
     if not (args.format == "text" and not to_file and _in_sight(text)):
         print(verdict(reports, len(unreadable)), file=sys.stderr)
     if to_file:
         written = count(sum(len(r.findings) for r in visible), "finding")
         print(f"wrote {args.output} ({written}, {_size(Path(args.output))})", file=sys.stderr)
-    return exit_code(reports, bool(unreadable))
+    return True
 
 
 def exit_code(reports: list, unreadable: bool = False) -> int:
