@@ -116,8 +116,8 @@ def test_plain_check_loads_no_slow_module_it_does_not_use(tmp_path: Path, plain:
     assert "xodrcheck.rules.overlap" in names and "numpy" in names and "xodrcheck.support.memory" in names
     # ctypes.util (and its subprocess) only found the C library for malloc_trim; no configuration file: no TOML parser
     assert {"ctypes.util", "subprocess", "tomllib", "tomli"}.isdisjoint(names)
-    # the XSD 1.1 fast path and its plan only for 1.8/1.9 files, tempfile only to write an output file
-    lazy = {"tempfile", "xodrcheck.schema.fast", "xodrcheck.schema.plan"}
+    # the XSD 1.1 fast path and its plan only for 1.8/1.9 files
+    lazy = {"xodrcheck.schema.fast", "xodrcheck.schema.plan"}
     assert lazy & names == set()
     assert "xodrcheck.schema.validate" in names and "xodrcheck.standard" in names
 
@@ -126,8 +126,8 @@ def test_plain_check_loads_no_slow_module_it_does_not_use(tmp_path: Path, plain:
 FEATURE_MODULES = {
     "xodrcheck.junction_elements",
     "xodrcheck.geometry.junction_grid",
-    "xodrcheck.objects.model",
-    "xodrcheck.objects.read",
+    "xodrcheck.model.objects",
+    "xodrcheck.reader.objects",
     "xodrcheck.objects.shape",
     "xodrcheck.objects.place",
     "xodrcheck.model.signals",
@@ -148,7 +148,7 @@ FEATURES = PLAIN.replace(
 
 def test_plain_check_loads_no_junction_object_or_signal_module(tmp_path: Path, plain: Path) -> None:
     # the junction, object and signal rules are loaded and run; what they would read loads only for a file that
-    # has junctions, objects or signals (Context.road_objects, rules.context.junction_parts, the model's signals)
+    # has junctions, objects or signals (the model's objects, rules.context.junction_parts, the model's signals)
     names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(plain))
     rules = {"xodrcheck.rules.junction_roles", "xodrcheck.rules.junction_entries", "xodrcheck.rules.object_geometry"}
     assert rules | {"xodrcheck.rules.signal_control", "xodrcheck.rules.junction_shapes"} <= names
@@ -174,7 +174,7 @@ def test_check_of_junctions_objects_and_signals_loads_their_modules(tmp_path: Pa
     path = tmp_path / "features.xodr"
     path.write_text(FEATURES)
     names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(path))
-    assert {"xodrcheck.junction_elements", "xodrcheck.objects.model", "xodrcheck.objects.read"} <= names
+    assert {"xodrcheck.junction_elements", "xodrcheck.model.objects", "xodrcheck.reader.objects"} <= names
     assert "xodrcheck.model.signals" in names  # the signal rules read the document's signals
 
 

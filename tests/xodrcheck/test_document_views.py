@@ -1,12 +1,12 @@
 """The reader's document carries everything the rules read from the XML tree today (issue 27, one reader).
 
 For every corpus map and every rule fixture, what the XML views build from the tree the rules see (``Context.tree``:
-:mod:`xodrcheck.objects.read`, :mod:`xodrcheck.signals`, :mod:`xodrcheck.junction_elements`,
-the walks some rules make over the tree themselves, and the lanes as written (:func:`lane_elements`, the walk the
-lane rules made before they read the document); road types and shapes, which
-the rules read from the document, against the tree directly) is compared, field by field, with the same records of
-:class:`xodrcheck.model.Document`. Where the two spell a value differently (a raw attribute against an enumeration, a
-count against the records) the test converts the view's spelling, so that every value is compared.
+:mod:`xodrcheck.signals`, :mod:`xodrcheck.junction_elements`, the walks some rules make over the tree themselves, and
+the lanes as written (:func:`lane_elements`, the walk the lane rules made before they read the document); road types
+and shapes, road objects and their parts, which the rules read from the document, against the tree directly) is
+compared, field by field, with the same records of :class:`xodrcheck.model.Document`. Where the two spell a value
+differently (a raw attribute against an enumeration, a count against the records) the test converts the view's
+spelling, so that every value is compared.
 
 Where the document leaves out by design what a view keeps - elements the reader cannot name (a road, lane or junction
 without an id, a lane section without a valid ``s``), and repeats of an element the standard allows once (the reader
@@ -27,7 +27,6 @@ from lxml import etree
 from tests.conftest import corpus_files
 from xodrcheck.junction_elements import read_junctions
 from xodrcheck.model import ContactPoint, Document, Junction, Lane, LaneSection, Road
-from xodrcheck.objects.read import read_road_objects
 from xodrcheck.reader import read
 from xodrcheck.rules.context import Context
 from xodrcheck.xmlvalues import integer, local, number
@@ -79,122 +78,160 @@ def _documents(path: Path) -> tuple[Document, etree._ElementTree | None]:
     return document, Context(document, path=str(path), data=data).tree
 
 
-def _roads_by_id(document: Document) -> dict[str, list[Road]]:
-    out: dict[str, list[Road]] = {}
-    for road in document.roads:
-        out.setdefault(road.id, []).append(road)
+# ------------------------------------------------------------------------------------------------------ objects
+#: The five numbers without which the reader leaves a ``<repeat>`` out.
+_REPEAT = ("s", "length", "distance", "tStart", "tEnd")
+_SHAPES = ("cornerRoad", "cornerLocal", "curveLocal")
+
+
+def _children(el: etree._Element, *tags: str) -> list[etree._Element]:
+    return [child for child in el if local(child) in tags]
+
+
+def _first(el: etree._Element, tag: str) -> list[etree._Element]:
+    """The first ``tag`` child (the standard allows one; the reader keeps the first, a second is narrowed)."""
+    found = _children(el, tag)
+    if len(found) > 1:
+        _narrow()
+    return found[:1]
+
+
+Part = tuple[str, int, tuple]
+
+
+def _written_references(el: etree._Element) -> list[Part]:
+    return [("cornerReference", r.sourceline, (integer(r.get("id")),)) for r in _children(el, "cornerReference")]
+
+
+def _written_markings(el: etree._Element) -> list[Part]:
+    out: list[Part] = [("markings", el.sourceline, ())]
+    for m in _children(el, "marking"):
+        out += [("marking", m.sourceline, (m.get("color"), m.get("side"))), *_written_references(m)]
     return out
 
 
-# ------------------------------------------------------------------------------------------------------ objects
-def _validities(view: tuple, records: tuple, where: str, layers: bool = True) -> None:
-    kept = [v for v in records if v.from_lane is not None and v.to_lane is not None] if layers else list(records)
-    assert len(view) == len(kept), where
-    for v, r in zip(view, kept):
-        same(v, r, "from_lane to_lane line" + (" layer" if layers else ""), where)
+def _written_outline(el: etree._Element, wrapped: bool) -> list[Part]:
+    out: list[Part] = [("outline", el.sourceline, (integer(el.get("id")), wrapped))]
+    out += [(local(p), p.sourceline, (integer(p.get("id")), p.get("id") is not None)) for p in _children(el, *_SHAPES)]
+    for markings in _first(el, "markings"):
+        out += _written_markings(markings)
+    return out
 
 
-def _outline(view: Any, record: Any, where: str) -> None:
-    same(view, record, "id outer closed fill_type lane_type line wrapped", where)
-    assert len(view.corners) == len(record.corners), where
-    for a, b in zip(view.corners, record.corners):
-        assert type(a).__name__ == type(b).__name__, where
-        same(a, b, "height id line " + ("s t dz" if hasattr(a, "s") else "u v z"), where)
-    assert len(view.curves) == len(record.curves), where
-    for a, b in zip(view.curves, record.curves):
-        same(a, b, "u v z height hdg length shape id line", where)
-    assert len(view.points) == len(record.points), where
-    for p, q in zip(view.points, record.points):
-        same(p, q, "kind id line", where)
-        assert (p.id_text is None) == (not q.xml.given("id")), where
-    assert (view.markings is None) == (record.markings is None), where
-    if view.markings is not None:
-        _markings(view.markings, record.markings, where)
+def _written_skeleton(el: etree._Element) -> list[Part]:
+    out: list[Part] = [("skeleton", el.sourceline, ())]
+    for poly in _children(el, "polyline"):
+        out.append(("polyline", poly.sourceline, (integer(poly.get("id")),)))
+        out += [(local(v), v.sourceline, ()) for v in _children(poly, "vertexRoad", "vertexLocal")]
+    return out
 
 
-def _markings(view: Any, record: Any, where: str) -> None:
-    same(view, record, "line", where)
-    assert len(view.markings) == len(record.markings), where
-    for m, n in zip(view.markings, record.markings):
-        fields = "color side width z_offset space_length line_length start_offset stop_offset weight line"
-        same(m, n, fields, where)
-        assert [(c.id, c.line) for c in m.references] == [(c.id, c.line) for c in n.references], where
+def _written_object(el: etree._Element) -> list[Part]:
+    """What the reader keeps of an ``<object>`` element, part by part: (tag, line, values as the file gives them)."""
+    head = (el.get("id"), el.get("type"), *(number(el.get(n)) for n in ("s", "t", "zOffset", "length", "width")))
+    out: list[Part] = [("object", el.sourceline, (*head, number(el.get("radius")), el.get("orientation")))]
+    for child in el:
+        tag = local(child)
+        if tag == "outline":
+            out += _written_outline(child, False)
+        elif tag == "outlines":
+            out += [part for o in _children(child, "outline") for part in _written_outline(o, True)]
+        elif tag == "repeat" and all(number(child.get(n)) is not None for n in _REPEAT):
+            out.append(("repeat", child.sourceline, tuple(number(child.get(n)) for n in _REPEAT)))
+        elif tag == "validity":
+            out.append(("validity", child.sourceline, (integer(child.get("fromLane")), integer(child.get("toLane")))))
+        elif tag in ("material", "markings"):
+            out += [(tag, child.sourceline, ())] if tag == "material" else _written_markings(child)
+        elif tag == "borders":
+            out += [
+                part
+                for b in _children(child, "border")
+                for part in [("border", b.sourceline, (integer(b.get("outlineId")),)), *_written_references(b)]
+            ]
+        elif tag == "surface":
+            out += [("surface", child.sourceline, ()), *[("CRG", c.sourceline, ()) for c in _children(child, "CRG")]]
+    out += [part for s in _first(el, "skeleton") for part in _written_skeleton(s)]
+    out += [("parkingSpace", p.sourceline, ()) for p in _first(el, "parkingSpace")]
+    return sorted(out, key=lambda part: part[:2])
 
 
-def _object(view: Any, record: Any) -> None:
-    where = f"object {view.id} line {view.line}"
-    fields = (
-        "road id type s t z_offset hdg length width radius height invalidated temporary line subtype name pitch "
-        "roll perp_to_road valid_length outlines_line"
-    )
-    same(view, record, fields, where)
-    assert view.orientation == raw(record.orientation, record, "orientation"), where
-    assert view.attributes == frozenset(record.xml.attributes), where
-    assert len(view.outlines) == len(record.outlines), where
-    for o, p in zip(view.outlines, record.outlines):
-        _outline(o, p, where)
-    assert len(view.repeats) == len(record.repeats), where
-    for r, q in zip(view.repeats, record.repeats):
-        fields = (
-            "s length distance t_start t_end bt ct dt line z_offset_start z_offset_end length_start length_end "
-            "width_start width_end height_start height_end radius_start radius_end detach"
+def _read_references(refs: tuple) -> list[Part]:
+    return [("cornerReference", r.line, (r.id,)) for r in refs]
+
+
+def _read_markings(group: Any) -> list[Part]:
+    out: list[Part] = [("markings", group.line, ())]
+    for m in group.markings:
+        out += [("marking", m.line, (m.color, m.side)), *_read_references(m.references)]
+    return out
+
+
+def _read_object(obj: Any) -> list[Part]:
+    """The document's record of an object, part by part as :func:`_written_object` lists the element's."""
+    head = (obj.id, obj.type, obj.s, obj.t, obj.z_offset, obj.length, obj.width, obj.radius)
+    out: list[Part] = [("object", obj.line, (*head, raw(obj.orientation, obj, "orientation")))]
+    for o in obj.outlines:
+        out.append(("outline", o.line, (o.id, o.wrapped)))
+        out += [(p.kind, p.line, (p.id, p.xml.given("id"))) for p in o.points]
+        out += _read_markings(o.markings) if o.markings is not None else []
+    out += [("repeat", r.line, (r.s, r.length, r.distance, r.t_start, r.t_end)) for r in obj.repeats]
+    out += [("validity", v.line, (v.from_lane, v.to_lane)) for v in obj.validities]
+    out += [("material", m.line, ()) for m in obj.materials]
+    out += [part for group in obj.markings for part in _read_markings(group)]
+    out += [p for b in obj.borders for p in [("border", b.line, (b.outline_id,)), *_read_references(b.references)]]
+    out += [p for s in obj.surfaces for p in [("surface", s.line, ()), *[("CRG", c.line, ()) for c in s.crgs]]]
+    if obj.skeleton is not None:
+        out.append(("skeleton", obj.skeleton.line, ()))
+        for poly in obj.skeleton.polylines:
+            out += [("polyline", poly.line, (poly.id,)), *[(v.kind, v.line, ()) for v in poly.vertices]]
+    out += [("parkingSpace", obj.parking_space.line, ())] if obj.parking_space is not None else []
+    return sorted(out, key=lambda part: part[:2])
+
+
+def _written_others(group: etree._Element, tag: str) -> list[tuple]:
+    """An ``<objects>``' references, tunnels or bridges: (id, line, s, orientation or type, validity lanes)."""
+    kind = "orientation" if tag == "objectReference" else "type"
+    return [
+        (
+            el.get("id"),
+            el.sourceline,
+            number(el.get("s")),
+            el.get(kind),
+            [(integer(v.get("fromLane")), integer(v.get("toLane")), v.sourceline) for v in _children(el, "validity")],
         )
-        same(r, q, fields, where)
-    _validities(view.validities, record.validities, where)
-    assert (view.skeleton is None) == (record.skeleton is None), where
-    if view.skeleton is not None:
-        same(view.skeleton, record.skeleton, "line", where)
-        for a, b in zip(view.skeleton.polylines, record.skeleton.polylines, strict=True):
-            same(a, b, "id line", where)
-            for v, w in zip(a.vertices, b.vertices, strict=True):
-                same(v, w, "kind a b c radius width length id intersection_point line", where)
-    for a, b in zip(view.markings, record.markings, strict=True):
-        _markings(a, b, where)
-    for a, b in zip(view.borders, record.borders, strict=True):
-        same(a, b, "outline_id type width use_complete_outline line", where)
-        assert [(c.id, c.line) for c in a.references] == [(c.id, c.line) for c in b.references], where
-    for a, b in zip(view.materials, record.materials, strict=True):
-        same(a, b, "surface friction roughness road_mark_color line", where)
-    for a, b in zip(view.surfaces, record.surfaces, strict=True):
-        same(a, b, "line", where)
-        for c, d in zip(a.crgs, b.crgs, strict=True):
-            same(c, d, "file hide_road_surface_crg z_scale line", where)
+        for el in _children(group, tag)
+    ]
+
+
+def _read_others(records: tuple, kind: str) -> list[tuple]:
+    return [
+        (r.id, r.line, r.s, raw(getattr(r, kind), r, kind), [(v.from_lane, v.to_lane, v.line) for v in r.validities])
+        for r in records
+    ]
 
 
 def check_objects(document: Document, root: etree._Element) -> None:
-    views = read_road_objects(root, document.version)
-    roads = _roads_by_id(document)
-    assert set(views) == {road for road, found in roads.items() if any(_has_objects(r) for r in found)}
-    for road_id, view in views.items():
-        objects = [o for r in roads[road_id] for o in r.objects]
-        references = [o for r in roads[road_id] for o in r.object_references]
-        tunnels = [o for r in roads[road_id] for o in r.tunnels]
-        bridges = [o for r in roads[road_id] for o in r.bridges]
-        assert len(view.objects) == len(objects), road_id
-        for a, b in zip(view.objects, objects):
-            _object(a, b)
-        assert len(view.references) == len(references), road_id
-        for a, b in zip(view.references, references):
-            same(a, b, "road id s t z_offset valid_length line", road_id)
-            assert a.orientation == raw(b.orientation, b, "orientation"), road_id
-            _validities(a.validities, b.validities, road_id)
-        for kind, records in (("tunnel", tunnels), ("bridge", bridges)):
-            structures = [s for s in view.structures if s.kind == kind]
-            assert len(structures) == len(records), road_id
-            for a, b in zip(structures, records):
-                same(a, b, "road id s length type name line", road_id)
-                _validities(a.validities, b.validities, road_id)
-
-
-def _has_objects(road: Road) -> bool:
-    return bool(road.objects or road.object_references or road.tunnels or road.bridges)
+    """Every ``<object>`` (with an id), ``<objectReference>``, ``<tunnel>`` and ``<bridge>`` of every road is the
+    document's, with its parts (outlines, points, markings, repeats, validities, skeleton, borders, materials,
+    surfaces) at their lines and with their values."""
+    roads = [r for r in _all(root, "road") if _ids_or_skip(r)]
+    assert len(roads) == len(document.roads)
+    for road_el, road in zip(roads, document.roads):
+        groups = _first(road_el, "objects")
+        objects = [o for g in groups for o in _children(g, "object") if o.get("id") is not None]
+        assert len(objects) == len(road.objects), road.id
+        for el, obj in zip(objects, road.objects):
+            assert _written_object(el) == _read_object(obj), f"road {road.id} object {obj.id} line {obj.line}"
+        for tag, records, kind in (
+            ("objectReference", road.object_references, "orientation"),
+            ("tunnel", road.tunnels, "type"),
+            ("bridge", road.bridges, "type"),
+        ):
+            written = [item for g in groups for item in _written_others(g, tag)]
+            assert written == _read_others(records, kind), (road.id, tag)
 
 
 # ------------------------------------------------------------------------------------------------------ signals
-def _children(element: etree._Element, name: str) -> Iterator[etree._Element]:
-    return element.iterchildren(f"{{*}}{name}")
-
-
 def _attributes(element: etree._Element, record: Any, names: str, where: str) -> None:
     """Each named attribute (``xmlName:field``, or one name for both) as the file spelt it equals the record's value
     in the file's spelling; numbers compare by value."""

@@ -1,5 +1,6 @@
-"""Road objects as typed data (xodrcheck.objects), with OpenDRIVE 1.9's additions: curveLocal outlines evaluated by
-the plan-view evaluators, repeats along a cubic t, the outer default, invalidated/temporary, lane-validity layers."""
+"""Road objects of the document (the reader's records) and where xodrcheck.objects shapes them, with OpenDRIVE 1.9's
+additions: curveLocal outlines evaluated by the plan-view evaluators, repeats along a cubic t, the outer default,
+invalidated/temporary, lane-validity layers."""
 
 from __future__ import annotations
 
@@ -8,30 +9,35 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from lxml import etree
 
 from tests.xodrcheck import schemadocs as D
-from xodrcheck.model import LaneLayer
-from xodrcheck.objects import curve_end, curve_points, outline_uv, read_objects, repeat_t
+from xodrcheck.model import LaneLayer, Orientation, RoadObject
+from xodrcheck.objects import curve_end, curve_points, outline_uv, repeat_t
 from xodrcheck.reader import read
 from xodrcheck.rules.context import Context
 
 FEATURES = Path(__file__).parent / "opendrive19" / "features.xodr"
 
 
-def _objects(minor: int, objects: str) -> list:
-    root = etree.fromstring(D.doc(minor, road=f"<objects>{objects}</objects>"))
-    return list(read_objects(root, (1, minor)).get("1", ()))
+def _read(data: bytes) -> dict[str, tuple[RoadObject, ...]]:
+    """Road id -> the road's objects (roads without any left out)."""
+    document = read(data).document
+    assert document is not None
+    return {road.id: road.objects for road in document.roads if road.objects}
 
 
-def _context(path: Path) -> Context:
-    data = path.read_bytes()
-    return Context(read(data).document, path=str(path), data=data)
+def _objects(minor: int, objects: str) -> list[RoadObject]:
+    return list(_read(D.doc(minor, road=f"<objects>{objects}</objects>")).get("1", ()))
+
+
+def _features() -> dict[str, tuple[RoadObject, ...]]:
+    return _read(FEATURES.read_bytes())
 
 
 def test_features_objects_through_the_rule_context():
-    objects = _context(FEATURES).objects
-    island, barrier = objects["1"]
+    data = FEATURES.read_bytes()
+    ctx = Context(read(data).document, path=str(FEATURES), data=data)
+    island, barrier = ctx.road_objects()
     assert (island.id, island.type, island.s, island.t, island.length, island.width) == (
         "1000",
         "trafficIsland",
@@ -45,11 +51,11 @@ def test_features_objects_through_the_rule_context():
     assert [type(c.shape).__name__ for c in outline.curves] == ["Line", "ParamPoly3", "Line", "Arc"]
     assert (barrier.invalidated, barrier.temporary) == (False, True)
     assert barrier.validities[0].layer is LaneLayer.PERMANENT
-    assert set(objects) == {"1"}
+    assert {obj.road for obj in ctx.road_objects()} == {"1"}
 
 
 def test_the_island_outline_is_continuous_and_closed():
-    (outline,) = _context(FEATURES).objects["1"][0].outlines
+    (outline,) = _features()["1"][0].outlines
     curves = outline.curves
     for k, curve in enumerate(curves):
         following = curves[(k + 1) % len(curves)]
@@ -59,7 +65,7 @@ def test_the_island_outline_is_continuous_and_closed():
 
 
 def test_curve_points_of_each_shape():
-    (outline,) = _context(FEATURES).objects["1"][0].outlines
+    (outline,) = _features()["1"][0].outlines
     line, poly, _, arc = outline.curves
     u, v, hdg = curve_points(line, [0.0, 4.0, 99.0])  # clamped to the curve's length
     np.testing.assert_allclose(u, [-5.0, -1.0, 5.0])
@@ -71,7 +77,7 @@ def test_curve_points_of_each_shape():
 
 
 def test_outline_uv_samples_the_curves_within_the_bounding_box():
-    (outline,) = _context(FEATURES).objects["1"][0].outlines
+    (outline,) = _features()["1"][0].outlines
     u, v = outline_uv(outline, step=0.05)
     assert len(u) > 600
     assert u.min() == pytest.approx(-7.0, abs=1e-3) and u.max() == pytest.approx(6.5, abs=1e-3)
@@ -92,7 +98,7 @@ def test_param_poly3_with_arc_length_range():
 
 
 def test_repeat_t_cubic_in_1_9_and_linear_without_coefficients():
-    _, barrier = _context(FEATURES).objects["1"]
+    _, barrier = _features()["1"]
     (repeat,) = barrier.repeats
     ds = np.array([0.0, 50.0, 100.0])
     np.testing.assert_allclose(repeat_t(repeat, 50.0 + ds), -3.4 + 1e-5 * ds**2 + 5e-8 * ds**3)
@@ -146,10 +152,31 @@ def test_unparsable_values_give_none_or_are_left_out():
 def test_objects_of_a_file_with_a_default_namespace():
     data = D.doc(9, road='<objects><object id="o" s="1" t="-5" zOffset="0"/></objects>')
     data = data.replace(b"<OpenDRIVE>", b'<OpenDRIVE xmlns="http://example.com/opendrive">')
-    assert [o.id for o in read_objects(etree.fromstring(data), (1, 9))["1"]] == ["o"]
+    assert [o.id for o in _read(data)["1"]] == ["o"]
 
 
 def test_corner_local_outline_is_its_corners():
     (obj,) = _objects(9, f'<object id="o" s="1" t="-5" zOffset="0"><outlines>{D.outline(3)}</outlines></object>')
     u, v = outline_uv(obj.outlines[0])
     assert u.tolist() == [0.0, 1.0, 1.0] and v.tolist() == [0.0, 0.0, 1.0]
+
+
+def test_what_the_object_rules_read_of_the_xml_itself():
+    # the rules tell a given attribute from an absent one, and show an invalid value as the file wrote it
+    (bad, good) = _objects(
+        9,
+        '<object id="o" s="1" t="-5" zOffset="0" orientation="up" radius="0.1"><validity fromLane="x" toLane="-1"/>'
+        '<outlines><outline id="01"><cornerLocal u="0" v="0" z="0" height="1" id="a"/>'
+        '<cornerLocal u="1" v="0" z="0" height="1"/></outline></outlines></object>'
+        '<object id="p" s="1" t="-5" zOffset="0" orientation="-"/>',
+    )
+    assert bad.orientation is None and bad.xml.text("orientation") == "up"
+    assert good.orientation is Orientation.MINUS and good.xml.text("orientation") is None
+    assert bad.xml.given("radius") and not bad.xml.given("length")
+    (validity,) = bad.validities  # kept with the lane that is not an integer as None
+    assert (validity.from_lane, validity.to_lane, validity.xml.text("fromLane")) == (None, -1, "x")
+    (outline,) = bad.outlines
+    assert outline.id == 1 and outline.xml.given("id") and outline.xml.text("id") is None
+    named, unnamed = outline.points
+    assert named.id is None and named.xml.text("id") == "a"
+    assert unnamed.id is None and not unnamed.xml.given("id")

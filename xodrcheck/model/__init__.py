@@ -49,9 +49,10 @@ from typing import Any
 #: The package's modules and the public names each defines (loaded on first use: see the module's note).
 _MODULES = {
     "enums": (
-        "DIRECTED_LANE_TYPES DRIVABLE_LANE_TYPES AccessRule ConnectionType ContactPoint CrgMode CrgOrientation "
-        "CrgPurpose ElementDir ElementType JunctionGroupType JunctionType LaneAdvisory LaneDirection LaneLayer "
-        "LaneType MaxSpeed Orientation PRange ReferenceType Side StationType SwitchPosition TrafficRule"
+        "CORNER_LOCAL CORNER_ROAD CURVE_LOCAL DIRECTED_LANE_TYPES DRIVABLE_LANE_TYPES VERTEX_LOCAL VERTEX_ROAD "
+        "AccessRule ConnectionType ContactPoint CrgMode CrgOrientation CrgPurpose ElementDir ElementType "
+        "JunctionGroupType JunctionType LaneAdvisory LaneDirection LaneLayer LaneType MaxSpeed Orientation PRange "
+        "ReferenceType Side StationType SwitchPosition TrafficRule"
     ),
     "facts": "NO_FACTS UnknownElement UnreadLink XmlFacts facts_field",
     "planview": "Arc Cubic Geometry Line ParamPoly3 Poly3 Profile Spiral",
@@ -63,10 +64,9 @@ _MODULES = {
     "road_records": "Railroad RoadSpeed RoadType Shape Switch SwitchPartner SwitchTrack",
     "surface": "CrossSectionSurface Surface SurfaceCoefficients SurfaceCrg SurfacePolynomial SurfaceStrip",
     "objects": (
-        "CORNER_LOCAL CORNER_ROAD CURVE_LOCAL VERTEX_LOCAL VERTEX_ROAD Bridge CornerLocal CornerReference "
-        "CornerRoad CurveLocal CurveShape LaneValidity Marking Markings ObjectBorder ObjectCrg ObjectMaterial "
-        "ObjectReference ObjectSurface Outline OutlinePoint ParkingSpace Polyline Repeat RoadObject Skeleton "
-        "Tunnel Vertex"
+        "Bridge CornerLocal CornerReference CornerRoad CurveLocal CurveShape LaneValidity Marking Markings "
+        "ObjectBorder ObjectCrg ObjectMaterial ObjectReference ObjectSurface Outline OutlinePoint ParkingSpace "
+        "Polyline Repeat RoadObject Skeleton Tunnel Vertex"
     ),
     "signals": (
         "Control Controller DisplayArea PositionInertial PositionRoad Semantic Semantics Sign Signal "

@@ -1,4 +1,6 @@
-"""The standard's enumerations used by the model (attribute values with a closed list of spellings).
+"""The standard's enumerations used by the model (attribute values with a closed list of spellings), and the element
+names of object outline points and skeleton vertices (the kinds of :class:`~xodrcheck.model.OutlinePoint` and
+:class:`~xodrcheck.model.Vertex`).
 
 An enumeration whose list changes from version to version (road types, lane access restrictions, object and signal
 types, road mark types and colours) stays a string in the model, as the file spelt it.
@@ -9,8 +11,13 @@ from __future__ import annotations
 import enum
 
 __all__ = [
+    "CORNER_LOCAL",
+    "CORNER_ROAD",
+    "CURVE_LOCAL",
     "DIRECTED_LANE_TYPES",
     "DRIVABLE_LANE_TYPES",
+    "VERTEX_LOCAL",
+    "VERTEX_ROAD",
     "AccessRule",
     "ConnectionType",
     "ContactPoint",
@@ -34,6 +41,11 @@ __all__ = [
     "SwitchPosition",
     "TrafficRule",
 ]
+
+#: Element names of an object outline's points (13.2): the kinds :attr:`xodrcheck.model.Outline.kind` reports.
+CORNER_ROAD, CORNER_LOCAL, CURVE_LOCAL = "cornerRoad", "cornerLocal", "curveLocal"
+#: Element names of an object skeleton's vertices (13.3).
+VERTEX_ROAD, VERTEX_LOCAL = "vertexRoad", "vertexLocal"
 
 
 class ElementType(enum.Enum):

@@ -11,16 +11,11 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from xodrcheck.model.enums import LaneLayer, Orientation
+from xodrcheck.model.enums import VERTEX_LOCAL, LaneLayer, Orientation
 from xodrcheck.model.facts import XmlFacts, facts_field
 from xodrcheck.model.planview import Arc, Cubic, Line, ParamPoly3
 
 __all__ = [
-    "CORNER_LOCAL",
-    "CORNER_ROAD",
-    "CURVE_LOCAL",
-    "VERTEX_LOCAL",
-    "VERTEX_ROAD",
     "Bridge",
     "CornerLocal",
     "CornerReference",
@@ -45,11 +40,6 @@ __all__ = [
     "Tunnel",
     "Vertex",
 ]
-
-#: Element names of outline points, in the order :attr:`Outline.kind` reports them.
-CORNER_ROAD, CORNER_LOCAL, CURVE_LOCAL = "cornerRoad", "cornerLocal", "curveLocal"
-#: Element names of skeleton vertices.
-VERTEX_ROAD, VERTEX_LOCAL = "vertexRoad", "vertexLocal"
 
 #: The shapes a ``<curveLocal>`` may have, as plan-view elements starting at ``s = 0``.
 CurveShape = Line | Arc | ParamPoly3

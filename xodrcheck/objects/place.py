@@ -25,11 +25,11 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from xodrcheck.objects.model import RoadObject
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:  # pragma: no cover
     from xodrcheck.geometry.lanes import RoadGeometry
+    from xodrcheck.model import RoadObject
 
 #: Most instances one ``<repeat>`` places (a repeat placing more is taken as its first ones).
 MAX_INSTANCES = 10_000

@@ -5,7 +5,7 @@
   paramPoly3 (``pRange`` normalized: ``p`` in [0, 1]; arcLength: ``p`` in [0, length]), exactly as the plan-view
   element of the same kind (:func:`xodrcheck.geometry.planview.evaluate_element`, the one evaluator of those shapes);
 * a ``<cornerRoad>`` outline is in road ``s``/``t``: :mod:`xodrcheck.objects.place` puts it into the local frame;
-* a ``<repeat>``'s ``t`` is :attr:`~xodrcheck.objects.model.Repeat.t_profile`, evaluated by
+* a ``<repeat>``'s ``t`` is :attr:`~xodrcheck.model.Repeat.t_profile`, evaluated by
   :mod:`xodrcheck.geometry.profile`.
 """
 
@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from xodrcheck.objects.model import CornerLocal, CurveLocal, Outline, Repeat
+from xodrcheck.model.objects import CornerLocal, CurveLocal, Outline, Repeat
 
 
 def curve_points(curve: CurveLocal, ds) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:

@@ -350,8 +350,9 @@ _NO_OBJECTS: tuple[tuple[RoadObject, ...], tuple[ObjectReference, ...], tuple[Tu
 def _objects(
     ctx: Context, road_id: str, first: dict[str, etree._Element]
 ) -> tuple[tuple[RoadObject, ...], tuple[ObjectReference, ...], tuple[Tunnel, ...], tuple[Bridge, ...]]:
-    """The road's objects, object references, tunnels and bridges."""
-    if "objects" not in first:
+    """The road's objects, object references, tunnels and bridges (an ``<objects>`` without an element in it holds
+    none: the objects' reader and model are not loaded for it)."""
+    if "objects" not in first or next(first["objects"].iterchildren(etree.Element), None) is None:
         return _NO_OBJECTS
     from xodrcheck.reader.objects import read_objects
 

@@ -37,7 +37,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from xodrcheck.geometry.lanes import RoadGeometry
     from xodrcheck.junction_elements import JunctionParts
-    from xodrcheck.objects import RoadObject, RoadObjects
+    from xodrcheck.model import RoadObject
     from xodrcheck.support.filebytes import FileBytes
 
 
@@ -50,7 +50,7 @@ class TreeReleased(XodrError, RuntimeError):
 
 
 #: What :meth:`Context.release_tree` drops with the tree: the cached views built from it.
-_TREE_VIEWS = ("road_objects", "objects", "_surface_boxes")
+_TREE_VIEWS: tuple[str, ...] = ()
 
 
 def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
@@ -182,7 +182,7 @@ class Context:
         return self._views[key]
 
     def release_tree(self) -> None:
-        """Drop :attr:`tree` and every view built from it (:meth:`xml_view`, :attr:`road_objects`):
+        """Drop :attr:`tree` and every view built from it (:meth:`xml_view`):
         called by the runner once the rules declared ``xml=True`` have run, so that the tree (about 900 bytes per
         element) never lies under the geometry rules' caches. Reading the tree afterwards raises
         :class:`TreeReleased`."""
@@ -191,24 +191,11 @@ class Context:
         for key in ("_tree", *_TREE_VIEWS):
             self.__dict__.pop(key, None)
 
-    @cached_property
-    def road_objects(self) -> Mapping[str, RoadObjects]:
-        """Road id -> everything in the road's ``<objects>`` as typed data (:mod:`xodrcheck.objects`: objects with
-        outlines, skeletons, markings, borders, repeats, surfaces; object references, tunnels, bridges), built from
-        :attr:`tree` once per file; empty when the file is not well-formed."""
-        tree = self.tree
-        if tree is None or not any(_has_element(group) for r in _roads(tree) for group in r.iterchildren("{*}objects")):
-            # no <objects> with an element in it (what read_road_objects gives): xodrcheck.objects is not loaded
-            return {}
-        from xodrcheck.objects import read_road_objects
-
-        return read_road_objects(tree.getroot(), self.version)
-
-    @cached_property
-    def objects(self) -> Mapping[str, tuple[RoadObject, ...]]:
-        """Road id -> the road's ``<object>`` elements as typed data (of :attr:`road_objects`; roads without objects
-        are left out)."""
-        return {road: found.objects for road, found in self.road_objects.items() if found.objects}
+    def road_objects(self) -> Iterator[RoadObject]:
+        """The ``<object>`` records of the document's roads, road by road in file order (a junction's own objects
+        stand on no road's reference line)."""
+        for road in self.document.roads:
+            yield from road.objects
 
     # ---------------------------------------------------------------------------------------------------- geometry
     def geometry(self, road_id: str) -> RoadGeometry | None:
@@ -481,13 +468,3 @@ def junction_parts(ctx: Context) -> tuple[JunctionParts, ...]:
     from xodrcheck.junction_elements import junction_parts as parts
 
     return parts(ctx)
-
-
-def _roads(tree: etree._ElementTree) -> Iterator[etree._Element]:
-    """The ``<road>`` elements of the file, whatever their namespace."""
-    return tree.getroot().iterchildren("{*}road")
-
-
-def _has_element(group: etree._Element) -> bool:
-    """Whether an element (``<objects>``) has an element in it (comments and text do not count)."""
-    return next(group.iterchildren("{*}*"), None) is not None

@@ -1,8 +1,9 @@
 """Object attributes and lane validity (``B001``-``B009``): what an object, a tunnel, a bridge or an object reference
 says about itself (13.1, 13.6, 13.10-13.12).
 
-The objects come from :attr:`xodrcheck.rules.context.Context.road_objects` (:mod:`xodrcheck.objects`). Every finding
-names the road, the object's ``s`` (the engine places it) and the line of the element concerned.
+The objects are the document's (``Road.objects``, ``object_references``, ``tunnels``, ``bridges``: the objects of
+roads; a junction's own objects stand on no road's reference line). Every finding names the road, the object's ``s``
+(the engine places it) and the line of the element concerned.
 """
 
 from __future__ import annotations
@@ -20,14 +21,17 @@ from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
-    from xodrcheck.objects import LaneValidity, ObjectReference, RoadObject, Structure
-
-ORIENTATIONS = ("+", "-", "none")
+    from xodrcheck.model import Bridge, LaneValidity, ObjectReference, RoadObject, Tunnel
 
 
-def all_objects(ctx: Context) -> Iterator[RoadObject]:
-    for found in ctx.road_objects.values():
-        yield from found.objects
+def orientation_text(record: RoadObject | ObjectReference) -> str | None:
+    """The ``orientation`` as the file wrote it (``None``: absent)."""
+    return record.orientation.value if record.orientation is not None else record.xml.text("orientation")
+
+
+def known_lanes(validities: tuple[LaneValidity, ...]) -> tuple[LaneValidity, ...]:
+    """The validities whose ``fromLane`` and ``toLane`` are integers (the schema rule reports the others)."""
+    return tuple(v for v in validities if v.from_lane is not None and v.to_lane is not None)
 
 
 def label(obj: RoadObject) -> str:
@@ -50,7 +54,7 @@ def at(ctx: Context, obj: RoadObject | ObjectReference, line: int | None = None)
     return where
 
 
-@rule("B001", "object-type-missing", Category.OBJECT, Severity.ERROR, uids=(U.TYPE_ATTR,), xml=True)
+@rule("B001", "object-type-missing", Category.OBJECT, Severity.ERROR, uids=(U.TYPE_ATTR,))
 def object_type_missing(ctx: Context):
     """An ``<object>`` has no ``type``.
 
@@ -65,7 +69,7 @@ def object_type_missing(ctx: Context):
 
         <object id="1" s="5" t="-4" zOffset="0" orientation="none" radius="0.1" height="1"/>
     """
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         if not (obj.type or "").strip():
             yield object_type_missing.finding(
                 f"{label(obj)} has no type: say what it is with @type (barrier, building, crosswalk, gantry, obstacle, "
@@ -74,7 +78,7 @@ def object_type_missing(ctx: Context):
             )
 
 
-@rule("B002", "object-orientation-missing", Category.OBJECT, Severity.ERROR, uids=(U.ORIENTATION,), xml=True)
+@rule("B002", "object-orientation-missing", Category.OBJECT, Severity.ERROR, uids=(U.ORIENTATION,))
 def object_orientation_missing(ctx: Context):
     """An ``<object>`` does not say for which direction of travel it is valid.
 
@@ -89,10 +93,11 @@ def object_orientation_missing(ctx: Context):
 
         <object id="1" type="pole" s="5" t="-4" zOffset="0" radius="0.1" height="1"/>
     """
-    for obj in all_objects(ctx):
-        if obj.orientation in ORIENTATIONS:
+    for obj in ctx.road_objects():
+        if obj.orientation is not None:
             continue
-        what = "has no orientation" if obj.orientation is None else f'has orientation="{obj.orientation}"'
+        written = orientation_text(obj)
+        what = "has no orientation" if written is None else f'has orientation="{written}"'
         yield object_orientation_missing.finding(
             f'{label(obj)} {what}: say for which direction of travel it is valid with orientation="+" (along s), '
             '"-" (against s) or "none" (both)',
@@ -100,7 +105,7 @@ def object_orientation_missing(ctx: Context):
         )
 
 
-@rule("B003", "object-off-road", Category.OBJECT, Severity.ERROR, uids=(U.S_T_COORDS,), xml=True)
+@rule("B003", "object-off-road", Category.OBJECT, Severity.ERROR, uids=(U.S_T_COORDS,))
 def object_off_road(ctx: Context):
     """An object's origin is not a place on its road: ``s`` or ``t`` is missing, or ``s`` lies before the road's start
     or past its end.
@@ -117,7 +122,7 @@ def object_off_road(ctx: Context):
         <object id="1" type="pole" s="120" t="-4" zOffset="0" orientation="none" radius="0.1" height="1"/>
     """
     slack = ctx.tolerances.length_abs
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         road = ctx.road(obj.road)
         if obj.s is None or obj.t is None:
             missing = " and ".join(name for name, value in (("s", obj.s), ("t", obj.t)) if value is None)
@@ -136,7 +141,7 @@ def object_off_road(ctx: Context):
             )
 
 
-@rule("B004", "object-shape-ambiguous", Category.OBJECT, Severity.ERROR, uids=(U.CIRCULAR_VS_ANGULAR,), xml=True)
+@rule("B004", "object-shape-ambiguous", Category.OBJECT, Severity.ERROR, uids=(U.CIRCULAR_VS_ANGULAR,))
 def object_shape_ambiguous(ctx: Context):
     """An object's bounding volume is both circular and angular, or only half of an angular one.
 
@@ -152,8 +157,8 @@ def object_shape_ambiguous(ctx: Context):
 
         <object id="1" type="pole" s="5" t="-4" zOffset="0" orientation="none" radius="0.1" length="0.2" height="1"/>
     """
-    for obj in all_objects(ctx):
-        given = [name for name in ("radius", "length", "width") if name in obj.attributes]
+    for obj in ctx.road_objects():
+        given = [name for name in ("radius", "length", "width") if obj.xml.given(name)]
         if "radius" in given and len(given) > 1:
             why = (
                 f"gives radius and {' and '.join(given[1:])}: it is circular or angular, not both; keep radius for a "
@@ -171,20 +176,21 @@ _FROM_TO.update({"tunnel": U.TUNNELS_FROM_TO, "bridge": U.BRIDGES_FROM_TO})
 
 
 def _validities(ctx: Context) -> Iterator[tuple[str, str, str | None, float | None, LaneValidity]]:
-    """(element name, road, id, s, validity) of every ``<validity>`` of objects, references, tunnels and bridges."""
-    for found in ctx.road_objects.values():
-        for obj in found.objects:
-            for v in obj.validities:
+    """(element name, road, id, s, validity) of every ``<validity>`` with integer lanes of objects, references,
+    tunnels and bridges."""
+    for road in ctx.document.roads:
+        for obj in road.objects:
+            for v in known_lanes(obj.validities):
                 yield "object", obj.road, obj.id, obj.s, v
-        for ref in found.references:
-            for v in ref.validities:
+        for ref in road.object_references:
+            for v in known_lanes(ref.validities):
                 yield "objectReference", ref.road, ref.id, ref.s, v
-        for structure in found.structures:
-            for v in structure.validities:
-                yield structure.kind, structure.road, structure.id, structure.s, v
+        for kind, structure in _road_structures(road.tunnels, road.bridges):
+            for v in known_lanes(structure.validities):
+                yield kind, structure.road, structure.id, structure.s, v
 
 
-@rule("B005", "validity-lanes-reversed", Category.OBJECT, Severity.ERROR, uids=tuple(_FROM_TO.values()), xml=True)
+@rule("B005", "validity-lanes-reversed", Category.OBJECT, Severity.ERROR, uids=tuple(_FROM_TO.values()))
 def validity_lanes_reversed(ctx: Context):
     """A ``<validity>`` of an object, object reference, tunnel or bridge has ``fromLane`` greater than ``toLane``.
 
@@ -201,7 +207,7 @@ def validity_lanes_reversed(ctx: Context):
         <validity fromLane="-1" toLane="-2"/>
     """
     for kind, road, element_id, s, v in _validities(ctx):
-        if v.from_lane > v.to_lane:
+        if v.from_lane is not None and v.to_lane is not None and v.from_lane > v.to_lane:
             yield validity_lanes_reversed.finding(
                 f"road {road} {kind} {element_id}: <validity> has fromLane={v.from_lane} greater than "
                 f"toLane={v.to_lane}: fromLane is the lowest lane id, toLane the highest; swap them",
@@ -216,6 +222,8 @@ def _sides(validities: tuple[LaneValidity, ...]) -> set[int]:
     """The signs (+1, -1) of the lane ids the validities span (lane 0, the centre lane, has no side)."""
     out = set()
     for v in validities:
+        if v.from_lane is None or v.to_lane is None:
+            continue
         lo, hi = min(v.from_lane, v.to_lane), max(v.from_lane, v.to_lane)
         if lo < 0:
             out.add(-1)
@@ -224,10 +232,11 @@ def _sides(validities: tuple[LaneValidity, ...]) -> set[int]:
     return out
 
 
-def _oriented(ctx: Context) -> Iterator[RoadObject | ObjectReference]:
-    for found in ctx.road_objects.values():
-        yield from found.objects
-        yield from found.references
+def _oriented(ctx: Context) -> Iterator[tuple[str, RoadObject | ObjectReference]]:
+    """(element name, record) of the objects and object references of the document's roads."""
+    for road in ctx.document.roads:
+        yield from (("object", obj) for obj in road.objects)
+        yield from (("objectReference", ref) for ref in road.object_references)
 
 
 @rule(
@@ -236,7 +245,6 @@ def _oriented(ctx: Context) -> Iterator[RoadObject | ObjectReference]:
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.VALIDITY_PARENT_ORIENTATION, U.VALIDITY_RHT, U.VALIDITY_LHT),
-    xml=True,
 )
 def validity_against_orientation(ctx: Context):
     """An object's (or object reference's) validity lanes carry another direction of travel than its orientation.
@@ -258,26 +266,25 @@ def validity_against_orientation(ctx: Context):
 
         <object id="1" type="roadMark" orientation="+" ...><validity fromLane="1" toLane="1"/></object>
     """
-    for parent in _oriented(ctx):
-        if not parent.validities:
+    for kind, parent in _oriented(ctx):
+        validities = known_lanes(parent.validities)
+        if not validities:
             continue
-        from xodrcheck.objects import RoadObject  # here: a file without objects loads no xodrcheck.objects.model
-
         road = ctx.road(parent.road)
         lht = road is not None and road.rule is TrafficRule.LHT
         traffic_uid, traffic = (U.VALIDITY_LHT, "left-hand") if lht else (U.VALIDITY_RHT, "right-hand")
-        kind = "object" if isinstance(parent, RoadObject) else "objectReference"
         name = f"road {parent.road} {kind} {parent.id}"
         where = at(ctx, parent)
-        sides = _sides(parent.validities)
-        if parent.orientation in ("+", "-"):
-            allowed = (-1 if parent.orientation == "+" else +1) * (-1 if lht else 1)
+        sides = _sides(validities)
+        written = orientation_text(parent)
+        if written in ("+", "-"):
+            allowed = (-1 if written == "+" else +1) * (-1 if lht else 1)
             wrong = sides - {allowed}
             if not wrong:
                 continue
             lanes = "positive" if allowed < 0 else "negative"
             text = (
-                f'{name} has orientation="{parent.orientation}", but its <validity> spans {lanes} lane ids, which '
+                f'{name} has orientation="{written}", but its <validity> spans {lanes} lane ids, which '
                 f"in {traffic} traffic carry the other direction"
             )
             fix = f'; use orientation="none" or only {"negative" if allowed < 0 else "positive"} lane ids'
@@ -285,8 +292,8 @@ def validity_against_orientation(ctx: Context):
                 text + ": the lanes shall lie within the orientation" + fix, uid=U.VALIDITY_PARENT_ORIENTATION, **where
             )
             yield validity_against_orientation.finding(text + fix, uid=traffic_uid, **where)
-        elif sides == {-1, +1} and parent.orientation != "none":
-            what = "no orientation" if parent.orientation is None else f'orientation="{parent.orientation}"'
+        elif sides == {-1, +1} and written != "none":
+            what = "no orientation" if written is None else f'orientation="{written}"'
             yield validity_against_orientation.finding(
                 f'{name} has {what}, but its <validity> spans lanes of both sides: use orientation="none"',
                 uid=traffic_uid,
@@ -298,12 +305,18 @@ _TYPE_UID = {"tunnel": U.TUNNELS_TYPE, "bridge": U.BRIDGES_TYPE}
 _TYPES = {"tunnel": "standard or underpass", "bridge": "concrete, steel, brick or wood"}
 
 
-def _structures(ctx: Context) -> Iterator[Structure]:
-    for found in ctx.road_objects.values():
-        yield from found.structures
+def _road_structures(tunnels: tuple[Tunnel, ...], bridges: tuple[Bridge, ...]) -> Iterator[tuple[str, Tunnel | Bridge]]:
+    """(element name, record) of a road's tunnels and bridges."""
+    yield from (("tunnel", t) for t in tunnels)
+    yield from (("bridge", b) for b in bridges)
 
 
-@rule("B007", "structure-type-missing", Category.OBJECT, Severity.ERROR, uids=tuple(_TYPE_UID.values()), xml=True)
+def _structures(ctx: Context) -> Iterator[tuple[str, Tunnel | Bridge]]:
+    for road in ctx.document.roads:
+        yield from _road_structures(road.tunnels, road.bridges)
+
+
+@rule("B007", "structure-type-missing", Category.OBJECT, Severity.ERROR, uids=tuple(_TYPE_UID.values()))
 def structure_type_missing(ctx: Context):
     """A ``<tunnel>`` or ``<bridge>`` has no ``type``.
 
@@ -319,13 +332,12 @@ def structure_type_missing(ctx: Context):
 
         <bridge id="b1" s="20" length="30"/>
     """
-    for structure in _structures(ctx):
+    for kind, structure in _structures(ctx):
         if (structure.type or "").strip():
             continue
         yield structure_type_missing.finding(
-            f"road {structure.road} {structure.kind} {structure.id} has no type: give it one "
-            f"({_TYPES[structure.kind]})",
-            uid=_TYPE_UID[structure.kind],
+            f"road {structure.road} {kind} {structure.id} has no type: give it one ({_TYPES[kind]})",
+            uid=_TYPE_UID[kind],
             road=structure.road,
             s=structure.s,
             line=structure.line,

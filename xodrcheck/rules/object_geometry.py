@@ -18,14 +18,14 @@ import numpy as np
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.object_attributes import all_objects, label
+from xodrcheck.rules.object_attributes import label
 from xodrcheck.rules.object_outlines import name_of
 from xodrcheck.rules.object_skeletons import polyline_name
 from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
-    from xodrcheck.objects import Outline, RoadObject, Vertex
+    from xodrcheck.model import Outline, RoadObject, Vertex
     from xodrcheck.objects.place import Frame, Volume
 
 #: Samples per metre along ``<curveLocal>`` curves (their points between the curve's ends must be inside too).
@@ -88,7 +88,8 @@ class Placed:
 
 def outline_points(placed: Placed, outline: Outline) -> Points | None:
     """An outline's points in the local frame: its corners, or its curves sampled (``None``: not placeable)."""
-    from xodrcheck.objects import CornerLocal, CornerRoad, curve_points
+    from xodrcheck.model import CornerLocal, CornerRoad
+    from xodrcheck.objects.shape import curve_points
 
     if outline.curves:
         parts = []
@@ -131,7 +132,7 @@ def _outside_text(volume: Volume, points: Points, k: int, excess: float) -> str:
     )
 
 
-@rule("B018", "outline-outside-volume", Category.OBJECT, Severity.ERROR, uids=(U.OUTLINE_INSIDE_BOX,), xml=True)
+@rule("B018", "outline-outside-volume", Category.OBJECT, Severity.ERROR, uids=(U.OUTLINE_INSIDE_BOX,))
 def outline_outside_volume(ctx: Context):
     """A point of an object's outline lies outside the object's bounding volume.
 
@@ -153,7 +154,7 @@ def outline_outside_volume(ctx: Context):
           <cornerLocal u="-2" v="-1" z="0" height="0.2" id="0"/><cornerLocal u="3" v="1" z="0" height="0.2" id="1"/>
     """
     tol = ctx.tolerances.object_volume
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         placed = Placed(ctx, obj)
         volume = placed.volume
         if volume is None or not obj.outlines:
@@ -253,7 +254,6 @@ def _boundary_outside(volume: Volume, points: np.ndarray, vertices: tuple[Vertex
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.SKELETON_INSIDE_BOX, U.SKELETON_BOUNDARY_INSIDE_BOX),
-    xml=True,
 )
 def skeleton_outside_volume(ctx: Context):
     """A point of an object's skeleton lies outside the object's bounding volume, or its cross-section does not reach
@@ -276,7 +276,7 @@ def skeleton_outside_volume(ctx: Context):
           <vertexLocal u="0" v="0" z="0" radius="0.15" id="1"/><vertexLocal u="0" v="0" z="5" radius="0.1" id="2"/>
     """
     tol = ctx.tolerances.object_volume
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         placed = Placed(ctx, obj)
         volume = placed.volume
         if volume is None or obj.skeleton is None:
@@ -358,7 +358,6 @@ def _loose_touch(own: np.ndarray, lines: tuple[int, ...], other: tuple[np.ndarra
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.INNER_TOUCHES_OUTER,),
-    xml=True,
     basis=Basis.PLAUSIBILITY,
 )
 def inner_outline_touch(ctx: Context):
@@ -385,7 +384,7 @@ def inner_outline_touch(ctx: Context):
           <cornerLocal u="1" v="1" .../></outline>
     """
     tol = ctx.tolerances.position
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         outer = [o for o in obj.outlines if o.outer]
         inner = [o for o in obj.outlines if o.outer is False]
         if len(outer) != 1 or not inner:

@@ -17,17 +17,17 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.feature_uids import ONLY_REF_DEFINED_IDS
-from xodrcheck.rules.object_attributes import all_objects, at, label
+from xodrcheck.rules.object_attributes import at, label
 from xodrcheck.rules.object_outlines import name_of
 from xodrcheck.rules.registry import rule
 
 if TYPE_CHECKING:
-    from xodrcheck.objects import Marking, Outline, RoadObject
+    from xodrcheck.model import Marking, Outline, RoadObject
 
 
 def markings(ctx: Context) -> Iterator[tuple[RoadObject, Outline | None, Marking]]:
     """Every marking with its object and the outline it sits in (``None``: in the object's ``<markings>``)."""
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         for outline, marking in obj.all_markings():
             yield obj, outline, marking
 
@@ -49,7 +49,6 @@ def referenced_outline(obj: RoadObject, outline: Outline | None, marking: Markin
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.MARKING_COLOUR, U.OBJECT_MARKING_COLOUR),
-    xml=True,
 )
 def marking_colour_missing(ctx: Context):
     """An object's ``<marking>`` has no ``color``.
@@ -82,7 +81,6 @@ def marking_colour_missing(ctx: Context):
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.MARKINGS_WITH_OUTLINE, U.MARKINGS_WITHOUT_OUTLINE, U.MARKING_ON_OUTLINE),
-    xml=True,
 )
 def marking_placement(ctx: Context):
     """An object's markings are not where OpenDRIVE 1.9 puts them, or not on one of its outlines.
@@ -103,7 +101,7 @@ def marking_placement(ctx: Context):
         <outline id="0">...</outline></outlines><markings><marking color="white" ...>
           <cornerReference id="0"/><cornerReference id="1"/></marking></markings>
     """
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         if obj.outlines:
             for group in obj.markings:
                 yield marking_placement.finding(
@@ -156,7 +154,6 @@ def _not_on_outline(obj: RoadObject, outline: Outline | None, marking: Marking) 
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.NO_REFERENCE_WITHOUT_OUTLINE, U.SIDE_WITHOUT_OUTLINE),
-    xml=True,
 )
 def marking_without_outline(ctx: Context):
     """A marking of an object without outline names outline points, or no side of the bounding volume.
@@ -175,7 +172,7 @@ def marking_without_outline(ctx: Context):
         <object id="1" type="parkingSpace" ... length="5" width="2.5"><markings><marking color="white" width="0.1"
           spaceLength="0" lineLength="1" startOffset="0" stopOffset="0"><cornerReference id="0"/>...
     """
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         if obj.outlines:
             continue
         for _, marking in obj.all_markings():
@@ -222,7 +219,6 @@ def _order_problem(positions: list[int], n: int, closed: bool) -> str | None:
     Category.OBJECT,
     Severity.ERROR,
     uids=(*_COUNT_UIDS, U.KEEP_ID_ORDERED, U.ENCLOSED_OUTLINE_MARKING, ONLY_REF_DEFINED_IDS),
-    xml=True,
 )
 def marking_corner_references(ctx: Context):
     """A marking names fewer than two outline points, names them out of the outline's order, or repeats one.

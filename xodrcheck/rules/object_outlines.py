@@ -14,25 +14,35 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Basis, Category, Severity
-from xodrcheck.objects.kinds import CORNER_LOCAL, CORNER_ROAD, CURVE_LOCAL
+from xodrcheck.model import CORNER_LOCAL, CORNER_ROAD, CURVE_LOCAL
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.feature_uids import ONLY_REF_DEFINED_IDS
-from xodrcheck.rules.object_attributes import all_objects, at, label
+from xodrcheck.rules.object_attributes import at, label
 from xodrcheck.rules.registry import NO_UID, rule
 
 if TYPE_CHECKING:
-    from xodrcheck.objects import Outline, RoadObject
+    from xodrcheck.model import Outline, OutlinePoint, RoadObject
 
 
 def outlines(ctx: Context) -> Iterator[tuple[RoadObject, Outline]]:
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         for outline in obj.outlines:
             yield obj, outline
 
 
+def id_text(record: Outline | OutlinePoint) -> str | None:
+    """The ``@id`` of an outline or outline point as the file gives it: its text when not an integer, else the
+    integer (``None``: absent)."""
+    if not record.xml.given("id"):
+        return None
+    text = record.xml.text("id")
+    return text if text is not None else str(record.id)
+
+
 def name_of(outline: Outline) -> str:
-    return "outline" + (f" {outline.id_text}" if outline.id_text is not None else f" at line {outline.line}")
+    written = id_text(outline)
+    return "outline" + (f" {written}" if written is not None else f" at line {outline.line}")
 
 
 @rule(
@@ -41,7 +51,6 @@ def name_of(outline: Outline) -> str:
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.ROAD_LOCAL_EXCLUSIVITY, U.LOCAL_NO_MIXING),
-    xml=True,
 )
 def outline_corners_mixed(ctx: Context):
     """An ``<outline>`` mixes ``<cornerRoad>``, ``<cornerLocal>`` and ``<curveLocal>`` elements.
@@ -90,7 +99,6 @@ _MIN_UID = {CORNER_ROAD: U.ROAD_MIN_AMOUNT, CORNER_LOCAL: U.LOCAL_MIN_AMOUNT}
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.OUTLINE_FOLLOWED_BY_CORNER, U.ROAD_MIN_AMOUNT, U.LOCAL_MIN_AMOUNT),
-    xml=True,
 )
 def outline_too_few_corners(ctx: Context):
     """An ``<outline>`` has fewer than two corners of its kind (or no corner or curve at all).
@@ -146,7 +154,6 @@ _SEQUENCE_UID = {CORNER_ROAD: U.ROAD_SEQUENTIAL_IDS, CORNER_LOCAL: U.LOCAL_SEQUE
     Category.OBJECT,
     Severity.WARNING,
     uids=(*_FIRST_UID.values(), *_SEQUENCE_UID.values()),
-    xml=True,
 )
 def outline_corner_ids(ctx: Context):
     """The corner ids of an outline do not count 0, 1, 2, ... in the order the corners are listed.
@@ -167,12 +174,12 @@ def outline_corner_ids(ctx: Context):
     """
     for obj, outline in outlines(ctx):
         kind = outline.kind
-        if kind not in _FIRST_UID or all(p.id_text is None for p in outline.points):
+        if kind not in _FIRST_UID or not any(p.xml.given("id") for p in outline.points):
             continue
         points = outline.points
         if points[0].id != 0:
             yield outline_corner_ids.finding(
-                f"{label(obj)}: the first <{kind}> of {name_of(outline)} has {_id(points[0].id_text)}: the ids of an "
+                f"{label(obj)}: the first <{kind}> of {name_of(outline)} has {_id(id_text(points[0]))}: the ids of an "
                 "outline's corners should start at 0",
                 uid=_FIRST_UID[kind],
                 **at(ctx, obj, points[0].line),
@@ -180,9 +187,9 @@ def outline_corner_ids(ctx: Context):
         for before, after in itertools.pairwise(points):
             if before.id is None or after.id != before.id + 1:
                 yield outline_corner_ids.finding(
-                    f"{label(obj)}: in {name_of(outline)} a <{kind}> with {_id(after.id_text)} follows one with "
-                    f"{_id(before.id_text)}: the ids should increase by 1 from corner to corner, in the order they are "
-                    "listed",
+                    f"{label(obj)}: in {name_of(outline)} a <{kind}> with {_id(id_text(after))} follows one with "
+                    f"{_id(id_text(before))}: the ids should increase by 1 from corner to corner, in the order they "
+                    "are listed",
                     uid=_SEQUENCE_UID[kind],
                     **at(ctx, obj, after.line),
                 )
@@ -192,7 +199,7 @@ def outline_corner_ids(ctx: Context):
 _ID_UID = {CORNER_ROAD: U.ROAD_ID_WITH_MARKINGS, CORNER_LOCAL: U.LOCAL_ID_WITH_MARKINGS}
 
 
-@rule("B013", "outline-corner-id-missing", Category.OBJECT, Severity.ERROR, uids=tuple(_ID_UID.values()), xml=True)
+@rule("B013", "outline-corner-id-missing", Category.OBJECT, Severity.ERROR, uids=tuple(_ID_UID.values()))
 def outline_corner_id_missing(ctx: Context):
     """A corner of an outline that has ``<markings>`` has no ``id``.
 
@@ -214,7 +221,7 @@ def outline_corner_id_missing(ctx: Context):
         if outline.markings is None:
             continue
         for kind, uid in _ID_UID.items():
-            missing = [p for p in outline.points if p.kind == kind and p.id_text is None]
+            missing = [p for p in outline.points if p.kind == kind and not p.xml.given("id")]
             if missing:
                 yield outline_corner_id_missing.finding(
                     f"{label(obj)}: {len(missing)} <{kind}> of {name_of(outline)} (the first at line "
@@ -232,7 +239,6 @@ def outline_corner_id_missing(ctx: Context):
     Severity.ERROR,
     uids=(U.BORDERS_DIFFERENT_OUTLINE_IDS,),
     every_version=True,
-    xml=True,
 )
 def outline_id_duplicate(ctx: Context):
     """Two outlines of one object have the same ``id``.
@@ -250,7 +256,7 @@ def outline_id_duplicate(ctx: Context):
 
         <outlines><outline id="0">...</outline><outline id="0" outer="false">...</outline></outlines>
     """
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         seen: dict[int, Outline] = {}
         for outline in obj.outlines:
             if outline.id is None:
@@ -264,7 +270,7 @@ def outline_id_duplicate(ctx: Context):
                 )
 
 
-@rule("B015", "border-outline-missing", Category.OBJECT, Severity.ERROR, uids=(ONLY_REF_DEFINED_IDS,), xml=True)
+@rule("B015", "border-outline-missing", Category.OBJECT, Severity.ERROR, uids=(ONLY_REF_DEFINED_IDS,))
 def border_outline_missing(ctx: Context):
     """A ``<border>`` names an outline its object does not have.
 
@@ -281,7 +287,7 @@ def border_outline_missing(ctx: Context):
 
         <outlines><outline id="50">...</outline></outlines><borders><border outlineId="5" .../></borders>
     """
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         ids = {o.id for o in obj.outlines if o.id is not None}
         for border in obj.borders:
             if border.outline_id is None or border.outline_id in ids:
@@ -300,7 +306,6 @@ def border_outline_missing(ctx: Context):
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.BORDERS_COMPLETE_OUTLINE, ONLY_REF_DEFINED_IDS),
-    xml=True,
     basis=Basis.READING,
 )
 def border_corner_references(ctx: Context):
@@ -320,7 +325,7 @@ def border_corner_references(ctx: Context):
         <border outlineId="0" type="curb" width="0.1" useCompleteOutline="true"><cornerReference id="0"/>
           <cornerReference id="1"/></border>
     """
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         by_id = {o.id: o for o in obj.outlines if o.id is not None}
         for border in obj.borders:
             name = f"{label(obj)}: the <border> along outline {border.outline_id}"
@@ -353,7 +358,7 @@ def border_corner_references(ctx: Context):
                     )
 
 
-@rule("B017", "outline-outer-count", Category.OBJECT, Severity.ERROR, uids=(U.EXACTLY_ONE_OUTER,), xml=True)
+@rule("B017", "outline-outer-count", Category.OBJECT, Severity.ERROR, uids=(U.EXACTLY_ONE_OUTER,))
 def outline_outer_count(ctx: Context):
     """An ``<outlines>`` element has no outer outline, or more than one.
 
@@ -371,7 +376,7 @@ def outline_outer_count(ctx: Context):
 
         <outlines><outline id="0">...</outline><outline id="1">...</outline></outlines>
     """
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         wrapped = [o for o in obj.outlines if o.wrapped]
         if obj.outlines_line is None or not wrapped:
             continue

@@ -6,18 +6,18 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.objects.kinds import CORNER_ROAD
+from xodrcheck.model import CORNER_ROAD
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.object_attributes import all_objects, at, label
+from xodrcheck.rules.object_attributes import at, label
 from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
-    from xodrcheck.objects import Repeat, RoadObject
+    from xodrcheck.model import Repeat, RoadObject
 
 
-@rule("B040", "repeat-beyond-road", Category.OBJECT, Severity.ERROR, uids=(U.REPEAT_VALID_S_LENGTH,), xml=True)
+@rule("B040", "repeat-beyond-road", Category.OBJECT, Severity.ERROR, uids=(U.REPEAT_VALID_S_LENGTH,))
 def repeat_beyond_road(ctx: Context):
     """A ``<repeat>`` starts before its road or runs past its end.
 
@@ -34,7 +34,7 @@ def repeat_beyond_road(ctx: Context):
         <repeat s="50" length="80" distance="10" tStart="-5" tEnd="-5" zOffsetStart="0" zOffsetEnd="0"/>
     """
     slack = ctx.tolerances.length_abs
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         road = ctx.road(obj.road)
         if road is None:
             continue
@@ -84,7 +84,14 @@ def _changed(obj: RoadObject, repeat: Repeat, tol: float) -> list[str]:
     return out
 
 
-_FIELD = {a: f"{n}_{'start' if a.endswith('Start') else 'end'}" for n, *pair in _DIMENSIONS for a in pair}
+_FIELD = {
+    f"{n}{end}": f"{n}_{end.lower()}" for n in ("length", "width", "height", "radius") for end in ("Start", "End")
+}
+
+
+def _given(repeat: Repeat, *names: str) -> tuple[str, ...]:
+    """Which of the attributes ``names`` (``widthStart``, ...) the repeat gives with a number."""
+    return tuple(name for name in names if getattr(repeat, _FIELD[name]) is not None)
 
 
 @rule(
@@ -93,7 +100,6 @@ _FIELD = {a: f"{n}_{'start' if a.endswith('Start') else 'end'}" for n, *pair in 
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.REPEAT_SIZE_WITH_SHAPE, U.REPEAT_WIDTH_WITH_RADIUS),
-    xml=True,
 )
 def repeat_size_overridden(ctx: Context):
     """A ``<repeat>`` changes a size the object's shape does not let it change.
@@ -117,7 +123,7 @@ def repeat_size_overridden(ctx: Context):
           heightStart="1" heightEnd="1" .../>
     """
     tol = ctx.tolerances.length_abs
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         shaped = "an outline" if obj.outlines else "a skeleton" if obj.skeleton is not None else None
         for r in obj.repeats:
             changes = _changed(obj, r, tol) if shaped else []
@@ -128,8 +134,8 @@ def repeat_size_overridden(ctx: Context):
                     uid=U.REPEAT_SIZE_WITH_SHAPE,
                     **at(ctx, obj, r.line),
                 )
-            radius = obj.radius is not None or r.given("radiusStart", "radiusEnd")
-            widths = r.given("widthStart", "widthEnd")
+            radius = obj.radius is not None or _given(r, "radiusStart", "radiusEnd")
+            widths = _given(r, "widthStart", "widthEnd")
             if radius and widths:
                 yield repeat_size_overridden.finding(
                     f"{label(obj)} is circular (radius), but the <repeat> at line {r.line} gives {', '.join(widths)}: "
@@ -139,7 +145,7 @@ def repeat_size_overridden(ctx: Context):
                 )
 
 
-@rule("B042", "repeat-outline-road-corners", Category.OBJECT, Severity.ERROR, uids=(U.REPEAT_OUTLINE_LOCAL,), xml=True)
+@rule("B042", "repeat-outline-road-corners", Category.OBJECT, Severity.ERROR, uids=(U.REPEAT_OUTLINE_LOCAL,))
 def repeat_outline_road_corners(ctx: Context):
     """A repeated object has an outline of ``<cornerRoad>`` points.
 
@@ -156,7 +162,7 @@ def repeat_outline_road_corners(ctx: Context):
 
         <object ...><repeat .../><outline id="0"><cornerRoad s="10" t="-3" dz="0" height="0" id="0"/>...</outline>
     """
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         if not obj.repeats:
             continue
         for outline in obj.outlines:

@@ -11,18 +11,18 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.objects.kinds import VERTEX_LOCAL, VERTEX_ROAD
+from xodrcheck.model import VERTEX_LOCAL, VERTEX_ROAD
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.object_attributes import all_objects, at, label
+from xodrcheck.rules.object_attributes import at, label
 from xodrcheck.rules.registry import rule
 
 if TYPE_CHECKING:
-    from xodrcheck.objects import Polyline, RoadObject, Vertex
+    from xodrcheck.model import Polyline, RoadObject, Vertex
 
 
 def polylines(ctx: Context) -> Iterator[tuple[RoadObject, Polyline]]:
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         if obj.skeleton is not None:
             for polyline in obj.skeleton.polylines:
                 yield obj, polyline
@@ -38,7 +38,6 @@ def polyline_name(polyline: Polyline) -> str:
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.VERTEX_ROAD_NO_MIXING, U.VERTEX_LOCAL_NO_MIXING),
-    xml=True,
 )
 def skeleton_vertices_mixed(ctx: Context):
     """A skeleton ``<polyline>`` mixes ``<vertexRoad>`` and ``<vertexLocal>`` points.
@@ -82,7 +81,6 @@ _MIN_UID = {VERTEX_ROAD: U.VERTEX_ROAD_MIN_AMOUNT, VERTEX_LOCAL: U.VERTEX_LOCAL_
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.SKELETON_FOLLOWED_BY_VERTEX, *_MIN_UID.values()),
-    xml=True,
 )
 def skeleton_too_few_vertices(ctx: Context):
     """A skeleton ``<polyline>`` has fewer than two points of its kind.
@@ -140,7 +138,6 @@ def _size(v: Vertex) -> str:
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.SKELETON_RADIUS_OR_WIDTH_LENGTH, *_SIZE_UID.values()),
-    xml=True,
 )
 def skeleton_vertex_size(ctx: Context):
     """The points of a skeleton polyline do not all give their cross-section the same way.
@@ -208,7 +205,6 @@ def _same_place(a: Vertex, b: Vertex, tol: float) -> bool:
     Category.OBJECT,
     Severity.INFO,
     uids=(U.SKELETON_POINTS_REQUIREMENTS,),
-    xml=True,
 )
 def skeleton_segment_degenerate(ctx: Context):
     """Two successive points of a skeleton polyline are at the same place: the segment between them has no

@@ -18,7 +18,7 @@ import numpy as np
 from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import object_uids as U
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.object_attributes import all_objects, at, label
+from xodrcheck.rules.object_attributes import at, label
 from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 
@@ -26,17 +26,17 @@ if TYPE_CHECKING:  # pragma: no cover
     import shapely
 
     from xodrcheck.geometry.lanes import RoadGeometry
-    from xodrcheck.objects import RoadObject
+    from xodrcheck.model import RoadObject
     from xodrcheck.objects.place import Instance, Volume
 
 
 def surface_objects(ctx: Context) -> Iterator[RoadObject]:
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         if obj.surfaces:
             yield obj
 
 
-@rule("B050", "surface-object-shape", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_ANGULAR_ONLY,), xml=True)
+@rule("B050", "surface-object-shape", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_ANGULAR_ONLY,))
 def surface_object_shape(ctx: Context):
     """An object with a ``<surface>`` is not an angular box: it is circular, has outlines, or has no box at all.
 
@@ -70,7 +70,7 @@ def surface_object_shape(ctx: Context):
         )
 
 
-@rule("B051", "surface-crg-count", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_ONE_CRG,), xml=True)
+@rule("B051", "surface-crg-count", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_ONE_CRG,))
 def surface_crg_count(ctx: Context):
     """An object references more than one CRG file.
 
@@ -103,7 +103,6 @@ def surface_crg_count(ctx: Context):
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.SURFACE_DISCRETE_REPEAT,),
-    xml=True,
 )
 def surface_repeated_continuously(ctx: Context):
     """An object with a ``<surface>`` is repeated continuously (``distance="0"``).
@@ -218,7 +217,7 @@ def _inner_radius(volume: Volume | None) -> float:
     return volume.radius if volume.radius is not None else min(volume.length, volume.width) / 2
 
 
-@rule("B053", "surface-volumes-overlap", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_NO_BOX_OVERLAP,), xml=True)
+@rule("B053", "surface-volumes-overlap", Category.OBJECT, Severity.ERROR, uids=(U.SURFACE_NO_BOX_OVERLAP,))
 def surface_volumes_overlap(ctx: Context):
     """The bounding volumes of two objects with a ``<surface>`` overlap.
 
@@ -302,7 +301,6 @@ def _crossed_roads(ctx: Context, box: Box, wanted: Callable[[str], bool] | None 
     Category.OBJECT,
     Severity.ERROR,
     uids=(U.SURFACE_REFERENCE_ON_OVERLAP,),
-    xml=True,
 )
 def surface_object_not_referenced(ctx: Context):
     """An object with a ``<surface>`` lies over the lanes of a road that does not reference it.
@@ -324,7 +322,7 @@ def surface_object_not_referenced(ctx: Context):
     boxes = _boxes(ctx)
     if not boxes:
         return
-    referenced = {(road, r.id) for road, found in ctx.road_objects.items() for r in found.references}
+    referenced = {(road.id, r.id) for road in ctx.document.roads for r in road.object_references}
     reported: set[tuple[str, str]] = set()
     for box in boxes:
         if ctx.out_of_time():
@@ -360,19 +358,16 @@ class RoadCrg:
 
 
 def _road_crgs(ctx: Context) -> dict[str, list[RoadCrg]]:
-    """Road id -> the road's surface CRGs (10.6), read from the XML."""
-    tree = ctx.tree
+    """Road id -> the road's surface CRGs (10.6) with both ends; ``mode`` as the file wrote it."""
     out: dict[str, list[RoadCrg]] = {}
-    if tree is None:
-        return out
-    for crg in tree.getroot().iterfind("{*}road/{*}surface/{*}CRG"):
-        road = crg.getparent().getparent()
-        try:
-            start, end = float(crg.get("sStart")), float(crg.get("sEnd"))
-        except (TypeError, ValueError):
-            continue
-        lo, hi = min(start, end), max(start, end)
-        out.setdefault(road.get("id"), []).append(RoadCrg(road.get("id"), lo, hi, crg.get("mode"), crg.sourceline or 0))
+    for road in ctx.document.roads:
+        for crg in () if road.surface is None else road.surface.crgs:
+            start, end = crg.s_start, crg.s_end
+            if start is None or end is None:
+                continue
+            mode = crg.mode.value if crg.mode is not None else crg.xml.text("mode")
+            lo, hi = min(start, end), max(start, end)
+            out.setdefault(road.id, []).append(RoadCrg(road.id, lo, hi, mode, crg.line))
     return out
 
 
@@ -386,7 +381,6 @@ def _road_crgs(ctx: Context) -> dict[str, list[RoadCrg]]:
         U.SURFACE_HIDE_ROAD_CRG: "the road CRG's extent across the road is in the CRG file, which is not read: its "
         "area is taken as the road's lanes from sStart to sEnd"
     },
-    xml=True,
 )
 def surface_hides_road_crg(ctx: Context):
     """An object's CRG hides a road surface CRG that is not ``attached``.
@@ -411,10 +405,9 @@ def surface_hides_road_crg(ctx: Context):
     if not road_crgs:
         return
     placed_on: dict[str, dict[str, float]] = {}  # object id -> road -> s of the object's origin on that road
-    for road, found in ctx.road_objects.items():
-        for ref in found.references:
-            if ref.id is not None and ref.s is not None:
-                placed_on.setdefault(ref.id, {})[road] = ref.s
+    for ref in (r for road in ctx.document.roads for r in road.object_references):
+        if ref.id is not None and ref.s is not None:
+            placed_on.setdefault(ref.id, {})[ref.road] = ref.s
     for box in _boxes(ctx):
         hiding = [c for s in box.obj.surfaces for c in s.crgs if c.hide_road_surface_crg is not False]
         if not hiding or box.obj.s is None:
@@ -448,7 +441,7 @@ def surface_hides_road_crg(ctx: Context):
             )
 
 
-@rule("B056", "perp-to-road-skewed", Category.OBJECT, Severity.WARNING, uids=(U.SURFACE_SKEWED_CRG,), xml=True)
+@rule("B056", "perp-to-road-skewed", Category.OBJECT, Severity.WARNING, uids=(U.SURFACE_SKEWED_CRG,))
 def perp_to_road_skewed(ctx: Context):
     """An object set perpendicular to the road (``perpToRoad="true"``) is not small against the curvature of the
     road's elevation there.
@@ -469,7 +462,7 @@ def perp_to_road_skewed(ctx: Context):
     from xodrcheck.geometry.profile import Piecewise
     from xodrcheck.objects.place import volume_of
 
-    for obj in all_objects(ctx):
+    for obj in ctx.road_objects():
         volume = volume_of(obj)
         road = ctx.road(obj.road)
         if not obj.perp_to_road or volume is None or obj.s is None or road is None or not road.elevation:

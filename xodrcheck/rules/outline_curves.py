@@ -1,8 +1,8 @@
 """Object outlines made of ``<curveLocal>`` curves (OpenDRIVE 1.9, 13.2.3): ``G060``-``G062``.
 
 A ``<curveLocal>`` starts at (``u``, ``v``) in the object's local frame with heading ``hdg`` and runs ``length`` along
-a line, an arc or a paramPoly3 (:mod:`xodrcheck.objects`, evaluated like the plan-view element of the same kind). The
-objects themselves (positions, lane validity, corners) are the object rules'.
+a line, an arc or a paramPoly3 (:mod:`xodrcheck.objects.shape`, evaluated like the plan-view element of the same
+kind). The objects themselves (positions, lane validity, corners) are the object rules'.
 """
 
 from __future__ import annotations
@@ -24,15 +24,14 @@ from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
-    from xodrcheck.objects import CurveLocal, Outline, RoadObject
+    from xodrcheck.model import CurveLocal, Outline, RoadObject
 
 
 def _curve_outlines(ctx: Context) -> Iterator[tuple[RoadObject, Outline]]:
-    for objects in ctx.objects.values():
-        for obj in objects:
-            for outline in obj.outlines:
-                if outline.curves:
-                    yield obj, outline
+    for obj in ctx.road_objects():
+        for outline in obj.outlines:
+            if outline.curves:
+                yield obj, outline
 
 
 def _gap(a: CurveLocal, b: CurveLocal, tol: float) -> tuple[float, float, float] | None:
@@ -40,7 +39,7 @@ def _gap(a: CurveLocal, b: CurveLocal, tol: float) -> tuple[float, float, float]
     (shape unknown, or an arcLength paramPoly3 without ``length``). Without ``length`` a curve "shall extend up to the
     next <curveLocal>": a line or arc then ends at ``b``'s start if that lies on it (ahead, for a line), a normalized
     paramPoly3 ends where ``p = 1`` takes it."""
-    from xodrcheck.objects import curve_end
+    from xodrcheck.objects.shape import curve_end
 
     shape = a.shape
     if shape is None:
@@ -81,7 +80,6 @@ def _gap(a: CurveLocal, b: CurveLocal, tol: float) -> tuple[float, float, float]
     Category.GEOMETRY,
     Severity.ERROR,
     uids=(U.CURVE_LOCAL_CONTINUOUS,),
-    xml=True,
 )
 def curve_outline_discontinuous(ctx: Context):
     """A ``<curveLocal>`` of an object outline does not start where the previous one ends.
@@ -122,7 +120,7 @@ def curve_outline_discontinuous(ctx: Context):
             )
 
 
-@rule("G061", "outline-empty", Category.GEOMETRY, Severity.ERROR, uids=(U.CURVE_LOCAL_MIN_AMOUNT,), xml=True)
+@rule("G061", "outline-empty", Category.GEOMETRY, Severity.ERROR, uids=(U.CURVE_LOCAL_MIN_AMOUNT,))
 def outline_empty(ctx: Context):
     """An object's ``<outline>`` holds no ``<cornerRoad>``, ``<cornerLocal>`` or ``<curveLocal>``: it has no shape.
 
@@ -138,29 +136,23 @@ def outline_empty(ctx: Context):
 
         <outline id="0"/>
     """
-    if ctx.data is None or b"outline" not in ctx.data or ctx.tree is None:
-        return
-    shapes = {"cornerRoad", "cornerLocal", "curveLocal"}
-    for outline in ctx.tree.getroot().iterfind("{*}road/{*}objects/{*}object//{*}outline"):
-        if any(isinstance(c.tag, str) and c.tag.rsplit("}", 1)[-1] in shapes for c in outline):
-            continue
-        obj = next(outline.iterancestors("{*}object"), None)
-        road = next(outline.iterancestors("{*}road"), None)
-        road_id = road.get("id") if road is not None else None
-        yield outline_empty.finding(
-            f"road {road_id} object {obj.get('id') if obj is not None else '?'}: the <outline> at line "
-            f"{outline.sourceline} has no <cornerRoad>, <cornerLocal> or <curveLocal>: give its shape as at least one "
-            "<curveLocal> (or its corners)",
-            road=road_id,
-            line=outline.sourceline,
-        )
+    for obj in ctx.road_objects():
+        for outline in obj.outlines:
+            if outline.points:
+                continue
+            yield outline_empty.finding(
+                f"road {obj.road} object {obj.id}: the <outline> at line {outline.line} has no <cornerRoad>, "
+                "<cornerLocal> or <curveLocal>: give its shape as at least one <curveLocal> (or its corners)",
+                road=obj.road,
+                line=outline.line,
+            )
 
 
 _CURVE_UIDS = (U.CURVE_LOCAL_ARC_LENGTH_RANGE, U.CURVE_LOCAL_NORMALIZED_RANGE, U.CURVE_LOCAL_LENGTH_MATCH)
 _CURVE_UID = dict(zip(("arcLength_range", "normalized_range", "length_match"), _CURVE_UIDS, strict=True))
 
 
-@rule("G062", "curve-local-length-mismatch", Category.GEOMETRY, Severity.ERROR, uids=_CURVE_UIDS, xml=True)
+@rule("G062", "curve-local-length-mismatch", Category.GEOMETRY, Severity.ERROR, uids=_CURVE_UIDS)
 def curve_local_length_mismatch(ctx: Context):
     """A ``<curveLocal>``'s paramPoly3 is not as long as the curve's ``length`` over its parameter range.
 
