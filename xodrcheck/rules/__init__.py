@@ -21,16 +21,15 @@ prefix    category    codes
                       (:mod:`.outline_curves`);
                       ``G9xx`` redundant records (:mod:`.records`)
 ``C``     curvature   ``C0xx`` (:mod:`.curvature`)
-``J``     junction    ``J0xx`` junction topology (:mod:`.junction`), attribute and element usage by junction type
-                      (:mod:`.junction_usage`), priorities, virtual junctions and when a junction is needed
-                      (:mod:`.junction_roles`), direct junctions, cross paths and boundary roads
-                      (:mod:`.junction_members`), boundary, reference line, grid, crossing sections and overlap
-                      zones in plan view (:mod:`.junction_area`), entries and exits of an elevation grid
-                      (:mod:`.junction_entries`), virtual junctions' joints (:mod:`.junction_virtual`),
-                      cross paths' placement (:mod:`.junction_paths`), crossing traffic in direct junctions
+``J``     junction    ``J0xx`` junction topology (:mod:`.junction`, :mod:`.junction_connections`), attribute and element
+                      usage by junction type (:mod:`.junction_usage`), priorities, virtual junctions and when a junction
+                      is needed (:mod:`.junction_roles`), direct junctions, cross paths and boundary roads
+                      (:mod:`.junction_members`), boundary, reference line, grid, crossing sections and overlap zones in
+                      plan view (:mod:`.junction_area`), entries and exits of an elevation grid
+                      (:mod:`.junction_entries`), virtual junctions' joints (:mod:`.junction_virtual`), cross paths'
+                      placement (:mod:`.junction_paths`), crossing traffic in direct junctions
                       (:mod:`.junction_direct`); ``J040`` approaches with no way through (:mod:`.reach`); ``J1xx``
-                      junction geometry
-                      (:mod:`.junction_geometry`)
+                      junction geometry (:mod:`.junction_geometry`)
 ``O``     overlap     ``O0xx`` (:mod:`.overlap`)
 ``H``     header      ``H0xx`` header, default regulations, whole-file recommendations (:mod:`.header`)
 ``B``     object      ``B0xx`` road objects: attributes and lane validity (:mod:`.object_attributes`), outlines and
@@ -86,6 +85,7 @@ FAMILIES = (
     "records",
     "curvature",
     "junction",
+    "junction_connections",
     "junction_usage",
     "junction_roles",
     "junction_members",
