@@ -93,7 +93,7 @@ def test_road_evaluations_stay_within_their_budget_with_unchanged_numbers(
                     x = geometry.lane_points(index, lane_id, s, "centre").x
                     assert np.array_equal(first.setdefault((road.id, index, lane_id), x), x, equal_nan=True)
     budget = geometries.budget
-    kept = sum(len(g._evaluations) for g in geometries._built.values())
+    kept = sum(geometries[road].cached_evaluations() for road in geometries.built())
     assert kept == len(budget) > 0 and budget.total <= small
     assert 0 < largest[0] <= small + (1 << 19)  # a newest entry may pass the budget by its own size
 
@@ -176,9 +176,9 @@ def test_lane_outlines_made_in_blocks_are_the_outlines_made_at_once(corpus_dir: 
         blocks.append(int(shapely.get_num_coordinates(rings).sum()))
         return polygons(rings)
 
-    monkeypatch.setattr(footprint, "_OUTLINE_BLOCK", 1000)
+    monkeypatch.setattr(footprint, "OUTLINE_BLOCK", 1000)
     monkeypatch.setattr(shapely, "polygons", counted)
-    made = footprint._outlines(surfaces)
+    made = footprint.outlines(surfaces)
     assert len(blocks) > 10 and max(blocks) <= 1000 + max(np.diff(surfaces.lane_vertices)) + len(surfaces)
     assert len(made) == len(whole) > 700
     assert all(np.array_equal(shapely.get_coordinates(a), shapely.get_coordinates(b)) for a, b in zip(made, whole))

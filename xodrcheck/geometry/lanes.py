@@ -175,6 +175,10 @@ class RoadGeometry:
             self._sides[section_index] = cached
         return cached
 
+    def cached_evaluations(self) -> int:
+        """How many evaluations (of a lane section at a set of ``s``) the road keeps for reuse."""
+        return len(self._evaluations)
+
     def placed_lane_ids(self, section_index: int) -> frozenset[int]:
         """Ids of the lanes placed in the section: positive ids in ``<left>``, negative in ``<right>`` (a lane filed
         on the wrong side has no border to evaluate), ``singleSide`` sections resolved."""
@@ -333,7 +337,10 @@ class RoadGeometry:
         )[0]
 
 
-class _LazyGeometries(Mapping[str, RoadGeometry]):
+class RoadGeometries(Mapping[str, RoadGeometry]):
+    """Road id -> :class:`RoadGeometry` of one lane layer, each built when first asked for; their evaluations share
+    one memory budget."""
+
     def __init__(self, roads: Mapping[str, Road], layer: LaneLayer = LaneLayer.PERMANENT):
         self._roads = roads
         self._layer = layer
@@ -353,6 +360,10 @@ class _LazyGeometries(Mapping[str, RoadGeometry]):
     def __len__(self) -> int:
         return len(self._roads)
 
+    def built(self) -> list[str]:
+        """Ids of the roads whose geometry was asked for so far (the others are not evaluated)."""
+        return list(self._built)
+
 
 def road_geometry(geometries: Mapping[str, RoadGeometry], road: Road) -> RoadGeometry:
     """``road``'s geometry from ``geometries`` (:func:`geometry_of`), or one of its own for a road whose id an earlier
@@ -361,21 +372,21 @@ def road_geometry(geometries: Mapping[str, RoadGeometry], road: Road) -> RoadGeo
     return found if found.road is road else RoadGeometry(road)
 
 
-def geometry_of(document: Document) -> Mapping[str, RoadGeometry]:
+def geometry_of(document: Document) -> RoadGeometries:
     """Road id -> :class:`RoadGeometry`, built on first access and cached for the document's lifetime."""
     cache = document_cache(document)
     found = cache.get("geometry")
     if found is None:
-        found = cache["geometry"] = _LazyGeometries(document.road_by_id)
+        found = cache["geometry"] = RoadGeometries(document.road_by_id)
     return found
 
 
-def temporary_geometry_of(document: Document) -> Mapping[str, RoadGeometry]:
+def temporary_geometry_of(document: Document) -> RoadGeometries:
     """Road id -> :class:`RoadGeometry` of the road's temporary lane layer (1.9), for the roads that have one; built
     on first access and cached like :func:`geometry_of`."""
     cache = document_cache(document)
     found = cache.get("temporary geometry")
     if found is None:
         roads = {road_id: road for road_id, road in document.road_by_id.items() if road.temporary_lanes is not None}
-        found = cache["temporary geometry"] = _LazyGeometries(roads, LaneLayer.TEMPORARY)
+        found = cache["temporary geometry"] = RoadGeometries(roads, LaneLayer.TEMPORARY)
     return found

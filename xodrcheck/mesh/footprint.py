@@ -37,17 +37,17 @@ _PAIR_BLOCK = 4096
 
 #: Mesh vertices whose lane outlines are made polygons at a time (the temporaries scale with it: a 10 km map's
 #: outlines at once peaked about 450 MB over the mesh).
-_OUTLINE_BLOCK = 1 << 18
+OUTLINE_BLOCK = 1 << 18
 
 
-def _outlines(surfaces: LaneSurfaces) -> np.ndarray:
+def outlines(surfaces: LaneSurfaces) -> np.ndarray:
     """One plan-view polygon per lane strip (its outline; possibly not valid), built in blocks of lanes."""
     polygons = np.empty(len(surfaces), dtype=object)
     xy = surfaces.vertices[:, :2]
     starts = surfaces.lane_vertices
     first = 0
     while first < len(surfaces):
-        last = int(np.searchsorted(starts, starts[first] + _OUTLINE_BLOCK, side="right")) - 1
+        last = int(np.searchsorted(starts, starts[first] + OUTLINE_BLOCK, side="right")) - 1
         last = min(max(last, first + 1), len(surfaces))
         order, owner = surfaces.outline_order(first, last)
         polygons[first:last] = shapely.polygons(shapely.linearrings(xy[order], indices=owner))
@@ -69,7 +69,7 @@ class Footprints:
         self._out_of_time = out_of_time
         self._near: np.ndarray | None = None
         most = Tolerances().max_turns if max_turns is None else max_turns
-        polygons = _outlines(surfaces)
+        polygons = outlines(surfaces)
         turns = strip_shapes.strip_turns(surfaces)
         # a strip turning that much whose triangles outweigh its box winds round itself: testing its outline for
         # simplicity would cost the square of its size (a 1e9 m spiral: minutes)

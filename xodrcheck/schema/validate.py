@@ -85,19 +85,19 @@ def _compiled(version: tuple[int, int]):
 
 def _build(version: tuple[int, int], path: Path):
     if version in XSD11:
-        return _xsd11(version, path)
+        return xsd11(version, path)
     from lxml import etree
 
     parser = etree.XMLParser(resolve_entities=False, no_network=True)
     return etree.XMLSchema(etree.parse(str(path), parser))
 
 
-def _xsd11(version: tuple[int, int], path: Path):
+def xsd11(version: tuple[int, int], path: Path):
     """xmlschema's XSD 1.1 schema of ``path``, from the user's cache when an identical build is there (building it
     takes seconds, loading it a tenth of that; :mod:`xodrcheck.support.usercache`), else built and stored."""
     import xmlschema
 
-    cached = _xsd11_cache_file(version, path)
+    cached = xsd11_cache_file(version, path)
     data = None if cached is None else usercache.read(cached)
     if data is not None:
         try:
@@ -114,7 +114,7 @@ def _xsd11(version: tuple[int, int], path: Path):
     return schema
 
 
-def _xsd11_cache_file(version: tuple[int, int], path: Path) -> Path | None:
+def xsd11_cache_file(version: tuple[int, int], path: Path) -> Path | None:
     """Where the build of ``path`` is cached: named after what the build depends on (the schema files' bytes and
     location, xmlschema's and elementpath's versions, Python's), so any change is a new file, never a stale one."""
     import hashlib
@@ -212,7 +212,7 @@ def validate(tree, version: tuple[int, int]) -> Iterator[SchemaError]:
             test = getattr(err.validator, "path", None) if type(err.validator).__name__ == "XsdAssert" else None
             if test:
                 reason = f"{reason}: {' '.join(str(test).split())}"
-            yield SchemaError(int(line), f"{_xpath_hint(err)}{reason}")
+            yield SchemaError(int(line), f"{xpath_hint(err)}{reason}")
         return
     schema = compiled(version)
     schema.validate(tree)
@@ -220,7 +220,7 @@ def validate(tree, version: tuple[int, int]) -> Iterator[SchemaError]:
         yield SchemaError(entry.line or 0, entry.message)
 
 
-def _xpath_hint(err) -> str:
+def xpath_hint(err) -> str:
     elem = getattr(err, "elem", None)
     tag = getattr(elem, "tag", None)
     return f"Element '{tag}': " if isinstance(tag, str) else ""

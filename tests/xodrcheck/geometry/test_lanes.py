@@ -244,8 +244,8 @@ def test_geometry_of_is_lazy_and_cached():
     geometry = geometry_of(document)
     assert geometry is geometry_of(document)
     assert len(geometry) == 3 and list(geometry) == ["0", "1", "2"]
-    assert not geometry._built
+    assert not geometry.built()
     assert geometry["1"] is geometry["1"] and geometry["1"].road is roads[1]
-    assert list(geometry._built) == ["1"]
+    assert geometry.built() == ["1"]
     with pytest.raises(KeyError):
         geometry["nope"]

@@ -1,5 +1,5 @@
 """The XSD 1.1 schemas of OpenDRIVE 1.8 and 1.9 cached in the user's cache folder
-(:func:`xodrcheck.schema.validate._xsd11`): a schema loaded from the cache gives the same verdicts and the same errors
+(:func:`xodrcheck.schema.validate.xsd11`): a schema loaded from the cache gives the same verdicts and the same errors
 as one just built, and the cache is only a cache (damaged, foreign, of other files: built again)."""
 
 from __future__ import annotations
@@ -53,10 +53,10 @@ def cache(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
 @pytest.mark.parametrize("minor", [8, 9])
 def test_a_cached_schema_validates_like_a_built_one(cache: Path, monkeypatch, minor: int) -> None:
     version = (1, minor)
-    built = schema._xsd11(version, _path(version))  # nothing cached: built, then stored
+    built = schema.xsd11(version, _path(version))  # nothing cached: built, then stored
     (stored,) = cache.iterdir()
     assert stored.name.startswith(f"1.{minor}-") and stored.suffix == ".pickle"
-    loaded = schema._xsd11(version, _path(version))
+    loaded = schema.xsd11(version, _path(version))
     assert loaded is not built and type(loaded) is type(built)
     texts = [p.read_text() for p in _files(minor)]
     assert len(texts) >= 3
@@ -70,16 +70,16 @@ def test_a_cached_schema_validates_like_a_built_one(cache: Path, monkeypatch, mi
 
 def test_a_damaged_or_untrusted_cache_file_is_built_again(cache: Path, monkeypatch) -> None:
     version = (1, 8)
-    schema._xsd11(version, _path(version))
+    schema.xsd11(version, _path(version))
     (stored,) = cache.iterdir()
     stored.write_bytes(b"not a pickle")
-    again = schema._xsd11(version, _path(version))  # damaged: built and stored again
+    again = schema.xsd11(version, _path(version))  # damaged: built and stored again
     assert type(again).__name__ == "XMLSchema11" and stored.read_bytes() != b"not a pickle"
     os.chmod(stored, 0o666)  # others may write it: not loaded (and replaced by a private file)
     calls = []
     real = schema.pickle.loads
     monkeypatch.setattr(schema.pickle, "loads", lambda data: calls.append(1) or real(data))
-    schema._xsd11(version, _path(version))
+    schema.xsd11(version, _path(version))
     assert calls == [] and not stored.stat().st_mode & 0o022
 
 
@@ -89,8 +89,8 @@ def test_the_cache_file_is_named_after_the_schema_files(tmp_path: Path, cache: P
     copy.mkdir()
     for file in _path(version).parent.iterdir():
         (copy / file.name).write_bytes(file.read_bytes())
-    same = schema._xsd11_cache_file(version, copy / _path(version).name)
+    same = schema.xsd11_cache_file(version, copy / _path(version).name)
     (copy / "OpenDRIVE_Core.xsd").write_bytes((copy / "OpenDRIVE_Core.xsd").read_bytes() + b"\n")
-    edited = schema._xsd11_cache_file(version, copy / _path(version).name)
+    edited = schema.xsd11_cache_file(version, copy / _path(version).name)
     assert same is not None and edited is not None and same != edited
-    assert schema._xsd11_cache_file(version, _path(version)) not in (same, edited)  # another location too
+    assert schema.xsd11_cache_file(version, _path(version)) not in (same, edited)  # another location too

@@ -235,7 +235,7 @@ def _full_messages(tree, version) -> list[schema.SchemaError]:
         reason = err.reason or str(err.message)
         if type(err.validator).__name__ == "XsdAssert":
             reason = f"{reason}: {' '.join(str(err.validator.path).split())}"
-        errors.append(schema.SchemaError(int(err.sourceline or 0), f"{schema._xpath_hint(err)}{reason}"))
+        errors.append(schema.SchemaError(int(err.sourceline or 0), f"{schema.xpath_hint(err)}{reason}"))
     return errors
 
 
