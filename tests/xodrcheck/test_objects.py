@@ -11,8 +11,8 @@ import numpy as np
 import pytest
 
 from tests.xodrcheck import schemadocs as D
+from xodrcheck.geometry.object_shape import curve_end, curve_points, outline_uv, repeat_t
 from xodrcheck.model import LaneLayer, Orientation, RoadObject
-from xodrcheck.objects import curve_end, curve_points, outline_uv, repeat_t
 from xodrcheck.reader import read
 from xodrcheck.rules.context import Context
 

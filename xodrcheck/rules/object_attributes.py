@@ -46,7 +46,7 @@ def at(ctx: Context, obj: RoadObject | ObjectReference, line: int | None = None)
     if obj.s is not None and obj.t is not None:
         geometry = ctx.geometry(obj.road)
         if geometry is not None and geometry.road.plan_view:
-            from xodrcheck.objects.place import road_xy
+            from xodrcheck.geometry.object_place import road_xy
 
             x, y, _ = road_xy(geometry, [obj.s], [obj.t])
             if np.isfinite(x[0]) and np.isfinite(y[0]):

@@ -1,7 +1,7 @@
 """Where outlines and skeletons lie (``B018``, ``B019``, ``B034``): inside the object's bounding volume, inner outlines
 sharing their points where they touch the outer one (13.1-13.3).
 
-Everything is compared in the object's local frame (:mod:`xodrcheck.objects.place`): ``<cornerLocal>``,
+Everything is compared in the object's local frame (:mod:`xodrcheck.geometry.object_place`): ``<cornerLocal>``,
 ``<curveLocal>`` and ``<vertexLocal>`` points are given there; ``<cornerRoad>`` and ``<vertexRoad>`` points are placed
 by the road's exact reference line (:meth:`~xodrcheck.rules.context.Context.geometry`) and brought into it.
 """
@@ -25,8 +25,8 @@ from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
+    from xodrcheck.geometry.object_place import Frame, Volume
     from xodrcheck.model import Outline, RoadObject, Vertex
-    from xodrcheck.objects.place import Frame, Volume
 
 #: Samples per metre along ``<curveLocal>`` curves (their points between the curve's ends must be inside too).
 _CURVE_STEP = 0.05
@@ -47,7 +47,7 @@ class Placed:
     """An object's frame and volume, computed on first use (a road point needs the road's geometry)."""
 
     def __init__(self, ctx: Context, obj: RoadObject):
-        from xodrcheck.objects.place import volume_of
+        from xodrcheck.geometry.object_place import volume_of
 
         self.ctx, self.obj = ctx, obj
         self.volume = volume_of(obj)
@@ -56,7 +56,7 @@ class Placed:
 
     @property
     def frame(self) -> Frame | None:
-        from xodrcheck.objects.place import frame_of
+        from xodrcheck.geometry.object_place import frame_of
 
         if not self._framed:
             geometry = self.ctx.geometry(self.obj.road)
@@ -66,7 +66,7 @@ class Placed:
 
     def road_points(self, s, t, dz) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
         """Local ``u``, ``v``, ``z`` of road points (``None`` without frame)."""
-        from xodrcheck.objects.place import road_xy
+        from xodrcheck.geometry.object_place import road_xy
 
         frame = self.frame
         if frame is None:
@@ -88,8 +88,8 @@ class Placed:
 
 def outline_points(placed: Placed, outline: Outline) -> Points | None:
     """An outline's points in the local frame: its corners, or its curves sampled (``None``: not placeable)."""
+    from xodrcheck.geometry.object_shape import curve_points
     from xodrcheck.model import CornerLocal, CornerRoad
-    from xodrcheck.objects.shape import curve_points
 
     if outline.curves:
         parts = []

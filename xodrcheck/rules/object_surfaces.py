@@ -1,8 +1,8 @@
 """Objects with a CRG surface (``B050``-``B056``): high-resolution road-surface features such as manhole covers and
 patches, described by an OpenCRG file in the object's local frame (13.13), and objects set perpendicular to the road.
 
-Bounding volumes are placed by the road's exact reference line (:mod:`xodrcheck.objects.place`); roads' lane areas
-come from the overlap rules' footprints (:mod:`xodrcheck.mesh.footprint`, built once per file and shared).
+Bounding volumes are placed by the road's exact reference line (:mod:`xodrcheck.geometry.object_place`); roads' lane
+areas come from the overlap rules' footprints (:mod:`xodrcheck.mesh.footprint`, built once per file and shared).
 """
 
 from __future__ import annotations
@@ -26,8 +26,8 @@ if TYPE_CHECKING:  # pragma: no cover
     import shapely
 
     from xodrcheck.geometry.lanes import RoadGeometry
+    from xodrcheck.geometry.object_place import Instance, Volume
     from xodrcheck.model import RoadObject
-    from xodrcheck.objects.place import Instance, Volume
 
 
 def surface_objects(ctx: Context) -> Iterator[RoadObject]:
@@ -148,7 +148,7 @@ def _boxes(ctx: Context) -> list[Box]:
         return cache
     out: list[Box] = []
     for obj in surface_objects(ctx):
-        from xodrcheck.objects.place import instances  # here: a file without objects loads no objects.place
+        from xodrcheck.geometry.object_place import instances  # here: a file without objects loads no objects.place
 
         geometry = ctx.geometry(obj.road)
         if geometry is None or not geometry.road.plan_view:
@@ -164,7 +164,7 @@ def _placed_boxes(obj: RoadObject, geometry: RoadGeometry, run: list[Instance]) 
     line; an instance where the road has no reference line is left out."""
     import shapely
 
-    from xodrcheck.objects.place import road_xy
+    from xodrcheck.geometry.object_place import road_xy
 
     volumes = [inst.volume for inst in run if inst.volume is not None]
     run = [inst for inst in run if inst.volume is not None]
@@ -459,8 +459,8 @@ def perp_to_road_skewed(ctx: Context):
 
         <elevation s="0" a="0" b="0" c="-0.5" d="0"/>...<object ... length="2" width="2" perpToRoad="true">
     """
+    from xodrcheck.geometry.object_place import volume_of
     from xodrcheck.geometry.profile import Piecewise
-    from xodrcheck.objects.place import volume_of
 
     for obj in ctx.road_objects():
         volume = volume_of(obj)

@@ -1,7 +1,7 @@
 """Object outlines made of ``<curveLocal>`` curves (OpenDRIVE 1.9, 13.2.3): ``G060``-``G062``.
 
 A ``<curveLocal>`` starts at (``u``, ``v``) in the object's local frame with heading ``hdg`` and runs ``length`` along
-a line, an arc or a paramPoly3 (:mod:`xodrcheck.objects.shape`, evaluated like the plan-view element of the same
+a line, an arc or a paramPoly3 (:mod:`xodrcheck.geometry.object_shape`, evaluated like the plan-view element of the same
 kind). The objects themselves (positions, lane validity, corners) are the object rules'.
 """
 
@@ -39,7 +39,7 @@ def _gap(a: CurveLocal, b: CurveLocal, tol: float) -> tuple[float, float, float]
     (shape unknown, or an arcLength paramPoly3 without ``length``). Without ``length`` a curve "shall extend up to the
     next <curveLocal>": a line or arc then ends at ``b``'s start if that lies on it (ahead, for a line), a normalized
     paramPoly3 ends where ``p = 1`` takes it."""
-    from xodrcheck.objects.shape import curve_end
+    from xodrcheck.geometry.object_shape import curve_end
 
     shape = a.shape
     if shape is None:

@@ -4,7 +4,7 @@
 * a ``<curveLocal>`` starts at ``(u, v)`` with heading ``hdg`` and runs ``length`` along a line, an arc or a
   paramPoly3 (``pRange`` normalized: ``p`` in [0, 1]; arcLength: ``p`` in [0, length]), exactly as the plan-view
   element of the same kind (:func:`xodrcheck.geometry.planview.evaluate_element`, the one evaluator of those shapes);
-* a ``<cornerRoad>`` outline is in road ``s``/``t``: :mod:`xodrcheck.objects.place` puts it into the local frame;
+* a ``<cornerRoad>`` outline is in road ``s``/``t``: :mod:`.object_place` puts it into the local frame;
 * a ``<repeat>``'s ``t`` is :attr:`~xodrcheck.model.Repeat.t_profile`, evaluated by
   :mod:`xodrcheck.geometry.profile`.
 """

@@ -184,7 +184,7 @@ def instances(obj: RoadObject) -> list[Instance]:
     """Where the object stands: the object itself when it has no ``<repeat>``, else every instance its discrete
     repeats place (``distance`` > 0: at ``s``, ``s + distance``, ... up to ``s + length``, at most
     :data:`MAX_INSTANCES` each); continuous repeats (``distance`` 0) place no instance."""
-    from xodrcheck.objects.shape import repeat_t
+    from xodrcheck.geometry.object_shape import repeat_t
 
     if not obj.repeats:
         if obj.s is None or obj.t is None:
