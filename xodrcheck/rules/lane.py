@@ -1,9 +1,8 @@
 """Lane topology (``L0xx``): centre lanes, lane ids, and lane links across lane sections and road links.
 
 The rules here walk *joints*, where the lanes of one lane section end and those of another begin (between two lane
-sections of a road, or at a road link between two roads). What a joint is and how to list them (:class:`Side`,
-:class:`Joint`, :func:`joints`, :func:`side_lanes`, :func:`pair_key`) moved to :mod:`xodrcheck.rules.lane_joints`;
-they are named here as before (:mod:`.lane_attributes` and :mod:`.lane_links` import them from here).
+sections of a road, or at a road link between two roads): what a joint is and how to list them is
+:mod:`xodrcheck.rules.lane_joints`'s.
 """
 
 from __future__ import annotations
@@ -15,8 +14,6 @@ from xodrcheck.model import ContactPoint, Lane, LaneType
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_joints import WORD, joints, opposed, pair_key, side_lanes
-from xodrcheck.rules.lane_joints import Joint as Joint  # named here as before
-from xodrcheck.rules.lane_joints import Side as Side
 from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 

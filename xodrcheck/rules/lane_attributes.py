@@ -10,7 +10,7 @@ from xodrcheck.model import DRIVABLE_LANE_TYPES as DRIVABLE
 from xodrcheck.model import Lane, LaneAccess, LaneDirection, LaneSection, Road
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.lane import joints, pair_key, side_lanes
+from xodrcheck.rules.lane_joints import joints, pair_key, side_lanes
 from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 

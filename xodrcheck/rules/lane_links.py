@@ -10,8 +10,7 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Lane
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context, link_at
-from xodrcheck.rules.lane import joints, side_lanes
-from xodrcheck.rules.lane_joints import Joint, opposed
+from xodrcheck.rules.lane_joints import Joint, joints, opposed, side_lanes
 from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 
