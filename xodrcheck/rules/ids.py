@@ -15,7 +15,7 @@ from lxml import etree
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.rules import feature_uids as F
-from xodrcheck.rules.context import Context, junction_parts
+from xodrcheck.rules.context import Context, describe_junction
 from xodrcheck.rules.registry import rule
 
 #: Class name -> path of its elements below ``<OpenDRIVE>`` (ids unique file-wide, as in the 1.8.1 schema's keys).
@@ -201,12 +201,12 @@ def _cross_path_lanes(ctx: Context) -> Iterator[Finding]:
     """Lanes a cross path's ``<startLaneLink>``/``<endLaneLink>`` names that its roads do not have there."""
     from xodrcheck.rules.junction_members import cross_path_lanes
 
-    for j in junction_parts(ctx):
+    for j in ctx.document.junctions:
         for cp in j.cross_paths:
             for what, road, lane, lane_id, s, line in cross_path_lanes(ctx, cp):
                 if lane is None and lane_id is not None:
                     yield undefined_reference.finding(
-                        f"{j.describe()} cross path {cp.id} names {what}, which the road does not have there: "
+                        f"{describe_junction(j)} cross path {cp.id} names {what}, which the road does not have there: "
                         "correct the lane id",
                         road=road.id,
                         lane=lane_id,
