@@ -1,11 +1,12 @@
-"""The document carries what the junction rules read, compared with the file's XML (issue 27, one reader:
-those rules read the document only).
+"""The document carries what the junction rules and the id rules read, compared with the file's XML (issue 27, one
+reader: those rules read the document only).
 
 For every corpus map and every rule fixture, each ``<junction>`` element with an id is compared, attribute by attribute
 and child by child, with its :class:`~xodrcheck.model.Junction` as the rules see it: the type and virtual-junction
 attributes as written, connections (ids as written, lane links of both layers in file order, whether ``overlapZone``
 is given, a virtual connection's ends), cross paths, priorities, controllers, road sections, boundary segments, the
-elevation grid, the reference line, and the first line of each child tag ``J012`` names.
+elevation grid, the reference line, and the first line of each child tag ``J012`` names. The id table
+(:class:`~xodrcheck.model.IdTable`) is compared with a search of the tree by path.
 """
 
 from __future__ import annotations
@@ -17,7 +18,7 @@ import pytest
 from lxml import etree
 
 from tests.conftest import corpus_files
-from xodrcheck.model import ContactPoint, Junction
+from xodrcheck.model import RECORDED, ContactPoint, Document, Junction
 from xodrcheck.reader import read
 from xodrcheck.rules.context import Context, describe_junction, written_id
 from xodrcheck.rules.junction_usage import first_lines
@@ -158,6 +159,22 @@ def _junction(el: etree._Element, record: Junction) -> None:
     assert {t: first[t] for t in wanted if t in first} == first_lines(record), where
 
 
+def _road_of(el: etree._Element) -> str | None:
+    roads = [a for a in el.iterancestors() if local(a) == "road"]
+    return roads[-1].get("id") if roads else None
+
+
+def check_ids(document: Document, root: etree._Element) -> None:
+    """The id table holds every element at each recorded path, with its id attributes, line and road."""
+    assert document.ids is not None
+    for path, names in RECORDED.items():
+        written = [
+            (tuple((k, el.get(k)) for k in names if el.get(k) is not None), el.sourceline, _road_of(el))
+            for el in root.iterfind("/".join(f"{{*}}{step}" for step in path.split("/")))
+        ]
+        assert [(e.values, e.line, e.road) for e in document.ids.at(path)] == written, path
+
+
 def _check(path: Path) -> int:
     """Every comparison on one file; the number of junction elements compared."""
     data = path.read_bytes()
@@ -171,17 +188,18 @@ def _check(path: Path) -> int:
     assert len(elements) == len(document.junctions)
     for el, record in zip(elements, document.junctions):
         _junction(el, record)
+    check_ids(document, root)
     return len(elements)
 
 
 @pytest.mark.corpus
 @pytest.mark.parametrize("path", corpus_files(), ids=lambda p: p.name)
-def test_corpus_document_carries_the_junctions(corpus_dir: Path, path: Path) -> None:
+def test_corpus_document_carries_the_junctions_and_ids(corpus_dir: Path, path: Path) -> None:
     _check(path)
 
 
 @pytest.mark.parametrize("path", FIXTURES, ids=lambda p: f"{p.parent.name}/{p.name}")
-def test_fixture_document_carries_the_junctions(path: Path) -> None:
+def test_fixture_document_carries_the_junctions_and_ids(path: Path) -> None:
     _check(path)
 
 

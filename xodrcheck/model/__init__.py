@@ -78,6 +78,7 @@ _MODULES = {
         "JunctionController JunctionGeometry JunctionGroup JunctionPlanView JunctionReference LaneSegment "
         "OtherSegment Priority RoadPlace RoadSection"
     ),
+    "ids": "ID_CLASSES ID_REFERENCES RECORDED SIGNAL_LINKS SIGNS IdElement IdTable",
     "header": "GeoReference Header Offset",
     "regulations": "DefaultRegulations License RoadRegulation SignalRegulation",
     "railroad": "Platform PlatformSegment Station",
