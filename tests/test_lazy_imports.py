@@ -122,9 +122,9 @@ def test_plain_check_loads_no_slow_module_it_does_not_use(tmp_path: Path, plain:
     assert "xodrcheck.schema.validate" in names and "xodrcheck.standard" in names
 
 
-#: Modules that read or model junctions, road objects and signals: a file without any does not load them.
+#: Modules that read or model junction parts, road objects and signals: a file without any does not load them.
 FEATURE_MODULES = {
-    "xodrcheck.junction_elements",
+    "xodrcheck.model.junction_parts",
     "xodrcheck.geometry.junction_grid",
     "xodrcheck.model.objects",
     "xodrcheck.reader.objects",
@@ -135,20 +135,20 @@ FEATURE_MODULES = {
     "xodrcheck.model.railroad",
 }
 
-# PLAIN with one of each: a junction, an object and a signal (and their ids' references left dangling: findings
-# do not matter here, only what loads)
+# PLAIN with one of each: a junction with a part (a priority), an object and a signal (and their ids' references left
+# dangling: findings do not matter here, only what loads)
 FEATURES = PLAIN.replace(
     "    </lanes>\n",
     "    </lanes>\n"
     '    <objects><object id="5" s="5" t="4" type="pole" zOffset="0" orientation="none"/></objects>\n'
     '    <signals><signal id="6" s="5" t="-4" dynamic="no" orientation="+" zOffset="0" country="DE" type="206" '
     'subtype="-1" value="-1"/></signals>\n',
-).replace("</OpenDRIVE>", '  <junction id="9" name="j"/>\n</OpenDRIVE>')
+).replace("</OpenDRIVE>", '  <junction id="9" name="j"><priority high="1" low="2"/></junction>\n</OpenDRIVE>')
 
 
 def test_plain_check_loads_no_junction_object_or_signal_module(tmp_path: Path, plain: Path) -> None:
     # the junction, object and signal rules are loaded and run; what they would read loads only for a file that
-    # has junctions, objects or signals (the model's objects, rules.context.junction_parts, the model's signals)
+    # has junction parts, objects or signals (Context.road_objects, the model's junction parts and signals)
     names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(plain))
     rules = {"xodrcheck.rules.junction_roles", "xodrcheck.rules.junction_entries", "xodrcheck.rules.object_geometry"}
     assert rules | {"xodrcheck.rules.signal_control", "xodrcheck.rules.junction_shapes"} <= names
@@ -174,7 +174,7 @@ def test_check_of_junctions_objects_and_signals_loads_their_modules(tmp_path: Pa
     path = tmp_path / "features.xodr"
     path.write_text(FEATURES)
     names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(path))
-    assert {"xodrcheck.junction_elements", "xodrcheck.model.objects", "xodrcheck.reader.objects"} <= names
+    assert {"xodrcheck.model.junction_parts", "xodrcheck.model.objects", "xodrcheck.reader.objects"} <= names
     assert "xodrcheck.model.signals" in names  # the signal rules read the document's signals
 
 

@@ -1,17 +1,14 @@
-"""The reader's document carries everything the rules read from the XML tree today (issue 27, one reader).
+"""The reader's document carries what the file says: for every corpus map and every rule fixture, the records of
+:class:`xodrcheck.model.Document` the rules read (lanes as written, road records, types and shapes, objects and their
+parts, signals, header, railroads, surfaces, links, ids) are compared, field by field, with the XML tree itself
+(issue 27, one reader: the rules read the document, never the tree). Where the two spell a value differently (a raw
+attribute against an enumeration, a count against the records) the test converts the tree's spelling, so that every
+value is compared.
 
-For every corpus map and every rule fixture, what the XML views build from the tree the rules see (``Context.tree``:
-:mod:`xodrcheck.signals`, :mod:`xodrcheck.junction_elements`, the walks some rules make over the tree themselves, and
-the lanes as written (:func:`lane_elements`, the walk the lane rules made before they read the document); road types
-and shapes, road objects and their parts, which the rules read from the document, against the tree directly) is
-compared, field by field, with the same records of :class:`xodrcheck.model.Document`. Where the two spell a value
-differently (a raw attribute against an enumeration, a count against the records) the test converts the view's
-spelling, so that every value is compared.
-
-Where the document leaves out by design what a view keeps - elements the reader cannot name (a road, lane or junction
+Where the document leaves out by design what the tree has - elements the reader cannot name (a road, lane or junction
 without an id, a lane section without a valid ``s``), and repeats of an element the standard allows once (the reader
-reports them and reads the first) - the view's side is narrowed the same way; the narrowing is counted, and it never
-happens on the corpus.
+reports them and reads the first) - the tree's side is narrowed the same way; the narrowing is counted, and it never
+happens on the corpus. Junctions are compared with the XML in ``test_document_junctions.py``.
 """
 
 from __future__ import annotations
@@ -25,11 +22,10 @@ import pytest
 from lxml import etree
 
 from tests.conftest import corpus_files
-from xodrcheck.junction_elements import read_junctions
-from xodrcheck.model import ContactPoint, Document, Junction, Lane, LaneSection, Road
+from tests.xodrcheck.treetext import integer, local, number
+from xodrcheck.model import Document, Lane, LaneSection, Road
 from xodrcheck.reader import read
 from xodrcheck.rules.context import Context
-from xodrcheck.xmlvalues import integer, local, number
 
 HERE = Path(__file__).parent
 FIXTURES = sorted((HERE / "rules" / "fixtures").rglob("*.xodr")) + sorted((HERE / "opendrive19").glob("*.xodr"))
@@ -44,11 +40,6 @@ def raw(value: Any, record: Any, name: str) -> str | None:
     if isinstance(value, bool):
         return "yes" if value else "no"
     return getattr(value, "value", value)
-
-
-def place(value: Any) -> Any:
-    """A boundary segment's road end as the view spells it."""
-    return value.value if isinstance(value, ContactPoint) else value
 
 
 def same(view: Any, record: Any, fields: str, where: str) -> None:
@@ -287,87 +278,6 @@ def check_signals(document: Document, root: etree._Element) -> None:
             (r.get("signalId"), number(r.get("vmsIndex")), r.sourceline) for r in element.iter("{*}vmsBoardReference")
         ]
         assert written == [(r.signal_id, r.vms_index, r.line) for r in record.references], f"vmsGroup {record.id}"
-
-
-# ------------------------------------------------------------------------------------------------------ junctions
-def _connection(view: Any, record: Any, where: str) -> None:
-    assert view.id == (record.id if record.xml.given("id") else None), where
-    same(view, record, "incoming_road connecting_road linked_road line", where)
-    assert view.type == raw(record.type, record, "type"), where
-    assert view.contact_point == raw(record.contact_point, record, "contactPoint"), where
-    links = sorted((*record.lane_links, *record.temporary_lane_links), key=lambda ll: ll.line)
-    assert len(view.lane_links) == len(links), where
-    for a, b in zip(view.lane_links, links):
-        same(a, b, "from_lane to_lane overlap_zone line", where)
-        assert a.has_overlap_zone == b.xml.given("overlapZone"), where
-    ends = [(tag, e) for tag, e in (("predecessor", record.predecessor), ("successor", record.successor)) if e]
-    assert [(tag, kind, line) for tag, kind, line in view.ends] == [
-        (tag, raw(e.element_type, e, "elementType"), e.line) for tag, e in ends
-    ], where
-
-
-def _junction(view: Any, record: Junction) -> None:
-    where = f"junction {view.id}"
-    assert view.type == record.type.value, where
-    same(view, record, "id line s_start s_end", where)
-    assert view.main_road == record.main_road, where
-    assert (view.s_start_raw is None) == (not record.xml.given("sStart")), where
-    assert (view.s_end_raw is None) == (not record.xml.given("sEnd")), where
-    assert view.orientation == raw(record.orientation, record, "orientation"), where
-    assert len(view.connections) == len(record.connections), where
-    for a, b in zip(view.connections, record.connections):
-        _connection(a, b, where)
-    for a, b in zip(view.cross_paths, record.cross_paths, strict=True):
-        same(a, b, "id crossing_road road_at_start road_at_end line", where)
-        for x, y in ((a.start, b.start), (a.end, b.end)):
-            assert (x is None) == (y is None), where
-            if x is not None:
-                same(x, y, "s from_lane to_lane line", where)
-    for a, b in zip(view.priorities, record.priorities, strict=True):
-        same(a, b, "high low line", where)
-    assert list(view.controllers) == [(c.id, c.line) for c in record.controllers], where
-    for a, b in zip(view.road_sections, record.road_sections, strict=True):
-        same(a, b, "id road s_start s_end line", where)
-    for a, b in zip(view.boundaries, record.boundaries, strict=True):
-        assert a.line == b.line, where
-        assert list(a.unknown) == [(o.line, o.type) for o in b.unknown], where
-        for s, t in zip(a.segments, b.segments, strict=True):
-            assert type(s).__name__ == type(t).__name__, where
-            for name in ("road", "lane", "s_start", "s_end", "contact", "lane_start", "lane_end", "transition_length"):
-                if hasattr(s, name):
-                    assert getattr(s, name) == place(getattr(t, name)), f"{where}: {name}"
-            assert s.line == t.line, where
-    for a, b in zip(view.grids, record.grids, strict=True):
-        same(a, b, "s_start spacing line", where)
-        for r, q in zip(a.rows, b.rows, strict=True):
-            same(r, q, "center left right line", where)
-    for a, b in zip(view.plan_views, record.plan_views, strict=True):
-        assert a.line == b.line, where
-        for g, h in zip(a.geometries, b.geometries, strict=True):
-            same(g, h, "s x y hdg length shapes line", where)
-    assert tuple(name for name, _ in view.children) == record.xml.children, where
-    first = {}
-    for name, line in view.children:
-        first.setdefault(name, line)
-    lines = {
-        "connection": record.connections,
-        "crossPath": record.cross_paths,
-        "boundary": record.boundaries,
-        "elevationGrid": record.grids,
-    }
-    for name, records in lines.items():
-        if name in first:
-            assert first[name] == records[0].line, where
-    unknown = {u.tag: u.line for u in reversed(record.xml.unknown)}
-    for name in ("link", "predecessor", "successor"):
-        assert first.get(name) == unknown.get(name), where
-
-
-def check_junctions(document: Document, root: etree._Element) -> None:
-    views = [j for j in read_junctions(root) if j.id is not None or _narrow()]
-    assert len(views) == len(document.junctions)
-    for view, record in zip(views, document.junctions):
-        _junction(view, record)
 
 
 def _narrow() -> bool:
@@ -885,7 +795,6 @@ def check_access(document: Document, root: etree._Element) -> None:
 CHECKS = (
     check_objects,
     check_signals,
-    check_junctions,
     check_ids,
     check_header,
     check_rail,

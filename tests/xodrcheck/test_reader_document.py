@@ -277,6 +277,7 @@ def test_a_plain_file_loads_no_model_module_of_rare_subjects():
         "xodrcheck.model.enums",
         "xodrcheck.model.facts",
         "xodrcheck.model.header",
+        "xodrcheck.model.ids",
         "xodrcheck.model.junctions",
         "xodrcheck.model.lanes",
         "xodrcheck.model.planview",

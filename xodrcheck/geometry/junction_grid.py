@@ -32,7 +32,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.junction_elements import ElevationGrid
+from xodrcheck.model import ElevationGrid
 
 #: The constant matrix ``A`` of 12.11.1 (cubic Hermite basis: value and tangent at 0 and 1 -> coefficients).
 HERMITE = np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [-3.0, 3.0, -2.0, -1.0], [2.0, -2.0, 1.0, 1.0]])

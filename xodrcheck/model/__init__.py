@@ -16,7 +16,8 @@ road-level record absolute; a value the file did not give and the standard does 
 The main types::
 
     Document                      header, roads, junctions, controllers, junction groups, stations, vms groups,
-    |                             xml (the root's facts), elements (ElementTable: XPath of a line)
+    |                             xml (the root's facts), elements (ElementTable: XPath of a line),
+    |                             ids (IdTable: the ids the file defines and names, as written)
     +- Header                     revision, extent, offset, geoReferences, license, DefaultRegulations
     +- Road                       id, length, junction, rule, RoadLink x2
     |  +- plan_view               Line | Arc | Spiral | Poly3 | ParamPoly3
@@ -78,6 +79,7 @@ _MODULES = {
         "JunctionController JunctionGeometry JunctionGroup JunctionPlanView JunctionReference LaneSegment "
         "OtherSegment Priority RoadPlace RoadSection"
     ),
+    "ids": "ID_CLASSES ID_REFERENCES RECORDED SIGNAL_LINKS SIGNS IdElement IdTable",
     "header": "GeoReference Header Offset",
     "regulations": "DefaultRegulations License RoadRegulation SignalRegulation",
     "railroad": "Platform PlatformSegment Station",

@@ -5,6 +5,7 @@ from xodrcheck.model.document import *
 from xodrcheck.model.enums import *
 from xodrcheck.model.facts import *
 from xodrcheck.model.header import *
+from xodrcheck.model.ids import *
 from xodrcheck.model.junction_parts import *
 from xodrcheck.model.junctions import *
 from xodrcheck.model.lane_records import *

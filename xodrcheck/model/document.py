@@ -15,6 +15,7 @@ from xodrcheck.model.junctions import Junction
 from xodrcheck.model.roads import Road
 
 if TYPE_CHECKING:  # pragma: no cover - loaded when a file has them
+    from xodrcheck.model.ids import IdTable
     from xodrcheck.model.junction_parts import JunctionGroup
     from xodrcheck.model.railroad import Station
     from xodrcheck.model.signals import Controller, VmsGroup
@@ -110,6 +111,8 @@ class Document:
     xml: XmlFacts = field(default=NO_FACTS, compare=False, repr=False)
     #: Every element of the file (``None`` for a document built in code).
     elements: ElementTable | None = field(default=None, compare=False, repr=False)
+    #: The ids the file defines and names, as written (``None`` for a document built in code).
+    ids: IdTable | None = field(default=None, compare=False, repr=False)
 
     @cached_property
     def road_by_id(self) -> dict[str, Road]:

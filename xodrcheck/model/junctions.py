@@ -61,6 +61,13 @@ class Connection:
     successor: ConnectionEnd | None = None
     xml: XmlFacts = facts_field()
 
+    @property
+    def all_lane_links(self) -> tuple[JunctionLaneLink, ...]:
+        """The lane links of both lane layers, in file order."""
+        if not self.temporary_lane_links:
+            return self.lane_links
+        return tuple(sorted(self.lane_links + self.temporary_lane_links, key=lambda link: link.line))
+
 
 @dataclass(frozen=True, slots=True)
 class Junction:

@@ -1,5 +1,5 @@
 """The ``<OpenDRIVE>`` root to a :class:`~xodrcheck.model.Document`: header, roads, junctions, controllers, junction
-groups, stations and vmsGroups, the root's facts and the table of every element."""
+groups, stations and vmsGroups, the root's facts, the table of every element and the ids as written."""
 
 from __future__ import annotations
 
@@ -9,6 +9,7 @@ from xodrcheck.model import Document
 from xodrcheck.reader.context import Context, describe
 from xodrcheck.reader.elements import element_table
 from xodrcheck.reader.header import KNOWN_VERSIONS, build_header
+from xodrcheck.reader.ids import id_table
 from xodrcheck.reader.junctions import build_junction
 from xodrcheck.reader.roads import build_road
 from xodrcheck.rules import xml as R
@@ -80,4 +81,5 @@ def build_document(ctx: Context, root: etree._Element, source: str | None) -> Do
         tuple(vms_groups),
         ctx.facts(root, _ROOT),
         element_table(root),
+        id_table(root),
     )

@@ -36,7 +36,6 @@ if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree
 
     from xodrcheck.geometry.lanes import RoadGeometry
-    from xodrcheck.junction_elements import JunctionParts
     from xodrcheck.model import RoadObject
     from xodrcheck.support.filebytes import FileBytes
 
@@ -459,12 +458,12 @@ class Context:
         return tuple(out)
 
 
-def junction_parts(ctx: Context) -> tuple[JunctionParts, ...]:
-    """:func:`xodrcheck.junction_elements.junction_parts`: the file's junctions, built once per context; that module
-    (and its dataclasses) loads only for a file with a ``<junction>`` element."""
-    tree = ctx.tree
-    if tree is None or next(tree.getroot().iterchildren("{*}junction"), None) is None:
-        return ()  # what junction_elements.read_junctions gives for such a tree
-    from xodrcheck.junction_elements import junction_parts as parts
+def describe_junction(junction: Junction) -> str:
+    """How messages name a junction: its type (none for a common junction) and id, ``direct junction 111``."""
+    kind = "" if junction.type is JunctionType.DEFAULT else f"{junction.type.value} "
+    return f"{kind}junction {junction.id}"
 
-    return parts(ctx)
+
+def written_id(connection: Connection) -> str | None:
+    """A connection's id as written (``None``: the file gives none; the reader keeps it as ``""``)."""
+    return connection.id if connection.id or connection.xml.given("id") else None

@@ -1,72 +1,27 @@
 """Ids of the classes beyond roads, junctions, connections and lanes (those are :mod:`.reference`'s): unique within
 their class, and every id a file refers to defined (Annex F ``ids``): ``R020``, ``R021``.
 
-The classes and references are those the 1.8.1 schema declares keys for (objects, bridges, tunnels, signals,
-controllers, junction groups, stations, platforms, switches, vmsGroups) plus the references it leaves out (object
-references, signal dependencies and references, junction controllers, junction group members), so that files of
-every version are held to them, not only those the 1.8 schema validates.
+The classes and the references between them are :mod:`xodrcheck.model.ids`'s (the 1.8.1 schema's keys, and the
+references it leaves out); the rules read the ids as the reader recorded them, wherever in the file they stand.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterator
 
-from lxml import etree
-
 from xodrcheck.findings import Category, Finding, Severity
+from xodrcheck.model import ID_CLASSES, ID_REFERENCES, SIGNAL_LINKS, SIGNS, IdElement, IdTable
 from xodrcheck.rules import feature_uids as F
-from xodrcheck.rules.context import Context, junction_parts
+from xodrcheck.rules.context import Context, describe_junction
 from xodrcheck.rules.registry import rule
 
-#: Class name -> path of its elements below ``<OpenDRIVE>`` (ids unique file-wide, as in the 1.8.1 schema's keys).
-_CLASSES = {
-    "object": "road/objects/object",
-    "bridge": "road/objects/bridge",
-    "tunnel": "road/objects/tunnel",
-    "signal": "road/signals/signal",
-    "controller": "controller",
-    "junction group": "junctionGroup",
-    "station": "station",
-    "platform": "station/platform",
-    "switch": "road/railroad/switch",
-    "vmsGroup": "vmsGroup",
-}
 
-#: (path of the referring element, its attribute, what it names, the classes that may hold the id).
-_REFERENCES = (
-    ("road/objects/objectReference", "id", "object", ("object",)),
-    ("road/signals/signal/dependency", "id", "signal", ("signal", "sign")),
-    ("road/signals/signal/positionRoad", "roadId", "road", ("road",)),
-    ("road/signals/signalReference", "id", "signal", ("signal", "object", "road", "junction", "controller")),
-    ("road/railroad/switch/mainTrack", "id", "road", ("road",)),
-    ("road/railroad/switch/sideTrack", "id", "road", ("road",)),
-    ("road/railroad/switch/partner", "id", "switch", ("switch",)),
-    ("controller/control", "signalId", "signal", ("signal", "sign")),
-    ("junction", "mainRoad", "road", ("road",)),
-    ("junction/controller", "id", "controller", ("controller",)),
-    ("junction/priority", "high", "road", ("road",)),
-    ("junction/priority", "low", "road", ("road",)),
-    ("junction/crossPath", "crossingRoad", "road", ("road",)),
-    ("junction/crossPath", "roadAtStart", "road", ("road",)),
-    ("junction/crossPath", "roadAtEnd", "road", ("road",)),
-    ("junction/roadSection", "roadId", "road", ("road",)),
-    ("junction/boundary/segment", "roadId", "road", ("road",)),
-    ("junction/connection/predecessor", "elementId", "road", ("road",)),
-    ("junction/connection/successor", "elementId", "road", ("road",)),
-    ("junctionGroup/junctionReference", "junction", "junction", ("junction",)),
-    ("station/platform/segment", "roadId", "road", ("road",)),
-    ("vmsGroup/vmsBoardReference", "signalId", "signal", ("signal",)),
-)
+def _table(ctx: Context) -> IdTable:
+    """The file's ids as the reader recorded them (none for a document built in code)."""
+    return ctx.document.ids or IdTable()
 
 
-def _road_of(el: etree._Element) -> str | None:
-    for parent in el.iterancestors():
-        if isinstance(parent.tag, str) and etree.QName(parent).localname == "road":
-            return parent.get("id")
-    return None
-
-
-@rule("R020", "duplicate-element-id", Category.REFERENCE, Severity.ERROR, uids=(F.ID_UNIQUE_IN_CLASS,), xml=True)
+@rule("R020", "duplicate-element-id", Category.REFERENCE, Severity.ERROR, uids=(F.ID_UNIQUE_IN_CLASS,))
 def duplicate_element_id(ctx: Context):
     """Two objects, signals, controllers, stations, switches... of one class share an id.
 
@@ -84,10 +39,10 @@ def duplicate_element_id(ctx: Context):
 
         <road id="1">...<signal id="5" .../></road> <road id="2">...<signal id="5" .../></road>
     """
-    index = _index(ctx)
-    for name, path in _CLASSES.items():
-        first: dict[str, etree._Element] = {}
-        for el in index[path]:
+    table = _table(ctx)
+    for name, path in ID_CLASSES.items():
+        first: dict[str, IdElement] = {}
+        for el in table.at(path):
             ident = el.get("id")
             if ident is None:
                 continue
@@ -95,62 +50,30 @@ def duplicate_element_id(ctx: Context):
                 first[ident] = el
                 continue
             yield duplicate_element_id.finding(
-                f"{name} id {ident!r} is used again (first at line {first[ident].sourceline}): ids are unique "
+                f"{name} id {ident!r} is used again (first at line {first[ident].line}): ids are unique "
                 f"within their class; give this {name} an id of its own",
-                road=_road_of(el),
-                line=el.sourceline,
+                road=el.road,
+                line=el.line,
             )
 
 
-_SIGNS = "road/signals/signal/staticBoard/sign"
-_LINKS = "road/signals/signal/reference"
-_WANTED = frozenset([*_CLASSES.values(), *(path for path, *_ in _REFERENCES), "road", "junction", _SIGNS, _LINKS])
-_PREFIXES = frozenset(path.rsplit("/", k)[0] for path in _WANTED for k in range(path.count("/") + 1))
-
-
-def _index(ctx: Context) -> dict[str, list[etree._Element]]:
-    """The elements at each path of :data:`_WANTED` (local names from ``<OpenDRIVE>``), in file order: one walk of
-    the parts of the tree that hold them, shared by the rules of one file (dropped with the tree)."""
-
-    def build() -> dict[str, list[etree._Element]]:
-        found: dict[str, list[etree._Element]] = {path: [] for path in _WANTED}
-        tree = ctx.tree
-        if tree is not None:
-            _walk(tree.getroot(), "", found)
-        return found
-
-    return ctx.xml_view("ids.index", build)
-
-
-def _walk(el: etree._Element, path: str, out: dict[str, list[etree._Element]]) -> None:
-    for child in el:
-        tag = child.tag
-        if not isinstance(tag, str):
-            continue
-        here = f"{path}/{tag.rpartition('}')[2]}" if path else tag.rpartition("}")[2]
-        if here in out:
-            out[here].append(child)
-        if here in _PREFIXES:
-            _walk(child, here, out)
-
-
-def _defined(index: dict[str, list[etree._Element]]) -> dict[str, set[str]]:
-    out = {name: {el.get("id") for el in index[path]} for name, path in _CLASSES.items()}
-    out["road"] = {el.get("id") for el in index["road"]}
-    out["junction"] = {el.get("id") for el in index["junction"]}
-    out["sign"] = {el.get("id") for el in index[_SIGNS]}
+def _defined(table: IdTable) -> dict[str, set[str | None]]:
+    out = {name: {el.get("id") for el in table.at(path)} for name, path in ID_CLASSES.items()}
+    out["road"] = {el.get("id") for el in table.at("road")}
+    out["junction"] = {el.get("id") for el in table.at("junction")}
+    out["sign"] = {el.get("id") for el in table.at(SIGNS)}
     return out
 
 
-def _dangling(index: dict[str, list[etree._Element]]) -> Iterator[tuple[etree._Element, str, str, str]]:
+def _dangling(table: IdTable) -> Iterator[tuple[IdElement, str, str, str]]:
     """(element, attribute, the id, what it should name) for each reference to an id the file does not define."""
-    defined = _defined(index)
-    for path, attr, what, classes in _REFERENCES:
-        for el in index[path]:
+    defined = _defined(table)
+    for path, attr, what, classes in ID_REFERENCES:
+        for el in table.at(path):
             ident = el.get(attr)
             if ident is not None and not any(ident in defined[c] for c in classes):
                 yield el, attr, ident, what
-    for el in index[_LINKS]:
+    for el in table.at(SIGNAL_LINKS):
         kind, ident = el.get("elementType"), el.get("elementId")
         known = defined["signal"] | defined["sign"] if kind == "signal" else defined.get(kind or "", set())
         if kind in ("signal", "object") and ident is not None and ident not in known:
@@ -163,7 +86,6 @@ def _dangling(index: dict[str, list[etree._Element]]) -> Iterator[tuple[etree._E
     Category.REFERENCE,
     Severity.ERROR,
     uids=(F.ONLY_REF_DEFINED_IDS,),
-    xml=True,
 )
 def undefined_reference(ctx: Context):
     """An element refers to an object, signal, controller, switch, road or junction id the file does not define.
@@ -186,13 +108,13 @@ def undefined_reference(ctx: Context):
 
         <objectReference id="70" .../>  <!-- no object 70 -->
     """
-    for el, attr, ident, what in _dangling(_index(ctx)):
-        tag, article = etree.QName(el).localname, "an" if what[0] in "aeiou" else "a"
+    for el, attr, ident, what in _dangling(_table(ctx)):
+        article = "an" if what[0] in "aeiou" else "a"
         yield undefined_reference.finding(
-            f"<{tag} {attr}={ident!r}> names {article} {what} that the file does not define: correct the id or add "
-            f"the {what}",
-            road=_road_of(el),
-            line=el.sourceline,
+            f"<{el.tag} {attr}={ident!r}> names {article} {what} that the file does not define: correct the id or "
+            f"add the {what}",
+            road=el.road,
+            line=el.line,
         )
     yield from _cross_path_lanes(ctx)
 
@@ -201,12 +123,12 @@ def _cross_path_lanes(ctx: Context) -> Iterator[Finding]:
     """Lanes a cross path's ``<startLaneLink>``/``<endLaneLink>`` names that its roads do not have there."""
     from xodrcheck.rules.junction_members import cross_path_lanes
 
-    for j in junction_parts(ctx):
+    for j in ctx.document.junctions:
         for cp in j.cross_paths:
             for what, road, lane, lane_id, s, line in cross_path_lanes(ctx, cp):
                 if lane is None and lane_id is not None:
                     yield undefined_reference.finding(
-                        f"{j.describe()} cross path {cp.id} names {what}, which the road does not have there: "
+                        f"{describe_junction(j)} cross path {cp.id} names {what}, which the road does not have there: "
                         "correct the lane id",
                         road=road.id,
                         lane=lane_id,

@@ -15,9 +15,9 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
-from xodrcheck.model import ElementType, Road
+from xodrcheck.model import ContactPoint, ElementType, JunctionType, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, junction_parts
+from xodrcheck.rules.context import Context, describe_junction
 from xodrcheck.rules.junction_shapes import (
     boundary_pieces,
     gaps,
@@ -31,14 +31,14 @@ from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
-    from xodrcheck.junction_elements import JunctionParts
+    from xodrcheck.model import Junction
     from xodrcheck.rules.junction_shapes import Piece
 
 
-def _boundaries(ctx: Context) -> Iterator[tuple[JunctionParts, list[Piece]]]:
+def _boundaries(ctx: Context) -> Iterator[tuple[Junction, list[Piece]]]:
     """Common junctions with a boundary whose segments can all be placed, with the placed segments."""
-    for j in junction_parts(ctx):
-        if j.type != "default" or j.boundary is None or j.boundary.unknown:
+    for j in ctx.document.junctions:
+        if j.type is not JunctionType.DEFAULT or j.boundary is None or j.boundary.unknown:
             continue
         pieces = boundary_pieces(ctx, j.boundary)
         if pieces is not None:
@@ -55,7 +55,7 @@ def _describe(piece: Piece) -> str:
     return f"the {kind} segment of road {seg.road} (line {seg.line})"
 
 
-@rule("J024", "boundary-not-closed", Category.JUNCTION, Severity.ERROR, uids=(U.BOUNDARY_CLOSED,), xml=True)
+@rule("J024", "boundary-not-closed", Category.JUNCTION, Severity.ERROR, uids=(U.BOUNDARY_CLOSED,))
 def boundary_not_closed(ctx: Context) -> Iterator[Finding]:
     """The segments of a junction boundary do not close it: one ends away from where the next one starts.
 
@@ -81,7 +81,7 @@ def boundary_not_closed(ctx: Context) -> Iterator[Finding]:
                 continue
             x, y = (float(v) for v in piece.end)
             yield boundary_not_closed.finding(
-                f"{j.describe()}: {_describe(piece)} ends at ({x:.3f}, {y:.3f}), {gap:.3g} m from where "
+                f"{describe_junction(j)}: {_describe(piece)} ends at ({x:.3f}, {y:.3f}), {gap:.3g} m from where "
                 f"{_describe(after)} begins; the segments must close the boundary: make each segment end where the "
                 "next one begins (add segments, or a road for them, where the junction's roads leave a gap)",
                 road=piece.segment.road,
@@ -97,7 +97,6 @@ def boundary_not_closed(ctx: Context) -> Iterator[Finding]:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.BOUNDARY_COUNTER_CLOCKWISE,),
-    xml=True,
 )
 def boundary_clockwise(ctx: Context) -> Iterator[Finding]:
     """The segments of a junction boundary run clockwise around the junction.
@@ -122,7 +121,7 @@ def boundary_clockwise(ctx: Context) -> Iterator[Finding]:
         area = signed_area(ring(pieces))
         if area < 0:
             yield boundary_clockwise.finding(
-                f"{j.describe()}: its boundary segments run clockwise around the junction (enclosing "
+                f"{describe_junction(j)}: its boundary segments run clockwise around the junction (enclosing "
                 f"{-area:.1f} m²); list them counter-clockwise, each from its start to its end in that order",
                 line=(j.boundary.line if j.boundary else 0) or j.line or None,
             )
@@ -134,7 +133,6 @@ def boundary_clockwise(ctx: Context) -> Iterator[Finding]:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.REFLINE_MEETS_BOUNDARY, U.REFLINE_REACHES_ALL, U.GRID_COVERS_BOUNDARY),
-    xml=True,
 )
 def junction_area_coverage(ctx: Context) -> Iterator[Finding]:
     """A junction's reference line or elevation grid does not cover its boundary (or, without one, its roads).
@@ -168,8 +166,8 @@ def junction_area_coverage(ctx: Context) -> Iterator[Finding]:
         inside = (s >= -tol) & (s <= line.length + tol)
         if not (inside & (np.abs(t) <= tol)).any() and not _crosses(s, t, line.length, tol):
             yield junction_area_coverage.finding(
-                f"{j.describe()}: its reference line (from ({line.x:.3f}, {line.y:.3f}), {metres(line.length)} m long) "
-                "neither crosses nor touches the junction boundary; place the line across the junction",
+                f"{describe_junction(j)}: its reference line (from ({line.x:.3f}, {line.y:.3f}), {metres(line.length)} "
+                "m long) neither crosses nor touches the junction boundary; place the line across the junction",
                 uid=U.REFLINE_MEETS_BOUNDARY,
                 x=line.x,
                 y=line.y,
@@ -178,9 +176,9 @@ def junction_area_coverage(ctx: Context) -> Iterator[Finding]:
         if not inside.all():
             k = int(np.argmax(np.where(s < 0, -s, s - line.length)))
             yield junction_area_coverage.finding(
-                f"{j.describe()}: the boundary point ({xy[k, 0]:.3f}, {xy[k, 1]:.3f}) lies at s={s[k]:.3f} along the "
-                f"junction reference line, outside its 0..{metres(line.length)} m, so no line perpendicular to the "
-                "reference line reaches it; lengthen or move the reference line to span the junction",
+                f"{describe_junction(j)}: the boundary point ({xy[k, 0]:.3f}, {xy[k, 1]:.3f}) lies at s={s[k]:.3f} "
+                f"along the junction reference line, outside its 0..{metres(line.length)} m, so no line perpendicular "
+                "to the reference line reaches it; lengthen or move the reference line to span the junction",
                 uid=U.REFLINE_REACHES_ALL,
                 x=float(xy[k, 0]),
                 y=float(xy[k, 1]),
@@ -194,7 +192,7 @@ def junction_area_coverage(ctx: Context) -> Iterator[Finding]:
             if out.any():
                 k = int(np.argmax(out))
                 yield junction_area_coverage.finding(
-                    f"{j.describe()}: the boundary point ({xy[k, 0]:.3f}, {xy[k, 1]:.3f}) (s={s[k]:.3f}, "
+                    f"{describe_junction(j)}: the boundary point ({xy[k, 0]:.3f}, {xy[k, 1]:.3f}) (s={s[k]:.3f}, "
                     f"t={t[k]:.3f} from the reference line) lies outside the elevation grid's complete squares "
                     f"({int(out.sum())} of {len(out)} boundary points do); extend the grid over the whole boundary",
                     uid=U.GRID_COVERS_BOUNDARY,
@@ -202,16 +200,16 @@ def junction_area_coverage(ctx: Context) -> Iterator[Finding]:
                     y=float(xy[k, 1]),
                     line=grid.line or None,
                 )
-    for j in junction_parts(ctx):
+    for j in ctx.document.junctions:
         if id(j) not in bounded:
             yield from _unbounded_reach(ctx, j, tol)
 
 
-def _unbounded_reach(ctx: Context, j: JunctionParts, tol: float) -> Iterator[Finding]:
+def _unbounded_reach(ctx: Context, j: Junction, tol: float) -> Iterator[Finding]:
     """``ref_line_definition`` on a junction without a boundary to measure: its area is then its connecting roads'
     lanes, and every lane border point of them lies between the normals at the reference line's ends."""
     line = reference_line(j)
-    if line is None or j.id is None:
+    if line is None:
         return
     worst: tuple[float, Road, np.ndarray] | None = None
     for road in ctx.roads_in_junction.get(j.id, ()):
@@ -227,7 +225,7 @@ def _unbounded_reach(ctx: Context, j: JunctionParts, tol: float) -> Iterator[Fin
         return
     _, road, (x, y, s_k) = worst
     yield junction_area_coverage.finding(
-        f"{j.describe()}: the lane border point ({x:.3f}, {y:.3f}) of its connecting road {road.id} lies at "
+        f"{describe_junction(j)}: the lane border point ({x:.3f}, {y:.3f}) of its connecting road {road.id} lies at "
         f"s={s_k:.3f} along the junction reference line, outside its 0..{metres(line.length)} m, so no line "
         "perpendicular to the reference line reaches it; lengthen or move the reference line to span the junction",
         uid=U.REFLINE_REACHES_ALL,
@@ -247,7 +245,7 @@ def _crosses(s: np.ndarray, t: np.ndarray, length: float, tol: float) -> bool:
     return bool(np.any(change & (at >= -tol) & (at <= length + tol)))
 
 
-@rule("J029", "crossing-section-coverage", Category.JUNCTION, Severity.ERROR, uids=(U.CROSSING_COVERAGE,), xml=True)
+@rule("J029", "crossing-section-coverage", Category.JUNCTION, Severity.ERROR, uids=(U.CROSSING_COVERAGE,))
 def crossing_section_coverage(ctx: Context) -> Iterator[Finding]:
     """A crossing's ``<roadSection>`` does not cover the whole area where its road overlaps the other roads.
 
@@ -267,8 +265,8 @@ def crossing_section_coverage(ctx: Context) -> Iterator[Finding]:
     """
     from xodrcheck.rules.junction_shapes import strip
 
-    for j in junction_parts(ctx):
-        if j.type != "crossing":
+    for j in ctx.document.junctions:
+        if j.type is not JunctionType.CROSSING:
             continue
         roads = {}
         for section in j.road_sections:
@@ -284,7 +282,7 @@ def crossing_section_coverage(ctx: Context) -> Iterator[Finding]:
             yield from _uncovered(ctx, j, section, road, roads, covered)
 
 
-def _uncovered(ctx: Context, j: JunctionParts, section, road, roads, covered) -> Iterator[Finding]:
+def _uncovered(ctx: Context, j: Junction, section, road, roads, covered) -> Iterator[Finding]:
     import shapely
 
     mine = roads[road.id][1]
@@ -297,7 +295,7 @@ def _uncovered(ctx: Context, j: JunctionParts, section, road, roads, covered) ->
             continue
         point = left.representative_point()
         yield crossing_section_coverage.finding(
-            f"{j.describe()}: the <roadSection> of road {road.id} (s={metres(section.s_start)} to "
+            f"{describe_junction(j)}: the <roadSection> of road {road.id} (s={metres(section.s_start)} to "
             f"{metres(section.s_end)}) leaves {left.area:.2f} m² of its overlap with road {other_id} uncovered, around "
             f"({point.x:.3f}, {point.y:.3f}); widen sStart..sEnd to cover the whole area where the roads overlap",
             road=road.id,
@@ -307,28 +305,25 @@ def _uncovered(ctx: Context, j: JunctionParts, section, road, roads, covered) ->
         )
 
 
-def _zone_lanes(ctx: Context, j: JunctionParts) -> list[tuple[Road, int, bool, float, int]] | None:
+def _zone_lanes(ctx: Context, j: Junction) -> list[tuple[Road, int, bool, float, int]] | None:
     """The two overlapping lanes a direct junction marks with ``overlapZone``: (road, lane, whether the junction is
     at the road's end, overlapZone, line); ``None`` unless one pair of links marks one exit or entry (J021)."""
-    marked = [(c, ll) for c in j.connections for ll in c.lane_links if ll.has_overlap_zone]
-    if len(marked) != 2 or any(
-        ll.overlap_zone is None or ll.from_lane is None or ll.to_lane is None for _, ll in marked
-    ):
+    marked = [(c, ll) for c in j.connections for ll in c.all_lane_links if ll.xml.given("overlapZone")]
+    if len(marked) != 2 or any(ll.overlap_zone is None for _, ll in marked):
         return None
     (c1, l1), (c2, l2) = marked
     out: list[tuple[Road, int, bool, float, int]] = []
     if c1.incoming_road == c2.incoming_road and l1.from_lane == l2.from_lane:  # an exit: the linked roads' lanes
         for c, ll in marked:
             road = ctx.road(c.linked_road)
-            # (lanes and overlapZone are all given: checked above)
-            if road is None or c.contact_point not in ("start", "end") or ll.to_lane is None or ll.overlap_zone is None:
+            if road is None or c.contact_point is None or ll.overlap_zone is None:
                 return None
-            out.append((road, ll.to_lane, c.contact_point == "end", ll.overlap_zone, ll.line))
+            out.append((road, ll.to_lane, c.contact_point is ContactPoint.END, ll.overlap_zone, ll.line))
     elif c1.linked_road == c2.linked_road and l1.to_lane == l2.to_lane:  # an entry: the incoming roads' lanes
         for c, ll in marked:
             road = ctx.road(c.incoming_road)
             link = road.successor if road is not None else None
-            if road is None or ll.from_lane is None or ll.overlap_zone is None:
+            if road is None or ll.overlap_zone is None:
                 return None
             at_end = link is not None and link.element_type is ElementType.JUNCTION and link.element_id == j.id
             out.append((road, ll.from_lane, at_end, ll.overlap_zone, ll.line))
@@ -337,7 +332,7 @@ def _zone_lanes(ctx: Context, j: JunctionParts) -> list[tuple[Road, int, bool, f
     return out
 
 
-@rule("J030", "overlap-zone-too-short", Category.JUNCTION, Severity.ERROR, uids=(U.DIRECT_OVERLAP_COVERAGE,), xml=True)
+@rule("J030", "overlap-zone-too-short", Category.JUNCTION, Severity.ERROR, uids=(U.DIRECT_OVERLAP_COVERAGE,))
 def overlap_zone_too_short(ctx: Context) -> Iterator[Finding]:
     """A direct junction's ``overlapZone`` does not reach as far as its two lanes overlap.
 
@@ -359,8 +354,8 @@ def overlap_zone_too_short(ctx: Context) -> Iterator[Finding]:
 
     from xodrcheck.rules.junction_shapes import strip
 
-    for j in junction_parts(ctx):
-        lanes = _zone_lanes(ctx, j) if j.type == "direct" else None
+    for j in ctx.document.junctions:
+        lanes = _zone_lanes(ctx, j) if j.type is JunctionType.DIRECT else None
         if lanes is None:
             continue
         whole = [strip(ctx, road, lane, 0.0, float(road.length)) for road, lane, _, _, _ in lanes]
@@ -376,9 +371,9 @@ def overlap_zone_too_short(ctx: Context) -> Iterator[Finding]:
         point = left.representative_point()
         (a, la, _, za, line), (b, lb, _, zb, _) = lanes
         yield overlap_zone_too_short.finding(
-            f"{j.describe()}: lane {la} of road {a.id} (overlapZone {metres(za)} m) and lane {lb} of road {b.id} "
-            f"(overlapZone {metres(zb)} m) still share {left.area:.2f} m² beyond their zones, around ({point.x:.3f}, "
-            f"{point.y:.3f}); make overlapZone cover the whole stretch where the lanes overlap",
+            f"{describe_junction(j)}: lane {la} of road {a.id} (overlapZone {metres(za)} m) and lane {lb} of road "
+            f"{b.id} (overlapZone {metres(zb)} m) still share {left.area:.2f} m² beyond their zones, around "
+            f"({point.x:.3f}, {point.y:.3f}); make overlapZone cover the whole stretch where the lanes overlap",
             road=a.id,
             lane=la,
             x=float(point.x),

@@ -30,9 +30,9 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
-from xodrcheck.model import ContactPoint, Road
+from xodrcheck.model import ContactPoint, JunctionType, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, junction_parts
+from xodrcheck.rules.context import Context, describe_junction
 from xodrcheck.rules.junction_shapes import boundary_pieces, joint_lanes, reference_line
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import end_s, usable
@@ -40,7 +40,7 @@ from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
     from xodrcheck.geometry.junction_grid import GridSurface
-    from xodrcheck.junction_elements import JointSegment, JunctionParts
+    from xodrcheck.model import JointSegment, Junction
     from xodrcheck.rules.junction_shapes import Piece, ReferenceLine
 
 #: Step (m) into the road over which its grade at the end is measured (a difference quotient of the exact surface).
@@ -72,7 +72,7 @@ class _Across:
 
 def _zone(pieces: list[Piece], k: int, length: float, tol: float) -> str:
     """Why the transition zone of the joint ``pieces[k]`` cannot be built ("" when it can)."""
-    from xodrcheck.junction_elements import LaneSegment
+    from xodrcheck.model import LaneSegment
 
     n = len(pieces)
     for side, piece in (("before", pieces[k - 1]), ("after", pieces[(k + 1) % n])):
@@ -84,9 +84,9 @@ def _zone(pieces: list[Piece], k: int, length: float, tol: float) -> str:
     return ""
 
 
-def _entries(ctx: Context, j: JunctionParts) -> list[_Entry]:
+def _entries(ctx: Context, j: Junction) -> list[_Entry]:
     """The junction's entries and exits: its boundary's joints at road ends, then incoming road ends without one."""
-    from xodrcheck.junction_elements import JointSegment
+    from xodrcheck.model import JointSegment
 
     out: list[_Entry] = []
     seen: set[tuple[str, ContactPoint]] = set()
@@ -94,9 +94,9 @@ def _entries(ctx: Context, j: JunctionParts) -> list[_Entry]:
     for k, piece in enumerate(pieces or ()):
         seg = piece.segment
         road = ctx.road(seg.road)
-        if not isinstance(seg, JointSegment) or road is None or seg.contact not in ("start", "end"):
+        if not isinstance(seg, JointSegment) or road is None or not isinstance(seg.contact, ContactPoint):
             continue
-        end = ContactPoint(seg.contact)
+        end = seg.contact
         if road.junction == j.id or (road.id, end) in seen:
             continue
         seen.add((road.id, end))
@@ -104,7 +104,7 @@ def _entries(ctx: Context, j: JunctionParts) -> list[_Entry]:
         if seg.transition_length and not zone:
             continue  # 12.11.2's transition zone joins the road and the grid with matching z and grade
         out.append(_Entry(road, end, seg, zone))
-    for road, end in ctx.junction_link_ends.get(j.id or "", ()):
+    for road, end in ctx.junction_link_ends.get(j.id, ()):
         if road.junction != j.id and (road.id, end) not in seen:
             seen.add((road.id, end))
             out.append(_Entry(road, end, None))
@@ -113,7 +113,7 @@ def _entries(ctx: Context, j: JunctionParts) -> list[_Entry]:
 
 def _across(ctx: Context, entry: _Entry) -> _Across | None:
     """The road surface across the entry's lanes at the road's end (``None`` when the road cannot be evaluated)."""
-    from xodrcheck.junction_elements import JointSegment
+    from xodrcheck.model import JointSegment
 
     road, end = entry.road, entry.end
     geometry = usable(ctx, road)
@@ -123,7 +123,7 @@ def _across(ctx: Context, entry: _Entry) -> _Across | None:
     s = end_s(road, end)
     inward = min(_DS, 0.5 * float(road.length))
     curves = geometry.border_curves(index, np.array([s, s + inward if end is ContactPoint.START else s - inward]))
-    joint = entry.joint or JointSegment(road.id, end.value, None, None, 0.0, 0)
+    joint = entry.joint or JointSegment(road.id, end, None, None)
     first, last = joint_lanes(geometry, index, joint)
     order = sorted(curves, reverse=True)  # the border lines from the outermost left to the outermost right
     if first not in curves or last not in curves:
@@ -170,7 +170,6 @@ def _where(entry: _Entry) -> str:
     Category.JUNCTION,
     Severity.WARNING,
     uids=(U.GRID_SMOOTH,),
-    xml=True,
 )
 def elevation_grid_entry_exit(ctx: Context) -> Iterator[Finding]:
     """A road enters or leaves a junction's elevation grid with a step or a kink in the surface.
@@ -194,9 +193,9 @@ def elevation_grid_entry_exit(ctx: Context) -> Iterator[Finding]:
         <elevation left="0.95 0.95 0.95" center="0.95" right="0.95"/> ...
     """
     tol = ctx.tolerances
-    for j in junction_parts(ctx):
+    for j in ctx.document.junctions:
         grid, line = j.grid, reference_line(j)
-        if grid is None or j.type != "default":
+        if grid is None or j.type is not JunctionType.DEFAULT:
             continue
         from xodrcheck.geometry.junction_grid import grid_surface  # here: only a junction with a grid loads it
 
@@ -231,28 +230,29 @@ def _zone_note(entry: _Entry) -> str:
     )
 
 
-def _step(ctx: Context, j: JunctionParts, entry: _Entry, across: _Across, z: np.ndarray, tol: float):
+def _step(ctx: Context, j: Junction, entry: _Entry, across: _Across, z: np.ndarray, tol: float):
     step = np.abs(z - across.z)
     if not np.nanmax(step, initial=0.0) > tol:
         return
     k = int(np.nanargmax(step))
     over = int(np.sum(step > tol))
     yield elevation_grid_entry_exit.finding(
-        f"{j.describe()}: at {_where(entry)} the surface steps by {step[k]:.3g} m from the road onto the elevation "
-        f"grid at ({across.xy[k, 0]:.3f}, {across.xy[k, 1]:.3f}): road z={across.z[k]:.3f}, grid z={z[k]:.3f} ({over} "
-        f"of {len(step)} points across the road's end step over {metres(tol)} m){_zone_note(entry)}; make the grid's "
-        "heights there match the road's (elevation and superelevation), or give the joint a transitionLength",
+        f"{describe_junction(j)}: at {_where(entry)} the surface steps by {step[k]:.3g} m from the road onto the "
+        f"elevation grid at ({across.xy[k, 0]:.3f}, {across.xy[k, 1]:.3f}): road z={across.z[k]:.3f}, grid "
+        f"z={z[k]:.3f} ({over} of {len(step)} points across the road's end step over {metres(tol)} "
+        f"m){_zone_note(entry)}; make the grid's heights there match the road's (elevation and superelevation), or "
+        "give the joint a transitionLength",
         **_place(entry, across, k, float(across.z[k])),
     )
 
 
-def _kink(ctx: Context, j: JunctionParts, entry: _Entry, across: _Across, grade: np.ndarray, tol: float):
+def _kink(ctx: Context, j: Junction, entry: _Entry, across: _Across, grade: np.ndarray, tol: float):
     turn = np.abs(np.arctan(grade) - np.arctan(across.grade))
     if not np.nanmax(turn, initial=0.0) > tol:
         return
     k = int(np.nanargmax(turn))
     yield elevation_grid_entry_exit.finding(
-        f"{j.describe()}: at {_where(entry)} the surface kinks from the road onto the elevation grid at "
+        f"{describe_junction(j)}: at {_where(entry)} the surface kinks from the road onto the elevation grid at "
         f"({across.xy[k, 0]:.3f}, {across.xy[k, 1]:.3f}), z={across.z[k]:.3f}: along the road into the junction the "
         f"road's grade is {100 * across.grade[k]:.3g} % and the grid's {100 * grade[k]:.3g} %, a {turn[k]:.3g} rad "
         f"change of pitch (over {tol:g} rad){_zone_note(entry)}; shape the grid's heights near the entry to continue "

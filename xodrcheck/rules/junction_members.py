@@ -16,13 +16,13 @@ from typing import TYPE_CHECKING
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, JunctionType, Lane, LaneType, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, junction_parts
+from xodrcheck.rules.context import Context, describe_junction, written_id
 from xodrcheck.rules.junction_roles import legs
 from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
-    from xodrcheck.junction_elements import CrossPath, JunctionParts
+    from xodrcheck.model import CrossPath, Junction
 
 
 # ---------------------------------------------------------------------------------------------------- direct junctions
@@ -72,7 +72,7 @@ def direct_junction_shape(ctx: Context):
         )
 
 
-@rule("J021", "direct-overlap-zones", Category.JUNCTION, Severity.ERROR, uids=(U.DIRECT_OVERLAP_EXCLUSIVE,), xml=True)
+@rule("J021", "direct-overlap-zones", Category.JUNCTION, Severity.ERROR, uids=(U.DIRECT_OVERLAP_EXCLUSIVE,))
 def direct_overlap_zones(ctx: Context):
     """A direct junction's ``overlapZone`` attributes do not mark one pair of overlapping lanes.
 
@@ -92,10 +92,10 @@ def direct_overlap_zones(ctx: Context):
 
         <laneLink from="-3" to="-1" overlapZone="41"/>
     """
-    for j in junction_parts(ctx):
-        if j.type != "direct":
+    for j in ctx.document.junctions:
+        if j.type is not JunctionType.DIRECT:
             continue
-        marked = [(c, ll) for c in j.connections for ll in c.lane_links if ll.has_overlap_zone]
+        marked = [(c, ll) for c in j.connections for ll in c.all_lane_links if ll.xml.given("overlapZone")]
         if not marked:
             continue
         if len(marked) == 2:
@@ -105,7 +105,7 @@ def direct_overlap_zones(ctx: Context):
             if (exit_ or entry) and c1 is not c2:
                 continue
         shown = "; ".join(
-            f"connection {c.id} laneLink {ll.from_lane} -> {ll.to_lane} (line {ll.line})" for c, ll in marked
+            f"connection {written_id(c)} laneLink {ll.from_lane} -> {ll.to_lane} (line {ll.line})" for c, ll in marked
         )
         why = (
             "one link alone marks no pair"
@@ -116,8 +116,8 @@ def direct_overlap_zones(ctx: Context):
         )
         c, ll = marked[-1]
         yield direct_overlap_zones.finding(
-            f"{j.describe()}: overlapZone on {shown}: {why}; give overlapZone to the one pair of links whose lanes "
-            "overlap",
+            f"{describe_junction(j)}: overlapZone on {shown}: {why}; give overlapZone to the one pair of links whose "
+            "lanes overlap",
             road=c.linked_road,
             line=ll.line or c.line or None,
         )
@@ -184,7 +184,6 @@ def _has_elevation(road: Road) -> bool:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.CROSS_PATH_JUNCTION_ID, U.CROSS_PATH_LANE_TYPES, U.CROSS_PATH_ELEVATION),
-    xml=True,
 )
 def cross_path_roads(ctx: Context):
     """A cross path's crossing road is not the junction's, or it connects lanes that are not for walking or biking.
@@ -207,9 +206,9 @@ def cross_path_roads(ctx: Context):
 
         <road id="75" junction="-1"> ...
     """
-    for j in junction_parts(ctx):
+    for j in ctx.document.junctions:
         for cp in j.cross_paths:
-            at = f"{j.describe()} cross path {cp.id}"
+            at = f"{describe_junction(j)} cross path {cp.id}"
             crossing = ctx.road(cp.crossing_road)
             if crossing is not None and crossing.junction != j.id:  # a road that does not exist: undefined-reference
                 belongs = (
@@ -249,14 +248,14 @@ def cross_path_roads(ctx: Context):
 
 
 # ---------------------------------------------------------------------------------------------------- boundary roads
-def _reaches(j: JunctionParts, road: Road, end: ContactPoint | None) -> bool:
+def _reaches(j: Junction, road: Road, end: ContactPoint | None) -> bool:
     """Whether a boundary segment of the junction reaches the road's end (``None``: either end)."""
-    from xodrcheck.junction_elements import JointSegment
+    from xodrcheck.model import JointSegment
 
     boundary = j.boundary
     if boundary is None:
         return False
-    wanted = {end.value} if end is not None else {"start", "end"}
+    wanted = {end} if end is not None else {ContactPoint.START, ContactPoint.END}
     for seg in boundary.segments:
         if seg.road != road.id:
             continue
@@ -265,7 +264,8 @@ def _reaches(j: JunctionParts, road: Road, end: ContactPoint | None) -> bool:
             if place in wanted:
                 return True
             if isinstance(place, float) and any(
-                abs(place - (0.0 if w == "start" else road.length)) <= 1e-6 * max(1.0, road.length) for w in wanted
+                abs(place - (0.0 if w is ContactPoint.START else road.length)) <= 1e-6 * max(1.0, road.length)
+                for w in wanted
             ):
                 return True
     return False
@@ -277,7 +277,6 @@ def _reaches(j: JunctionParts, road: Road, end: ContactPoint | None) -> bool:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.BOUNDARY_EACH_ROAD, U.BOUNDARY_CLOSE_GAP_WITH_NEW_ROADS),
-    xml=True,
 )
 def boundary_roads(ctx: Context):
     """A junction boundary misses a road that touches the junction, or runs along a road that is not the junction's.
@@ -298,19 +297,18 @@ def boundary_roads(ctx: Context):
 
         <road id="3" junction="-1"><link><successor elementType="junction" elementId="100"/></link> ...
     """
-    for j in junction_parts(ctx):
-        junction = ctx.junction(j.id)
+    for j in ctx.document.junctions:
         boundary = j.boundary
-        if boundary is None or junction is None or junction.type is not JunctionType.DEFAULT:
+        if boundary is None or j.type is not JunctionType.DEFAULT:
             continue
-        touching = legs(ctx, junction)
+        touching = legs(ctx, j)
         for road_id, end in touching.items():
             road = ctx.road(road_id)
             if road is None or _reaches(j, road, end):
                 continue
             where = f"its {end.value}" if end is not None else "its end"
             yield boundary_roads.finding(
-                f"{j.describe()}: no boundary segment reaches road {road.id} at {where}, where it meets the "
+                f"{describe_junction(j)}: no boundary segment reaches road {road.id} at {where}, where it meets the "
                 "junction; add a joint segment across it",
                 uid=U.BOUNDARY_EACH_ROAD,
                 road=road.id,
@@ -329,8 +327,8 @@ def boundary_roads(ctx: Context):
                 else f"runs along road {road.id}, which neither touches the junction nor belongs to it"
             )
             yield boundary_roads.finding(
-                f"{j.describe()}: a boundary segment {what}; where the junction's roads do not close the boundary, "
-                f'add a road for the missing segment, with junction="{j.id}"',
+                f"{describe_junction(j)}: a boundary segment {what}; where the junction's roads do not close the "
+                f'boundary, add a road for the missing segment, with junction="{j.id}"',
                 uid=U.BOUNDARY_CLOSE_GAP_WITH_NEW_ROADS,
                 road=seg.road,
                 line=seg.line or boundary.line or None,

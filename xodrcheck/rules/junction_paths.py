@@ -16,16 +16,16 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
-from xodrcheck.model import Road
+from xodrcheck.model import JunctionType, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, junction_parts
+from xodrcheck.rules.context import Context, describe_junction
 from xodrcheck.rules.junction_shapes import boundary_pieces, gaps, ring, road_points, strip
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.sampled import left_of, usable
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
-    from xodrcheck.junction_elements import CrossPath, CrossPathLink, JunctionParts
+    from xodrcheck.model import CrossPath, CrossPathLink, Junction
 
 #: How far along the linked road around a lane link's ``s`` its lane is taken, beyond the crossing road's width (m).
 _MARGIN = 2.0
@@ -42,7 +42,7 @@ def _outside(area, xy: np.ndarray, tol: float) -> tuple[int, float] | None:
     return (k, float(distance[k])) if distance[k] > tol else None
 
 
-def _end(ctx: Context, j: JunctionParts, cp: CrossPath, crossing: Road, at_end: bool) -> Iterator[Finding]:
+def _end(ctx: Context, j: Junction, cp: CrossPath, crossing: Road, at_end: bool) -> Iterator[Finding]:
     link: CrossPathLink | None = cp.end if at_end else cp.start
     road = ctx.road(cp.road_at_end if at_end else cp.road_at_start)
     if link is None or road is None or link.s is None or link.from_lane is None or link.to_lane is None:
@@ -69,9 +69,10 @@ def _end(ctx: Context, j: JunctionParts, cp: CrossPath, crossing: Road, at_end: 
     off = _outside(area, np.array([[centre.x[0], centre.y[0]]]), tol)
     if off is not None:
         yield cross_path_ends.finding(
-            f"{j.describe()} cross path {cp.id}: the {name} of crossing road {crossing.id} (lane {link.to_lane} at "
-            f"({centre.x[0]:.3f}, {centre.y[0]:.3f})) is {off[1]:.3g} m from lane {link.from_lane} of road {road.id} "
-            f"at s={metres(link.s)}, which its <{name}LaneLink> links; make the crossing road {name} on that lane",
+            f"{describe_junction(j)} cross path {cp.id}: the {name} of crossing road {crossing.id} (lane "
+            f"{link.to_lane} at ({centre.x[0]:.3f}, {centre.y[0]:.3f})) is {off[1]:.3g} m from lane {link.from_lane} "
+            f"of road {road.id} at s={metres(link.s)}, which its <{name}LaneLink> links; make the crossing road {name} "
+            "on that lane",
             uid=U.CROSS_PATH_LANE_LINKAGE,
             x=float(centre.x[0]),
             y=float(centre.y[0]),
@@ -82,7 +83,7 @@ def _end(ctx: Context, j: JunctionParts, cp: CrossPath, crossing: Road, at_end: 
     if off is not None:
         x, y = (float(v) for v in points[off[0]])
         yield cross_path_ends.finding(
-            f"{j.describe()} cross path {cp.id}: at its {name}, crossing road {crossing.id} reaches ({x:.3f}, "
+            f"{describe_junction(j)} cross path {cp.id}: at its {name}, crossing road {crossing.id} reaches ({x:.3f}, "
             f"{y:.3f}), {off[1]:.3g} m outside lane {link.from_lane} of road {road.id} around s={metres(link.s)}; the "
             "crossing road's lanes must start and end fully inside the linked lanes",
             uid=U.CROSS_PATH_CONTAINED,
@@ -92,11 +93,11 @@ def _end(ctx: Context, j: JunctionParts, cp: CrossPath, crossing: Road, at_end: 
         )
 
 
-def _junction_area(ctx: Context, j: JunctionParts, crossing: Road):
+def _junction_area(ctx: Context, j: Junction, crossing: Road):
     """The area a cross path of the junction must lie in, and how to name it (``None``: unknown)."""
     import shapely
 
-    if j.type == "virtual":
+    if j.type is JunctionType.VIRTUAL:
         main = ctx.road(j.main_road)
         if main is None or j.s_start is None or j.s_end is None:
             return None
@@ -105,7 +106,7 @@ def _junction_area(ctx: Context, j: JunctionParts, crossing: Road):
         return (
             None if area is None else (area, f"main road {main.id} between sStart={metres(lo)} and sEnd={metres(hi)}")
         )
-    if j.type != "default":
+    if j.type is not JunctionType.DEFAULT:
         return None
     if j.boundary is not None:
         pieces = boundary_pieces(ctx, j.boundary)
@@ -133,7 +134,6 @@ def _junction_area(ctx: Context, j: JunctionParts, crossing: Road):
         U.CROSS_PATH_WITHIN_JUNCTION,
         U.VIRTUAL_CROSS_PATH_S_T,
     ),
-    xml=True,
 )
 def cross_path_ends(ctx: Context) -> Iterator[Finding]:
     """A cross path's crossing road does not start and end on the lanes it links, or leaves its junction's area.
@@ -157,7 +157,7 @@ def cross_path_ends(ctx: Context) -> Iterator[Finding]:
         <startLaneLink s="2" from="-2" to="-1"/>
     """
     tol = ctx.tolerances.gap
-    for j in junction_parts(ctx):
+    for j in ctx.document.junctions:
         for cp in j.cross_paths:
             crossing = ctx.road(cp.crossing_road)
             if crossing is None or usable(ctx, crossing) is None:
@@ -174,13 +174,13 @@ def cross_path_ends(ctx: Context) -> Iterator[Finding]:
             x, y = (float(v) for v in points[off[0]])
             uids = (
                 (U.CROSS_PATH_WITHIN_JUNCTION, U.VIRTUAL_CROSS_PATH_S_T)
-                if j.type == "virtual"
+                if j.type is JunctionType.VIRTUAL
                 else (U.CROSS_PATH_WITHIN_JUNCTION,)
             )
             for uid in uids:
                 yield cross_path_ends.finding(
-                    f"{j.describe()} cross path {cp.id}: crossing road {crossing.id} reaches ({x:.3f}, {y:.3f}), "
-                    f"{off[1]:.3g} m outside {found[1]}; a cross path lies within its junction's area",
+                    f"{describe_junction(j)} cross path {cp.id}: crossing road {crossing.id} reaches ({x:.3f}, "
+                    f"{y:.3f}), {off[1]:.3g} m outside {found[1]}; a cross path lies within its junction's area",
                     uid=uid,
                     road=crossing.id,
                     x=x,

@@ -18,18 +18,17 @@ from typing import TYPE_CHECKING
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, junction_parts, link_at, other_end
+from xodrcheck.rules.context import Context, describe_junction, link_at, other_end, written_id
 from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
-from xodrcheck.xmlvalues import local, number
 
 if TYPE_CHECKING:
-    from xodrcheck.junction_elements import JunctionParts, Priority
+    from xodrcheck.model import Priority
 
 
 @dataclass(frozen=True, slots=True)
-class SignalXml:
-    """A ``<signal>`` or ``<signalReference>`` of a road."""
+class RoadSignal:
+    """A ``<signal>`` or ``<signalReference>`` of a road, as J015 and J016 weigh it."""
 
     road: str
     kind: str
@@ -39,31 +38,14 @@ class SignalXml:
     line: int
 
 
-def signals_by_road(ctx: Context) -> dict[str, tuple[SignalXml, ...]]:
-    """Road id -> its signals and signal references, read from the XML once per file."""
-    return ctx.xml_view("junction_roles.signals", lambda: _signals_by_road(ctx))
-
-
-def _signals_by_road(ctx: Context) -> dict[str, tuple[SignalXml, ...]]:
-    out: dict[str, list[SignalXml]] = {}
-    tree = ctx.tree
-    if tree is not None:
-        for road in tree.getroot().iterchildren("{*}road"):
-            road_id = road.get("id")
-            if road_id is None:
-                continue
-            for group in road.iterchildren("{*}signals"):
-                for el in group.iterchildren("{*}signal", "{*}signalReference"):
-                    out.setdefault(road_id, []).append(
-                        SignalXml(
-                            road_id,
-                            local(el),
-                            el.get("id"),
-                            number(el.get("s")),
-                            el.get("dynamic") == "yes",
-                            el.sourceline or 0,
-                        )
-                    )
+def signals_by_road(ctx: Context) -> dict[str, tuple[RoadSignal, ...]]:
+    """Road id -> its signals and signal references, in file order."""
+    out: dict[str, list[RoadSignal]] = {}
+    for road in ctx.document.roads:
+        found = [RoadSignal(road.id, "signal", s.id, s.s, s.dynamic is True, s.line) for s in road.signals]
+        found += [RoadSignal(road.id, "signalReference", r.id, r.s, False, r.line) for r in road.signal_references]
+        if found:
+            out.setdefault(road.id, []).extend(sorted(found, key=lambda sig: sig.line))
     return {k: tuple(v) for k, v in out.items()}
 
 
@@ -82,20 +64,6 @@ def legs(ctx: Context, junction: Junction) -> dict[str, ContactPoint | None]:
     return out
 
 
-def _describe(parts: JunctionParts | None, junction: Junction) -> str:
-    if parts is not None:
-        return parts.describe()
-    return f"junction {junction.id}" if junction.type is JunctionType.DEFAULT else f"{junction.type.value} junction"
-
-
-def parts_by_id(ctx: Context) -> dict[str, JunctionParts]:
-    out: dict[str, JunctionParts] = {}
-    for j in junction_parts(ctx):
-        if j.id is not None:
-            out.setdefault(j.id, j)
-    return out
-
-
 # ---------------------------------------------------------------------------------------------------- priorities
 @rule(
     "J014",
@@ -103,7 +71,6 @@ def parts_by_id(ctx: Context) -> dict[str, JunctionParts]:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.PRIORITY_HIGH_AND_LOW, U.CROSSING_ONE_HIGH),
-    xml=True,
 )
 def junction_priority_pair(ctx: Context):
     """A junction ``<priority>`` is not a pair of two roads, or a crossing gives priority to more than one road.
@@ -122,19 +89,19 @@ def junction_priority_pair(ctx: Context):
 
         <junction id="555" type="crossing"><priority high="2" low="1"/><priority high="1" low="2"/>...
     """
-    for j in junction_parts(ctx):
+    for j in ctx.document.junctions:
         for p in j.priorities:
             missing = [name for name, value in (("high", p.high), ("low", p.low)) if not (value or "").strip()]
             if missing or p.high == p.low:
                 why = f"has no {' and no '.join(missing)}" if missing else f"names road {p.high} as both high and low"
                 yield junction_priority_pair.finding(
-                    f"{j.describe()}: <priority> {why}; a priority is a pair: the road with priority (high) and the "
-                    "road that yields to it (low)",
+                    f"{describe_junction(j)}: <priority> {why}; a priority is a pair: the road with priority (high) "
+                    "and the road that yields to it (low)",
                     uid=U.PRIORITY_HIGH_AND_LOW,
                     road=p.high or p.low,
                     line=p.line or j.line or None,
                 )
-        if j.type != "crossing":
+        if j.type is not JunctionType.CROSSING:
             continue
         crossing_roads = {r.road for r in j.road_sections if r.road is not None}
         high: dict[str, Priority] = {}
@@ -145,8 +112,8 @@ def junction_priority_pair(ctx: Context):
             names = ", ".join(sorted(high))
             last = list(high.values())[-1]
             yield junction_priority_pair.finding(
-                f"{j.describe()}: roads {names} each have high priority; on a crossing only one of the crossing roads "
-                "has priority (the railway, say), the others yield",
+                f"{describe_junction(j)}: roads {names} each have high priority; on a crossing only one of the "
+                "crossing roads has priority (the railway, say), the others yield",
                 uid=U.CROSSING_ONE_HIGH,
                 road=last.high,
                 line=last.line or j.line or None,
@@ -167,7 +134,6 @@ def _near_junction(ctx: Context, road: Road, end: ContactPoint | None, s: float 
     Category.JUNCTION,
     Severity.WARNING,
     uids=(U.PRIORITY_NO_SIGNALS,),
-    xml=True,
 )
 def junction_priority_with_signals(ctx: Context):
     """A junction states priorities while signals regulate it.
@@ -187,18 +153,16 @@ def junction_priority_with_signals(ctx: Context):
         <road id="12" junction="100"> ... <signals><signal id="7" s="1" type="206" .../></signals></road>
         <junction id="100"><connection .../><priority high="1" low="3"/></junction>
     """
-    signals = signals_by_road(ctx)
-    for j in junction_parts(ctx):
-        junction = ctx.junction(j.id)
-        if not j.priorities or junction is None:
-            continue
+    prioritised = [j for j in ctx.document.junctions if j.priorities]
+    signals = signals_by_road(ctx) if prioritised else {}
+    for j in prioritised:
         found: list[str] = []
         if j.controllers:
-            found.append(f"{len(j.controllers)} controller(s) (line {j.controllers[0][1]})")
-        for road in ctx.roads_in_junction.get(junction.id, ()):
+            found.append(f"{len(j.controllers)} controller(s) (line {j.controllers[0].line})")
+        for road in ctx.roads_in_junction.get(j.id, ()):
             for sig in signals.get(road.id, ()):
                 found.append(f"{sig.kind} {sig.id} on its road {road.id} (line {sig.line})")
-        for road_id, end in legs(ctx, junction).items():
+        for road_id, end in legs(ctx, j).items():
             leg = ctx.road(road_id)
             for sig in signals.get(road_id, ()):
                 if sig.kind == "signal" and leg is not None and _near_junction(ctx, leg, end, sig.s):
@@ -206,16 +170,14 @@ def junction_priority_with_signals(ctx: Context):
         if found:
             shown = "; ".join(found[:3]) + (f"; {len(found) - 3} more" if len(found) > 3 else "")
             yield junction_priority_with_signals.finding(
-                f"{j.describe()} has {len(j.priorities)} <priority> element(s) and is regulated by signals: "
+                f"{describe_junction(j)} has {len(j.priorities)} <priority> element(s) and is regulated by signals: "
                 f"{shown}; state priorities only where no signal gives them",
                 line=j.priorities[0].line or j.line or None,
             )
 
 
 # ---------------------------------------------------------------------------------------------------- virtual junctions
-@rule(
-    "J016", "virtual-junction-controlled", Category.JUNCTION, Severity.ERROR, uids=(U.VIRTUAL_NO_CONTROLLERS,), xml=True
-)
+@rule("J016", "virtual-junction-controlled", Category.JUNCTION, Severity.ERROR, uids=(U.VIRTUAL_NO_CONTROLLERS,))
 def virtual_junction_controlled(ctx: Context):
     """A virtual junction has controllers or traffic lights.
 
@@ -233,18 +195,17 @@ def virtual_junction_controlled(ctx: Context):
         <junction id="555" type="virtual" mainRoad="1" sStart="50" sEnd="70" orientation="+"><connection .../>
           <controller id="1"/></junction>
     """
-    signals = signals_by_road(ctx)
-    for j in junction_parts(ctx):
-        if j.type != "virtual":
-            continue
-        for controller_id, line in j.controllers:
+    virtual = [j for j in ctx.document.junctions if j.type is JunctionType.VIRTUAL]
+    signals = signals_by_road(ctx) if virtual else {}
+    for j in virtual:
+        for controller in j.controllers:
             yield virtual_junction_controlled.finding(
-                f"{j.describe()} has <controller> {controller_id}: virtual junctions have no controllers and no "
-                "traffic lights; use a common junction for a signalised branch",
-                line=line or j.line or None,
+                f"{describe_junction(j)} has <controller> {controller.id}: virtual junctions have no controllers and "
+                "no traffic lights; use a common junction for a signalised branch",
+                line=controller.line or j.line or None,
             )
         lo, hi = j.s_start, j.s_end
-        own = [road.id for road in ctx.roads_in_junction.get(j.id or "", ())]
+        own = [road.id for road in ctx.roads_in_junction.get(j.id, ())]
         for road_id in [*own, j.main_road]:
             for sig in signals.get(road_id or "", ()):
                 if not sig.dynamic:
@@ -253,15 +214,15 @@ def virtual_junction_controlled(ctx: Context):
                 if on_main and (sig.s is None or lo is None or hi is None or not lo <= sig.s <= hi):
                     continue  # a traffic light on the main road outside the junction's range
                 yield virtual_junction_controlled.finding(
-                    f"{j.describe()}: dynamic signal {sig.id} on road {road_id} at s={metres(sig.s)} is a traffic "
-                    "light in the virtual junction; virtual junctions have no traffic lights",
+                    f"{describe_junction(j)}: dynamic signal {sig.id} on road {road_id} at s={metres(sig.s)} is a "
+                    "traffic light in the virtual junction; virtual junctions have no traffic lights",
                     road=road_id,
                     s=sig.s,
                     line=sig.line or None,
                 )
 
 
-@rule("J017", "virtual-junction-range", Category.JUNCTION, Severity.ERROR, uids=(U.VIRTUAL_ONE_START_END,), xml=True)
+@rule("J017", "virtual-junction-range", Category.JUNCTION, Severity.ERROR, uids=(U.VIRTUAL_ONE_START_END,))
 def virtual_junction_range(ctx: Context):
     """A virtual junction does not name one range ``sStart``..``sEnd`` on its main road.
 
@@ -277,14 +238,14 @@ def virtual_junction_range(ctx: Context):
 
         <junction id="555" type="virtual" mainRoad="1" sStart="50" sEnd="170" orientation="+">
     """
-    for j in junction_parts(ctx):
-        if j.type != "virtual":
+    for j in ctx.document.junctions:
+        if j.type is not JunctionType.VIRTUAL:
             continue
         main = ctx.road(j.main_road)
         start, end = j.s_start, j.s_end
         problems = [
             f"{name} is {'missing' if raw is None else f'{raw!r}, not a number'}"
-            for name, raw, value in (("sStart", j.s_start_raw, start), ("sEnd", j.s_end_raw, end))
+            for name, raw, value in (("sStart", j.xml.text("sStart"), start), ("sEnd", j.xml.text("sEnd"), end))
             if value is None
         ]
         if start is not None and end is not None and start > end:
@@ -298,8 +259,8 @@ def virtual_junction_range(ctx: Context):
                     )
         if problems:
             yield virtual_junction_range.finding(
-                f"{j.describe()}: {'; '.join(problems)}; a virtual junction covers one range sStart..sEnd of its "
-                "main road",
+                f"{describe_junction(j)}: {'; '.join(problems)}; a virtual junction covers one range sStart..sEnd of "
+                "its main road",
                 road=j.main_road,
                 line=j.line or None,
             )
@@ -319,7 +280,6 @@ def _main_road_ends(road: Road, main: str) -> Iterator[tuple[ContactPoint, float
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.VIRTUAL_MAIN_ROAD_ONLY, U.VIRTUAL_START_END),
-    xml=True,
 )
 def virtual_junction_branches(ctx: Context):
     """A connecting road of a virtual junction does not branch off the main road at ``sStart`` or ``sEnd``.
@@ -341,12 +301,13 @@ def virtual_junction_branches(ctx: Context):
         <road id="2" junction="555"><link><predecessor elementType="road" elementId="1" elementS="60" elementDir="+"/>
     """
     tol = ctx.tolerances.length_abs
-    for j in junction_parts(ctx):
-        if j.type != "virtual":
+    for j in ctx.document.junctions:
+        if j.type is not JunctionType.VIRTUAL:
             continue
         if j.main_road is None:
             yield virtual_junction_branches.finding(
-                f"{j.describe()} names no main road: a virtual junction joins branches to the main road it names",
+                f"{describe_junction(j)} names no main road: a virtual junction joins branches to the main road "
+                "it names",
                 uid=U.VIRTUAL_MAIN_ROAD_ONLY,
                 line=j.line or None,
             )
@@ -362,8 +323,8 @@ def virtual_junction_branches(ctx: Context):
             ends = list(_main_road_ends(road, j.main_road))
             if not ends:
                 yield virtual_junction_branches.finding(
-                    f"{j.describe()} connection {c.id}: connecting road {road.id} does not join main road "
-                    f"{j.main_road} (predecessor: {_link_text(road.predecessor)}, successor: "
+                    f"{describe_junction(j)} connection {written_id(c)}: connecting road {road.id} does not join main "
+                    f"road {j.main_road} (predecessor: {_link_text(road.predecessor)}, successor: "
                     f"{_link_text(road.successor)}); a virtual junction is for branches off its main road only",
                     uid=U.VIRTUAL_MAIN_ROAD_ONLY,
                     road=road.id,
@@ -375,9 +336,10 @@ def virtual_junction_branches(ctx: Context):
                 if element_s is None or not marks or any(abs(element_s - m) <= tol for m in marks):
                     continue
                 yield virtual_junction_branches.finding(
-                    f"{j.describe()}: connecting road {road.id} {'starts' if end is ContactPoint.START else 'ends'} at "
-                    f"s={metres(element_s)} of main road {j.main_road}, but the junction spans sStart={j.s_start_raw} "
-                    f"to sEnd={j.s_end_raw}: connecting roads start or end at sStart or sEnd",
+                    f"{describe_junction(j)}: connecting road {road.id} "
+                    f"{'starts' if end is ContactPoint.START else 'ends'} at s={metres(element_s)} of main road "
+                    f"{j.main_road}, but the junction spans sStart={metres(j.s_start)} to sEnd={metres(j.s_end)}: "
+                    "connecting roads start or end at sStart or sEnd",
                     uid=U.VIRTUAL_START_END,
                     road=road.id,
                     s=0.0 if end is ContactPoint.START else road.length,
@@ -440,7 +402,6 @@ def _both_ends(ctx: Context, junction: Junction) -> set[str]:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.COMMON_WHEN_TO_USE, U.COMMON_NOT_ONLY_TWO),
-    xml=True,
 )
 def junction_unneeded(ctx: Context):
     """A junction joins roads that could be linked directly.
@@ -460,11 +421,10 @@ def junction_unneeded(ctx: Context):
         <junction id="100"><connection id="0" incomingRoad="1" connectingRoad="10" contactPoint="start"/>
           <connection id="1" incomingRoad="2" connectingRoad="11" contactPoint="start"/></junction>
     """
-    parts = parts_by_id(ctx)
     for junction in ctx.document.junctions:
         if junction.type not in (JunctionType.DEFAULT, JunctionType.DIRECT) or not junction.connections:
             continue
-        name = _describe(parts.get(junction.id), junction)
+        name = describe_junction(junction)
         paths = reachable(ctx, junction)
         if paths and all(len(targets) <= 1 for targets in paths.values()):
             pairs = sorted({tuple(sorted((a[0], b[0]))) for a, targets in paths.items() for b in targets})

@@ -22,19 +22,19 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xodrcheck.geometry.lanes import RoadGeometry
-from xodrcheck.model import Road
+from xodrcheck.model import ContactPoint, Road
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.sampled import left_of, section_lines, usable
 
 if TYPE_CHECKING:
-    from xodrcheck.junction_elements import (
+    from xodrcheck.model import (
         Boundary,
+        BoundarySegment,
         ElevationGrid,
         JointSegment,
-        JunctionParts,
+        Junction,
         LaneSegment,
         RoadPlace,
-        Segment,
     )
 
 
@@ -43,7 +43,7 @@ class Piece:
     """One boundary segment in plan view: ``xy`` (n x 2) from its start to its end; ``free``: a joint across all
     lanes, which may run either way."""
 
-    segment: Segment
+    segment: BoundarySegment
     xy: np.ndarray
     free: bool = False
 
@@ -61,10 +61,8 @@ def road_s(road: Road, place: RoadPlace | None) -> float | None:
     outside the road)."""
     if place is None:
         return None
-    if place == "start":
-        return 0.0
-    if place == "end":
-        return float(road.length)
+    if isinstance(place, ContactPoint):
+        return 0.0 if place is ContactPoint.START else float(road.length)
     value = float(place)
     return value if -1e-9 <= value <= road.length + 1e-6 else None
 
@@ -148,7 +146,7 @@ def _joint_piece(ctx: Context, seg: JointSegment) -> tuple[np.ndarray, bool] | N
 def boundary_pieces(ctx: Context, boundary: Boundary) -> list[Piece] | None:
     """The boundary's segments in plan view, in file order; ``None`` when a segment cannot be placed (an unknown
     road or lane, a place off its road: the segment rules report those)."""
-    from xodrcheck.junction_elements import LaneSegment
+    from xodrcheck.model import LaneSegment
 
     pieces: list[Piece] = []
     for seg in boundary.segments:
@@ -223,7 +221,7 @@ class ReferenceLine:
         return self.x + s * math.cos(self.hdg), self.y + s * math.sin(self.hdg)
 
 
-def reference_line(j: JunctionParts) -> ReferenceLine | None:
+def reference_line(j: Junction) -> ReferenceLine | None:
     """The junction's reference line when it is one ``<geometry>`` of one ``<line>`` with every value set (the shape
     rule, J013, reports the others)."""
     view = j.plan_view

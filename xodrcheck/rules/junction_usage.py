@@ -5,7 +5,7 @@ each takes its own set of attributes and children: ``connectingRoad`` for the co
 connections, ``linkedRoad`` for the direct junction's (12.6), ``overlapZone`` on a direct junction's lane links only,
 ``mainRoad``/``orientation``/``sStart``/``sEnd`` on a virtual junction only (12.7), ``<roadSection>`` elements and no
 connections on a crossing (12.8), a boundary on a common junction only (12.10). The parts come from
-:mod:`xodrcheck.junction_elements`. Some of these the 1.8/1.9 schemas catch as well (``S001``); the rules here name
+the document (:mod:`xodrcheck.model`). Some of these the 1.8/1.9 schemas catch as well (``S001``); the rules here name
 the rule of the standard and say what to change, for every version the rule applies to.
 
 Where Annex F states one requirement under several UIDs (``connectingRoad`` in a direct junction is
@@ -19,12 +19,13 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Finding, Severity
+from xodrcheck.model import ConnectionType, JunctionType
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, junction_parts
+from xodrcheck.rules.context import Context, describe_junction, written_id
 from xodrcheck.rules.registry import Rule, rule
 
 if TYPE_CHECKING:
-    from xodrcheck.junction_elements import JunctionParts
+    from xodrcheck.model import Connection, ConnectionEnd, Junction
 
 _VIRTUAL_ATTRIBUTES = ("mainRoad", "orientation", "sStart", "sEnd")
 
@@ -47,7 +48,6 @@ def _each(check: Rule, uids: tuple[str, ...], message: str, **where) -> Iterator
         U.DIRECT_CONNECTING_ROAD,
         U.CONNECTION_NO_CONNECTING_ROAD_DIRECT,
     ),
-    xml=True,
 )
 def connection_road_attribute(ctx: Context):
     """A connection names its road with the attribute of another junction type.
@@ -70,11 +70,11 @@ def connection_road_attribute(ctx: Context):
         <junction id="111" type="direct">
           <connection id="0" incomingRoad="1" connectingRoad="2" contactPoint="start"/></junction>
     """
-    for j in junction_parts(ctx):
+    for j in ctx.document.junctions:
         for c in j.connections:
-            at = f"{j.describe()} connection {c.id}"
+            at = f"{describe_junction(j)} connection {written_id(c)}"
             where = {"road": c.linked_road or c.connecting_road, "line": c.line or j.line or None}
-            if j.type == "direct" and c.connecting_road is not None:
+            if j.type is JunctionType.DIRECT and c.connecting_road is not None:
                 yield from _each(
                     connection_road_attribute,
                     (U.DIRECT_NO_CONN_ROAD, U.DIRECT_CONNECTING_ROAD, U.CONNECTION_NO_CONNECTING_ROAD_DIRECT),
@@ -82,17 +82,19 @@ def connection_road_attribute(ctx: Context):
                     "without connecting roads; name the road with linkedRoad",
                     **where,
                 )
-            if j.type != "direct" and c.linked_road is not None:
+            if j.type is not JunctionType.DIRECT and c.linked_road is not None:
                 uids: tuple[str, ...] = (U.DIRECT_LINKED_ROAD,)
-                if j.type in ("default", "virtual"):
+                if j.type in (JunctionType.DEFAULT, JunctionType.VIRTUAL):
                     uids = (U.DEFAULT_NO_LINKED_ROAD, U.DIRECT_LINKED_ROAD)
                 fix = (
-                    "connectingRoad" if j.type in ("default", "virtual") else "nothing (a crossing has no connections)"
+                    "connectingRoad"
+                    if j.type in (JunctionType.DEFAULT, JunctionType.VIRTUAL)
+                    else "nothing (a crossing has no connections)"
                 )
                 yield from _each(
                     connection_road_attribute,
                     uids,
-                    f'{at} has linkedRoad="{c.linked_road}": linkedRoad is for direct junctions only; a {j.type} '
+                    f'{at} has linkedRoad="{c.linked_road}": linkedRoad is for direct junctions only; a {j.type.value} '
                     f"junction's connection names its road with {fix}",
                     **where,
                 )
@@ -104,7 +106,6 @@ def connection_road_attribute(ctx: Context):
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.COMMON_DIRECT_ATTRIBUTES, U.COMMON_VIRTUAL_ATTRIBUTES, U.VIRTUAL_CONNECTIONS),
-    xml=True,
 )
 def junction_type_attribute(ctx: Context):
     """A junction or its connection uses an attribute that belongs to another junction type.
@@ -122,61 +123,77 @@ def junction_type_attribute(ctx: Context):
 
         <junction id="100" mainRoad="1" sStart="50" sEnd="70">...</junction>
     """
-    for j in junction_parts(ctx):
-        if j.type != "direct":
+    for j in ctx.document.junctions:
+        if j.type is not JunctionType.DIRECT:
             for c in j.connections:
-                for ll in c.lane_links:
-                    if ll.has_overlap_zone:
+                for ll in c.all_lane_links:
+                    if ll.xml.given("overlapZone"):
                         yield junction_type_attribute.finding(
-                            f"{j.describe()} connection {c.id}: laneLink {ll.from_lane} -> {ll.to_lane} has "
-                            "overlapZone, which only a direct junction's lane links have (the length over which two "
-                            "lanes that split or merge share their space); remove it",
+                            f"{describe_junction(j)} connection {written_id(c)}: laneLink {ll.from_lane} -> "
+                            f"{ll.to_lane} has overlapZone, which only a direct junction's lane links have (the length "
+                            "over which two lanes that split or merge share their space); remove it",
                             uid=U.COMMON_DIRECT_ATTRIBUTES,
                             road=c.connecting_road or c.linked_road,
                             line=ll.line or c.line or None,
                         )
-        if j.type != "virtual":
-            given = [
-                name
-                for name, value in zip(_VIRTUAL_ATTRIBUTES, (j.main_road, j.orientation, j.s_start_raw, j.s_end_raw))
-                if value is not None
-            ]
+        if j.type is not JunctionType.VIRTUAL:
+            given = [name for name in _VIRTUAL_ATTRIBUTES if j.xml.given(name)]
             if given:
                 yield junction_type_attribute.finding(
-                    f"{j.describe()} has {', '.join(given)}: these say where a virtual junction lies on its main "
-                    f'road and belong to junctions of type="virtual" only; remove them or make the junction virtual',
+                    f"{describe_junction(j)} has {', '.join(given)}: these say where a virtual junction lies on its "
+                    'main road and belong to junctions of type="virtual" only; remove them or make the junction '
+                    "virtual",
                     uid=U.COMMON_VIRTUAL_ATTRIBUTES,
                     road=j.main_road,
                     line=j.line or None,
                 )
             for c in j.connections:
-                if c.type == "virtual":
+                if c.type is ConnectionType.VIRTUAL:
                     yield junction_type_attribute.finding(
-                        f'{j.describe()} connection {c.id} is a virtual connection (type="virtual"), which only a '
-                        "virtual junction may define; model the path with a connecting road",
+                        f"{describe_junction(j)} connection {written_id(c)} is a virtual connection "
+                        '(type="virtual"), which only a virtual junction may define; model the path with a '
+                        "connecting road",
                         uid=U.VIRTUAL_CONNECTIONS,
                         line=c.line or j.line or None,
                     )
 
 
-def _type_elements(j: JunctionParts) -> Iterator[tuple[str, str, int]]:
+def first_lines(j: Junction) -> dict[str, int]:
+    """Tag -> the line of the junction's first child element of that tag, for the tags J012 names."""
+    first = {u.tag: u.line for u in reversed(j.xml.unknown)}
+    for tag, records in (
+        ("connection", j.connections),
+        ("crossPath", j.cross_paths),
+        ("boundary", j.boundaries),
+        ("elevationGrid", j.grids),
+    ):
+        if records:
+            first[tag] = records[0].line
+    return first
+
+
+def _ends(c: Connection) -> list[tuple[str, ConnectionEnd]]:
+    """A connection's ``<predecessor>`` and ``<successor>`` with their tags, in file order."""
+    ends = [(tag, end) for tag, end in (("predecessor", c.predecessor), ("successor", c.successor)) if end is not None]
+    return sorted(ends, key=lambda item: item[1].line)
+
+
+def _type_elements(j: Junction) -> Iterator[tuple[str, str, int]]:
     """(UID, message, line) for each child element the junction's type does not allow."""
-    first: dict[str, int] = {}
-    for name, line in j.children:
-        first.setdefault(name, line)
-    if j.boundaries and j.type != "default":
+    first = first_lines(j)
+    who = describe_junction(j)
+    if j.boundaries and j.type is not JunctionType.DEFAULT:
         yield (
             U.BOUNDARY_ONLY_COMMON,
-            f"{j.describe()} has a <boundary>: junction boundaries are only valid for common junctions (12.10); "
-            "remove it",
+            f"{who} has a <boundary>: junction boundaries are only valid for common junctions (12.10); remove it",
             j.boundaries[0].line,
         )
-    if j.type == "crossing":
+    if j.type is JunctionType.CROSSING:
         extra = [name for name in ("connection", "crossPath", "boundary", "elevationGrid") if name in first]
         if extra:
             yield (
                 U.CROSSING_ONLY_ROAD_SECTIONS,
-                f"{j.describe()} has {', '.join(f'<{n}>' for n in extra)}: a crossing only names the crossing roads' "
+                f"{who} has {', '.join(f'<{n}>' for n in extra)}: a crossing only names the crossing roads' "
                 "ranges with <roadSection> elements (traffic does not change roads there, 12.8); use a common or "
                 "virtual junction for connections",
                 first[extra[0]],
@@ -184,13 +201,13 @@ def _type_elements(j: JunctionParts) -> Iterator[tuple[str, str, int]]:
         elif not j.road_sections:
             yield (
                 U.CROSSING_ONLY_ROAD_SECTIONS,
-                f"{j.describe()} has no <roadSection>: a crossing names the range of each crossing road with one",
+                f"{who} has no <roadSection>: a crossing names the range of each crossing road with one",
                 j.line,
             )
     if len(j.grids) > 1:
         yield (
             U.GRID_ONLY_ONE,
-            f"{j.describe()} has {len(j.grids)} <elevationGrid> elements (lines "
+            f"{who} has {len(j.grids)} <elevationGrid> elements (lines "
             f"{', '.join(str(g.line) for g in j.grids)}); a junction has only one elevation grid",
             j.grids[1].line,
         )
@@ -198,17 +215,19 @@ def _type_elements(j: JunctionParts) -> Iterator[tuple[str, str, int]]:
         if name in first:
             yield (
                 U.COMMON_NO_PRED_SUCC,
-                f"{j.describe()} has a <{name}>: unlike roads, junctions have no predecessor or successor; the "
+                f"{who} has a <{name}>: unlike roads, junctions have no predecessor or successor; the "
                 "roads link to the junction",
                 first[name],
             )
     for c in j.connections:
-        for tag, element_type, line in c.ends:
+        for tag, end in _ends(c):
+            element_type = end.element_type.value if end.element_type is not None else end.xml.text("elementType")
+            line = end.line
             if element_type is not None and element_type != "road":
                 yield (
                     U.COMMON_NO_PRED_SUCC,
-                    f"{j.describe()} connection {c.id}: its <{tag}> names a {element_type}; a virtual connection "
-                    "joins roads, and junctions have no predecessor or successor",
+                    f"{who} connection {written_id(c)}: its <{tag}> names a {element_type}; a virtual connection joins "
+                    "roads, and junctions have no predecessor or successor",
                     line,
                 )
 
@@ -219,7 +238,6 @@ def _type_elements(j: JunctionParts) -> Iterator[tuple[str, str, int]]:
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.BOUNDARY_ONLY_COMMON, U.CROSSING_ONLY_ROAD_SECTIONS, U.GRID_ONLY_ONE, U.COMMON_NO_PRED_SUCC),
-    xml=True,
 )
 def junction_type_elements(ctx: Context):
     """A junction holds an element its type does not allow, or one too many.
@@ -241,7 +259,7 @@ def junction_type_elements(ctx: Context):
         <junction id="555" type="crossing"><connection id="0" incomingRoad="1" connectingRoad="3" .../>
           <roadSection id="0" roadId="1" sStart="50" sEnd="60"/></junction>
     """
-    for j in junction_parts(ctx):
+    for j in ctx.document.junctions:
         for uid, message, line in _type_elements(j):
             yield junction_type_elements.finding(message, uid=uid, line=line or j.line or None)
 
@@ -252,7 +270,6 @@ def junction_type_elements(ctx: Context):
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.REFLINE_ONE_LINE, U.GRID_PERPENDICULAR),
-    xml=True,
 )
 def junction_reference_line_shape(ctx: Context):
     """A junction reference line is not one straight ``<geometry>``, or an elevation grid has no reference line.
@@ -272,7 +289,7 @@ def junction_reference_line_shape(ctx: Context):
 
         <planView><geometry s="0" x="-20" y="-20" hdg="0" length="40"><arc curvature="0.01"/></geometry></planView>
     """
-    for j in junction_parts(ctx):
+    for j in ctx.document.junctions:
         for view in j.plan_views:
             shapes = [(g, g.shapes) for g in view.geometries]
             if len(shapes) != 1 or shapes[0][1] != ("line",):
@@ -282,24 +299,23 @@ def junction_reference_line_shape(ctx: Context):
                     else f"a <geometry> of {', '.join(f'<{s}>' for s in shapes[0][1]) or 'no shape'}"
                 )
                 yield junction_reference_line_shape.finding(
-                    f"{j.describe()}: its reference line (<planView>) has {what}; a junction reference line is one "
-                    "<geometry> with one <line>",
+                    f"{describe_junction(j)}: its reference line (<planView>) has {what}; a junction reference line is "
+                    "one <geometry> with one <line>",
                     uid=U.REFLINE_ONE_LINE,
                     line=(shapes[1][0].line if len(shapes) > 1 else shapes[0][0].line if shapes else view.line) or None,
                 )
         for grid in j.grids:
             if not j.plan_views or not j.plan_views[0].geometries:
                 yield junction_reference_line_shape.finding(
-                    f"{j.describe()} has an <elevationGrid> but no junction reference line (<planView> with a "
-                    "<geometry>): the grid's rows run perpendicular to that line, so without it the grid has no "
-                    "place",
+                    f"{describe_junction(j)} has an <elevationGrid> but no junction reference line (<planView> with a "
+                    "<geometry>): the grid's rows run perpendicular to that line, so without it the grid has no place",
                     uid=U.GRID_PERPENDICULAR,
                     line=grid.line or j.line or None,
                 )
             elif grid.spacing is None or not grid.spacing > 0:
                 yield junction_reference_line_shape.finding(
-                    f"{j.describe()}: its <elevationGrid> has gridSpacing {grid.spacing}: the rows perpendicular to "
-                    "the reference line need a positive spacing",
+                    f"{describe_junction(j)}: its <elevationGrid> has gridSpacing {grid.spacing}: the rows "
+                    "perpendicular to the reference line need a positive spacing",
                     uid=U.GRID_PERPENDICULAR,
                     line=grid.line or j.line or None,
                 )

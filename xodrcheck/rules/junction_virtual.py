@@ -11,27 +11,23 @@ from __future__ import annotations
 
 import math
 from collections.abc import Iterator
-from typing import TYPE_CHECKING
 
 import numpy as np
 
 from xodrcheck.findings import Basis, Category, Finding, Severity
 from xodrcheck.geometry.lanes import RoadGeometry
-from xodrcheck.model import ContactPoint, ElementType, Road
+from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, junction_parts, link_at
+from xodrcheck.rules.context import Context, describe_junction, link_at
 from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.rules.sampled import angle_between, end_s, left_of, usable, warning_note
 from xodrcheck.support.quantities import metres
 
-if TYPE_CHECKING:
-    from xodrcheck.junction_elements import JunctionParts
 
-
-def _branches(ctx: Context) -> Iterator[tuple[JunctionParts, Road, Road, ContactPoint, float, str | None, int]]:
+def _branches(ctx: Context) -> Iterator[tuple[Junction, Road, Road, ContactPoint, float, str | None, int]]:
     """(junction, main road, connecting road, its end at the main road, elementS, elementDir, link line)."""
-    for j in junction_parts(ctx):
-        if j.type != "virtual" or j.main_road is None:
+    for j in ctx.document.junctions:
+        if j.type is not JunctionType.VIRTUAL or j.main_road is None:
             continue
         main = ctx.road(j.main_road)
         if main is None or usable(ctx, main) is None:
@@ -90,7 +86,6 @@ def _lane_gap(
     Category.JUNCTION,
     Severity.ERROR,
     uids=(U.VIRTUAL_HEADING, U.VIRTUAL_SMOOTH),
-    xml=True,
     basis=Basis.PLAUSIBILITY,
 )
 def virtual_junction_joint(ctx: Context) -> Iterator[Finding]:
@@ -127,8 +122,8 @@ def virtual_junction_joint(ctx: Context) -> Iterator[Finding]:
         severity = tol.grade(turn, "heading")
         if severity is not None:
             yield virtual_junction_joint.finding(
-                f"{j.describe()}: connecting road {road.id} {_verb(end)} main road {main.id} at s={metres(s)} heading "
-                f"{math.degrees(turn):.2f} deg off the main road's heading there ({math.degrees(main_hdg):.2f} "
+                f"{describe_junction(j)}: connecting road {road.id} {_verb(end)} main road {main.id} at s={metres(s)} "
+                f"heading {math.degrees(turn):.2f} deg off the main road's heading there ({math.degrees(main_hdg):.2f} "
                 f"deg{', reversed' if direction == '-' else ''}); make the headings equal where they "
                 f"meet{warning_note(severity, tol, 'heading')}",
                 uid=U.VIRTUAL_HEADING if severity is Severity.ERROR else NO_UID,
@@ -143,7 +138,7 @@ def _verb(end: ContactPoint) -> str:
 
 
 def _lanes(
-    ctx: Context, j: JunctionParts, main: Road, road: Road, end: ContactPoint, s: float, at: float, line: int
+    ctx: Context, j: Junction, main: Road, road: Road, end: ContactPoint, s: float, at: float, line: int
 ) -> Iterator[Finding]:
     tol = ctx.tolerances
     geometry, main_geometry = ctx.geometry(road.id), ctx.geometry(main.id)
@@ -165,9 +160,9 @@ def _lanes(
                 if height is not None:
                     what += f"{' and ' if what else ''}their surfaces step by {step:.4g} m"
                 yield virtual_junction_joint.finding(
-                    f"{j.describe()}: lane {lane.id} of connecting road {road.id} continues lane {other} of main road "
-                    f"{main.id} at s={metres(s)}, but {what}; make the linked lanes meet where the road {_verb(end)} "
-                    f"the main road{warning_note(severity, tol)}",
+                    f"{describe_junction(j)}: lane {lane.id} of connecting road {road.id} continues lane {other} of "
+                    f"main road {main.id} at s={metres(s)}, but {what}; make the linked lanes meet where the road "
+                    f"{_verb(end)} the main road{warning_note(severity, tol)}",
                     uid=U.VIRTUAL_SMOOTH if severity is Severity.ERROR else NO_UID,
                     severity=severity,
                     road=road.id,

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from xodrcheck.geometry.junction_grid import edge_polynomial, grid_points, grid_surface
-from xodrcheck.junction_elements import ElevationGrid, GridRow
+from xodrcheck.model import ElevationGrid, GridRow
 
 
 def _grid(rows: list[tuple[list[float], float, list[float]]], s0: float = 0.0, spacing: float = 1.0) -> ElevationGrid:

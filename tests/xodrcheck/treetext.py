@@ -1,8 +1,5 @@
-"""Attribute values and tag names of OpenDRIVE XML, read leniently: what does not parse is ``None``.
-
-The rules that read the XML (``ctx.tree``) share these; the reader and S001 report bad values, so here they only
-turn into ``None``.
-"""
+"""Attribute values of an lxml tree read leniently, for the tests that compare the reader's document with the tree:
+what does not parse is ``None`` (the reader reports it; here it only has to agree with the document)."""
 
 from __future__ import annotations
 
@@ -38,8 +35,7 @@ def integer(text: str | None) -> int | None:
 
 
 def numbers(text: str | None) -> tuple[float, ...] | None:
-    """A whitespace-separated list of finite floats (``t_junction_grid_position_list``); ``()`` when absent,
-    ``None`` when an item does not parse."""
+    """A whitespace-separated list of finite floats; ``()`` when absent, ``None`` when an item does not parse."""
     if text is None:
         return ()
     out = []
