@@ -176,3 +176,18 @@ def test_no_import_circle_at_import_time() -> None:
 
 def test_no_new_circle_through_deferred_imports() -> None:
     assert _circles(_import_graph(deferred=True)) == KNOWN_DEFERRED_CIRCLES
+
+
+#: What may import lxml: the reader (the one reader of OpenDRIVE XML), schema validation and the writers of XML reports.
+LXML_USERS = ("xodrcheck.reader", "xodrcheck.schema", "xodrcheck.report.junit", "xodrcheck.report.xqar")
+
+
+def test_only_the_reader_schema_and_xml_writers_import_lxml() -> None:
+    users = set()
+    for name, path in _module_names(XODRCHECK).items():
+        for node in _imports(ast.parse(path.read_text(encoding="utf-8")), deferred=True):
+            names = [a.name for a in node.names] if isinstance(node, ast.Import) else [node.module or ""]
+            if any(n == "lxml" or n.startswith("lxml.") for n in names):
+                users.add(name)
+    assert {"xodrcheck.reader", "xodrcheck.schema.validate"} <= users  # the test sees the imports
+    assert sorted(u for u in users if not u.startswith(LXML_USERS)) == []

@@ -21,7 +21,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from xodrcheck.config import Config, ConfigError
-from xodrcheck.findings import Finding, OutOfTime, Severity
+from xodrcheck.findings import Category, Finding, OutOfTime, Severity
 from xodrcheck.rules import load_rules
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.internal import ENGINE_CODES as _ENGINE_CODES
@@ -29,7 +29,6 @@ from xodrcheck.rules.internal import RULE_CRASHED, RULE_OUT_OF_TIME
 from xodrcheck.rules.registry import Rule
 from xodrcheck.standard import annex_rules, is_uid, uid_matches
 from xodrcheck.support import memory
-from xodrcheck.support.filebytes import FileBytes
 from xodrcheck.verdict import judge
 
 __all__ = ["Report", "Selection", "check", "is_valid", "is_valid_reason", "run_rules", "validate_selectors"]
@@ -193,9 +192,9 @@ def _run_rule(rule: Rule, ctx: Context) -> list[Finding]:
 def run_rules(ctx: Context, selection: Selection) -> tuple[list[Finding], list[str]]:
     """Run every selected check rule on a context; return their findings and the codes run (in the registry's order).
 
-    The rules that read the XML (declared ``xml=True``) run first; then the context's tree and every view built from
-    it are dropped (:meth:`Context.release_tree`) and their memory handed back before the geometry rules build their
-    caches. Findings do not depend on the order: the report sorts them.
+    The schema rules, which validate the file's XML tree, run first; then the tree is dropped
+    (:meth:`Context.release_tree`) and its memory handed back before the geometry rules build their caches; every
+    other rule reads the document. Findings do not depend on the order: the report sorts them.
     """
     wanted = [
         rule
@@ -204,11 +203,11 @@ def run_rules(ctx: Context, selection: Selection) -> tuple[list[Finding], list[s
     ]
     findings: list[Finding] = []
     ran: set[str] = set()
-    for phase in (True, False):
+    for schema in (True, False):
         for rule in wanted:
-            if rule.xml is phase:
+            if (rule.category is Category.SCHEMA) is schema:
                 _run_timed(rule, ctx, findings, ran)
-        if phase:
+        if schema:
             ctx.release_tree()
             memory.release()
     return findings, [rule.code for rule in wanted if rule.code in ran]
@@ -258,9 +257,9 @@ def check(
     config = config or Config()
     selection = Selection(tuple(select) or config.select, tuple(ignore) or config.ignore)
     started = time.monotonic()
-    # one parse: the reader's tree is the XML rules' tree (when the file is well-formed), dropped after them
+    # one parse: the reader's tree is schema validation's (when the file is well-formed), dropped after it
     result, tree = read_keeping_tree(source, max_bytes=config.tolerances.max_file_bytes)
-    data = _data(source, result.path, shared=tree is not None, limit=config.tolerances.max_file_bytes)
+    data = None if tree is not None else _raw(_source_bytes(source, result.path), config.tolerances.max_file_bytes)
     judging = _Judging(None if result.document is None else result.document.version, selection, config)
     findings = judging.kept(result.findings)
     run = [
@@ -281,7 +280,7 @@ def check(
                 deadline=_deadline(started, config.tolerances.time_budget),
                 tree=tree,
             )
-            del tree  # the context holds it until the XML rules have run
+            del tree  # the context holds it until the schema rules have run
             version = _version_text(ctx.version)
             more, ran = run_rules(ctx, selection)
             findings.extend(judging.kept(more))
@@ -320,23 +319,9 @@ def _deadline(started: float, budget: float) -> float | None:
     return started + budget if budget > 0 else None
 
 
-def _data(source: str | Path | bytes, path: str | None, *, shared: bool, limit: int) -> bytes | FileBytes | None:
-    """The rules' :attr:`Context.data`: the bytes given, or the file's. With the reader's tree shared (the rules parse
-    nothing), a file not compressed is searched on disk instead of held (:class:`FileBytes`: 51 MB less on a 10 km
-    map)."""
-    if isinstance(source, bytes):
-        return _raw(source, limit)
-    if shared and path is not None and not _gzipped(path):
-        return FileBytes(path)
-    return _raw(_read_bytes(path), limit)
-
-
-def _gzipped(path: str) -> bool:
-    try:
-        with open(path, "rb") as stream:
-            return stream.read(2) == b"\x1f\x8b"
-    except OSError:
-        return True  # not readable now: _read_bytes gives None as before
+def _source_bytes(source: str | Path | bytes, path: str | None) -> bytes | None:
+    """The bytes checked: those given, or the file's."""
+    return source if isinstance(source, bytes) else _read_bytes(path)
 
 
 def _raw(data: bytes | None, limit: int) -> bytes | None:

@@ -52,7 +52,7 @@ def test_loads_with_the_counts_lxml_sees(path: Path, corpus_dir: Path):
 
 @pytest.mark.parametrize("path", corpus_files(), ids=lambda p: p.relative_to(corpus_root()).as_posix())
 def test_read_without_blank_text_builds_the_same_model(path: Path, corpus_dir: Path):
-    """``read()`` parses without the whitespace between elements (only the XML rules' tree needs it): the model and
+    """``read()`` parses without the whitespace between elements (only schema validation's tree needs it): the model and
     the findings, lines included, are those of the reader that keeps the checker's tree."""
     from xodrcheck.reader import read_keeping_tree
 

@@ -24,7 +24,7 @@ from lxml import etree
 from tests.conftest import corpus_files
 from tests.xodrcheck.treetext import integer, local, number
 from xodrcheck.model import Document, Lane, LaneSection, Road
-from xodrcheck.reader import read
+from xodrcheck.reader import parse_tree, read
 from xodrcheck.rules.context import Context
 
 HERE = Path(__file__).parent
@@ -66,7 +66,7 @@ def _documents(path: Path) -> tuple[Document, etree._ElementTree | None]:
     data = path.read_bytes()
     document = read(data).document
     assert document is not None
-    return document, Context(document, path=str(path), data=data).tree
+    return document, parse_tree(data)
 
 
 # ------------------------------------------------------------------------------------------------------ objects

@@ -33,7 +33,7 @@ from xodrcheck.rules import xml as R
 if TYPE_CHECKING:  # pragma: no cover
     from lxml import etree
 
-__all__ = ["KNOWN_VERSIONS", "ReadResult", "parse", "read", "read_keeping_tree"]
+__all__ = ["KNOWN_VERSIONS", "ReadResult", "parse", "parse_tree", "read", "read_keeping_tree"]
 
 _GZIP_MAGIC = b"\x1f\x8b"
 #: Reader findings after which the file counts as not read whole (see :meth:`ReadResult.not_whole`).
@@ -130,17 +130,27 @@ def read(source: str | os.PathLike[str] | bytes, *, max_bytes: int | None = None
 def read_keeping_tree(
     source: str | os.PathLike[str] | bytes, *, max_bytes: int | None = None
 ) -> tuple[ReadResult, etree._ElementTree | None]:
-    """:func:`read`, and the parse tree the model was built from when it is the tree the XML rules read
-    (:attr:`xodrcheck.rules.context.Context.tree`: well-formed, no namespace to strip), else ``None``. The checker
+    """:func:`read`, and the parse tree the model was built from when it is the tree schema validation reads
+    (:func:`parse_tree`'s: well-formed, no namespace to strip), else ``None``. The checker
     parses a file once this way instead of twice (on a 51 MB map the tree is ~720 MB)."""
     return _read(source, max_bytes, keep_tree=True)
+
+
+def parse_tree(data: bytes) -> etree._ElementTree | None:
+    """The file's XML tree as schema validation reads it: parsed safely (:func:`parse`), without recovering from
+    errors, namespaces and tags as written; ``None`` when it is not well-formed."""
+    from lxml import etree
+
+    root, _ = parse(data, recover=False, strip_namespaces=False)
+    return None if root is None else etree.ElementTree(root)
 
 
 def _read(
     source: str | os.PathLike[str] | bytes, max_bytes: int | None, *, keep_tree: bool
 ) -> tuple[ReadResult, etree._ElementTree | None]:
     """:func:`read_keeping_tree`; without ``keep_tree`` no tree is returned, and the parse leaves out the whitespace
-    between elements, which only the XML rules' tree needs (the model is the same: tests/xodrcheck/test_reader.py)."""
+    between elements, which only schema validation's tree needs (the model is the same:
+    tests/xodrcheck/test_reader.py)."""
     limit = Tolerances().max_file_bytes if max_bytes is None else max_bytes
     if isinstance(source, (bytes, bytearray, memoryview)):
         data = bytes(source)
@@ -164,8 +174,8 @@ def _read(
     if root is not None:
         from lxml import etree
 
-        # the tree of the rules: parsed without recovering (no X101), its tags as written (no default namespace on
-        # the root, which the reader strips from every tag)
+        # the tree of schema validation: parsed without recovering (no X101), its tags as written (no default
+        # namespace on the root, which the reader strips from every tag)
         shared = None not in root.nsmap and not any(f.code == R.NOT_WELL_FORMED.code for f in parse_findings)
         document = build_document(Context(findings), root, path)
         if keep_tree and shared and document is not None:

@@ -9,13 +9,13 @@ from __future__ import annotations
 import dataclasses
 import math
 import time
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
 from functools import cached_property
-from typing import TYPE_CHECKING, Any, TypeVar
+from typing import TYPE_CHECKING
 
 from xodrcheck.config import Config, Tolerances
-from xodrcheck.findings import Finding, XodrError
+from xodrcheck.findings import Finding
 from xodrcheck.model import (
     DIRECTED_LANE_TYPES,
     Connection,
@@ -37,19 +37,6 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from xodrcheck.geometry.lanes import RoadGeometry
     from xodrcheck.model import RoadObject
-    from xodrcheck.support.filebytes import FileBytes
-
-
-_T = TypeVar("_T")
-
-
-class TreeReleased(XodrError, RuntimeError):
-    """A rule read the XML tree (:attr:`Context.tree` or a view of it) after the runner dropped it: the rule does not
-    declare ``xml=True`` (an internal error of xodrcheck, reported as ``X900 rule-crashed``)."""
-
-
-#: What :meth:`Context.release_tree` drops with the tree: the cached views built from it.
-_TREE_VIEWS: tuple[str, ...] = ()
 
 
 def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
@@ -100,7 +87,7 @@ class Context:
         document: Document,
         config: Config | None = None,
         path: str | None = None,
-        data: bytes | FileBytes | None = None,
+        data: bytes | None = None,
         deadline: float | None = None,
         *,
         tree: etree._ElementTree | None = None,
@@ -108,17 +95,14 @@ class Context:
         self.document = document
         self.config = config or Config()
         self.path = path
-        #: The file's raw bytes (``None`` when the document was built in memory), or, when the caller passed the
-        #: reader's tree, the file searched on disk (:class:`~xodrcheck.support.filebytes.FileBytes`: ``b"..." in
-        #: ctx.data``).
+        #: The file's bytes, parsed for :attr:`tree` when the caller passes no tree (``None``: a document built in
+        #: memory, or the reader's tree given).
         self.data = data
         #: ``time.monotonic()`` value after which expensive rules should stop (``None``: no limit).
         self.deadline = deadline
         self._geometry: Mapping[str, RoadGeometry] | None = None
         self._widths: dict[tuple[int, int, int, float], float | None] = {}
         self._positions: dict[tuple, tuple[float, float, float] | None] = {}
-        self._views: dict[str, Any] = {}
-        self._released = False
         if tree is not None:  # the reader's tree of these bytes (:func:`xodrcheck.reader.read_keeping_tree`)
             self.__dict__["_tree"] = tree
 
@@ -139,56 +123,23 @@ class Context:
     def out_of_time(self) -> bool:
         return self.deadline is not None and time.monotonic() > self.deadline
 
-    @cached_property
-    def text(self) -> str | None:
-        """The file as text (UTF-8, undecodable bytes replaced)."""
-        return None if self.data is None else self.data.decode("utf-8", errors="replace")
-
     @property
     def tree(self) -> etree._ElementTree | None:
-        """The file parsed safely with the reader's parser (:func:`xodrcheck.reader.parse`: no entities, no network, a
-        prefix before the XML declaration and a DOCTYPE blanked out, source lines unchanged), namespaces kept for
-        schema validation, parsed on first use unless the caller passed the reader's tree of the same bytes. ``None``
-        when the file is not well-formed (the reader reports why).
-        Only rules declared with ``xml=True`` read it: after them the runner drops it (:meth:`release_tree`), and
-        reading it then raises :class:`TreeReleased`.
-        """
-        if self._released:
-            raise TreeReleased(
-                "internal error: the XML tree was read after the XML rules ran and it was dropped; a rule reading "
-                "ctx.tree (or a view of it) must be registered with xml=True"
-            )
+        """The file's XML tree for schema validation: the reader's tree when the caller passed it, else :attr:`data`
+        parsed on first use (:func:`xodrcheck.reader.parse_tree`: namespaces kept); ``None`` when there are no bytes
+        or they are not well-formed (the reader reports why). The schema rules run first and the runner then drops it
+        (:meth:`release_tree`); every other rule reads the document."""
         if "_tree" not in self.__dict__:
-            self.__dict__["_tree"] = self._parse()
+            from xodrcheck.reader import parse_tree
+
+            self.__dict__["_tree"] = None if self.data is None else parse_tree(self.data)
         return self.__dict__["_tree"]
 
-    def _parse(self) -> etree._ElementTree | None:
-        if self.data is None:
-            return None
-        from lxml import etree
-
-        from xodrcheck.reader import parse
-
-        data = self.data if isinstance(self.data, bytes) else bytes(self.data)
-        root, _ = parse(data, recover=False, strip_namespaces=False)
-        return None if root is None else etree.ElementTree(root)
-
-    def xml_view(self, key: str, build: Callable[[], _T]) -> _T:
-        """A view of :attr:`tree` (typed records, or elements) built once per file by ``build`` and dropped with the
-        tree by :meth:`release_tree`; ``key`` names it (its module and purpose)."""
-        if key not in self._views:
-            self._views[key] = build()
-        return self._views[key]
-
     def release_tree(self) -> None:
-        """Drop :attr:`tree` and every view built from it (:meth:`xml_view`):
-        called by the runner once the rules declared ``xml=True`` have run, so that the tree (about 900 bytes per
-        element) never lies under the geometry rules' caches. Reading the tree afterwards raises
-        :class:`TreeReleased`."""
-        self._released = True
-        self._views.clear()
-        for key in ("_tree", *_TREE_VIEWS):
-            self.__dict__.pop(key, None)
+        """Drop :attr:`tree` and the bytes it was parsed from, so that the tree (about 900 bytes per element) never
+        lies under the geometry rules' caches."""
+        self.__dict__["_tree"] = None
+        self.data = None
 
     def road_objects(self) -> Iterator[RoadObject]:
         """The ``<object>`` records of the document's roads, road by road in file order (a junction's own objects

@@ -51,9 +51,6 @@ class Rule:
     partial: Mapping[str, str] = field(default_factory=lambda: MappingProxyType({}))
     #: Run on files older than the rule's UIDs too (without claiming the UIDs there).
     every_version: bool = False
-    #: Reads the file's XML (``ctx.tree`` or a view built from it: objects, signals, lane or junction elements). Such
-    #: rules run first; the tree is then dropped before the geometry rules (:meth:`Context.release_tree`).
-    xml: bool = False
     #: What the rule's findings without a UID rest on (:class:`~xodrcheck.findings.Basis`); ``None`` for a rule whose
     #: findings always name a UID.
     basis: str | None = None
@@ -158,14 +155,12 @@ def rule(
     uids: Iterable[str] = (),
     partial: Mapping[str, str] | None = None,
     every_version: bool = False,
-    xml: bool = False,
     basis: str | None = None,
 ) -> Callable[[CheckFn], Rule]:
     """Decorator registering a check function as a rule; its docstring is the rule's documentation.
 
     ``uids`` are the Annex F rules it enforces; ``partial`` maps those it enforces only in part to what it leaves out
-    (they are enforced UIDs too); ``every_version`` keeps it running on files older than its UIDs; ``xml`` declares
-    that it reads the XML tree (``ctx.tree``, directly or through a view of it): it runs before the tree is dropped;
+    (they are enforced UIDs too); ``every_version`` keeps it running on files older than its UIDs;
     ``basis`` is what its findings without a UID rest on (``schema``, ``reading``, ``plausibility``: see
     :class:`~xodrcheck.findings.Basis`).
     """
@@ -182,7 +177,6 @@ def rule(
                 _uids(uids, partial),
                 MappingProxyType(dict(partial or {})),
                 every_version,
-                xml,
                 basis,
             )
         )

@@ -46,7 +46,7 @@ def one_per_cause(errors: Iterable[schema.SchemaError]) -> Iterator[schema.Schem
     return iter(kept.values())
 
 
-@rule("S001", "schema-invalid", Category.SCHEMA, Severity.ERROR, xml=True, basis=Basis.SCHEMA)
+@rule("S001", "schema-invalid", Category.SCHEMA, Severity.ERROR, basis=Basis.SCHEMA)
 def schema_invalid(ctx: Context):
     """The file does not validate against the XSD of the OpenDRIVE version its header declares.
 
@@ -94,7 +94,7 @@ def schema_invalid(ctx: Context):
         )
 
 
-@rule("S002", "schema-not-validated", Category.SCHEMA, Severity.INFO, xml=True, basis=Basis.SCHEMA)
+@rule("S002", "schema-not-validated", Category.SCHEMA, Severity.INFO, basis=Basis.SCHEMA)
 def schema_not_validated(ctx: Context):
     """The file could not be validated: its header declares no OpenDRIVE version that has a schema (1.1 to 1.9).
 
@@ -126,7 +126,7 @@ def _namespace_words(namespace: str | None) -> str:
     return "in no namespace" if namespace is None else f"in namespace '{namespace}'"
 
 
-@rule("S003", "schema-namespace-assumed", Category.SCHEMA, Severity.INFO, basis=Basis.SCHEMA, xml=True)
+@rule("S003", "schema-namespace-assumed", Category.SCHEMA, Severity.INFO, basis=Basis.SCHEMA)
 def schema_namespace_assumed(ctx: Context):
     """The file's elements are not in the namespace the schema of its version declares: they were validated as if
     they were.

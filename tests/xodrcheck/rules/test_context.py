@@ -28,7 +28,6 @@ def test_tree_keeps_source_lines_even_after_content_before_the_declaration():
     shifted = b"<!-- written by a tool -->\n" + data
     plain, moved = context(JUNCTION, data).tree, context(JUNCTION, shifted).tree
     assert plain is not None and moved is not None
-    assert context(JUNCTION, data).text.startswith("<?xml")
     assert moved.getroot().find("road").sourceline == plain.getroot().find("road").sourceline + 1
 
 

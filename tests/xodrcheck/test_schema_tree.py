@@ -1,5 +1,5 @@
-"""The XML rules run first; then the file's XML tree is dropped before the geometry rules (issue 18: a 51 MB map's
-tree is ~750 MB, and it lay under every geometry cache). Every rule that reads the tree declares ``xml=True``."""
+"""The schema rules validate the file's XML tree and run first; the tree is then dropped before the geometry rules (a
+51 MB map's tree is ~750 MB, and it would lie under every geometry cache). Every other rule reads the document only."""
 
 from __future__ import annotations
 
@@ -12,12 +12,13 @@ from lxml import etree
 
 from tests.conftest import corpus_root
 from xodrcheck.check import Selection, run_rules
+from xodrcheck.findings import Category
 from xodrcheck.reader import read
 from xodrcheck.rules import load_rules
-from xodrcheck.rules.context import Context, TreeReleased
+from xodrcheck.rules.context import Context
 
 FIXTURES = Path(__file__).parent / "rules" / "fixtures"
-#: A small corpus map with junctions, signals, controllers and objects: it exercises every view of the tree.
+#: A small corpus map with junctions, signals, controllers and objects.
 MAP = "esmini/resources/xodr/fabriksgatan_traffic_lights.xodr"
 
 
@@ -38,16 +39,15 @@ def _opendrive_elements() -> int:
     )
 
 
-def test_the_tree_is_gone_after_the_xml_rules_and_the_findings_are_unchanged():
+def test_the_tree_is_gone_after_the_schema_rules_and_the_findings_are_unchanged():
     path = corpus_root() / MAP
     ctx = _context(path)
     assert ctx.tree is not None and _opendrive_elements() > 0
     with np.errstate(all="ignore"):
         findings, ran = run_rules(ctx, Selection())
     assert _opendrive_elements() == 0  # nothing holds the tree or an element of it
-    with pytest.raises(TreeReleased, match="xml=True"):
-        _ = ctx.tree
-    assert not [f for f in findings if f.code.startswith("X9")], findings  # no rule read the tree too late
+    assert ctx.tree is None and ctx.data is None
+    assert not [f for f in findings if f.code.startswith("X9")], findings  # no rule crashed
     # the same rules, each alone in registry order on a context that keeps its tree: the same findings
     rules = load_rules()
     assert ran == [code for code in rules if code in set(ran)]
@@ -55,26 +55,33 @@ def test_the_tree_is_gone_after_the_xml_rules_and_the_findings_are_unchanged():
     with np.errstate(all="ignore"):
         alone = [f for code in ran for f in rules[code].check(kept)]
     assert sorted(map(repr, findings)) == sorted(map(repr, alone))
-    assert {"S001", "R020", "J012"} <= set(ran) and sum(rules[code].xml for code in ran) >= 5
-    assert rules["S001"].xml and not rules["R020"].xml and not rules["J012"].xml  # ids and junctions: the document
+    assert {"S001", "R020", "J012"} <= set(ran)
+
+
+class _TreeRead(Exception):
+    """A rule other than a schema rule read the XML tree."""
 
 
 @pytest.mark.parametrize("path", sorted(FIXTURES.rglob("*.xodr")), ids=lambda p: f"{p.parent.name}/{p.name}")
-def test_only_rules_declared_xml_read_the_tree(path: Path):
-    """Every other rule runs on a context whose tree is already dropped: reading it (or a view of it) raises."""
+def test_only_the_schema_rules_read_the_tree(path: Path, monkeypatch: pytest.MonkeyPatch):
+    """Every other rule runs on a context whose tree cannot be read: none reads it."""
     data = path.read_bytes()
     document = read(data).document
     if document is None:
         return  # an unreadable fixture: the reader's findings only, no rule runs
     ctx = Context(document, path=str(path), data=data)
-    ctx.release_tree()
+
+    def tree(self):
+        raise _TreeRead
+
+    monkeypatch.setattr(Context, "tree", property(tree))
     with np.errstate(all="ignore"):
         for rule in load_rules().values():
-            if rule.check is not None and not rule.xml and rule.runs_on(ctx.version):
+            if rule.check is not None and rule.category is not Category.SCHEMA and rule.runs_on(ctx.version):
                 try:
                     list(rule.check(ctx))
-                except TreeReleased:  # pragma: no cover - the failure this test looks for
-                    pytest.fail(f"rule {rule.code} reads the XML tree without declaring xml=True")
+                except _TreeRead:  # pragma: no cover - the failure this test looks for
+                    pytest.fail(f"rule {rule.code} reads the XML tree; only the schema rules may")
                 except Exception:
                     pass  # a crash of its own is another test's business (the runner reports it as X900)
 
@@ -84,7 +91,7 @@ def _findings(report) -> list[str]:
 
 
 def test_check_parses_a_well_formed_file_once(monkeypatch):
-    """The reader's tree is the XML rules' tree: the context never parses again, and the findings are those of a
+    """The reader's tree is schema validation's: the context never parses again, and the findings are those of a
     check whose context parses the file itself."""
     import importlib
 
@@ -94,8 +101,8 @@ def test_check_parses_a_well_formed_file_once(monkeypatch):
 
     path = corpus_root() / MAP
     parses: list[int] = []
-    own_parse = Context._parse
-    monkeypatch.setattr(Context, "_parse", lambda self: parses.append(1) or own_parse(self))
+    own_parse = reader.parse_tree
+    monkeypatch.setattr(reader, "parse_tree", lambda data: parses.append(1) or own_parse(data))
     with np.errstate(all="ignore"):
         once = check(path)
     assert parses == [] and once.complete
@@ -107,7 +114,8 @@ def test_check_parses_a_well_formed_file_once(monkeypatch):
 
 
 def test_a_namespaced_or_broken_file_gets_a_tree_of_its_own():
-    """The reader strips a default namespace and recovers what it can from bad XML; the rules' tree is neither."""
+    """The reader strips a default namespace and recovers what it can from bad XML; schema validation's tree is
+    neither."""
     from xodrcheck.reader import read_keeping_tree
 
     data = (FIXTURES / "link-not-reciprocal" / "pass_junction.xodr").read_bytes()
