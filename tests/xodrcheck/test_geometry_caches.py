@@ -199,7 +199,7 @@ def test_lines_read_in_order_are_those_of_the_cache_and_released_before_the_mesh
         cache = sampled._LINES[ctx]
         assert not cache.fits and 0 < cache.kept < len(streamed) and cache.kept_bytes <= sampled.LINES_BUDGET
         assert any(lines is kept for _, _, lines in streamed)
-        assert len(streamed) == sum(len(r.lane_sections) for r in ctx.document.roads if sampled.usable(ctx, r))
+        assert len(streamed) == sum(len(r.lane_sections) for r in ctx.document.roads if ctx.usable_geometry(r))
         for road_id, index, lines in streamed:
             alone = sampled.section_lines(ctx, ctx.document.road_by_id[road_id], index)
             assert np.array_equal(lines.s, alone.s) and lines.t.keys() == alone.t.keys()
@@ -207,7 +207,7 @@ def test_lines_read_in_order_are_those_of_the_cache_and_released_before_the_mesh
             for lane_id, p in lines.borders.items():
                 assert np.array_equal(p.x, alone.borders[lane_id].x, equal_nan=True)
                 assert np.array_equal(p.hdg, alone.borders[lane_id].hdg, equal_nan=True)
-        sampled.road_end(ctx, first, ContactPoint.START)
+        road_ends.road_end(ctx, first, ContactPoint.START)
         sampled.release_lines(ctx)
     assert ctx not in sampled._LINES and ctx not in sampled._ENDS and ctx not in sampled._END_CURVES
 
@@ -246,7 +246,7 @@ _PASS_FILES = [
 @pytest.mark.corpus
 @pytest.mark.parametrize("name", _PASS_FILES)
 def test_road_ends_evaluated_together_are_each_roads_own_border_curves(corpus_dir: Path, name: str):
-    """sampled.road_end takes the border curves of every road end from one batched evaluation: each section's
+    """road_ends.road_end takes the border curves of every road end from one batched evaluation: each section's
     RoadGeometry.border_curves to the last bit."""
     path = corpus_dir / name
     ctx = Context(read(path).document, Config(), path=str(path), data=None)
@@ -254,7 +254,7 @@ def test_road_ends_evaluated_together_are_each_roads_own_border_curves(corpus_di
         together = road_ends.end_curves(ctx)
         compared = 0
         for road in ctx.document.roads:
-            geometry = sampled.usable(ctx, road)
+            geometry = ctx.usable_geometry(road)
             for end in (ContactPoint.START, ContactPoint.END) if geometry is not None else ():
                 index, _, s = road_ends.end_samples(road, end)
                 alone = geometry.border_curves(index, s)
@@ -266,7 +266,7 @@ def test_road_ends_evaluated_together_are_each_roads_own_border_curves(corpus_di
                             a, b = getattr(got[lane_id], field), getattr(p, field)
                             assert a.shape == b.shape and a.tobytes() == b.tobytes(), (road.id, end, lane_id, field)
                     compared += 1
-                end_point = sampled.road_end(ctx, road, end).border(0, "outer")
+                end_point = road_ends.road_end(ctx, road, end).border(0, "outer")
                 assert end_point is None or end_point.x == float(
                     alone[0].x[0 if len(s) == 1 or end is ContactPoint.START else 1]
                 )
@@ -285,7 +285,7 @@ def test_lane_width_pieces_evaluated_together_are_each_sections_own(corpus_dir: 
     compared = 0
     with np.errstate(all="ignore"):
         for road in ctx.document.roads:
-            for index in range(len(road.lane_sections)) if sampled.usable(ctx, road) is not None else ():
+            for index in range(len(road.lane_sections)) if ctx.usable_geometry(road) is not None else ():
                 together = lane_shape._lane_pieces(ctx, road, index)
                 alone = lane_shape._section_pieces(ctx, road, index, lane_shape._piece_nodes(ctx, road, index))
                 assert (together is None) == (alone is None)

@@ -13,7 +13,7 @@ from xodrcheck.config import Config, Tolerances
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.geometry.sampling import step_counts
 from xodrcheck.reader import read
-from xodrcheck.rules import grids, sampled
+from xodrcheck.rules import grids, road_ends, sampled
 from xodrcheck.rules.context import Context
 
 
@@ -27,7 +27,7 @@ def _reference(tol: Tolerances, geometry: RoadGeometry, section_index: int) -> n
     counts = step_counts(lengths, step, tol.max_samples_per_section)
     owner = np.repeat(np.arange(len(lengths)), counts)
     offset = np.arange(owner.size) - np.repeat(np.cumsum(counts) - counts, counts)
-    s = np.append(cuts[owner] + lengths[owner] * offset / counts[owner], sampled.left_of(end))
+    s = np.append(cuts[owner] + lengths[owner] * offset / counts[owner], road_ends.left_of(end))
     return np.maximum.accumulate(s)
 
 
@@ -50,7 +50,7 @@ def test_grids_together_are_each_sections_own(
     entries = [
         (geometry, index)
         for road in ctx.document.roads
-        if (geometry := sampled.usable(ctx, road)) is not None
+        if (geometry := ctx.usable_geometry(road)) is not None
         for index in range(len(road.lane_sections))
     ]
     monkeypatch.setattr(grids, "_BATCH_INTERVALS", 50)  # several batches

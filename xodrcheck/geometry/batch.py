@@ -35,6 +35,11 @@ from xodrcheck.geometry.rows import ADD, BORDER, SUBTRACT, SectionRows, Step, la
 from xodrcheck.support import work
 from xodrcheck.support.arrays import batches
 
+#: Samples evaluated together by the checker's file-wide passes (sections' lane lines, road ends, the curvature and
+#: junction rules): the temporaries of one pass scale with it (a 10 km map's sections at once took about 1 GB more
+#: than the results; batches keep that to tens of MB at the same speed).
+BATCH_SAMPLES = 1 << 17
+
 _WHERE = ("centre", "inner", "outer")
 #: Codes of the lines asked for: a lane's outer border (or lane 0's line), its centre, its inner border.
 _OUTER, _CENTRE, _INNER = 0, 1, 2

@@ -156,6 +156,15 @@ class Context:
             self._geometry = geometry_of(self.document)
         return self._geometry.get(road_id)
 
+    def usable_geometry(self, road: Road) -> RoadGeometry | None:
+        """The road's geometry when it can be evaluated: a plan view, lane sections and a positive length, and the
+        road is the one its id looks up (of a duplicated id only the first; R001 reports the others)."""
+        if not road.plan_view or not road.lane_sections or not road.length > 0 or not math.isfinite(road.length):
+            return None
+        if self.document.road_by_id.get(road.id) is not road:
+            return None
+        return self.geometry(road.id)
+
     def road_geometry(self, road: Road) -> RoadGeometry:
         """The evaluated geometry of a road of the document (every road's id has one; with a duplicated id, that of
         the first road of the id, as :meth:`geometry` gives)."""

@@ -31,14 +31,14 @@ from xodrcheck.geometry.lines import tightest
 from xodrcheck.model import Road
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import BATCH_SAMPLES, lines_in_order, section_lines, section_samples, usable
+from xodrcheck.rules.sampled import BATCH_SAMPLES, lines_in_order, section_lines, section_samples
 from xodrcheck.support.quantities import metres
 
 
 def _sections(ctx: Context):
     """(road, section index, geometry, s samples) for every usable road's lane sections."""
     for road in ctx.document.roads:
-        geometry = usable(ctx, road)
+        geometry = ctx.usable_geometry(road)
         if geometry is None:
             continue
         for index in range(len(road.lane_sections)):

@@ -28,7 +28,7 @@ from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_uids import SECTION_VALID_LENGTH
 from xodrcheck.rules.places import element_place, finite
 from xodrcheck.rules.registry import NO_UID, rule
-from xodrcheck.rules.sampled import angle_between, grid_step, usable, warning_note
+from xodrcheck.rules.sampled import angle_between, grid_step, warning_note
 from xodrcheck.support.quantities import metres
 
 _KIND = {"Line": "line", "Arc": "arc", "Spiral": "spiral", "Poly3": "poly3", "ParamPoly3": "paramPoly3"}
@@ -369,7 +369,7 @@ def sampling_capped(ctx: Context):
     step = grid_step(tol)
     budget = tol.max_samples_per_section
     for road in ctx.document.roads:
-        geometry = usable(ctx, road)
+        geometry = ctx.usable_geometry(road)
         if geometry is None:
             continue
         for index, section in enumerate(road.lane_sections):

@@ -17,6 +17,7 @@ import numpy as np
 from xodrcheck.config import Tolerances
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.geometry.sampling import raw_counts, step_counts
+from xodrcheck.rules.road_ends import left_of
 
 #: Knot intervals counted together (the temporaries of a batch scale with its samples, a few arrays of them).
 _BATCH_INTERVALS = 1 << 14
@@ -24,8 +25,6 @@ _BATCH_INTERVALS = 1 << 14
 
 def section_grids(tol: Tolerances, entries: Sequence[tuple[RoadGeometry, int]], step: float) -> list[np.ndarray]:
     """``_grid`` of each (geometry, section index) with the longest step ``step`` (``sampled.grid_step``)."""
-    from xodrcheck.rules.sampled import left_of
-
     out: list[np.ndarray] = []
     cuts: list[np.ndarray] = []
     ends: list[float] = []

@@ -27,7 +27,7 @@ from xodrcheck.model import Connection, ContactPoint, Junction, JunctionType, Ro
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import reference_end, road_end, usable
+from xodrcheck.rules.road_ends import reference_end, road_end
 
 
 @dataclass(frozen=True, slots=True)
@@ -101,7 +101,7 @@ def _paths(ctx: Context, junction: Junction) -> tuple[_Frame, list[_Path]] | Non
 
 
 def _frame(ctx: Context, road: Road, end: ContactPoint) -> _Frame:
-    point = reference_end(ctx, road, end) if usable(ctx, road) is not None else None
+    point = reference_end(ctx, road, end) if ctx.usable_geometry(road) is not None else None
     if point is None:
         return _Frame(road, end, None, None)
     along = point.outward if end is ContactPoint.END else point.outward + math.pi
@@ -116,7 +116,7 @@ def _aligned(frame: _Frame, end: _End) -> int:
 
 def _across(ctx: Context, frame: _Frame, end: _End) -> tuple[float, float] | None:
     """(right, left) ``t`` of a lane's borders at its end, across the frame road at the joint."""
-    if frame.origin is None or frame.normal is None or usable(ctx, end.road) is None:
+    if frame.origin is None or frame.normal is None or ctx.usable_geometry(end.road) is None:
         return None
     lines = road_end(ctx, end.road, end.end)
     inner, outer = lines.border(end.lane, "inner"), lines.border(end.lane, "outer")

@@ -35,7 +35,7 @@ from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, describe_junction
 from xodrcheck.rules.junction_shapes import boundary_pieces, joint_lanes, reference_line
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import end_s, usable
+from xodrcheck.rules.road_ends import end_s
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
@@ -116,7 +116,7 @@ def _across(ctx: Context, entry: _Entry) -> _Across | None:
     from xodrcheck.model import JointSegment
 
     road, end = entry.road, entry.end
-    geometry = usable(ctx, road)
+    geometry = ctx.usable_geometry(road)
     if geometry is None or not road.lane_sections:
         return None
     index = 0 if end is ContactPoint.START else len(road.lane_sections) - 1

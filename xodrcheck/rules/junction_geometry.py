@@ -28,7 +28,8 @@ from xodrcheck.model import Connection, ContactPoint, JunctionType, Road
 from xodrcheck.rules.context import Context, travel_direction
 from xodrcheck.rules.lane_paths import Known, centre_path, crossing, walk
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import BATCH_SAMPLES, end_s, road_end, section_samples, usable
+from xodrcheck.rules.road_ends import end_s, road_end
+from xodrcheck.rules.sampled import BATCH_SAMPLES, section_samples
 
 if TYPE_CHECKING:
     pass
@@ -69,14 +70,19 @@ def _groups(ctx: Context):
             continue
         for incoming_id in junction.incoming_roads:
             incoming = ctx.road(incoming_id)
-            if incoming is None or usable(ctx, incoming) is None:
+            if incoming is None or ctx.usable_geometry(incoming) is None:
                 continue
             connections = ctx.connections_by_incoming.get((junction.id, incoming_id), ())
             ends: dict[ContactPoint, list[_Connected]] = {}
             for c in connections:
                 end = ctx.incoming_contact(junction, c)
                 connecting = ctx.road(c.connecting_road)
-                if end is None or connecting is None or c.contact_point is None or usable(ctx, connecting) is None:
+                if (
+                    end is None
+                    or connecting is None
+                    or c.contact_point is None
+                    or ctx.usable_geometry(connecting) is None
+                ):
                     continue
                 ends.setdefault(end, []).append(_Connected(c, connecting, c.contact_point))
             for end, group in ends.items():

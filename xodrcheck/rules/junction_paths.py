@@ -21,7 +21,7 @@ from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, describe_junction
 from xodrcheck.rules.junction_shapes import boundary_pieces, gaps, ring, road_points, strip
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import left_of, usable
+from xodrcheck.rules.road_ends import left_of
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
@@ -48,7 +48,7 @@ def _end(ctx: Context, j: Junction, cp: CrossPath, crossing: Road, at_end: bool)
     if link is None or road is None or link.s is None or link.from_lane is None or link.to_lane is None:
         return
     geometry = ctx.geometry(crossing.id)
-    if geometry is None or usable(ctx, road) is None:
+    if geometry is None or ctx.usable_geometry(road) is None:
         return
     s = left_of(float(crossing.length)) if at_end else 0.0
     index = int(geometry.section_index(s)[0])
@@ -160,7 +160,7 @@ def cross_path_ends(ctx: Context) -> Iterator[Finding]:
     for j in ctx.document.junctions:
         for cp in j.cross_paths:
             crossing = ctx.road(cp.crossing_road)
-            if crossing is None or usable(ctx, crossing) is None:
+            if crossing is None or ctx.usable_geometry(crossing) is None:
                 continue
             yield from _end(ctx, j, cp, crossing, at_end=False)
             yield from _end(ctx, j, cp, crossing, at_end=True)

@@ -24,7 +24,8 @@ import numpy as np
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import ContactPoint, Road
 from xodrcheck.rules.context import Context
-from xodrcheck.rules.sampled import left_of, section_lines, usable
+from xodrcheck.rules.road_ends import left_of
+from xodrcheck.rules.sampled import section_lines
 
 if TYPE_CHECKING:
     from xodrcheck.model import (
@@ -69,7 +70,7 @@ def road_s(road: Road, place: RoadPlace | None) -> float | None:
 
 def _lane_piece(ctx: Context, seg: LaneSegment) -> np.ndarray | None:
     road = ctx.road(seg.road)
-    if road is None or seg.lane is None or usable(ctx, road) is None:
+    if road is None or seg.lane is None or ctx.usable_geometry(road) is None:
         return None
     geometry = ctx.geometry(road.id)
     a, b = road_s(road, seg.s_start), road_s(road, seg.s_end)
@@ -124,7 +125,7 @@ def joint_lanes(geometry: RoadGeometry, index: int, seg: JointSegment) -> tuple[
 
 def _joint_piece(ctx: Context, seg: JointSegment) -> tuple[np.ndarray, bool] | None:
     road = ctx.road(seg.road)
-    if road is None or usable(ctx, road) is None:
+    if road is None or ctx.usable_geometry(road) is None:
         return None
     s = road_s(road, seg.contact)
     geometry = ctx.geometry(road.id)
@@ -281,7 +282,7 @@ def strip(ctx: Context, road: Road, lane: int | None, lo: float, hi: float):
     import shapely
 
     geometry = ctx.geometry(road.id)
-    if geometry is None or usable(ctx, road) is None:
+    if geometry is None or ctx.usable_geometry(road) is None:
         return None
     lo, hi = max(lo, 0.0), min(hi, left_of(float(road.length)))
     pieces = []
@@ -311,7 +312,7 @@ def strip(ctx: Context, road: Road, lane: int | None, lo: float, hi: float):
 def road_points(ctx: Context, road: Road, s: float | None = None) -> np.ndarray | None:
     """Every lane border point of a usable road (``s``: only at that ``s``), n x 2; ``None`` without geometry."""
     geometry = ctx.geometry(road.id)
-    if geometry is None or usable(ctx, road) is None:
+    if geometry is None or ctx.usable_geometry(road) is None:
         return None
     parts: list[np.ndarray] = []
     for index in range(len(road.lane_sections)):

@@ -20,7 +20,8 @@ from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, R
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules.context import Context, describe_junction, link_at
 from xodrcheck.rules.registry import NO_UID, rule
-from xodrcheck.rules.sampled import angle_between, end_s, left_of, usable, warning_note
+from xodrcheck.rules.road_ends import end_s, left_of
+from xodrcheck.rules.sampled import angle_between, warning_note
 from xodrcheck.support.quantities import metres
 
 
@@ -30,12 +31,12 @@ def _branches(ctx: Context) -> Iterator[tuple[Junction, Road, Road, ContactPoint
         if j.type is not JunctionType.VIRTUAL or j.main_road is None:
             continue
         main = ctx.road(j.main_road)
-        if main is None or usable(ctx, main) is None:
+        if main is None or ctx.usable_geometry(main) is None:
             continue
         seen: set[str] = set()
         for c in j.connections:
             road = ctx.road(c.connecting_road)
-            if road is None or road.id in seen or road.id == main.id or usable(ctx, road) is None:
+            if road is None or road.id in seen or road.id == main.id or ctx.usable_geometry(road) is None:
                 continue
             seen.add(road.id)
             for end in (ContactPoint.START, ContactPoint.END):

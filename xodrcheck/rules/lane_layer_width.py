@@ -8,7 +8,7 @@ from xodrcheck.findings import Category, Severity
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import grid_step, usable
+from xodrcheck.rules.sampled import grid_step
 from xodrcheck.support.quantities import metres
 
 
@@ -51,7 +51,7 @@ def temporary_layer_wider(ctx: Context):
     for road in ctx.document.roads:
         if road.temporary_lanes is None or road.id not in temporary:
             continue
-        permanent = usable(ctx, road)
+        permanent = ctx.usable_geometry(road)
         if permanent is None:
             continue
         layer = temporary[road.id]

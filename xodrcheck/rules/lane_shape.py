@@ -21,7 +21,7 @@ from xodrcheck.model import Road
 from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import BATCH_SAMPLES, usable
+from xodrcheck.rules.sampled import BATCH_SAMPLES
 from xodrcheck.support.quantities import metres
 
 _NODES = np.array([0.125, 0.375, 0.625, 0.875])
@@ -58,7 +58,7 @@ def _lane_pieces(ctx: Context, road: Road, index: int):
         cache = _PIECES[ctx] = {}
         nodes = {}
         for each in ctx.document.roads:
-            if usable(ctx, each) is not None:
+            if ctx.usable_geometry(each) is not None:
                 for i in range(len(each.lane_sections)):
                     nodes[(id(each), i)] = (each, _piece_nodes(ctx, each, i))
         for key, borders in _all_borders(ctx, nodes):  # one batch's borders alive at a time
@@ -105,7 +105,7 @@ def _extremes(ctx: Context, road: Road, index: int) -> tuple[np.ndarray, np.ndar
     if cache is None:
         keys, blocks = [], []
         for each in ctx.document.roads:
-            if usable(ctx, each) is not None:
+            if ctx.usable_geometry(each) is not None:
                 for i in range(len(each.lane_sections)):
                     pieces = _lane_pieces(ctx, each, i)
                     if pieces is not None:
@@ -221,7 +221,7 @@ def _width_findings(ctx: Context, by_widths: bool):
     if found is None:
         found = []
         for road in ctx.document.roads:
-            geometry = usable(ctx, road)
+            geometry = ctx.usable_geometry(road)
             if geometry is None:
                 continue
             for index, section in enumerate(road.lane_sections):

@@ -17,7 +17,6 @@ from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_shape import lane_width_bounds
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import usable
 from xodrcheck.support.quantities import metres
 
 
@@ -73,7 +72,7 @@ def lane_zero_width_stretch(ctx: Context):
     """
     tol = ctx.tolerances
     for road in ctx.document.roads:
-        geometry = usable(ctx, road)
+        geometry = ctx.usable_geometry(road)
         if geometry is None:
             continue
         for index, section in enumerate(road.lane_sections):

@@ -60,7 +60,8 @@ from xodrcheck.rules.link_joints import (
     location,
 )
 from xodrcheck.rules.registry import NO_UID, rule
-from xodrcheck.rules.sampled import angle_between, reference_end, road_end, section_lines, usable, warning_note
+from xodrcheck.rules.road_ends import reference_end, road_end
+from xodrcheck.rules.sampled import angle_between, section_lines, warning_note
 from xodrcheck.support.quantities import metres
 
 
@@ -336,7 +337,7 @@ def lane_border_discontinuous(ctx: Context):
         <laneSection s="50"> ... <lane id="-1"><link><predecessor id="-1"/></link><width a="2.5" .../>
     """
     for road in ctx.document.roads:
-        geometry = usable(ctx, road)
+        geometry = ctx.usable_geometry(road)
         if geometry is None:
             continue
         sections = road.lane_sections

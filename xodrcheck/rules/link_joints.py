@@ -17,7 +17,7 @@ from xodrcheck.model import ContactPoint, ElementType, JunctionType, Road
 from xodrcheck.rules import junction_uids as JU
 from xodrcheck.rules.context import Context, Neighbour, link_at
 from xodrcheck.rules.registry import NO_UID
-from xodrcheck.rules.sampled import EndPoint, RoadEnd, end_s, reference_end, road_end, usable
+from xodrcheck.rules.road_ends import EndPoint, RoadEnd, end_s, reference_end, road_end
 
 
 def joints(ctx: Context, once: bool = True) -> Iterator[tuple[Road, ContactPoint, Neighbour]]:
@@ -25,11 +25,11 @@ def joints(ctx: Context, once: bool = True) -> Iterator[tuple[Road, ContactPoint
     false once per way it is declared (a road link, and each junction connection)."""
     seen: set[tuple] = set()
     for road in ctx.document.roads:
-        if usable(ctx, road) is None:
+        if ctx.usable_geometry(road) is None:
             continue
         for end in (ContactPoint.START, ContactPoint.END):
             for neighbour in ctx.neighbours(road, end):
-                if usable(ctx, neighbour.road) is None:
+                if ctx.usable_geometry(neighbour.road) is None:
                     continue
                 pair = frozenset({(road.id, end), (neighbour.road.id, neighbour.contact)})
                 key = (pair, None if once or neighbour.connection is None else neighbour.connection.id)

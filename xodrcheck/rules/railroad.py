@@ -261,12 +261,11 @@ def _narrow_rail_lanes(ctx: Context, limit: float) -> Iterator[tuple[Road, LaneS
     """(road, section, lane, smallest width, s where reached, whether the lane is narrower along its whole section)
     for every rail or tram lane narrower than ``limit`` somewhere; widths from the exact per-piece cubics."""
     from xodrcheck.rules.lane_shape import lane_minima, lane_width_bounds
-    from xodrcheck.rules.sampled import usable
 
     for road in ctx.document.roads:
         if not any(lane.type in _RAIL for section in road.lane_sections for lane in section.lanes):
             continue
-        if usable(ctx, road) is None:
+        if ctx.usable_geometry(road) is None:
             continue
         for index, section in enumerate(road.lane_sections):
             if not any(lane.type in _RAIL for lane in section.lanes):

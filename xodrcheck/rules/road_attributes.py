@@ -18,7 +18,7 @@ from xodrcheck.model import Road, Shape
 from xodrcheck.rules import road_uids as U
 from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import section_lines, usable
+from xodrcheck.rules.sampled import section_lines
 from xodrcheck.support.quantities import metres
 
 _ALPHA_2 = re.compile(r"[A-Z]{2}")
@@ -152,7 +152,7 @@ def _t(shape: Shape) -> float:
 
 def _right_edge(ctx: Context, road: Road) -> tuple[float, float] | None:
     """The smallest ``t`` any lane border of the road reaches (its right edge at its widest), and where (``s``)."""
-    if usable(ctx, road) is None:
+    if ctx.usable_geometry(road) is None:
         return None
     best: tuple[float, float] | None = None
     for index in range(len(road.lane_sections)):

@@ -1,6 +1,6 @@
 """The lane lines and reference line at a road's ends, evaluated once per file for the rules that join roads.
 
-:func:`road_end` gives every lane line of a usable road (:func:`xodrcheck.rules.sampled.usable`) at its start or end
+:func:`road_end` gives every lane line of a usable road (:meth:`Context.usable_geometry`) at its start or end
 (:class:`RoadEnd` of :class:`EndPoint`), :func:`reference_end` the reference line there; both are cached with the
 check's :class:`~xodrcheck.rules.context.Context` and dropped by :func:`xodrcheck.rules.sampled.release_lines`. An end
 is evaluated just before it (:func:`end_s`, :func:`left_of`). :mod:`xodrcheck.rules.sampled` names all of them as
@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from xodrcheck.geometry.batch import Evaluation
+from xodrcheck.geometry.batch import BATCH_SAMPLES, Evaluation
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.geometry.lines import LanePoints
 from xodrcheck.model import ContactPoint, Road
@@ -87,8 +87,6 @@ def end_curves(ctx: Context) -> dict[tuple[str, int], dict[int, LanePoints]]:
     """The border curves :func:`road_end` needs (:meth:`RoadGeometry.border_curves` at :func:`end_samples`) of every
     usable road's end sections, evaluated together in batches (the same numbers, with a fraction of the numpy calls),
     keyed by (road id, section index)."""
-    from xodrcheck.rules.sampled import BATCH_SAMPLES, usable  # read when called: tests patch BATCH_SAMPLES there
-
     found = END_CURVES.get(ctx)
     if found is not None:
         return found
@@ -96,7 +94,7 @@ def end_curves(ctx: Context) -> dict[tuple[str, int], dict[int, LanePoints]]:
     keys: list[tuple[str, int]] = []
     grids: list[np.ndarray] = []
     for road in ctx.document.roads:
-        geometry = usable(ctx, road)
+        geometry = ctx.usable_geometry(road)
         if geometry is None:
             continue
         for end in (ContactPoint.START, ContactPoint.END) if len(road.lane_sections) > 1 else (ContactPoint.START,):

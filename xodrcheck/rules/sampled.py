@@ -21,32 +21,18 @@ import numpy as np
 
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Severity
-from xodrcheck.geometry.batch import Evaluation
+from xodrcheck.geometry.batch import BATCH_SAMPLES, Evaluation
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.geometry.lines import LanePoints
 from xodrcheck.model import Road
 from xodrcheck.rules.context import Context
+from xodrcheck.rules.grids import section_grids
 from xodrcheck.rules.road_ends import END_CURVES as _END_CURVES
 from xodrcheck.rules.road_ends import ENDS as _ENDS
 from xodrcheck.rules.road_ends import REFERENCE as _REFERENCE
-from xodrcheck.rules.road_ends import EndPoint as EndPoint  # named here as before
-from xodrcheck.rules.road_ends import RoadEnd as RoadEnd
-from xodrcheck.rules.road_ends import end_s as end_s
-from xodrcheck.rules.road_ends import left_of as left_of
-from xodrcheck.rules.road_ends import reference_end as reference_end
-from xodrcheck.rules.road_ends import road_end as road_end
 from xodrcheck.support.arrays import batches
 from xodrcheck.support.budget import ByteBudget, array_bytes
 from xodrcheck.support.quantities import metres
-
-
-def usable(ctx: Context, road: Road) -> RoadGeometry | None:
-    """The road's geometry when it can be evaluated: a plan view, lane sections and a positive length."""
-    if not road.plan_view or not road.lane_sections or not road.length > 0 or not math.isfinite(road.length):
-        return None
-    if ctx.document.road_by_id.get(road.id) is not road:
-        return None  # a duplicated id: only the first road of that id can be looked up (R001 reports it)
-    return ctx.geometry(road.id)
 
 
 def section_samples(ctx: Context, road: Road, section_index: int) -> np.ndarray:
@@ -88,8 +74,6 @@ def grid_step(tol: Tolerances) -> float:
 
 
 def _grid(ctx: Context, geometry: RoadGeometry, section_index: int) -> np.ndarray:
-    from xodrcheck.rules.grids import section_grids
-
     return section_grids(ctx.tolerances, [(geometry, section_index)], grid_step(ctx.tolerances))[0]
 
 
@@ -107,7 +91,7 @@ def lines_in_order(ctx: Context) -> Iterator[tuple[Road, int, RoadGeometry, Sect
     cache = _lines_of(ctx)
     pending: dict[tuple[str, int], SectionLines] = {}
     for road in ctx.document.roads:
-        geometry = usable(ctx, road)
+        geometry = ctx.usable_geometry(road)
         if geometry is None:
             continue
         for index in range(len(road.lane_sections)):
@@ -172,8 +156,6 @@ class _SectionCache:
     )
 
     def __init__(self, ctx: Context) -> None:
-        from xodrcheck.rules.grids import section_grids
-
         self._entries: list[tuple[RoadGeometry, int]] = []
         self._keys: list[tuple[str, int]] = []
         self._grids: list[np.ndarray] = []
@@ -181,7 +163,7 @@ class _SectionCache:
         candidates = [
             (road, geometry, index)
             for road in ctx.document.roads
-            if (geometry := usable(ctx, road)) is not None
+            if (geometry := ctx.usable_geometry(road)) is not None
             for index in range(len(road.lane_sections))
         ]
         grids = section_grids(ctx.tolerances, [(g, i) for _, g, i in candidates], grid_step(ctx.tolerances))
@@ -328,10 +310,6 @@ def _all_sections(ctx: Context) -> dict[tuple[str, int], SectionLines]:
     return _SectionCache(ctx).evaluate_all()
 
 
-#: Samples evaluated together by :func:`_all_sections` and by the file-wide passes of the curvature and junction
-#: rules (the temporaries of one pass scale with it: a 10 km map's sections at once took about 1 GB more than the
-#: results; batches keep that to tens of MB at the same speed).
-BATCH_SAMPLES = 1 << 17
 #: Estimated bytes of the lines :func:`lines_in_order` evaluates together and drops once read (the temporaries of a
 #: batch are a few times its size).
 _PASSING_BYTES = 12 << 20

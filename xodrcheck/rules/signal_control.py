@@ -34,7 +34,6 @@ from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, R
 from xodrcheck.rules.context import Context, link_at, travel_direction
 from xodrcheck.rules.lane_paths import centre_path, parted
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import usable
 
 if TYPE_CHECKING:  # pragma: no cover - the model's signal module loads for a file with signals
     from xodrcheck.model import Controller, LaneValidity
@@ -148,7 +147,7 @@ def _to_end(road: Road, index: int, lane_id: int) -> tuple[ContactPoint, int] | 
 def movements(ctx: Context, p: Placement, cache: dict) -> list[Movement]:
     """The connection lanes the placement releases (see the module's interpretation)."""
     road = ctx.road(p.road)
-    if road is None or not road.lane_sections or usable(ctx, road) is None:
+    if road is None or not road.lane_sections or ctx.usable_geometry(road) is None:
         return []
     out: list[Movement] = []
     for index, lane_id in _lanes(road, p):
@@ -166,7 +165,7 @@ def movements(ctx: Context, p: Placement, cache: dict) -> list[Movement]:
             if ctx.incoming_contact(junction, c) is not end or c.contact_point is None:
                 continue
             connecting = ctx.road(c.connecting_road)
-            if connecting is None or usable(ctx, connecting) is None:
+            if connecting is None or ctx.usable_geometry(connecting) is None:
                 continue
             for ll in c.lane_links:
                 if ll.from_lane != end_lane:

@@ -216,7 +216,7 @@ def test_centre_lines_in_batches_are_each_lanes_own(corpus_dir: Path, name: str)
     entries, grids, wanted = [], [], []
     with np.errstate(all="ignore"):
         for road in ctx.document.roads:
-            geometry = sampled.usable(ctx, road)
+            geometry = ctx.usable_geometry(road)
             for index in range(len(road.lane_sections)) if geometry is not None else ():
                 entries.append((geometry, index))
                 grids.append(sampled.section_samples(ctx, road, index))
