@@ -10,7 +10,7 @@ from xodrcheck.findings import Finding
 from xodrcheck.fix import places
 from xodrcheck.fix.edits import set_attribute
 from xodrcheck.fix.registry import Repair, Skip, fixer
-from xodrcheck.fix.workspace import Workspace, link_at, other_end
+from xodrcheck.fix.workspace import Workspace
 from xodrcheck.model import Connection, ContactPoint, ElementType, Junction, JunctionLaneLink, JunctionType, Road
 
 #: How far along the road (m) a point may lie from a road's end and still be at that end (lanes are matched across
@@ -33,7 +33,7 @@ def _junction_end(junction: Junction, road: Road) -> list[ContactPoint]:
     return [
         end
         for end in (ContactPoint.START, ContactPoint.END)
-        if (link := link_at(road, end)) is not None
+        if (link := road.link_at(end)) is not None
         and link.element_type is ElementType.JUNCTION
         and link.element_id == junction.id
     ]
@@ -48,7 +48,7 @@ def _nearer_end(ws: Workspace, road: Road, incoming: Road, incoming_end: Contact
         return None
     distance = {end: math.hypot(p[0] - there[0], p[1] - there[1]) for end, p in ends.items() if p is not None}
     near = min(distance, key=lambda end: distance[end])
-    far = distance[other_end(near)]
+    far = distance[near.opposite]
     width = max(places.width_at(ws, road, near), places.width_at(ws, incoming, incoming_end), ws.tolerances.gap)
     return near if distance[near] <= width and far >= distance[near] + ws.tolerances.gap else None
 
@@ -74,7 +74,7 @@ def set_connection_contact_point(ws: Workspace, findings: list[Finding]) -> Iter
         linked = [
             end
             for end in (ContactPoint.START, ContactPoint.END)
-            if (link := link_at(target, end)) is not None
+            if (link := target.link_at(end)) is not None
             and link.element_type is ElementType.ROAD
             and link.element_id == incoming.id
         ]

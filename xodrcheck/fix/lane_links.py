@@ -10,7 +10,7 @@ from xodrcheck.fix import places
 from xodrcheck.fix.edits import Edit, remove_element
 from xodrcheck.fix.linking import across, add_link
 from xodrcheck.fix.registry import Repair, Skip, fixer
-from xodrcheck.fix.workspace import Workspace, link_at
+from xodrcheck.fix.workspace import Workspace
 from xodrcheck.fix.xmltext import Element
 from xodrcheck.model import ContactPoint, ElementType, Lane, Road
 from xodrcheck.rules.lane_joints import WORD, Side
@@ -122,7 +122,7 @@ def remove_lane_link_into_junction(ws: Workspace, findings: list[Finding]) -> It
         road, index, lane, element = located
         tags = set()
         for end in _ends_of(road, index):
-            link = link_at(road, end)
+            link = road.link_at(end)
             targets = lane.predecessors if end is ContactPoint.START else lane.successors
             if link is not None and link.element_type is ElementType.JUNCTION and targets:
                 tags.add(_WORD[end])
@@ -166,7 +166,7 @@ def remove_lane_link_to_nothing(ws: Workspace, findings: list[Finding]) -> Itera
         tags, near = set(), []
         for end in _ends_of(road, index):
             targets = lane.predecessors if end is ContactPoint.START else lane.successors
-            if link_at(road, end) is None and targets:
+            if road.link_at(end) is None and targets:
                 tags.add(_WORD[end])
                 near += places.roads_near_end(ws, road, end)
         if not tags:

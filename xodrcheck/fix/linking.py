@@ -5,7 +5,7 @@ road link both roads make), and the edit that puts a ``<predecessor>`` or ``<suc
 from __future__ import annotations
 
 from xodrcheck.fix.edits import Edit, child_indent, insert_child
-from xodrcheck.fix.workspace import Workspace, link_at
+from xodrcheck.fix.workspace import Workspace
 from xodrcheck.fix.xmltext import Element
 from xodrcheck.model import ContactPoint, ElementType
 from xodrcheck.rules.lane_joints import Side
@@ -20,13 +20,13 @@ def across(ws: Workspace, side: Side) -> Side | None:
     step = -1 if end is ContactPoint.START else 1
     if 0 <= index + step < len(road.lane_sections):
         return Side(road, index + step, ContactPoint.END if end is ContactPoint.START else ContactPoint.START)
-    link = link_at(road, end)
+    link = road.link_at(end)
     if link is None or link.element_type is not ElementType.ROAD or link.contact_point is None:
         return None
     target = ws.road(link.element_id)
     if target is None or not target.lane_sections:
         return None
-    back = link_at(target, link.contact_point)
+    back = target.link_at(link.contact_point)
     if back is None or back.element_type is not ElementType.ROAD or back.element_id != road.id:
         return None
     other = 0 if link.contact_point is ContactPoint.START else len(target.lane_sections) - 1

@@ -10,7 +10,7 @@ from xodrcheck.findings import Finding
 from xodrcheck.fix.edits import Edit, remove_element
 from xodrcheck.fix.junctions import connection_at, lane_link_at
 from xodrcheck.fix.registry import Repair, Skip, fixer
-from xodrcheck.fix.workspace import Workspace, link_at
+from xodrcheck.fix.workspace import Workspace
 from xodrcheck.fix.xmltext import Element
 from xodrcheck.model import ContactPoint, ElementType, Road
 
@@ -20,7 +20,7 @@ _WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}
 def _dangling_end(ws: Workspace, road: Road, finding: Finding) -> ContactPoint | None:
     ends = []
     for end in (ContactPoint.START, ContactPoint.END):
-        link = link_at(road, end)
+        link = road.link_at(end)
         if link is None or (finding.line and link.line != finding.line):
             continue
         exists = ws.road(link.element_id) if link.element_type is ElementType.ROAD else ws.junction(link.element_id)
@@ -70,7 +70,7 @@ def drop_dangling_road_link(ws: Workspace, findings: list[Finding]) -> Iterator[
         parent: Element = element.parent
         alone = all(c is element for c in parent.children)
         edits = (remove_element(ws.text, parent if alone else element), *lanes)
-        link = link_at(road, end)
+        link = road.link_at(end)
         assert link is not None
         yield Repair(
             (finding,),

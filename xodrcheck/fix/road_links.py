@@ -9,7 +9,7 @@ from xodrcheck.findings import Finding
 from xodrcheck.fix import places
 from xodrcheck.fix.linking import add_link
 from xodrcheck.fix.registry import Repair, Skip, fixer
-from xodrcheck.fix.workspace import Workspace, link_at
+from xodrcheck.fix.workspace import Workspace
 from xodrcheck.fix.xmltext import encode_value
 from xodrcheck.model import ContactPoint, ElementType, Road
 from xodrcheck.rules.lane_joints import WORD
@@ -37,7 +37,7 @@ def return_road_link(ws: Workspace, findings: list[Finding]) -> Iterator[Repair 
         if road is None:
             continue
         for end in (ContactPoint.START, ContactPoint.END):
-            link = link_at(road, end)
+            link = road.link_at(end)
             if link is None or link.element_type is not ElementType.ROAD or link.contact_point is None:
                 continue
             if finding.s is not None and abs(finding.s - ws.end_s(road, end)) > 1e-6:
@@ -45,7 +45,7 @@ def return_road_link(ws: Workspace, findings: list[Finding]) -> Iterator[Repair 
             target = ws.road(link.element_id)
             if target is None or target.id == road.id:
                 continue
-            if link_at(target, link.contact_point) is not None:
+            if target.link_at(link.contact_point) is not None:
                 yield Skip(finding, f"road {target.id} links something else at its {link.contact_point.value}")
                 break
             here, there = places.end_pose(ws, road, end), places.end_pose(ws, target, link.contact_point)

@@ -14,21 +14,12 @@ from typing import TYPE_CHECKING
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import Finding
 from xodrcheck.fix.xmltext import Element, XmlText, scan
-from xodrcheck.model import Connection, ContactPoint, Document, Junction, JunctionLaneLink, Lane, Road, RoadLink
+from xodrcheck.model import Connection, ContactPoint, Document, Junction, JunctionLaneLink, Lane, Road
 
 if TYPE_CHECKING:
     from xodrcheck.geometry.lanes import RoadGeometry
 
-__all__ = ["Workspace", "link_at", "other_end"]
-
-
-def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
-    """The road's link at ``end``: its predecessor at the start, its successor at the end."""
-    return road.predecessor if end is ContactPoint.START else road.successor
-
-
-def other_end(end: ContactPoint) -> ContactPoint:
-    return ContactPoint.END if end is ContactPoint.START else ContactPoint.START
+__all__ = ["Workspace"]
 
 
 def _pick(candidates: list[Element], line: int) -> Element | None:

@@ -64,10 +64,6 @@ class Onward:
     junction: str | None = None
 
 
-def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
-    return road.predecessor if end is ContactPoint.START else road.successor
-
-
 def end_index(road: Road, end: ContactPoint) -> int:
     """The lane section at a road's ``end``."""
     return 0 if end is ContactPoint.START else len(road.lane_sections) - 1
@@ -96,7 +92,7 @@ class Topology:
             if road.junction is None or not road.lane_sections:
                 continue
             for end in (ContactPoint.START, ContactPoint.END):
-                link = link_at(road, end)
+                link = road.link_at(end)
                 if link is not None and link.element_type is ElementType.ROAD:
                     self._touching.setdefault(link.element_id, []).append((road, end))
         for junction in document.junctions:
@@ -112,7 +108,7 @@ class Topology:
         last = len(road.lane_sections) - 1
         if (end is ContactPoint.END and index < last) or (end is ContactPoint.START and index > 0):
             return self._next_section(road, index, lane, travel)
-        link = link_at(road, end)
+        link = road.link_at(end)
         if link is None:
             return Onward((), OPEN, f"road {road.id} has no {_word(end)}: an open edge of the map")
         if link.element_type is ElementType.ROAD:
@@ -151,7 +147,7 @@ class Topology:
             return Onward((), BROKEN, f"which end of road {other.id} road {road.id} links to is not known")
         j = end_index(other, contact)
         ids = dict.fromkeys(links_across(lane, end))
-        back = link_at(other, contact)
+        back = other.link_at(contact)
         if _names(back, ElementType.ROAD, road.id) and back is not None and back.contact_point in (None, end):
             section = other.lane_sections[j]
             ids.update((v.id, None) for v in section.lanes if v.id != 0 and lane.id in links_across(v, contact))
@@ -172,7 +168,7 @@ class Topology:
             contact = _contact(c, other, ElementType.ROAD, road.id)
             if contact is None:
                 continue
-            back = link_at(other, contact)
+            back = other.link_at(contact)
             if _names(back, ElementType.ROAD, road.id) and back is not None and back.contact_point not in (None, end):
                 continue  # the connection leaves from the road's other end
             j = end_index(other, contact)
@@ -180,7 +176,7 @@ class Topology:
                 Target(other, j, ll.to_lane, entering(contact)) for ll in c.lane_links if ll.from_lane == lane.id
             )
         for other, contact in self._touching.get(road.id, ()):  # connecting lanes whose own links name this lane
-            back = link_at(other, contact)
+            back = other.link_at(contact)
             if other.junction != junction.id or back is None or back.contact_point not in (None, end):
                 continue
             j = end_index(other, contact)
@@ -229,7 +225,7 @@ def _contact(c: Connection, road: Road, kind: ElementType, element_id: str) -> C
     the links say where it is (``connection-contact-point`` reports the disagreement)."""
     given = c.contact_point
     named = _contact_naming(road, kind, element_id)
-    if given is None or (named is not None and not _names(link_at(road, given), kind, element_id)):
+    if given is None or (named is not None and not _names(road.link_at(given), kind, element_id)):
         return named
     return given
 
@@ -237,7 +233,7 @@ def _contact(c: Connection, road: Road, kind: ElementType, element_id: str) -> C
 def _contact_naming(road: Road, kind: ElementType, element_id: str) -> ContactPoint | None:
     """The end of ``road`` whose link names the element (the start when both do); ``None`` when neither does."""
     for end in (ContactPoint.START, ContactPoint.END):
-        if _names(link_at(road, end), kind, element_id):
+        if _names(road.link_at(end), kind, element_id):
             return end
     return None
 

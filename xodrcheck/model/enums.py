@@ -57,6 +57,11 @@ class ContactPoint(enum.Enum):
     START = "start"
     END = "end"
 
+    @property
+    def opposite(self) -> ContactPoint:
+        """The road's other end."""
+        return ContactPoint.END if self is ContactPoint.START else ContactPoint.START
+
 
 class ElementDir(enum.Enum):
     """OpenDRIVE 1.8 ``elementDir`` of a link into a direct junction / road: ``+`` or ``-``."""

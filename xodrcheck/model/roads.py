@@ -74,6 +74,10 @@ class Road:
     #: Links the reader could not read (without elementType or elementId): not links, facts about the file.
     unread_links: tuple[UnreadLink, ...] = ()
 
+    def link_at(self, end: ContactPoint) -> RoadLink | None:
+        """The road's link at ``end``: its predecessor at the start, its successor at the end."""
+        return self.predecessor if end is ContactPoint.START else self.successor
+
     def section_end(self, index: int) -> float:
         """End s of lane section ``index`` (the next section's start or the road length; earlier when the section
         has a 1.9 ``length``)."""

@@ -28,7 +28,6 @@ from xodrcheck.model import (
     LaneDirection,
     LaneSection,
     Road,
-    RoadLink,
     TrafficRule,
 )
 
@@ -37,15 +36,6 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from xodrcheck.geometry.lanes import RoadGeometry
     from xodrcheck.model import RoadObject
-
-
-def link_at(road: Road, end: ContactPoint) -> RoadLink | None:
-    """The road's link at ``end``: its predecessor at the start, its successor at the end."""
-    return road.predecessor if end is ContactPoint.START else road.successor
-
-
-def other_end(end: ContactPoint) -> ContactPoint:
-    return ContactPoint.END if end is ContactPoint.START else ContactPoint.START
 
 
 def travel_direction(road: Road, lane: Lane) -> int | None:
@@ -303,7 +293,7 @@ class Context:
         out: dict[str, list[tuple[Road, ContactPoint]]] = {}
         for road in self.document.roads:
             for end in (ContactPoint.START, ContactPoint.END):
-                link = link_at(road, end)
+                link = road.link_at(end)
                 if link is not None and link.element_type is ElementType.JUNCTION and link.element_id is not None:
                     out.setdefault(link.element_id, []).append((road, end))
         return {k: tuple(v) for k, v in out.items()}
@@ -361,7 +351,7 @@ class Context:
         ends = [
             end
             for end in (ContactPoint.START, ContactPoint.END)
-            if (link := link_at(incoming, end)) is not None
+            if (link := incoming.link_at(end)) is not None
             and link.element_type is ElementType.JUNCTION
             and link.element_id == junction.id
         ]
@@ -369,7 +359,7 @@ class Context:
             return ends[0]
         connecting = self.road(self.connected_road_id(connection))
         if connecting is not None and connection.contact_point is not None:
-            back = link_at(connecting, connection.contact_point)
+            back = connecting.link_at(connection.contact_point)
             if (
                 back is not None
                 and back.element_type is ElementType.ROAD
@@ -388,7 +378,7 @@ class Context:
         of each connection whose linked road is ``road`` at ``end``. Unknown targets give nothing (the reference rules
         report them).
         """
-        link = link_at(road, end)
+        link = road.link_at(end)
         if link is None:
             return ()
         if link.element_type is ElementType.ROAD:

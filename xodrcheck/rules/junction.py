@@ -19,7 +19,7 @@ from xodrcheck.model import (
 )
 from xodrcheck.rules import junction_uids as U
 from xodrcheck.rules import road_uids as RU
-from xodrcheck.rules.context import Context, link_at, travel_direction
+from xodrcheck.rules.context import Context, travel_direction
 from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.rules.resolved import Resolved, resolved_connections
 
@@ -75,7 +75,7 @@ def junction_incoming_not_linked(ctx: Context):
                 road = ctx.road(road_id)
                 if road is None or road.id in reported:
                     continue
-                links = [link_at(road, end) for end in (ContactPoint.START, ContactPoint.END)]
+                links = [road.link_at(end) for end in (ContactPoint.START, ContactPoint.END)]
                 if any(
                     link is not None and link.element_type is ElementType.JUNCTION and link.element_id == junction.id
                     for link in links
@@ -142,7 +142,7 @@ def connection_contact_point(ctx: Context):
                     line=c.line or None,
                 )
                 continue
-            link = link_at(target, c.contact_point)
+            link = target.link_at(c.contact_point)
             word = "predecessor" if c.contact_point is ContactPoint.START else "successor"
             uid = U.CONNECTION_START_ALONG if c.contact_point is ContactPoint.START else U.CONNECTION_END_OPPOSITE
             if direct:
@@ -158,7 +158,7 @@ def connection_contact_point(ctx: Context):
                 continue
             if link is not None and link.element_type is ElementType.ROAD and link.element_id == c.incoming_road:
                 continue
-            other = link_at(target, ContactPoint.END if c.contact_point is ContactPoint.START else ContactPoint.START)
+            other = target.link_at(ContactPoint.END if c.contact_point is ContactPoint.START else ContactPoint.START)
             hint = ""
             if other is not None and other.element_type is ElementType.ROAD and other.element_id == c.incoming_road:
                 hint = f"; its other end is: contactPoint should be {'end' if word == 'predecessor' else 'start'}"
@@ -327,7 +327,7 @@ def incoming_lane_unconnected(ctx: Context):
         if road.junction is not None or not road.lane_sections:
             continue
         for end in (ContactPoint.START, ContactPoint.END):
-            link = link_at(road, end)
+            link = road.link_at(end)
             if link is None or link.element_type is not ElementType.JUNCTION:
                 continue
             into = ctx.junction(link.element_id)

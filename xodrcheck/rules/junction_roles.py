@@ -18,7 +18,7 @@ from typing import TYPE_CHECKING
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, describe_junction, link_at, other_end, written_id
+from xodrcheck.rules.context import Context, describe_junction, written_id
 from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 
@@ -269,7 +269,7 @@ def virtual_junction_range(ctx: Context):
 def _main_road_ends(road: Road, main: str) -> Iterator[tuple[ContactPoint, float | None, int]]:
     """(end, elementS, line) of each link of ``road`` to road ``main``."""
     for end in (ContactPoint.START, ContactPoint.END):
-        link = link_at(road, end)
+        link = road.link_at(end)
         if link is not None and link.element_type is ElementType.ROAD and link.element_id == main:
             yield end, link.element_s, link.line
 
@@ -374,10 +374,10 @@ def reachable(ctx: Context, junction: Junction) -> dict[RoadEnd, set[RoadEnd]]:
             connecting = ctx.road(c.connecting_road)
             if connecting is None or c.contact_point is None:
                 continue
-            near = link_at(connecting, c.contact_point)
+            near = connecting.link_at(c.contact_point)
             if near is not None and near.element_type is ElementType.ROAD and near.element_id == c.incoming_road:
                 source = (c.incoming_road, near.contact_point)
-            link = link_at(connecting, other_end(c.contact_point))
+            link = connecting.link_at(c.contact_point.opposite)
             if link is not None and link.element_type is ElementType.ROAD:
                 target = (link.element_id, link.contact_point)
         if target is None:

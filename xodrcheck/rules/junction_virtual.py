@@ -18,7 +18,7 @@ from xodrcheck.findings import Basis, Category, Finding, Severity
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
 from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, describe_junction, link_at
+from xodrcheck.rules.context import Context, describe_junction
 from xodrcheck.rules.registry import NO_UID, rule
 from xodrcheck.rules.road_ends import end_s, left_of
 from xodrcheck.rules.sampled import angle_between, warning_note
@@ -40,7 +40,7 @@ def _branches(ctx: Context) -> Iterator[tuple[Junction, Road, Road, ContactPoint
                 continue
             seen.add(road.id)
             for end in (ContactPoint.START, ContactPoint.END):
-                link = link_at(road, end)
+                link = road.link_at(end)
                 if link is None or link.element_type is not ElementType.ROAD or link.element_id != main.id:
                     continue
                 if link.element_s is None or not 0.0 <= link.element_s <= main.length:

@@ -13,7 +13,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, Road
-from xodrcheck.rules.context import Context, link_at, travel_direction
+from xodrcheck.rules.context import Context, travel_direction
 from xodrcheck.support.quantities import metres
 
 #: The lane link that crosses each end: ``predecessor`` at a start, ``successor`` at an end.
@@ -74,13 +74,13 @@ def joints(ctx: Context) -> Iterator[Joint]:
         if not sections:
             continue
         for end in (ContactPoint.START, ContactPoint.END):
-            link = link_at(road, end)
+            link = road.link_at(end)
             if link is None or link.element_type is not ElementType.ROAD or link.contact_point is None:
                 continue
             target = ctx.road(link.element_id)
             if target is None or not target.lane_sections:
                 continue
-            back = link_at(target, link.contact_point)
+            back = target.link_at(link.contact_point)
             mutual = back is not None and back.element_type is ElementType.ROAD and back.element_id == road.id
             index, target_index = ctx.section_index_at(road, end), ctx.section_index_at(target, link.contact_point)
             if index is None or target_index is None:  # both roads have lane sections (checked above)

@@ -9,7 +9,7 @@ from collections import defaultdict
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Lane
 from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context, link_at
+from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_joints import Joint, joints, opposed, side_lanes
 from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
@@ -58,7 +58,7 @@ def lane_link_not_omitted(ctx: Context):
         if not road.lane_sections:
             continue
         for end in (ContactPoint.START, ContactPoint.END):
-            link = link_at(road, end)
+            link = road.link_at(end)
             if link is None or link.element_type is not ElementType.JUNCTION:
                 continue
             index = ctx.section_index_at(road, end) or 0

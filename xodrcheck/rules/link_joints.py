@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from xodrcheck.findings import Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, Road
 from xodrcheck.rules import junction_uids as JU
-from xodrcheck.rules.context import Context, Neighbour, link_at
+from xodrcheck.rules.context import Context, Neighbour
 from xodrcheck.rules.registry import NO_UID
 from xodrcheck.rules.road_ends import EndPoint, RoadEnd, end_s, reference_end, road_end
 
@@ -58,7 +58,7 @@ def joint_line(road: Road, end: ContactPoint, neighbour: Neighbour) -> int:
     """The source line that declares the joint: the junction connection's, else the road link's (0: none)."""
     if neighbour.connection is not None:
         return neighbour.connection.line
-    link = link_at(road, end)
+    link = road.link_at(end)
     return link.line if link is not None else 0
 
 
@@ -101,7 +101,7 @@ def lane_pairs(road: Road, end: ContactPoint, neighbour: Neighbour) -> list[tupl
     for lane in road.lane_sections[index].lanes:
         for other in lane.predecessors if end is ContactPoint.START else lane.successors:
             pairs.setdefault((lane.id, other), lane.line)
-    back = link_at(neighbour.road, neighbour.contact)
+    back = neighbour.road.link_at(neighbour.contact)
     if back is not None and back.element_type is ElementType.ROAD and back.element_id == road.id:
         other_index = 0 if neighbour.contact is ContactPoint.START else len(neighbour.road.lane_sections) - 1
         for lane in neighbour.road.lane_sections[other_index].lanes:

@@ -8,7 +8,7 @@ from __future__ import annotations
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, Road, RoadLink
 from xodrcheck.rules import road_uids as U
-from xodrcheck.rules.context import Context, link_at
+from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
 
 _WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}
@@ -59,7 +59,7 @@ def link_not_reciprocal(ctx: Context):
     """
     for road in ctx.document.roads:
         for end in (ContactPoint.START, ContactPoint.END):
-            link = link_at(road, end)
+            link = road.link_at(end)
             if link is None:
                 continue
             where = {"road": road.id, **ctx.end_at(road, end), "line": link.line or road.line or None}
@@ -80,7 +80,7 @@ def link_not_reciprocal(ctx: Context):
             target = ctx.road(link.element_id)
             if target is None or link.contact_point is None:
                 continue  # reported by road-link-target-missing / link-contact-point-missing
-            back = link_at(target, link.contact_point)
+            back = target.link_at(link.contact_point)
             if back is not None and back.element_type is ElementType.ROAD and back.element_id == road.id:
                 if back.contact_point is not None and back.contact_point is not end:
                     yield link_not_reciprocal.finding(
@@ -127,7 +127,7 @@ def link_contact_point_missing(ctx: Context):
     """
     for road in ctx.document.roads:
         for end in (ContactPoint.START, ContactPoint.END):
-            link = link_at(road, end)
+            link = road.link_at(end)
             if (
                 link is not None
                 and link.element_type is ElementType.ROAD
@@ -165,7 +165,7 @@ def junction_needed(ctx: Context):
         if road.junction is not None:
             continue  # connecting roads of one junction share their ends on purpose
         for end in (ContactPoint.START, ContactPoint.END):
-            link = link_at(road, end)
+            link = road.link_at(end)
             if link is None or link.element_type is not ElementType.ROAD or link.element_s is not None:
                 continue
             target = ctx.road(link.element_id)

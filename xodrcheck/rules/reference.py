@@ -14,7 +14,7 @@ from xodrcheck.model import ContactPoint, ElementType, JunctionType, LaneSection
 from xodrcheck.rules import feature_uids as F
 from xodrcheck.rules import junction_uids as JU
 from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context, link_at
+from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import NO_UID, Rule, rule
 from xodrcheck.support.quantities import metres
 
@@ -170,7 +170,7 @@ def road_link_target_missing(ctx: Context):
     """
     for road in ctx.document.roads:
         for end in (ContactPoint.START, ContactPoint.END):
-            link = link_at(road, end)
+            link = road.link_at(end)
             if link is None:
                 continue
             kind = "predecessor" if end is ContactPoint.START else "successor"
@@ -401,7 +401,7 @@ def _lane_link_targets(
         return f"lane section s={metres(road.lane_sections[index - 1].s)}", road.lane_sections[index - 1]
     if end is ContactPoint.END and index < last:
         return f"lane section s={metres(road.lane_sections[index + 1].s)}", road.lane_sections[index + 1]
-    link = link_at(road, end)
+    link = road.link_at(end)
     if link is None:
         return None, None
     target = ctx.road(link.element_id) if link.element_type is ElementType.ROAD else None

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from xodrcheck.model import Connection, ContactPoint, ElementType, Junction, JunctionType, Road
-from xodrcheck.rules.context import Context, link_at
+from xodrcheck.rules.context import Context
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,7 +43,7 @@ def resolved_connections(ctx: Context) -> Iterator[Resolved]:
 def _contact_agrees(junction: Junction, c: Connection, target: Road, contact: ContactPoint) -> bool:
     """Whether the target road's link at the connection's contact point names the incoming road (default junction)
     or the junction (direct junction)."""
-    link = link_at(target, contact)
+    link = target.link_at(contact)
     if link is None:
         return False
     if junction.type is JunctionType.DIRECT:

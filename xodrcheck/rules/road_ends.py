@@ -3,8 +3,7 @@
 :func:`road_end` gives every lane line of a usable road (:meth:`Context.usable_geometry`) at its start or end
 (:class:`RoadEnd` of :class:`EndPoint`), :func:`reference_end` the reference line there; both are cached with the
 check's :class:`~xodrcheck.rules.context.Context` and dropped by :func:`xodrcheck.rules.sampled.release_lines`. An end
-is evaluated just before it (:func:`end_s`, :func:`left_of`). :mod:`xodrcheck.rules.sampled` names all of them as
-before.
+is evaluated just before it (:func:`end_s`, :func:`left_of`).
 """
 
 from __future__ import annotations

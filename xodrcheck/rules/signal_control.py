@@ -31,7 +31,7 @@ import numpy as np
 
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
-from xodrcheck.rules.context import Context, link_at, travel_direction
+from xodrcheck.rules.context import Context, travel_direction
 from xodrcheck.rules.lane_paths import centre_path, parted
 from xodrcheck.rules.registry import rule
 
@@ -155,7 +155,7 @@ def movements(ctx: Context, p: Placement, cache: dict) -> list[Movement]:
         if reached is None:
             continue
         end, end_lane = reached
-        link = link_at(road, end)
+        link = road.link_at(end)
         if link is None or link.element_type is not ElementType.JUNCTION:
             continue
         junction = ctx.junction(link.element_id)

@@ -61,10 +61,6 @@ SLACK = 1e-3
 Piece = tuple[str, ContactPoint]
 
 
-def _other(end: ContactPoint) -> ContactPoint:
-    return ContactPoint.START if end is ContactPoint.END else ContactPoint.END
-
-
 def _one_way(road: Road) -> ContactPoint | None:
     """The end traffic leaves ``road`` by, when every driving lane of it drives the same way; None otherwise."""
     if road.junction is not None:
@@ -99,7 +95,7 @@ def _continuations(document: Document, free: Sequence[Junction]) -> dict[str, li
             continue
         for f in flows(document, junction):
             a, b = f.source, f.target
-            if exits.get(a.road) is a.end and b.road in exits and exits[b.road] is _other(b.end) and a.road != b.road:
+            if exits.get(a.road) is a.end and b.road in exits and exits[b.road] is b.end.opposite and a.road != b.road:
                 entry = (b.road, junction.id, f.via or "")
                 if entry not in out[a.road]:
                     out[a.road].append(entry)
@@ -110,7 +106,7 @@ def _continuations(document: Document, free: Sequence[Junction]) -> dict[str, li
             and link.element_type is ElementType.ROAD
             and link.element_id in exits
             and link.contact_point is not None
-            and exits[link.element_id] is _other(link.contact_point)
+            and exits[link.element_id] is link.contact_point.opposite
         ):
             out[r].append((link.element_id, None, ""))
     return out

@@ -11,7 +11,7 @@ from tests.xodrcheck.rules.helpers import fixture
 from xodrcheck.config import Config, Tolerances
 from xodrcheck.model import ContactPoint, Lane, LaneDirection, LaneType, TrafficRule
 from xodrcheck.reader import read
-from xodrcheck.rules.context import Context, link_at, other_end, travel_direction
+from xodrcheck.rules.context import Context, travel_direction
 
 JUNCTION = fixture("link-not-reciprocal", "pass_junction.xodr")
 SECTIONS = fixture("zero-width-lane-linked", "pass.xodr")
@@ -67,7 +67,7 @@ def test_travel_direction_follows_side_and_traffic_rule():
     assert travel_direction(road, _lane(-1)) == 1 and travel_direction(road, _lane(1)) == -1
     lht = dataclasses.replace(road, rule=TrafficRule.LHT)
     assert travel_direction(lht, _lane(-1)) == -1 and travel_direction(lht, _lane(2)) == 1
-    assert link_at(road, ContactPoint.END) is road.successor and other_end(ContactPoint.END) is ContactPoint.START
+    assert road.link_at(ContactPoint.END) is road.successor and ContactPoint.END.opposite is ContactPoint.START
 
 
 def _lane(lane_id: int, lane_type: LaneType = LaneType.DRIVING, direction: LaneDirection | None = None) -> Lane:
@@ -154,7 +154,7 @@ def test_junction_link_ends_index_every_road_end_naming_a_junction():
     expected: dict[str, list[tuple[str, ContactPoint]]] = {}
     for road in ctx.document.roads:
         for end in (ContactPoint.START, ContactPoint.END):
-            link = link_at(road, end)
+            link = road.link_at(end)
             if link is not None and link.element_type.value == "junction":
                 expected.setdefault(link.element_id, []).append((road.id, end))
     got = {j: [(road.id, end) for road, end in ends] for j, ends in ctx.junction_link_ends.items()}
