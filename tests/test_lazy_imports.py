@@ -151,7 +151,7 @@ def test_plain_check_loads_no_junction_object_or_signal_module(tmp_path: Path, p
     # has junction parts, objects or signals (Context.road_objects, the model's junction parts and signals)
     names = modules(tmp_path, "xodrcheck.cli", "xodrcheck", "check", str(plain))
     rules = {"xodrcheck.rules.junction_roles", "xodrcheck.rules.junction_entries", "xodrcheck.rules.object_geometry"}
-    assert rules | {"xodrcheck.rules.signal_control", "xodrcheck.rules.junction_shapes"} <= names
+    assert rules | {"xodrcheck.rules.signal_control", "xodrcheck.rules.shared.junction_shapes"} <= names
     assert FEATURE_MODULES.isdisjoint(names)
 
 

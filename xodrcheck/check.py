@@ -23,10 +23,10 @@ from pathlib import Path
 from xodrcheck.config import Config, ConfigError
 from xodrcheck.findings import Category, Finding, OutOfTime, Severity
 from xodrcheck.rules import load_rules
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.internal import ENGINE_CODES as _ENGINE_CODES
 from xodrcheck.rules.internal import RULE_CRASHED, RULE_OUT_OF_TIME
 from xodrcheck.rules.registry import Rule
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.standard import annex_rules, is_uid, uid_matches
 from xodrcheck.support import memory
 from xodrcheck.verdict import judge

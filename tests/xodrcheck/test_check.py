@@ -138,7 +138,7 @@ def test_a_time_budget_set_and_spent_makes_the_check_incomplete_and_failed():
 
 def test_no_time_budget_by_default_so_the_verdict_does_not_depend_on_speed(monkeypatch):
     """A machine so slow that every rule starts hours after the file was read still runs every rule."""
-    from xodrcheck.rules import context
+    from xodrcheck.rules.shared import context
 
     clock = iter(range(0, 10**9, 3600))
     monkeypatch.setattr(context.time, "monotonic", lambda: float(next(clock)))
@@ -190,7 +190,7 @@ def test_footprint_union_stops_when_out_of_time():
 
 def test_rule_stopped_by_the_budget_keeps_an_x901_error_not_a_crash(monkeypatch):
     """A rule interrupted part way (here: the overlap index while it unites a folded strip) reports X901 'stopped'."""
-    from xodrcheck.rules import context
+    from xodrcheck.rules.shared import context
 
     calls = {"n": 0}
 

@@ -21,8 +21,8 @@ from tests.conftest import corpus_files
 from tests.xodrcheck.treetext import integer, local, number, numbers
 from xodrcheck.model import RECORDED, ContactPoint, Document, Junction
 from xodrcheck.reader import parse_tree, read
-from xodrcheck.rules.context import describe_junction, written_id
 from xodrcheck.rules.junction_usage import first_lines
+from xodrcheck.rules.shared.context import describe_junction, written_id
 
 HERE = Path(__file__).parent
 FIXTURES = sorted((HERE / "rules" / "fixtures").rglob("*.xodr")) + sorted((HERE / "opendrive19").glob("*.xodr"))

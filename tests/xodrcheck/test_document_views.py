@@ -25,7 +25,7 @@ from tests.conftest import corpus_files
 from tests.xodrcheck.treetext import integer, local, number
 from xodrcheck.model import Document, Lane, LaneSection, Road
 from xodrcheck.reader import parse_tree, read
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.shared.context import Context
 
 HERE = Path(__file__).parent
 FIXTURES = sorted((HERE / "rules" / "fixtures").rglob("*.xodr")) + sorted((HERE / "opendrive19").glob("*.xodr"))

@@ -1,6 +1,6 @@
 """The geometric rules' shared caches stay within their byte budgets on a map bigger than them, and the findings are
 those of an unbounded run (xodrcheck.support.budget, xodrcheck.geometry.lanes.EVALUATION_BUDGET,
-xodrcheck.rules.sampled)."""
+xodrcheck.rules.shared.sampled)."""
 
 from __future__ import annotations
 
@@ -14,8 +14,8 @@ from xodrcheck.config import Config
 from xodrcheck.geometry import lanes
 from xodrcheck.model import ContactPoint
 from xodrcheck.reader import read
-from xodrcheck.rules import road_ends, sampled
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.shared import road_ends, sampled
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.budget import ByteBudget
 
 #: The modules whose rules read the shared section lines, road ends and lane evaluations.

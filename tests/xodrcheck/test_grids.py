@@ -1,5 +1,5 @@
-"""The sampling grids of many sections at once (xodrcheck.rules.grids) are those the section-by-section formula gives
-(the former sampled._grid, kept here as the reference), to the last bit."""
+"""The sampling grids of many sections at once (xodrcheck.rules.shared.grids) are those the section-by-section
+formula gives (the former sampled._grid, kept here as the reference), to the last bit."""
 
 from __future__ import annotations
 
@@ -13,8 +13,8 @@ from xodrcheck.config import Config, Tolerances
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.geometry.sampling import step_counts
 from xodrcheck.reader import read
-from xodrcheck.rules import grids, road_ends, sampled
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.shared import grids, road_ends, sampled
+from xodrcheck.rules.shared.context import Context
 
 
 def _reference(tol: Tolerances, geometry: RoadGeometry, section_index: int) -> np.ndarray:

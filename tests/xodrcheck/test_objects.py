@@ -14,7 +14,7 @@ from tests.xodrcheck import schemadocs as D
 from xodrcheck.geometry.object_shape import curve_end, curve_points, outline_uv, repeat_t
 from xodrcheck.model import LaneLayer, Orientation, RoadObject
 from xodrcheck.reader import read
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.shared.context import Context
 
 FEATURES = Path(__file__).parent / "opendrive19" / "features.xodr"
 

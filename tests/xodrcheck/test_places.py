@@ -1,5 +1,5 @@
-"""The places of many findings evaluated together (xodrcheck.rules.places.locate_all) are those of evaluating each
-alone (Context.locate), to the last bit, on roads of lines and arcs and of spirals."""
+"""The places of many findings evaluated together (xodrcheck.rules.shared.places.locate_all) are those of evaluating
+each alone (Context.locate), to the last bit, on roads of lines and arcs and of spirals."""
 
 from __future__ import annotations
 
@@ -11,8 +11,8 @@ import pytest
 from xodrcheck.check import Selection, run_rules
 from xodrcheck.config import Config
 from xodrcheck.reader import read_keeping_tree
-from xodrcheck.rules import places
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.shared import places
+from xodrcheck.rules.shared.context import Context
 
 
 def _findings(path: Path) -> tuple[list, Context]:

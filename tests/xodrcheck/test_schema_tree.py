@@ -15,7 +15,7 @@ from xodrcheck.check import Selection, run_rules
 from xodrcheck.findings import Category
 from xodrcheck.reader import read
 from xodrcheck.rules import load_rules
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.shared.context import Context
 
 FIXTURES = Path(__file__).parent / "rules" / "fixtures"
 #: A small corpus map with junctions, signals, controllers and objects.

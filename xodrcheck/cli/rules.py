@@ -28,8 +28,8 @@ import json
 from xodrcheck.cli.common import error
 from xodrcheck.findings import Severity
 from xodrcheck.rules import load_rules
-from xodrcheck.rules.plaintext import plain
 from xodrcheck.rules.registry import Rule
+from xodrcheck.rules.shared.plaintext import plain
 
 NAME = "rules"
 HELP = (

@@ -13,7 +13,7 @@ from xodrcheck.fix.registry import Repair, Skip, fixer
 from xodrcheck.fix.workspace import Workspace
 from xodrcheck.fix.xmltext import Element
 from xodrcheck.model import ContactPoint, ElementType, Lane, Road
-from xodrcheck.rules.lane_joints import WORD, Side
+from xodrcheck.rules.shared.lane_joints import WORD, Side
 
 _WORD = WORD
 #: How far along the road (m) a lane's centre may lie from the joint and still count as there.

@@ -8,7 +8,7 @@ from xodrcheck.fix.edits import Edit, child_indent, insert_child
 from xodrcheck.fix.workspace import Workspace
 from xodrcheck.fix.xmltext import Element
 from xodrcheck.model import ContactPoint, ElementType
-from xodrcheck.rules.lane_joints import Side
+from xodrcheck.rules.shared.lane_joints import Side
 
 __all__ = ["across", "add_link"]
 

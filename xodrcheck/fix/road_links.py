@@ -12,7 +12,7 @@ from xodrcheck.fix.registry import Repair, Skip, fixer
 from xodrcheck.fix.workspace import Workspace
 from xodrcheck.fix.xmltext import encode_value
 from xodrcheck.model import ContactPoint, ElementType, Road
-from xodrcheck.rules.lane_joints import WORD
+from xodrcheck.rules.shared.lane_joints import WORD
 
 
 def _link_markup(ws: Workspace, end: ContactPoint, road: Road, contact: ContactPoint) -> bytes:

@@ -38,7 +38,7 @@ from xodrcheck.model import ElevationGrid
 HERMITE = np.array([[1.0, 0.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [-3.0, 3.0, -2.0, -1.0], [2.0, -2.0, 1.0, 1.0]])
 
 #: Points this close to a square's edge (in grid steps) count as on it: they take the square their ``toward``
-#: direction leads into (a road end is evaluated a relative 1e-9 before it, see ``rules.road_ends.left_of``).
+#: direction leads into (a road end is evaluated a relative 1e-9 before it, see ``rules.shared.road_ends.left_of``).
 _EDGE = 1e-6
 
 

@@ -9,7 +9,7 @@ drive along the reference line (increasing s) and the left lanes against it; ``L
 from __future__ import annotations
 
 from xodrcheck.model import ContactPoint, Lane, Road
-from xodrcheck.rules.context import travel_direction
+from xodrcheck.rules.shared.context import travel_direction
 
 __all__ = ["entering", "leaving", "travels"]
 
@@ -18,7 +18,7 @@ ALONG, AGAINST = 1, -1
 
 def travels(road: Road, lane: Lane) -> tuple[int, ...]:
     """The directions traffic may drive on ``lane`` of ``road``: ``(1,)``, ``(-1,)``, ``(1, -1)`` for both ways;
-    ``()`` for the centre lane 0. The one direction is :func:`xodrcheck.rules.context.travel_direction`'s (side,
+    ``()`` for the centre lane 0. The one direction is :func:`xodrcheck.rules.shared.context.travel_direction`'s (side,
     traffic rule, ``reversed``); a lane open both ways (``both``, type ``bidirectional``) or of a type that carries no
     directed traffic (a sidewalk, say, in a graph asked to hold one) is driven both ways."""
     if lane.id == 0:

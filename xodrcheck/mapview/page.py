@@ -296,7 +296,7 @@ def _docs(files: Sequence[FilePage]) -> dict[str, dict[str, str]]:
     on."""
     from xodrcheck.report import rule_bases
     from xodrcheck.rules import load_rules
-    from xodrcheck.rules.docformat import html
+    from xodrcheck.rules.shared.docformat import html
 
     rules = load_rules()
     found: dict[str, list[Finding]] = {}

@@ -32,8 +32,8 @@ from xodrcheck.model import (
     Speed,
 )
 from xodrcheck.reader.context import LEAF, SKIP_RECORD, Context, cubic, describe
-from xodrcheck.rules import lane_uids as U
 from xodrcheck.rules import xml as R
+from xodrcheck.rules.shared import lane_uids as U
 
 if TYPE_CHECKING:  # pragma: no cover
     from xodrcheck.model import (

@@ -28,9 +28,9 @@ from xodrcheck.model import (
 )
 from xodrcheck.reader.context import LEAF, Context, cubics, describe
 from xodrcheck.reader.lanes import build_layers
-from xodrcheck.rules import road_uids as RU
 from xodrcheck.rules import xml as R
-from xodrcheck.rules.lane_uids import SECTION_REQ as LANE_SECTION_REQUIRED
+from xodrcheck.rules.shared import road_uids as RU
+from xodrcheck.rules.shared.lane_uids import SECTION_REQ as LANE_SECTION_REQUIRED
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:  # pragma: no cover

@@ -19,9 +19,9 @@ from pathlib import Path
 from xodrcheck.findings import Finding, Severity
 from xodrcheck.report import rule_bases, tool_version
 from xodrcheck.rules import load_rules
-from xodrcheck.rules.docformat import markdown
-from xodrcheck.rules.plaintext import plain
 from xodrcheck.rules.registry import Rule
+from xodrcheck.rules.shared.docformat import markdown
+from xodrcheck.rules.shared.plaintext import plain
 from xodrcheck.standard import ANNEX_URL
 
 SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"

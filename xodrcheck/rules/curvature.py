@@ -1,6 +1,6 @@
 """Curvature (``C0xx``): curves a vehicle can follow and lane borders that do not fold.
 
-Every lane section is sampled and evaluated once (:func:`xodrcheck.rules.sampled.section_lines`: every knot, and
+Every lane section is sampled and evaluated once (:func:`xodrcheck.rules.shared.sampled.section_lines`: every knot, and
 steps keeping the chord error under ``chord`` for curves within the radius bound) and the curvature of the lines is
 evaluated exactly there
 (offset-curve curvature with the lane's width change, :mod:`xodrcheck.geometry.lanes`).
@@ -29,9 +29,9 @@ from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.geometry.batch import centre_lines
 from xodrcheck.geometry.lines import tightest
 from xodrcheck.model import Road
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import BATCH_SAMPLES, lines_in_order, section_lines, section_samples
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.sampled import BATCH_SAMPLES, lines_in_order, section_lines, section_samples
 from xodrcheck.support.quantities import metres
 
 

@@ -10,10 +10,10 @@ from typing import NamedTuple
 from xodrcheck.findings import Category, Severity
 from xodrcheck.geometry.cubic import CubicCurve
 from xodrcheck.model import Arc, ParamPoly3, PRange
-from xodrcheck.rules import road_uids as U
-from xodrcheck.rules.context import Context
-from xodrcheck.rules.places import element_place, finite
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import road_uids as U
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.places import element_place, finite
 from xodrcheck.support.quantities import metres
 
 

@@ -23,12 +23,12 @@ from xodrcheck.geometry import profile
 from xodrcheck.geometry.planview import ReferenceLine, evaluate_element
 from xodrcheck.geometry.sampling import capped
 from xodrcheck.model import Cubic, Geometry, Road, Spiral
-from xodrcheck.rules import road_uids as U
-from xodrcheck.rules.context import Context
-from xodrcheck.rules.lane_uids import SECTION_VALID_LENGTH
-from xodrcheck.rules.places import element_place, finite
 from xodrcheck.rules.registry import NO_UID, rule
-from xodrcheck.rules.sampled import angle_between, grid_step, warning_note
+from xodrcheck.rules.shared import road_uids as U
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.lane_uids import SECTION_VALID_LENGTH
+from xodrcheck.rules.shared.places import element_place, finite
+from xodrcheck.rules.shared.sampled import angle_between, grid_step, warning_note
 from xodrcheck.support.quantities import metres
 
 _KIND = {"Line": "line", "Arc": "arc", "Spiral": "spiral", "Poly3": "poly3", "ParamPoly3": "paramPoly3"}

@@ -12,9 +12,9 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.geometry.planview import evaluate_element
-from xodrcheck.rules import road_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import road_uids as U
+from xodrcheck.rules.shared.context import Context
 
 #: Longest stretch of a reference line between two of the points :func:`_extent` takes (metres): an arc of radius
 #: 50 m bulges 6 cm between points this far apart.

@@ -11,9 +11,9 @@ from collections.abc import Iterator
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import ID_CLASSES, ID_REFERENCES, SIGNAL_LINKS, SIGNS, IdElement, IdTable
-from xodrcheck.rules import feature_uids as F
-from xodrcheck.rules.context import Context, describe_junction
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import feature_uids as F
+from xodrcheck.rules.shared.context import Context, describe_junction
 
 
 def _table(ctx: Context) -> IdTable:

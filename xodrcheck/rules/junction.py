@@ -17,11 +17,11 @@ from xodrcheck.model import (
     JunctionType,
     LaneDirection,
 )
-from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules import road_uids as RU
-from xodrcheck.rules.context import Context, travel_direction
 from xodrcheck.rules.registry import NO_UID, rule
-from xodrcheck.rules.resolved import Resolved, resolved_connections
+from xodrcheck.rules.shared import junction_uids as U
+from xodrcheck.rules.shared import road_uids as RU
+from xodrcheck.rules.shared.context import Context, travel_direction
+from xodrcheck.rules.shared.resolved import Resolved, resolved_connections
 
 
 def _toward(end: ContactPoint) -> int:

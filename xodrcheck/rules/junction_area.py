@@ -1,7 +1,7 @@
 """A junction's area in plan view (``J024``-``J026``): its boundary closes counter-clockwise (12.10), its reference
 line reaches it (12.9) and its elevation grid covers it (12.11).
 
-The boundary's segments are evaluated with the exact lane geometry (:mod:`xodrcheck.rules.junction_shapes`). A
+The boundary's segments are evaluated with the exact lane geometry (:mod:`xodrcheck.rules.shared.junction_shapes`). A
 boundary is checked only when every segment can be placed (an unknown road or lane is ``J023``'s or the reference
 rules'), and only for common junctions (a boundary elsewhere is ``J012``'s). Gaps between segments over ``gap``
 (1 cm) are errors.
@@ -16,9 +16,10 @@ import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, Road
-from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, describe_junction
-from xodrcheck.rules.junction_shapes import (
+from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import junction_uids as U
+from xodrcheck.rules.shared.context import Context, describe_junction
+from xodrcheck.rules.shared.junction_shapes import (
     boundary_pieces,
     gaps,
     grid_area,
@@ -27,12 +28,11 @@ from xodrcheck.rules.junction_shapes import (
     road_points,
     signed_area,
 )
-from xodrcheck.rules.registry import rule
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
     from xodrcheck.model import Junction
-    from xodrcheck.rules.junction_shapes import Piece
+    from xodrcheck.rules.shared.junction_shapes import Piece
 
 
 def _boundaries(ctx: Context) -> Iterator[tuple[Junction, list[Piece]]]:
@@ -263,7 +263,7 @@ def crossing_section_coverage(ctx: Context) -> Iterator[Finding]:
 
         <roadSection id="1" roadId="2" sStart="98" sEnd="102"/>
     """
-    from xodrcheck.rules.junction_shapes import strip
+    from xodrcheck.rules.shared.junction_shapes import strip
 
     for j in ctx.document.junctions:
         if j.type is not JunctionType.CROSSING:
@@ -352,7 +352,7 @@ def overlap_zone_too_short(ctx: Context) -> Iterator[Finding]:
     """
     import shapely
 
-    from xodrcheck.rules.junction_shapes import strip
+    from xodrcheck.rules.shared.junction_shapes import strip
 
     for j in ctx.document.junctions:
         lanes = _zone_lanes(ctx, j) if j.type is JunctionType.DIRECT else None

@@ -5,10 +5,10 @@ from __future__ import annotations
 
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import Connection, ContactPoint
-from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import NO_UID, rule
-from xodrcheck.rules.resolved import resolved_connections
+from xodrcheck.rules.shared import junction_uids as U
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.resolved import resolved_connections
 
 
 @rule("J006", "junction-merge", Category.JUNCTION, Severity.ERROR, basis=Basis.PLAUSIBILITY)

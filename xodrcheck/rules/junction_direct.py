@@ -24,10 +24,10 @@ from dataclasses import dataclass
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Connection, ContactPoint, Junction, JunctionType, Road
-from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.road_ends import reference_end, road_end
+from xodrcheck.rules.shared import junction_uids as U
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.road_ends import reference_end, road_end
 
 
 @dataclass(frozen=True, slots=True)

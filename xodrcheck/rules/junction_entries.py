@@ -31,17 +31,17 @@ import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import ContactPoint, JunctionType, Road
-from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, describe_junction
-from xodrcheck.rules.junction_shapes import boundary_pieces, joint_lanes, reference_line
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.road_ends import end_s
+from xodrcheck.rules.shared import junction_uids as U
+from xodrcheck.rules.shared.context import Context, describe_junction
+from xodrcheck.rules.shared.junction_shapes import boundary_pieces, joint_lanes, reference_line
+from xodrcheck.rules.shared.road_ends import end_s
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
     from xodrcheck.geometry.junction_grid import GridSurface
     from xodrcheck.model import JointSegment, Junction
-    from xodrcheck.rules.junction_shapes import Piece, ReferenceLine
+    from xodrcheck.rules.shared.junction_shapes import Piece, ReferenceLine
 
 #: Step (m) into the road over which its grade at the end is measured (a difference quotient of the exact surface).
 _DS = 1e-3

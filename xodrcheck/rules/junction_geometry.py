@@ -2,7 +2,7 @@
 
 A *connection lane* is a lane of a connecting road entered from a lane of an incoming road by a junction
 ``<laneLink>``; its path is the lane's centre line from the contact point through the connecting road (following the
-lane's links across lane sections), sampled once per lane section (:mod:`xodrcheck.rules.sampled`). Only lanes whose
+lane's links across lane sections), sampled once per lane section (:mod:`.shared.sampled`). Only lanes whose
 traffic enters the junction are followed (``junction-lane-link-outbound`` reports the others).
 
 * The paths leaving one incoming road may share their start (several turns from one lane) but must not meet
@@ -25,11 +25,11 @@ import numpy as np
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.geometry.batch import centre_lines
 from xodrcheck.model import Connection, ContactPoint, JunctionType, Road
-from xodrcheck.rules.context import Context, travel_direction
-from xodrcheck.rules.lane_paths import Known, centre_path, crossing, walk
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.road_ends import end_s, road_end
-from xodrcheck.rules.sampled import BATCH_SAMPLES, section_samples
+from xodrcheck.rules.shared.context import Context, travel_direction
+from xodrcheck.rules.shared.lane_paths import Known, centre_path, crossing, walk
+from xodrcheck.rules.shared.road_ends import end_s, road_end
+from xodrcheck.rules.shared.sampled import BATCH_SAMPLES, section_samples
 
 if TYPE_CHECKING:
     pass

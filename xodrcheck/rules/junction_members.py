@@ -15,10 +15,10 @@ from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, JunctionType, Lane, LaneType, Road
-from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, describe_junction, written_id
 from xodrcheck.rules.junction_roles import legs
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import junction_uids as U
+from xodrcheck.rules.shared.context import Context, describe_junction, written_id
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:

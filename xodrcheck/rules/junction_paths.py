@@ -1,7 +1,7 @@
 """Where a cross path's crossing road lies (``J028``, 12.5 and 12.7): its ends on the lanes it links, and the whole
 road inside its junction.
 
-Areas are plan-view lane strips of the exact lane geometry (:func:`xodrcheck.rules.junction_shapes.strip`): the
+Areas are plan-view lane strips of the exact lane geometry (:func:`xodrcheck.rules.shared.junction_shapes.strip`): the
 lane a ``<startLaneLink>``/``<endLaneLink>`` names, around its ``s``; a virtual junction's main road between
 ``sStart`` and ``sEnd``; a common junction's boundary, or without one the strips of its other roads. Points further
 than ``gap`` (1 cm) outside are reported. Cross paths whose roads or lanes do not exist are ``J022``'s and the
@@ -17,11 +17,11 @@ import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import JunctionType, Road
-from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, describe_junction
-from xodrcheck.rules.junction_shapes import boundary_pieces, gaps, ring, road_points, strip
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.road_ends import left_of
+from xodrcheck.rules.shared import junction_uids as U
+from xodrcheck.rules.shared.context import Context, describe_junction
+from xodrcheck.rules.shared.junction_shapes import boundary_pieces, gaps, ring, road_points, strip
+from xodrcheck.rules.shared.road_ends import left_of
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:

@@ -17,9 +17,9 @@ from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
-from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, describe_junction, written_id
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import junction_uids as U
+from xodrcheck.rules.shared.context import Context, describe_junction, written_id
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:

@@ -20,9 +20,9 @@ from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import ConnectionType, JunctionType
-from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, describe_junction, written_id
 from xodrcheck.rules.registry import Rule, rule
+from xodrcheck.rules.shared import junction_uids as U
+from xodrcheck.rules.shared.context import Context, describe_junction, written_id
 
 if TYPE_CHECKING:
     from xodrcheck.model import Connection, ConnectionEnd, Junction

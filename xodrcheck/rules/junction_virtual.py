@@ -17,11 +17,11 @@ import numpy as np
 from xodrcheck.findings import Basis, Category, Finding, Severity
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
-from xodrcheck.rules import junction_uids as U
-from xodrcheck.rules.context import Context, describe_junction
 from xodrcheck.rules.registry import NO_UID, rule
-from xodrcheck.rules.road_ends import end_s, left_of
-from xodrcheck.rules.sampled import angle_between, warning_note
+from xodrcheck.rules.shared import junction_uids as U
+from xodrcheck.rules.shared.context import Context, describe_junction
+from xodrcheck.rules.shared.road_ends import end_s, left_of
+from xodrcheck.rules.shared.sampled import angle_between, warning_note
 from xodrcheck.support.quantities import metres
 
 

@@ -2,7 +2,7 @@
 
 The rules here walk *joints*, where the lanes of one lane section end and those of another begin (between two lane
 sections of a road, or at a road link between two roads): what a joint is and how to list them is
-:mod:`xodrcheck.rules.lane_joints`'s.
+:mod:`xodrcheck.rules.shared.lane_joints`'s.
 """
 
 from __future__ import annotations
@@ -11,10 +11,10 @@ from typing import Any
 
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, Lane, LaneType
-from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context
-from xodrcheck.rules.lane_joints import WORD, joints, opposed, pair_key, side_lanes
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import lane_uids as U
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.lane_joints import WORD, joints, opposed, pair_key, side_lanes
 from xodrcheck.support.quantities import metres
 
 # ------------------------------------------------------------------------------------------------ centre lane, ids

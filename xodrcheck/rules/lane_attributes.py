@@ -8,10 +8,10 @@ from collections.abc import Iterator
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import DRIVABLE_LANE_TYPES as DRIVABLE
 from xodrcheck.model import Lane, LaneAccess, LaneDirection, LaneSection, Road
-from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context
-from xodrcheck.rules.lane_joints import joints, pair_key, side_lanes
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import lane_uids as U
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.lane_joints import joints, pair_key, side_lanes
 from xodrcheck.support.quantities import metres
 
 

@@ -5,10 +5,10 @@ from __future__ import annotations
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import grid_step
+from xodrcheck.rules.shared import lane_uids as U
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.sampled import grid_step
 from xodrcheck.support.quantities import metres
 
 

@@ -8,10 +8,10 @@ from collections import defaultdict
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Lane
-from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context
-from xodrcheck.rules.lane_joints import Joint, joints, opposed, side_lanes
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import lane_uids as U
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.lane_joints import Joint, joints, opposed, side_lanes
 from xodrcheck.support.quantities import metres
 
 _WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}

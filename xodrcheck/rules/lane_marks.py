@@ -6,9 +6,9 @@ from collections.abc import Iterator
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Lane, RoadMark, RoadMarkLine
-from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import lane_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 _NOT_CHECKED = (

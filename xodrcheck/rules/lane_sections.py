@@ -7,9 +7,9 @@ from collections.abc import Iterator
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Lane, Lanes, Road
-from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import lane_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 #: A lane section starting this close to s=0 starts at 0 (written-number noise, not a tolerance).

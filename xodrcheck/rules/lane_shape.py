@@ -18,10 +18,10 @@ import numpy as np
 from xodrcheck.findings import Category, Severity
 from xodrcheck.geometry.batch import Evaluation
 from xodrcheck.model import Road
-from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import BATCH_SAMPLES
+from xodrcheck.rules.shared import lane_uids as U
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.sampled import BATCH_SAMPLES
 from xodrcheck.support.quantities import metres
 
 _NODES = np.array([0.125, 0.375, 0.625, 0.875])

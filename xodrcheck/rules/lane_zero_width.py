@@ -13,10 +13,10 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Lane, Road
-from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.lane_shape import lane_width_bounds
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import lane_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 

@@ -23,8 +23,8 @@ ASAM's ``lane.smoothness.contact_point_no_horizontal_gaps``) and angles over ``k
 strict ``position`` (1 mm) and ``heading`` (1 mrad) tolerances, warnings. ``--profile strict`` makes every deviation
 over the strict values an error.
 
-The joints, the lanes linked across them and where they touch come from :mod:`xodrcheck.rules.link_joints`; what
-must meet at a lane-section boundary from :mod:`xodrcheck.rules.lane_boundary`.
+The joints, the lanes linked across them and where they touch come from :mod:`xodrcheck.rules.shared.link_joints`; what
+must meet at a lane-section boundary from :mod:`xodrcheck.rules.shared.lane_boundary`.
 """
 
 from __future__ import annotations
@@ -33,12 +33,13 @@ import math
 
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, LaneSection, Road
-from xodrcheck.rules import junction_uids as JU
-from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules import road_uids as RU
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.geometry import profile_steps
-from xodrcheck.rules.lane_boundary import (
+from xodrcheck.rules.registry import NO_UID, rule
+from xodrcheck.rules.shared import junction_uids as JU
+from xodrcheck.rules.shared import lane_uids as U
+from xodrcheck.rules.shared import road_uids as RU
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.lane_boundary import (
     boundary_links,
     change_text,
     group_heights,
@@ -47,8 +48,8 @@ from xodrcheck.rules.lane_boundary import (
     link_groups,
     unlinked_band,
 )
-from xodrcheck.rules.lane_joints import opposed
-from xodrcheck.rules.link_joints import (
+from xodrcheck.rules.shared.lane_joints import opposed
+from xodrcheck.rules.shared.link_joints import (
     border_gap,
     describe_joint,
     height_steps,
@@ -59,9 +60,8 @@ from xodrcheck.rules.link_joints import (
     lane_pairs,
     location,
 )
-from xodrcheck.rules.registry import NO_UID, rule
-from xodrcheck.rules.road_ends import reference_end, road_end
-from xodrcheck.rules.sampled import angle_between, section_lines, warning_note
+from xodrcheck.rules.shared.road_ends import reference_end, road_end
+from xodrcheck.rules.shared.sampled import angle_between, section_lines, warning_note
 from xodrcheck.support.quantities import metres
 
 

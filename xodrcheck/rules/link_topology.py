@@ -7,9 +7,9 @@ from __future__ import annotations
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, Road, RoadLink
-from xodrcheck.rules import road_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import road_uids as U
+from xodrcheck.rules.shared.context import Context
 
 _WORD = {ContactPoint.START: "predecessor", ContactPoint.END: "successor"}
 

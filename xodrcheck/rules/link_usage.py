@@ -16,9 +16,9 @@ from dataclasses import dataclass
 
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import Document, JunctionType, RoadLink, UnreadLink, XmlFacts
-from xodrcheck.rules import road_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import NO_UID, rule
+from xodrcheck.rules.shared import road_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.standard import applies
 
 _USAGE = (U.LINKAGE_ROAD_ATTRIBUTES, U.LINKAGE_JUNCTION_ATTRIBUTES, U.LINKAGE_VIRTUAL_ATTRIBUTES)

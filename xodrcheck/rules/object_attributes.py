@@ -15,9 +15,9 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import TrafficRule
-from xodrcheck.rules import object_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import object_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:

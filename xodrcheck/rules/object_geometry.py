@@ -3,7 +3,7 @@ sharing their points where they touch the outer one (13.1-13.3).
 
 Everything is compared in the object's local frame (:mod:`xodrcheck.geometry.object_place`): ``<cornerLocal>``,
 ``<curveLocal>`` and ``<vertexLocal>`` points are given there; ``<cornerRoad>`` and ``<vertexRoad>`` points are placed
-by the road's exact reference line (:meth:`~xodrcheck.rules.context.Context.geometry`) and brought into it.
+by the road's exact reference line (:meth:`~xodrcheck.rules.shared.context.Context.geometry`) and brought into it.
 """
 
 from __future__ import annotations
@@ -16,12 +16,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xodrcheck.findings import Basis, Category, Severity
-from xodrcheck.rules import object_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import label
 from xodrcheck.rules.object_outlines import name_of
 from xodrcheck.rules.object_skeletons import polyline_name
 from xodrcheck.rules.registry import NO_UID, rule
+from xodrcheck.rules.shared import object_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:

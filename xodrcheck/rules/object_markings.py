@@ -14,12 +14,12 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.rules import object_uids as U
-from xodrcheck.rules.context import Context
-from xodrcheck.rules.feature_uids import ONLY_REF_DEFINED_IDS
 from xodrcheck.rules.object_attributes import at, label
 from xodrcheck.rules.object_outlines import name_of
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import object_uids as U
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.feature_uids import ONLY_REF_DEFINED_IDS
 
 if TYPE_CHECKING:
     from xodrcheck.model import Marking, Outline, RoadObject

@@ -15,11 +15,11 @@ from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import CORNER_LOCAL, CORNER_ROAD, CURVE_LOCAL
-from xodrcheck.rules import object_uids as U
-from xodrcheck.rules.context import Context
-from xodrcheck.rules.feature_uids import ONLY_REF_DEFINED_IDS
 from xodrcheck.rules.object_attributes import at, label
 from xodrcheck.rules.registry import NO_UID, rule
+from xodrcheck.rules.shared import object_uids as U
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.feature_uids import ONLY_REF_DEFINED_IDS
 
 if TYPE_CHECKING:
     from xodrcheck.model import Outline, OutlinePoint, RoadObject

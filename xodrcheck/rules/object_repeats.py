@@ -7,10 +7,10 @@ from typing import TYPE_CHECKING
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import CORNER_ROAD
-from xodrcheck.rules import object_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import at, label
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import object_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:

@@ -16,10 +16,10 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.rules import object_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.object_attributes import at, label
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import object_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:  # pragma: no cover

@@ -17,10 +17,10 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Arc, Line, ParamPoly3, PRange
-from xodrcheck.rules import road_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.elements import length_verdict
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import road_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:

@@ -28,10 +28,10 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from xodrcheck.findings import Basis, Category, Severity
-from xodrcheck.rules import junction_uids as JU
-from xodrcheck.rules import road_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import junction_uids as JU
+from xodrcheck.rules.shared import road_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
@@ -127,7 +127,7 @@ def _in_junction(ctx: Context, road_id: str) -> bool:
 
 
 def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: str) -> Iterator:
-    from xodrcheck.rules.sampled import release_lines
+    from xodrcheck.rules.shared.sampled import release_lines
 
     release_lines(ctx)  # the rules after these read no section lines or road ends: room for the lane meshes
     surfaces = _overlap_index(ctx).surfaces

@@ -9,9 +9,9 @@ import numpy as np
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Lane, LaneSection, LaneType, Road
-from xodrcheck.rules import feature_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import feature_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:  # pragma: no cover - the model's railroad modules load for a file with stations or switches

@@ -20,8 +20,8 @@ from xodrcheck.graph.build import LaneGraph, Node, lane_graph
 from xodrcheck.graph.direction import leaving
 from xodrcheck.graph.reach import goes_on, traps, unentered
 from xodrcheck.model import ContactPoint, Lane, LaneDirection, LaneType, Road
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared.context import Context
 
 #: Stops a lane-level rule already reports (a dangling, reversed or unresolvable link) or the graph does not follow.
 _REPORTED_ELSEWHERE = frozenset({build.MISSING, build.AGAINST, topology.BROKEN, topology.UNFOLLOWED})

@@ -12,9 +12,9 @@ from collections.abc import Iterator
 
 from xodrcheck.findings import Category, Finding, Severity
 from xodrcheck.model import Cubic, Lane, LaneSection, Line, Profile, Road, RoadType
-from xodrcheck.rules import road_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import road_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 #: Relative floating-point noise under which two coefficients count as equal (a representation limit of the written

@@ -11,11 +11,11 @@ from typing import Any
 
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, LaneSection, Road
-from xodrcheck.rules import feature_uids as F
-from xodrcheck.rules import junction_uids as JU
-from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import NO_UID, Rule, rule
+from xodrcheck.rules.shared import feature_uids as F
+from xodrcheck.rules.shared import junction_uids as JU
+from xodrcheck.rules.shared import lane_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 

@@ -3,7 +3,7 @@
 Two kinds of rule share one registry:
 
 * *reader rules* (``check is None``) are emitted while the file is read (XML, attributes, structure);
-* *check rules* are functions of a :class:`~xodrcheck.rules.context.Context` yielding findings.
+* *check rules* are functions of a :class:`~xodrcheck.rules.shared.context.Context` yielding findings.
 
 Each rule's docstring carries a passing and a failing example; ``xodrcheck rules`` prints them.
 
@@ -62,7 +62,7 @@ class Rule:
     @property
     def summary(self) -> str:
         """The documentation's first sentence, whole, as plain text."""
-        from xodrcheck.rules.plaintext import summary
+        from xodrcheck.rules.shared.plaintext import summary
 
         return summary(self.doc) if self.doc.strip() else self.name
 

@@ -15,10 +15,10 @@ import numpy as np
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import Road, Shape
-from xodrcheck.rules import road_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
-from xodrcheck.rules.sampled import section_lines
+from xodrcheck.rules.shared import road_uids as U
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.sampled import section_lines
 from xodrcheck.support.quantities import metres
 
 _ALPHA_2 = re.compile(r"[A-Z]{2}")

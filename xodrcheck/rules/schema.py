@@ -6,8 +6,8 @@ import re
 from collections.abc import Iterable, Iterator
 
 from xodrcheck.findings import Basis, Category, Severity
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.schema import validate as schema
 
 #: Schema errors reported one by one per file; the rest are counted in one last finding.

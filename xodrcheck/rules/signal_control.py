@@ -31,9 +31,9 @@ import numpy as np
 
 from xodrcheck.findings import Basis, Category, Severity
 from xodrcheck.model import ContactPoint, ElementType, Junction, JunctionType, Road
-from xodrcheck.rules.context import Context, travel_direction
-from xodrcheck.rules.lane_paths import centre_path, parted
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared.context import Context, travel_direction
+from xodrcheck.rules.shared.lane_paths import centre_path, parted
 
 if TYPE_CHECKING:  # pragma: no cover - the model's signal module loads for a file with signals
     from xodrcheck.model import Controller, LaneValidity

@@ -13,9 +13,9 @@ import math
 import numpy as np
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.rules import feature_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import feature_uids as U
+from xodrcheck.rules.shared.context import Context
 
 _LEFT_OUT = (
     "boards are placed on the gantry object whose bounding box (length x width around its s/t, plus gantry_reach) "

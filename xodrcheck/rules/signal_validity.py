@@ -9,9 +9,9 @@ from typing import TYPE_CHECKING, Any
 
 from xodrcheck.findings import Category, Severity
 from xodrcheck.model import TrafficRule
-from xodrcheck.rules import feature_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import feature_uids as U
+from xodrcheck.rules.shared.context import Context
 
 if TYPE_CHECKING:  # pragma: no cover - the model's signal module loads for a file with signals
     from xodrcheck.model import LaneValidity, SignalReference

@@ -8,9 +8,9 @@ from collections.abc import Iterator
 from typing import TYPE_CHECKING, Any
 
 from xodrcheck.findings import Category, Severity
-from xodrcheck.rules import feature_uids as U
-from xodrcheck.rules.context import Context
 from xodrcheck.rules.registry import rule
+from xodrcheck.rules.shared import feature_uids as U
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:  # pragma: no cover - the model's surface module loads for a file with surfaces

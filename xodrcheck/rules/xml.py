@@ -10,9 +10,9 @@ absent, used the standard's default).
 from __future__ import annotations
 
 from xodrcheck.findings import Basis, Category, Severity
-from xodrcheck.rules import lane_uids as U
-from xodrcheck.rules import road_uids as RU
 from xodrcheck.rules.registry import declare
+from xodrcheck.rules.shared import lane_uids as U
+from xodrcheck.rules.shared import road_uids as RU
 
 NOT_WELL_FORMED = declare(
     "X101",

@@ -25,7 +25,7 @@ from xodrcheck.model import (
     Road,
     TrafficRule,
 )
-from xodrcheck.rules.context import travel_direction
+from xodrcheck.rules.shared.context import travel_direction
 
 #: Lane types of ramps and of the lanes beside a main road that lead to or from them (11.8).
 RAMP_TYPES = frozenset({LaneType.OFF_RAMP, LaneType.ON_RAMP, LaneType.CONNECTING_RAMP})
@@ -62,8 +62,8 @@ def lane_at(road: Road, end: ContactPoint, lane_id: int) -> Lane | None:
 
 def leads_in(road: Road, end: ContactPoint, lane_id: int) -> bool:
     """Whether traffic on lane ``lane_id`` drives towards ``end`` of ``road`` (module docstring): the lane's direction
-    of travel (:func:`~xodrcheck.rules.context.travel_direction`: its side, the traffic rule and a 1.8 ``direction``),
-    and for a lane without one (``both``, a shoulder...) the direction of its side."""
+    of travel (:func:`~xodrcheck.rules.shared.context.travel_direction`: its side, the traffic rule and a 1.8
+    ``direction``), and for a lane without one (``both``, a shoulder...) the direction of its side."""
     lane = lane_at(road, end, lane_id)
     direction = None if lane is None else travel_direction(road, lane)
     if direction is None:

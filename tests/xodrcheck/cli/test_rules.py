@@ -61,7 +61,7 @@ def test_list_is_plain_text_with_whole_sentences(capsys):
 
 
 def test_plain_text_conversion():
-    from xodrcheck.rules.plaintext import plain, summary
+    from xodrcheck.rules.shared.plaintext import plain, summary
 
     assert plain("a ``min_radius`` and :class:`~xodrcheck.config.Tolerances` and `x`") == (
         "a min_radius and Tolerances and x"

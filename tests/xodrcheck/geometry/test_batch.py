@@ -23,8 +23,9 @@ from xodrcheck.geometry.sampling import sample_sections
 from xodrcheck.mesh.surfaces import MAX_COORDINATE, build_surfaces
 from xodrcheck.model import LaneKey
 from xodrcheck.reader import read
-from xodrcheck.rules import curvature, junction_geometry, sampled
-from xodrcheck.rules.context import Context
+from xodrcheck.rules import curvature, junction_geometry
+from xodrcheck.rules.shared import sampled
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support import arrays
 
 CHORD, MAX_STEP, BUDGET = 0.01, 5.0, 200_000

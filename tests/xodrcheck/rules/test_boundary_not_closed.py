@@ -3,7 +3,7 @@
 import pytest
 
 from tests.xodrcheck.rules.helpers import findings, fixture, line_of
-from xodrcheck.rules import junction_uids as U
+from xodrcheck.rules.shared import junction_uids as U
 
 RULE = "boundary-not-closed"
 

@@ -42,7 +42,7 @@ def test_groups_that_take_turns_and_merges_pass():
 
 def test_merge_fixture_is_a_real_merge():
     from xodrcheck.reader import read
-    from xodrcheck.rules.context import Context
+    from xodrcheck.rules.shared.context import Context
     from xodrcheck.rules.signal_control import crossing, movements, placements
 
     path = fixture(RULE, "pass_merge.xodr")

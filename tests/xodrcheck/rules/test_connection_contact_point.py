@@ -14,7 +14,7 @@ def test_contact_point_end_for_a_road_that_starts_at_the_incoming_road():
 
 
 def test_contact_point_start_for_a_road_that_ends_at_the_incoming_road():
-    from xodrcheck.rules import junction_uids as U
+    from xodrcheck.rules.shared import junction_uids as U
 
     path = fixture(RULE, "fail_start.xodr")
     (f,) = findings(path, RULE)
@@ -23,7 +23,7 @@ def test_contact_point_start_for_a_road_that_ends_at_the_incoming_road():
 
 
 def test_the_end_fixture_names_end_opposite_linkage():
-    from xodrcheck.rules import junction_uids as U
+    from xodrcheck.rules.shared import junction_uids as U
 
     (f,) = findings(fixture(RULE, "fail.xodr"), RULE)
     assert f.rule_uid == U.CONNECTION_END_OPPOSITE

@@ -13,7 +13,7 @@ def test_two_connections_for_one_incoming_and_connecting_road():
 
 
 def test_duplicate_in_a_1_8_file_names_one_link_to_incoming():
-    from xodrcheck.rules import junction_uids as U
+    from xodrcheck.rules.shared import junction_uids as U
 
     path = fixture(RULE, "fail_1_8.xodr")
     (f,) = findings(path, RULE)

@@ -9,7 +9,7 @@ import pytest
 from tests.xodrcheck.rules.helpers import findings, fixture
 from xodrcheck.config import Tolerances, load_config
 from xodrcheck.findings import Severity
-from xodrcheck.rules.lane_paths import crossing
+from xodrcheck.rules.shared.lane_paths import crossing
 
 RULE = "connection-lanes-cross"
 

@@ -37,8 +37,8 @@ def test_leg_reaching_into_a_connection_it_does_not_join():
 
 
 def test_connecting_roads_of_two_junctions_overlap():
-    from xodrcheck.rules import junction_uids as JU
-    from xodrcheck.rules import road_uids as U
+    from xodrcheck.rules.shared import junction_uids as JU
+    from xodrcheck.rules.shared import road_uids as U
 
     found = findings(fixture(RULE, "fail_two_junctions.xodr"), RULE)
     both = [f for f in found if f.rule_uid == JU.NO_OVERLAP]

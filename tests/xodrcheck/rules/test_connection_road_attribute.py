@@ -1,7 +1,7 @@
 """Rule connection-road-attribute: one finding per Annex F UID that names the defect."""
 
 from tests.xodrcheck.rules.helpers import findings, fixture, line_of
-from xodrcheck.rules import junction_uids as U
+from xodrcheck.rules.shared import junction_uids as U
 
 RULE = "connection-road-attribute"
 

@@ -11,7 +11,7 @@ from tests.xodrcheck.rules.helpers import fixture
 from xodrcheck.config import Config, Tolerances
 from xodrcheck.model import ContactPoint, Lane, LaneDirection, LaneType, TrafficRule
 from xodrcheck.reader import read
-from xodrcheck.rules.context import Context, travel_direction
+from xodrcheck.rules.shared.context import Context, travel_direction
 
 JUNCTION = fixture("link-not-reciprocal", "pass_junction.xodr")
 SECTIONS = fixture("zero-width-lane-linked", "pass.xodr")

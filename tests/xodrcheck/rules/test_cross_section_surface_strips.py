@@ -1,7 +1,7 @@
 """Rule cross-section-surface-strips (U012): the findings each fail fixture gives."""
 
 from tests.xodrcheck.rules.helpers import findings, fixture, line_of
-from xodrcheck.rules import feature_uids as U
+from xodrcheck.rules.shared import feature_uids as U
 
 RULE = "cross-section-surface-strips"
 

@@ -4,7 +4,7 @@ import pytest
 
 from tests.xodrcheck.rules.helpers import findings, fixture, line_of
 from xodrcheck.findings import Severity
-from xodrcheck.rules import road_uids as U
+from xodrcheck.rules.shared import road_uids as U
 
 RULE = "curve-local-length-mismatch"
 

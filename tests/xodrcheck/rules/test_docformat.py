@@ -7,7 +7,7 @@ import re
 import pytest
 
 from xodrcheck.rules import load_rules
-from xodrcheck.rules.docformat import blocks, html, markdown
+from xodrcheck.rules.shared.docformat import blocks, html, markdown
 
 DOC = """A lane's ``width`` is below ``t * k`` for :class:`~xodrcheck.config.Tolerances` and `x`, *really*.
 

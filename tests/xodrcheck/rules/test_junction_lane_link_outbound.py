@@ -20,7 +20,7 @@ def test_before_17_it_is_an_info():
 
 
 def test_an_outbound_lane_link_is_an_error_from_1_8():
-    from xodrcheck.rules import junction_uids as U
+    from xodrcheck.rules.shared import junction_uids as U
 
     path = fixture(RULE, "fail_1_8.xodr")
     (f,) = findings(path, RULE)

@@ -2,7 +2,7 @@
 
 from tests.xodrcheck.rules.helpers import findings, fixture, line_of
 from xodrcheck.findings import Severity
-from xodrcheck.rules import junction_uids as U
+from xodrcheck.rules.shared import junction_uids as U
 
 RULE = "junction-unneeded"
 

@@ -22,7 +22,7 @@ def test_junction_connection_lanes_are_compared():
 
 
 def test_gaps_at_junctions_name_the_junction_rules():
-    from xodrcheck.rules import junction_uids as U
+    from xodrcheck.rules.shared import junction_uids as U
 
     common = findings(fixture(RULE, "fail_t_junction.xodr"), RULE)
     assert common and {f.rule_uid for f in common} == {U.CONNECTION_SMOOTH_FIT}

@@ -9,7 +9,7 @@ RULE = "lane-section-without-lanes"
 def test_permanent_section_with_only_its_centre_lane():
     """Not drivable (lane_section_drivable, a "should"); it still has lane 0, so layer_mandatory_permanent (at least
     one lane of the permanent layer at each s) is not what it breaks."""
-    from xodrcheck.rules import lane_uids as U
+    from xodrcheck.rules.shared import lane_uids as U
 
     path = fixture(RULE, "fail.xodr")
     (f,) = findings(path, RULE)

@@ -4,7 +4,7 @@ from tests.xodrcheck.rules.helpers import findings, fixture, line_of
 from xodrcheck.check import check
 from xodrcheck.config import Config
 from xodrcheck.findings import Basis, Severity
-from xodrcheck.rules import road_uids as U
+from xodrcheck.rules.shared import road_uids as U
 
 RULE = "link-attribute-usage"
 

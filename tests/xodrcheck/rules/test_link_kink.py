@@ -18,7 +18,7 @@ def test_heading_kink_without_gap():
 
 
 def test_kinks_at_junctions_name_the_junction_rules():
-    from xodrcheck.rules import junction_uids as U
+    from xodrcheck.rules.shared import junction_uids as U
 
     common = findings(fixture(RULE, "fail_t_junction.xodr"), RULE)
     assert {(f.road, f.rule_uid) for f in common} == {("1", U.CONNECTION_SMOOTH_FIT), ("10", U.CONNECTION_SMOOTH_FIT)}

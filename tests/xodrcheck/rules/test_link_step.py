@@ -50,7 +50,7 @@ def test_steps_within_the_position_tolerance_pass(tmp_path):
 
 
 def test_steps_at_junctions_name_the_junction_rules():
-    from xodrcheck.rules import junction_uids as U
+    from xodrcheck.rules.shared import junction_uids as U
 
     common = findings(fixture(RULE, "fail_t_junction.xodr"), RULE)
     assert len(common) == 2 and {f.rule_uid for f in common} == {U.CONNECTION_SMOOTH_FIT}

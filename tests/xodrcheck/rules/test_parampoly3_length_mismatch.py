@@ -2,7 +2,7 @@
 
 from tests.xodrcheck.rules.helpers import findings, fixture
 from xodrcheck.findings import Severity
-from xodrcheck.rules import road_uids as U
+from xodrcheck.rules.shared import road_uids as U
 
 RULE = "parampoly3-length-mismatch"
 

@@ -14,7 +14,7 @@ def test_length_on_a_permanent_section():
 def test_length_leaving_the_road_without_permanent_lanes():
     """The permanent section at s=20 ends at s=40 and the next starts at s=50: one finding, under
     layer_mandatory_permanent (no permanent lane from s=40 to s=50), which also says the length is not allowed."""
-    from xodrcheck.rules import lane_uids as U
+    from xodrcheck.rules.shared import lane_uids as U
 
     path = fixture(RULE, "fail_gap.xodr")
     (f,) = findings(path, RULE)

@@ -3,7 +3,7 @@
 from tests.xodrcheck.rules.helpers import findings, fixture, line_of
 from xodrcheck.check import check
 from xodrcheck.findings import Severity
-from xodrcheck.rules import road_uids as U
+from xodrcheck.rules.shared import road_uids as U
 
 RULE = "redundant-record"
 

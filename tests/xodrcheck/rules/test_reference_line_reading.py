@@ -4,7 +4,7 @@ order): the finding each of their fail fixtures gives, where, and with which UID
 import pytest
 
 from tests.xodrcheck.rules.helpers import findings, fixture, line_of
-from xodrcheck.rules import road_uids as U
+from xodrcheck.rules.shared import road_uids as U
 
 
 @pytest.mark.parametrize(

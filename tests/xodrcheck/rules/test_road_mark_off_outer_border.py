@@ -1,7 +1,7 @@
 """Rule road-mark-off-outer-border: the finding each fail fixture gives."""
 
 from tests.xodrcheck.rules.helpers import findings, fixture, line_of
-from xodrcheck.rules import lane_uids as U
+from xodrcheck.rules.shared import lane_uids as U
 
 RULE = "road-mark-off-outer-border"
 

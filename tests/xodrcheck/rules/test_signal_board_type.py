@@ -1,7 +1,7 @@
 """Rule signal-board-type (T003): the findings each fail fixture gives."""
 
 from tests.xodrcheck.rules.helpers import findings, fixture
-from xodrcheck.rules import feature_uids as U
+from xodrcheck.rules.shared import feature_uids as U
 
 RULE = "signal-board-type"
 

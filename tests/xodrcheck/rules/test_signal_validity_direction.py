@@ -1,7 +1,7 @@
 """Rule signal-validity-direction (T010): the findings each fail fixture gives."""
 
 from tests.xodrcheck.rules.helpers import findings, fixture, line_of
-from xodrcheck.rules import feature_uids as U
+from xodrcheck.rules.shared import feature_uids as U
 
 RULE = "signal-validity-direction"
 

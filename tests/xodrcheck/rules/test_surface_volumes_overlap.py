@@ -30,8 +30,8 @@ def test_piled_up_instances_are_thinned_and_still_overlap():
     """10 000 instances 1 mm apart (a typo for 1 m): a few dozen boxes, not 10^8 pairs, and the overlap is found."""
     from xodrcheck.check import check
     from xodrcheck.reader import read
-    from xodrcheck.rules.context import Context
     from xodrcheck.rules.object_surfaces import _boxes
+    from xodrcheck.rules.shared.context import Context
 
     data = _repeated("10", "0.001")
     found = [f for f in check(data, select=("B",)).findings if f.code in ("B053", "X900", "X901")]

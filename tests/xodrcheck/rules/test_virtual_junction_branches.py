@@ -1,7 +1,7 @@
 """Rule virtual-junction-branches: the finding each fail fixture gives."""
 
 from tests.xodrcheck.rules.helpers import findings, fixture, line_of
-from xodrcheck.rules import junction_uids as U
+from xodrcheck.rules.shared import junction_uids as U
 
 RULE = "virtual-junction-branches"
 

@@ -4,7 +4,7 @@ import pytest
 
 from tests.xodrcheck.rules.helpers import findings, fixture, line_of
 from xodrcheck.findings import Severity
-from xodrcheck.rules import junction_uids as U
+from xodrcheck.rules.shared import junction_uids as U
 
 RULE = "virtual-junction-joint"
 

@@ -1,13 +1,8 @@
 """Geometry the geometric rules share, computed once per file.
 
 Each lane section is sampled and evaluated once (:func:`section_lines`) and kept with the check's
-:class:`~xodrcheck.rules.context.Context`, so the link, curvature and junction rules share one evaluation. A road
-without a plan view or
-without lane sections has no geometry here (``None``): the reader reports those.
-
-The lane lines at road ends (:func:`road_end`, :func:`reference_end`, :class:`RoadEnd`, :class:`EndPoint`) and where
-an end is evaluated (:func:`end_s`, :func:`left_of`) moved to :mod:`xodrcheck.rules.road_ends`; they are named here as
-before.
+:class:`~xodrcheck.rules.shared.context.Context`, so the link, curvature and junction rules share one evaluation. A road
+without a plan view or without lane sections has no geometry here (``None``): the reader reports those.
 """
 
 from __future__ import annotations
@@ -25,11 +20,11 @@ from xodrcheck.geometry.batch import BATCH_SAMPLES, Evaluation
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.geometry.lines import LanePoints
 from xodrcheck.model import Road
-from xodrcheck.rules.context import Context
-from xodrcheck.rules.grids import section_grids
-from xodrcheck.rules.road_ends import END_CURVES as _END_CURVES
-from xodrcheck.rules.road_ends import ENDS as _ENDS
-from xodrcheck.rules.road_ends import REFERENCE as _REFERENCE
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.grids import section_grids
+from xodrcheck.rules.shared.road_ends import END_CURVES as _END_CURVES
+from xodrcheck.rules.shared.road_ends import ENDS as _ENDS
+from xodrcheck.rules.shared.road_ends import REFERENCE as _REFERENCE
 from xodrcheck.support.arrays import batches
 from xodrcheck.support.budget import ByteBudget, array_bytes
 from xodrcheck.support.quantities import metres

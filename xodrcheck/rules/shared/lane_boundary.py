@@ -11,7 +11,7 @@ from collections.abc import Iterator
 
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import LaneSection
-from xodrcheck.rules.sampled import SectionLines
+from xodrcheck.rules.shared.sampled import SectionLines
 
 
 def boundary_links(before: LaneSection, after: LaneSection) -> dict[tuple[int, int], int]:

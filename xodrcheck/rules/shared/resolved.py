@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from xodrcheck.model import Connection, ContactPoint, ElementType, Junction, JunctionType, Road
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.shared.context import Context
 
 
 @dataclass(frozen=True, slots=True)

@@ -224,7 +224,7 @@ class Context:
             return None
         import numpy as np
 
-        from xodrcheck.rules.places import lane_placed, points_at
+        from xodrcheck.rules.shared.places import lane_placed, points_at
 
         return points_at(geometry, np.array([float(s)]), lane_placed(geometry, s, lane, section_s))[0]
 
@@ -233,13 +233,13 @@ class Context:
         return key in self._positions
 
     def remember_position(self, key: tuple, point: tuple[float, float, float] | None) -> None:
-        """Keep a place evaluated elsewhere (:func:`xodrcheck.rules.places.locate_all`) as :meth:`position` would."""
+        """Keep a place evaluated elsewhere (:func:`.places.locate_all`) as :meth:`position` would."""
         self._positions[key] = point
 
     def locate_all(self, findings: list[Finding]) -> list[Finding]:
         """:meth:`locate` of every finding (places on one lane evaluated together:
-        :func:`xodrcheck.rules.places.locate_all`)."""
-        from xodrcheck.rules.places import locate_all
+        :func:`xodrcheck.rules.shared.places.locate_all`)."""
+        from xodrcheck.rules.shared.places import locate_all
 
         return locate_all(self, findings)
 

@@ -1,9 +1,9 @@
 """The lane lines and reference line at a road's ends, evaluated once per file for the rules that join roads.
 
-:func:`road_end` gives every lane line of a usable road (:meth:`Context.usable_geometry`) at its start or end
+:func:`road_end` gives every lane line of a usable road (:meth:`.context.Context.usable_geometry`) at its start or end
 (:class:`RoadEnd` of :class:`EndPoint`), :func:`reference_end` the reference line there; both are cached with the
-check's :class:`~xodrcheck.rules.context.Context` and dropped by :func:`xodrcheck.rules.sampled.release_lines`. An end
-is evaluated just before it (:func:`end_s`, :func:`left_of`).
+check's context and dropped by :func:`.sampled.release_lines`. An end is evaluated just before it (:func:`end_s`,
+:func:`left_of`).
 """
 
 from __future__ import annotations
@@ -18,7 +18,7 @@ from xodrcheck.geometry.batch import BATCH_SAMPLES, Evaluation
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.geometry.lines import LanePoints
 from xodrcheck.model import ContactPoint, Road
-from xodrcheck.rules.context import Context
+from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.arrays import batches
 
 

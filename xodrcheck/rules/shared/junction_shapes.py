@@ -23,9 +23,9 @@ import numpy as np
 
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.model import ContactPoint, Road
-from xodrcheck.rules.context import Context
-from xodrcheck.rules.road_ends import left_of
-from xodrcheck.rules.sampled import section_lines
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.road_ends import left_of
+from xodrcheck.rules.shared.sampled import section_lines
 
 if TYPE_CHECKING:
     from xodrcheck.model import (

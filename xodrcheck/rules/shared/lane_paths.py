@@ -9,8 +9,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from xodrcheck.model import ContactPoint, Road
-from xodrcheck.rules.context import Context
-from xodrcheck.rules.sampled import section_samples
+from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.sampled import section_samples
 
 if TYPE_CHECKING:
     import shapely

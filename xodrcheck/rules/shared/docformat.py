@@ -3,7 +3,7 @@
 The rules' docstrings use a small part of reStructuredText, and only that part is read: paragraphs, a paragraph ending
 in ``::`` followed by an indented literal block (``Passes::``; a bare ``::`` paragraph only opens the block), ``*`` or
 ``-`` bullet lists, and inline ``literal``, `interpreted`, :role:`~a.Target` and *emphasis*. Anything else is text.
-:mod:`xodrcheck.rules.plaintext` gives the same documentation as plain text for terminals.
+:mod:`xodrcheck.rules.shared.plaintext` gives the same documentation as plain text for terminals.
 """
 
 from __future__ import annotations

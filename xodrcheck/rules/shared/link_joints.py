@@ -14,10 +14,10 @@ from dataclasses import dataclass, field
 
 from xodrcheck.findings import Severity
 from xodrcheck.model import ContactPoint, ElementType, JunctionType, Road
-from xodrcheck.rules import junction_uids as JU
-from xodrcheck.rules.context import Context, Neighbour
 from xodrcheck.rules.registry import NO_UID
-from xodrcheck.rules.road_ends import EndPoint, RoadEnd, end_s, reference_end, road_end
+from xodrcheck.rules.shared import junction_uids as JU
+from xodrcheck.rules.shared.context import Context, Neighbour
+from xodrcheck.rules.shared.road_ends import EndPoint, RoadEnd, end_s, reference_end, road_end
 
 
 def joints(ctx: Context, once: bool = True) -> Iterator[tuple[Road, ContactPoint, Neighbour]]:

@@ -17,7 +17,7 @@ if TYPE_CHECKING:
     from xodrcheck.findings import Finding
     from xodrcheck.geometry.lanes import RoadGeometry
     from xodrcheck.model import Geometry, Road
-    from xodrcheck.rules.context import Context
+    from xodrcheck.rules.shared.context import Context
 
 #: (road id, s, lane, section_s): a place as a finding names it.
 Key = tuple[str, float, int | None, float | None]

@@ -13,7 +13,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass
 
 from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, Road
-from xodrcheck.rules.context import Context, travel_direction
+from xodrcheck.rules.shared.context import Context, travel_direction
 from xodrcheck.support.quantities import metres
 
 #: The lane link that crosses each end: ``predecessor`` at a start, ``successor`` at an end.

@@ -1,7 +1,7 @@
-"""The sampling grids of many lane sections at once (:func:`xodrcheck.rules.sampled.section_samples`): every section's
+"""The sampling grids of many lane sections at once (:func:`.sampled.section_samples`): every section's
 knots end to end in one array, the even steps between them in a few numpy calls over all sections.
 
-The arithmetic per element is :func:`xodrcheck.rules.sampled._grid`'s, so the grids are the same to the last bit:
+The arithmetic per element is :func:`xodrcheck.rules.shared.sampled._grid`'s, so the grids are the same to the last bit:
 step counts are ``ceil(length / step)`` elementwise (a section whose counts pass the sample budget is counted alone,
 :func:`xodrcheck.geometry.sampling.step_counts`); the samples are ``cut + length * offset / count`` elementwise; each
 grid ends with ``left_of(end)``, and a grid that is not already non-decreasing is made so by
@@ -17,7 +17,7 @@ import numpy as np
 from xodrcheck.config import Tolerances
 from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.geometry.sampling import raw_counts, step_counts
-from xodrcheck.rules.road_ends import left_of
+from xodrcheck.rules.shared.road_ends import left_of
 
 #: Knot intervals counted together (the temporaries of a batch scale with its samples, a few arrays of them).
 _BATCH_INTERVALS = 1 << 14
