@@ -3,6 +3,9 @@ groups, stations and vmsGroups, the root's facts, the table of every element and
 
 from __future__ import annotations
 
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
 from lxml import etree
 
 from xodrcheck.model import Document
@@ -13,6 +16,9 @@ from xodrcheck.reader.ids import id_table
 from xodrcheck.reader.junctions import build_junction
 from xodrcheck.reader.roads import build_road
 from xodrcheck.rules import xml as R
+
+if TYPE_CHECKING:  # pragma: no cover - the rarer kinds' model modules load when one appears
+    from xodrcheck.model import Controller, Header, Junction, JunctionGroup, Road, Station, VmsGroup
 
 __all__ = ["KNOWN_VERSIONS", "build_document"]
 
@@ -28,58 +34,74 @@ def build_document(ctx: Context, root: etree._Element, source: str | None) -> Do
             root,
         )
         return None
-    header_el = None
+    header = _header(ctx, root)
+    parts = _TopLevel()
+    for child in root:
+        parts.add(ctx, child)
+        ctx.forget_invalid()
+    return Document(
+        header=header,
+        roads=tuple(parts.roads),
+        junctions=tuple(parts.junctions),
+        controllers=tuple(parts.controllers),
+        source=source,
+        junction_groups=tuple(parts.groups),
+        stations=tuple(parts.stations),
+        vms_groups=tuple(parts.vms_groups),
+        xml=ctx.facts(root, _ROOT),
+        elements=element_table(root),
+        ids=id_table(root),
+    )
+
+
+def _header(ctx: Context, root: etree._Element) -> Header | None:
+    """The first ``<header>`` (a repeat and a missing one are reported)."""
+    first = None
     header = None
     for child in root.iterchildren("header"):
-        if header_el is None:
-            header_el = child
+        if first is None:
+            first = child
             header = build_header(ctx, child)
         else:
-            ctx.repeated(child, header_el)
-    if header_el is None:
+            ctx.repeated(child, first)
+    if first is None:
         ctx.report(R.MISSING_ELEMENT, f"{describe(root)} has no <header>; the OpenDRIVE version is unknown", root)
-    roads = []
-    junctions = []
-    controllers = []
-    groups = []
-    stations = []
-    vms_groups = []
-    for child in root:
+    return header
+
+
+@dataclass
+class _TopLevel:
+    """The records of the root's children, in file order (the rarer kinds' readers load when one appears)."""
+
+    roads: list[Road] = field(default_factory=list)
+    junctions: list[Junction] = field(default_factory=list)
+    controllers: list[Controller] = field(default_factory=list)
+    groups: list[JunctionGroup] = field(default_factory=list)
+    stations: list[Station] = field(default_factory=list)
+    vms_groups: list[VmsGroup] = field(default_factory=list)
+
+    def add(self, ctx: Context, child: etree._Element) -> None:
         tag = child.tag
         if tag == "road":
             road = build_road(ctx, child)
             if road is not None:
-                roads.append(road)
+                self.roads.append(road)
         elif tag == "junction":
             junction = build_junction(ctx, child)
             if junction is not None:
-                junctions.append(junction)
+                self.junctions.append(junction)
         elif tag == "controller" or tag == "vmsGroup":
             from xodrcheck.reader import signals
 
             if tag == "controller":
-                controllers.append(signals.controller(ctx, child))
+                self.controllers.append(signals.controller(ctx, child))
             else:
-                vms_groups.append(signals.vms_group(ctx, child))
+                self.vms_groups.append(signals.vms_group(ctx, child))
         elif tag == "junctionGroup":
             from xodrcheck.reader.junction_parts import junction_group
 
-            groups.append(junction_group(ctx, child))
+            self.groups.append(junction_group(ctx, child))
         elif tag == "station":
             from xodrcheck.reader.road_records import station
 
-            stations.append(station(ctx, child))
-        ctx.forget_invalid()
-    return Document(
-        header,
-        tuple(roads),
-        tuple(junctions),
-        tuple(controllers),
-        source,
-        tuple(groups),
-        tuple(stations),
-        tuple(vms_groups),
-        ctx.facts(root, _ROOT),
-        element_table(root),
-        id_table(root),
-    )
+            self.stations.append(station(ctx, child))
