@@ -136,7 +136,7 @@ def tiled_sections(surfaces: LaneSurfaces, overlapping: np.ndarray | None = None
     upright = np.bincount(surfaces.face_lane[surfaces.plan_areas < 0], minlength=count) == 0
     if overlapping is not None:
         upright[overlapping] = False
-    rings, firsts = [], []
+    rings, runs = [], []
     for first, stop in zip(starts, [*starts[1:], count]):
         ids = [surfaces.lanes[i].lane for i in range(first, stop)]
         if len(set(ids)) < len(ids) or not upright[first:stop].all():
@@ -146,14 +146,13 @@ def tiled_sections(surfaces: LaneSurfaces, overlapping: np.ndarray | None = None
         bottom = surfaces.rows(first + low)[1 if ids[low] < 0 else 0]
         top = surfaces.rows(first + high)[1 if ids[high] > 0 else 0]
         rings.append(np.concatenate([bottom[:, :2], top[::-1, :2]]))
-        firsts.append(first)
+        runs.append((first, stop))
     if not rings:
         return out
     sizes = [len(r) for r in rings]
     owner = np.repeat(np.arange(len(rings)), sizes)
     outlines = shapely.polygons(shapely.linearrings(np.concatenate(rings), indices=owner))
-    for first, simple in zip(firsts, shapely.is_valid(outlines)):
+    for (first, stop), simple in zip(runs, shapely.is_valid(outlines)):
         if simple:
-            stop = next((s for s in starts if s > first), count)
             out[first:stop] = first
     return out
