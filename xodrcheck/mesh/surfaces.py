@@ -16,7 +16,7 @@ followed by its outer row reversed.
 from __future__ import annotations
 
 import math
-from collections.abc import Callable, Collection
+from collections.abc import Callable, Collection, Iterator
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -25,7 +25,7 @@ import numpy as np
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import XodrError
 from xodrcheck.geometry.batch import Evaluation
-from xodrcheck.geometry.lanes import RoadGeometry, geometry_of, road_geometry
+from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.geometry.sampling import sample_sections
 from xodrcheck.model import Document, Lane, LaneKey, document_cache, lane_type_name
 from xodrcheck.support import work
@@ -175,20 +175,31 @@ def build_surfaces(
     if not (math.isfinite(chord) and chord > 0):
         raise ValueError(f"chord must be a finite number > 0, got {chord!r}")
     wanted = None if lane_types is None else frozenset(lane_types)
-    geometries = geometry_of(document)
+    bound = _Bound(max_vertices)
+    part = _Part.concat([p for todo in _sections(document, wanted) for p in _together(todo, chord, max_step, bound)])
+    work.add("mesh vertices", len(part.vertices))
+    return part.surfaces()
+
+
+def _sections(document: Document, wanted: frozenset | None) -> Iterator[list[_Section]]:
+    """The lane sections to mesh, road after road, in runs of about :data:`_SAMPLE_SECTIONS` sections. Each run
+    evaluates its roads with a :class:`RoadGeometry` of its own, dropped with the run: the mesh of a big map holds the
+    geometry of one run at a time, and leaves none in the document's cache."""
     todo: list[_Section] = []
     for road in document.roads:
         if not road.plan_view:
             continue
-        rg = road_geometry(geometries, road)
+        rg = RoadGeometry(road)
         for index, section in enumerate(road.lane_sections):
             if road.section_end(index) > section.s:
                 pairs = _lane_pairs(rg, index, wanted)
                 if pairs:
                     todo.append(_Section(rg, index, pairs))
-    part = _together(todo, chord, max_step, _Bound(max_vertices))
-    work.add("mesh vertices", len(part.vertices))
-    return part.surfaces()
+        if len(todo) >= _SAMPLE_SECTIONS:
+            yield todo
+            todo = []
+    if todo:
+        yield todo
 
 
 class _Bound:
@@ -222,8 +233,7 @@ def _lane_pairs(rg: RoadGeometry, index: int, wanted: frozenset | None) -> list[
 
 @dataclass
 class _Part:
-    """Mesh arrays of consecutive sections (faces numbered from this part's first vertex), with per-section ranges
-    of strips, vertices and faces."""
+    """Mesh arrays of consecutive lane strips, faces numbered from the part's first vertex."""
 
     vertices: np.ndarray
     faces: np.ndarray
@@ -231,74 +241,30 @@ class _Part:
     sizes: np.ndarray  # samples per strip
     keys: list[LaneKey]
     types: list[str]
-    strip_at: np.ndarray  # (sections + 1,) strip offsets
-    vertex_at: np.ndarray
-    face_at: np.ndarray
-
-    @staticmethod
-    def empty() -> _Part:
-        z = np.zeros(1, dtype=np.int64)
-        return _Part(np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64), np.zeros(0), z[:0], [], [], z, z, z)
-
-    def entry(self, k: int) -> _Part:
-        a, b = self.strip_at[k], self.strip_at[k + 1]
-        v0, v1, f0, f1 = self.vertex_at[k], self.vertex_at[k + 1], self.face_at[k], self.face_at[k + 1]
-        return _Part(
-            self.vertices[v0:v1],
-            self.faces[f0:f1] - v0,
-            self.face_s[f0:f1],
-            self.sizes[a:b],
-            self.keys[a:b],
-            self.types[a:b],
-            np.array([0, b - a]),
-            np.array([0, v1 - v0]),
-            np.array([0, f1 - f0]),
-        )
 
     @staticmethod
     def concat(parts: list[_Part]) -> _Part:
-        """The parts one after the other, keeping every section's ranges (:meth:`entry`); the parts' arrays are
-        dropped as they are copied, so the copy costs one array's size at a time."""
+        """The parts one after the other; the parts' arrays are dropped as they are copied, so the copy costs one
+        array's size at a time."""
         if len(parts) == 1:
             return parts[0]
-        vertices = np.cumsum([0] + [len(p.vertices) for p in parts])
-        faces = np.cumsum([0] + [len(p.faces) for p in parts])
-        strips = np.cumsum([0] + [len(p.sizes) for p in parts])
+        empty = np.zeros((0, 3))
+        shift = np.cumsum([0] + [len(p.vertices) for p in parts])
         out = _Part(
-            np.concatenate([p.vertices for p in parts]),
-            np.zeros((0, 3), dtype=np.int64),
+            np.concatenate([p.vertices for p in parts] or [empty]),
+            empty.astype(np.int64),
             np.zeros(0),
-            np.concatenate([p.sizes for p in parts]).astype(np.int64),
+            np.concatenate([p.sizes for p in parts] or [np.zeros(0)]).astype(np.int64),
             [k for p in parts for k in p.keys],
             [t for p in parts for t in p.types],
-            np.concatenate([[0]] + [p.strip_at[1:] + strips[i] for i, p in enumerate(parts)]).astype(np.int64),
-            np.concatenate([[0]] + [p.vertex_at[1:] + vertices[i] for i, p in enumerate(parts)]).astype(np.int64),
-            np.concatenate([[0]] + [p.face_at[1:] + faces[i] for i, p in enumerate(parts)]).astype(np.int64),
         )
         for p in parts:
-            p.vertices = out.faces
-        out.faces = np.concatenate([p.faces + vertices[i] for i, p in enumerate(parts)]).astype(np.int64)
+            p.vertices = empty
+        out.faces = np.concatenate([p.faces + shift[i] for i, p in enumerate(parts)] or [out.faces]).astype(np.int64)
         for p in parts:
-            p.faces = out.face_s
-        out.face_s = np.concatenate([p.face_s for p in parts])
+            p.faces = empty
+        out.face_s = np.concatenate([p.face_s for p in parts] or [out.face_s])
         return out
-
-    @staticmethod
-    def join(parts: list[_Part]) -> _Part:
-        shift = np.concatenate([[0], np.cumsum([len(p.vertices) for p in parts])]).astype(np.int64)
-        return _Part(
-            np.concatenate([p.vertices for p in parts]) if parts else np.zeros((0, 3)),
-            np.concatenate([p.faces + shift[i] for i, p in enumerate(parts)]).astype(np.int64)
-            if parts
-            else np.zeros((0, 3), dtype=np.int64),
-            np.concatenate([p.face_s for p in parts]) if parts else np.zeros(0),
-            np.concatenate([p.sizes for p in parts]).astype(np.int64) if parts else np.zeros(0, dtype=np.int64),
-            [k for p in parts for k in p.keys],
-            [t for p in parts for t in p.types],
-            np.zeros(1, dtype=np.int64),
-            np.zeros(1, dtype=np.int64),
-            np.zeros(1, dtype=np.int64),
-        )
 
     def surfaces(self) -> LaneSurfaces:
         sizes = self.sizes
@@ -322,21 +288,18 @@ _MESH_BATCH = 1 << 18
 _SAMPLE_SECTIONS = 1 << 10
 
 
-def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound | None = None) -> _Part:
+def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound | None = None) -> list[_Part]:
     """The sections of ``todo`` sampled and meshed in batches of consecutive sections (the same numbers: a batch
     evaluates each section as alone)."""
-    if not todo:
-        return _Part.empty()
     blocks = [(t.rg.rows(t.index), t.rg.knots(t.index)) for t in todo]
     budget = Tolerances().max_samples_per_section
     samples: list[np.ndarray] = []
     for lo in range(0, len(blocks), _SAMPLE_SECTIONS):
         samples.extend(sample_sections(blocks[lo : lo + _SAMPLE_SECTIONS], chord, max_step, budget))
-    parts = [
+    return [
         _batch(todo[lo:hi], samples[lo:hi], bound)
         for lo, hi in batches([len(s) * (len(t.pairs) + 1) for t, s in zip(todo, samples)], _MESH_BATCH)
     ]
-    return _Part.concat(parts)
 
 
 def _batch(todo: list[_Section], samples: list[np.ndarray], bound: _Bound | None) -> _Part:
@@ -414,20 +377,7 @@ def _strips(
     entry = np.repeat(np.arange(len(todo)), np.diff(strips))  # section of each strip
     s_flat = np.concatenate(samples) if samples else np.zeros(0)
     sample_at = np.asarray(offsets, dtype=np.int64)[entry][owner] + j if len(j) else j
-    strip_at = np.array(strips, dtype=np.int64)
-    vertex_at = np.concatenate([[0], np.cumsum(2 * counts)])[strip_at]
-    face_at = np.concatenate([[0], np.cumsum(2 * steps)])[strip_at]
-    return _Part(
-        vertices,
-        tris.reshape(-1, 3),
-        np.repeat(s_flat[sample_at], 2),
-        counts,
-        keys,
-        types,
-        strip_at,
-        vertex_at,
-        face_at,
-    )
+    return _Part(vertices, tris.reshape(-1, 3), np.repeat(s_flat[sample_at], 2), counts, keys, types)
 
 
 def cached_per_chord(name: str, document: Document, chord: float | None, build: Callable):

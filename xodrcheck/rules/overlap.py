@@ -32,6 +32,7 @@ from xodrcheck.rules.registry import rule
 from xodrcheck.rules.shared import junction_uids as JU
 from xodrcheck.rules.shared import road_uids as U
 from xodrcheck.rules.shared.context import Context
+from xodrcheck.support import memory
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
@@ -130,6 +131,8 @@ def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: 
     from xodrcheck.rules.shared.sampled import release_lines
 
     release_lines(ctx)  # the rules after these read no section lines or road ends: room for the lane meshes
+    ctx.release_geometry()  # and the roads' geometry the earlier rules cached: the mesh evaluates what it needs
+    memory.give_back()  # what they held, before the largest allocation of a check (the whole map's lane meshes)
     surfaces = _overlap_index(ctx).surfaces
     roadside = _pairs(ctx, False) if drivable else {}
     for roads, pair in sorted(_pairs(ctx, drivable).items()):

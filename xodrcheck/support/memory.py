@@ -43,6 +43,16 @@ def release() -> bool:
     return True
 
 
+def give_back() -> bool:
+    """Free what only cycles of references still hold (the geometry caches are such cycles), then :func:`release`:
+    for a step about to allocate much, so that the memory dropped before it is the system's again, not kept in the
+    allocator's free lists beside the step's own large arrays."""
+    import gc
+
+    gc.collect()
+    return release()
+
+
 def resident_mb() -> float | None:
     """The process's resident set size in MB (Linux ``/proc``), ``None`` where it cannot be read."""
     try:

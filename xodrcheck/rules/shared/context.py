@@ -155,6 +155,14 @@ class Context:
             return None
         return self.geometry(road.id)
 
+    def release_geometry(self) -> None:
+        """Drop every road's evaluated geometry and its caches (built again when next asked for): the rules that mesh
+        the whole map make room for the mesh."""
+        from xodrcheck.model import document_cache
+
+        self._geometry = None
+        document_cache(self.document).pop("geometry", None)
+
     def road_geometry(self, road: Road) -> RoadGeometry:
         """The evaluated geometry of a road of the document (every road's id has one; with a duplicated id, that of
         the first road of the id, as :meth:`geometry` gives)."""
