@@ -130,7 +130,7 @@ def test_lane_meshes_built_in_batches_are_the_one_pass_mesh(
     from xodrcheck.mesh import surfaces as mesh
 
     document = read(corpus_dir / name).document
-    monkeypatch.setattr(mesh, "_MESH_BATCH", 1 << 40)
+    monkeypatch.setattr(mesh, "MESH_BATCH", 1 << 40)
     whole = mesh.build_surfaces(document)
     calls: list[tuple[int, int]] = []
     evaluation = mesh.Evaluation
@@ -148,8 +148,8 @@ def test_lane_meshes_built_in_batches_are_the_one_pass_mesh(
 
     monkeypatch.setattr(mesh, "Evaluation", counted)
     monkeypatch.setattr(mesh, "sample_sections", sampling)
-    monkeypatch.setattr(mesh, "_MESH_BATCH", 2000)
-    monkeypatch.setattr(mesh, "_SAMPLE_SECTIONS", 5)
+    monkeypatch.setattr(mesh, "MESH_BATCH", 2000)
+    monkeypatch.setattr(mesh, "SAMPLE_SECTIONS", 5)
     batched = mesh.build_surfaces(document)
     assert len(calls) > 3 and all(points <= 2000 or sections == 1 for points, sections in calls)
     assert len(sampled_sections) > 3 and max(sampled_sections) <= 5
