@@ -186,3 +186,111 @@ def test_only_the_reader_schema_and_xml_writers_import_lxml() -> None:
                 users.add(name)
     assert {"xodrcheck.reader", "xodrcheck.schema.validate"} <= users  # the test sees the imports
     assert sorted(u for u in users if not u.startswith(LXML_USERS)) == []
+
+
+def _private(name: str) -> bool:
+    return name.startswith("_") and not name.startswith("__")
+
+
+#: Calls that reach an attribute by name: ``setattr(module, "_name", ...)``, ``monkeypatch.setattr`` and the like.
+_BY_NAME = {"setattr", "getattr", "delattr", "hasattr"}
+
+
+def _private_reaches(tree: ast.Module, modules: set[str]) -> list[str]:
+    """Where a test reaches a private name (one leading underscore) of an xodrcheck module: ``module._name`` on an
+    imported module (bound by ``import``, ``import ... as`` or ``from package import module``, or reached through a
+    package's attributes), ``from xodrcheck.m import _name``, an import of a private module,
+    ``monkeypatch.setattr(module, "_name", ...)`` (and setattr, getattr, delattr, hasattr), and a dotted target
+    ``"xodrcheck.m._name"`` handed to a call (``monkeypatch.setattr``, ``mock.patch``). Names are bound per file.
+    An attribute of an object the module made (``cache._keys``) is beyond what the syntax shows."""
+    bound: dict[str, str] = {}
+    found: list[str] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.name.split(".")[0] == "xodrcheck":
+                    bound[alias.asname or "xodrcheck"] = alias.name if alias.asname else "xodrcheck"
+                    if any(_private(part) for part in alias.name.split(".")):
+                        found.append(ast.unparse(node))
+        elif isinstance(node, ast.ImportFrom) and node.level == 0 and (node.module or "").split(".")[0] == "xodrcheck":
+            module = node.module or ""
+            if any(_private(part) for part in module.split(".")) or any(_private(a.name) for a in node.names):
+                found.append(ast.unparse(node))
+            for alias in node.names:
+                if f"{module}.{alias.name}" in modules:
+                    bound[alias.asname or alias.name] = f"{module}.{alias.name}"
+
+    def module_of(node: ast.expr) -> str | None:
+        if isinstance(node, ast.Name):
+            return bound.get(node.id)
+        if isinstance(node, ast.Attribute):
+            base = module_of(node.value)
+            if base is not None and f"{base}.{node.attr}" in modules:
+                return f"{base}.{node.attr}"
+        return None
+
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Attribute) and _private(node.attr) and module_of(node.value) is not None:
+            found.append(ast.unparse(node))
+        elif isinstance(node, ast.Call) and node.args:
+            func = node.func
+            name = func.id if isinstance(func, ast.Name) else func.attr if isinstance(func, ast.Attribute) else ""
+            first, second = node.args[0], node.args[1] if len(node.args) > 1 else None
+            by_name = (
+                name in _BY_NAME
+                and isinstance(second, ast.Constant)
+                and isinstance(second.value, str)
+                and _private(second.value)
+                and module_of(first) is not None
+            )
+            dotted = (
+                isinstance(first, ast.Constant)
+                and isinstance(first.value, str)
+                and first.value.split(".")[0] == "xodrcheck"
+                and any(_private(part) for part in first.value.split("."))
+            )
+            if by_name or dotted:
+                found.append(ast.unparse(node))
+    return found
+
+
+def test_the_private_name_scan_sees_each_way_of_reaching_one() -> None:
+    source = """
+import xodrcheck
+import xodrcheck.reader as reader
+from xodrcheck.mesh import surfaces as mesh
+from xodrcheck.rules.object_surfaces import _boxes, surface_boxes
+from xodrcheck.rules.shared import sampled
+
+def test_it(monkeypatch, ctx):
+    xodrcheck._EXPORTS, reader._load(), xodrcheck.rules.shared.sampled._grid, sampled.LINES[ctx]._keys
+    monkeypatch.setattr(mesh, "_MESH_BATCH", 1)
+    monkeypatch.setattr("xodrcheck.mesh.footprint._PAIR_BLOCK", 1)
+    getattr(sampled, "_grid")
+    monkeypatch.setattr(mesh, "MESH_BATCH", 1), sampled.LINES, surface_boxes(ctx), reader.os._exit, self._own
+"""
+    assert sorted(_private_reaches(ast.parse(source), set(_module_names(XODRCHECK)))) == sorted(
+        [
+            "from xodrcheck.rules.object_surfaces import _boxes, surface_boxes",
+            "xodrcheck._EXPORTS",
+            "reader._load",
+            "xodrcheck.rules.shared.sampled._grid",
+            "monkeypatch.setattr(mesh, '_MESH_BATCH', 1)",
+            "monkeypatch.setattr('xodrcheck.mesh.footprint._PAIR_BLOCK', 1)",
+            "getattr(sampled, '_grid')",
+        ]
+    )
+
+
+def test_no_test_reaches_a_private_name_of_an_xodrcheck_module() -> None:
+    """Tests use xodrcheck's public names (a kernel or batch size a test needs has a public, documented name); a
+    private name stays in its module, free to change. Every test file is scanned, not only tests/xodrcheck."""
+    modules = set(_module_names(XODRCHECK))
+    files = sorted(TESTS.rglob("*.py"))
+    assert len(files) > 100, "the tests tree should hold its modules"
+    found = [
+        f"{path.relative_to(TESTS).as_posix()}: {hit}"
+        for path in files
+        for hit in _private_reaches(ast.parse(path.read_text(encoding="utf-8"), filename=str(path)), modules)
+    ]
+    assert found == []

@@ -57,16 +57,16 @@ def test_section_lines_stay_within_their_budget_with_unchanged_findings(
     path = corpus_dir / "carla-towns/OpenDrive/Town07.xodr"
     monkeypatch.setattr(sampled, "LINES_BUDGET", 1 << 40)
     whole, ctx = _check(path)
-    assert sampled._LINES[ctx].kept > 700  # the budget holds every section: evaluated once
+    assert sampled.LINES[ctx].kept > 700  # the budget holds every section: evaluated once
 
     small = 1 << 20
     monkeypatch.setattr(sampled, "LINES_BUDGET", small)
     largest = _largest_total(monkeypatch)
     bounded, ctx = _check(path)
     assert bounded == whole and len(whole) > 0
-    cache = sampled._LINES[ctx]
+    cache = sampled.LINES[ctx]
     assert 0 < cache.kept < 700 and cache.kept_bytes <= small
-    kept = [*cache._resident.values(), *cache._window.values()]
+    kept = cache.kept_sections().values()
     # each kept section owns its arrays: a view would keep its whole batch alive, past the budget's count
     assert all(p.x.base is None and p.speed.base is None for lines in kept for p in lines.borders.values())
     assert 0 < largest[0] <= small + (1 << 19)  # a newest entry may pass the budget by its own size
@@ -130,7 +130,7 @@ def test_lane_meshes_built_in_batches_are_the_one_pass_mesh(
     from xodrcheck.mesh import surfaces as mesh
 
     document = read(corpus_dir / name).document
-    monkeypatch.setattr(mesh, "_MESH_BATCH", 1 << 40)
+    monkeypatch.setattr(mesh, "MESH_BATCH", 1 << 40)
     whole = mesh.build_surfaces(document)
     calls: list[tuple[int, int]] = []
     evaluation = mesh.Evaluation
@@ -148,8 +148,8 @@ def test_lane_meshes_built_in_batches_are_the_one_pass_mesh(
 
     monkeypatch.setattr(mesh, "Evaluation", counted)
     monkeypatch.setattr(mesh, "sample_sections", sampling)
-    monkeypatch.setattr(mesh, "_MESH_BATCH", 2000)
-    monkeypatch.setattr(mesh, "_SAMPLE_SECTIONS", 5)
+    monkeypatch.setattr(mesh, "MESH_BATCH", 2000)
+    monkeypatch.setattr(mesh, "SAMPLE_SECTIONS", 5)
     batched = mesh.build_surfaces(document)
     assert len(calls) > 3 and all(points <= 2000 or sections == 1 for points, sections in calls)
     assert len(sampled_sections) > 3 and max(sampled_sections) <= 5
@@ -191,12 +191,12 @@ def test_lines_read_in_order_are_those_of_the_cache_and_released_before_the_mesh
     path = corpus_dir / "carla-towns/OpenDrive/Town01.xodr"
     ctx = Context(read(path).document, Config(), path=str(path), data=None)
     monkeypatch.setattr(sampled, "LINES_BUDGET", 1 << 18)  # most sections do not fit: they pass in batches
-    monkeypatch.setattr(sampled, "_PASSING_BYTES", 1 << 16)
+    monkeypatch.setattr(sampled, "PASSING_BYTES", 1 << 16)
     with np.errstate(all="ignore"):
         first = ctx.document.roads[0]
         kept = sampled.section_lines(ctx, first, 0)  # a rule before kept some lines; the rest pass in batches
         streamed = [(road.id, index, lines) for road, index, _, lines in sampled.lines_in_order(ctx)]
-        cache = sampled._LINES[ctx]
+        cache = sampled.LINES[ctx]
         assert not cache.fits and 0 < cache.kept < len(streamed) and cache.kept_bytes <= sampled.LINES_BUDGET
         assert any(lines is kept for _, _, lines in streamed)
         assert len(streamed) == sum(len(r.lane_sections) for r in ctx.document.roads if ctx.usable_geometry(r))
@@ -209,7 +209,7 @@ def test_lines_read_in_order_are_those_of_the_cache_and_released_before_the_mesh
                 assert np.array_equal(p.hdg, alone.borders[lane_id].hdg, equal_nan=True)
         road_ends.road_end(ctx, first, ContactPoint.START)
         sampled.release_lines(ctx)
-    assert ctx not in sampled._LINES and ctx not in sampled._ENDS and ctx not in sampled._END_CURVES
+    assert ctx not in sampled.LINES and ctx not in road_ends.ENDS and ctx not in road_ends.END_CURVES
 
 
 @pytest.mark.corpus
@@ -217,22 +217,22 @@ def test_a_file_that_fits_has_its_lines_evaluated_in_one_batch(corpus_dir: Path,
     path = corpus_dir / "carla-towns/OpenDrive/Town01.xodr"
     ctx = Context(read(path).document, Config(), path=str(path), data=None)
     sizes: list[int] = []
-    evaluate = sampled._evaluate_batch
+    evaluation = sampled.Evaluation
 
-    def counted(entries, keys, grids, out) -> None:
-        sizes.append(len(entries))
-        evaluate(entries, keys, grids, out)
+    def counted(sections, samples):
+        sizes.append(len(sections))
+        return evaluation(sections, samples)
 
-    monkeypatch.setattr(sampled, "_evaluate_batch", counted)
+    monkeypatch.setattr(sampled, "Evaluation", counted)  # one call per batch of sections
     roads = ctx.document.roads
     with np.errstate(all="ignore"):
         sampled.section_lines(ctx, roads[len(roads) // 2], 0)  # asked first in the middle: all from the first on
         sampled.section_lines(ctx, roads[0], 0)
         for _ in sampled.lines_in_order(ctx):
             pass
-    cache = sampled._LINES[ctx]
+    cache = sampled.LINES[ctx]
     assert cache.position((roads[len(roads) // 2].id, 0)) > 0
-    assert cache.fits and sizes == [len(cache._keys)] and cache.kept == len(cache._keys) > 100
+    assert cache.fits and sizes == [cache.listed] and cache.kept == cache.listed > 100
 
 
 #: Files evaluated in batches: a town, a small esmini map, and one with superelevation.
@@ -286,8 +286,8 @@ def test_lane_width_pieces_evaluated_together_are_each_sections_own(corpus_dir: 
     with np.errstate(all="ignore"):
         for road in ctx.document.roads:
             for index in range(len(road.lane_sections)) if ctx.usable_geometry(road) is not None else ():
-                together = lane_shape._lane_pieces(ctx, road, index)
-                alone = lane_shape._section_pieces(ctx, road, index, lane_shape._piece_nodes(ctx, road, index))
+                together = lane_shape.lane_pieces(ctx, road, index)
+                alone = lane_shape.section_pieces(ctx, road, index, lane_shape.piece_nodes(ctx, road, index))
                 assert (together is None) == (alone is None)
                 if together is not None:
                     assert together[0] == alone[0]

@@ -53,7 +53,7 @@ def test_grids_together_are_each_sections_own(
         if (geometry := ctx.usable_geometry(road)) is not None
         for index in range(len(road.lane_sections))
     ]
-    monkeypatch.setattr(grids, "_BATCH_INTERVALS", 50)  # several batches
+    monkeypatch.setattr(grids, "BATCH_INTERVALS", 50)  # several batches
     with np.errstate(all="ignore"):
         together = grids.section_grids(tol, entries, sampled.grid_step(tol))
         alone = [_reference(tol, geometry, index) for geometry, index in entries]
@@ -65,6 +65,6 @@ def test_grids_together_are_each_sections_own(
 
 def test_a_grid_that_falls_is_made_non_decreasing_and_nan_spreads():
     # two sections: the second's cut values fall below the end of its first step (damaged knots), a NaN end
-    out = grids._grids([np.array([0.0, 1.0]), np.array([5.0, 4.0, 6.0])], [0.9, float("nan")], 0.5, None)
+    out = grids.knot_grids([np.array([0.0, 1.0]), np.array([5.0, 4.0, 6.0])], [0.9, float("nan")], 0.5, None)
     assert out[0].tolist() == [0.0, 0.5, 0.9]
     assert np.isnan(out[1][-1]) and out[1][:2].tolist() == [5.0, 5.0]

@@ -135,6 +135,6 @@ def test_overlaps_in_blocks_of_pairs_are_the_same(monkeypatch: pytest.MonkeyPatc
     document = read(corpus_root() / "carla-towns/OpenDrive/Town03.xodr").document
     index = footprint.OverlapIndex(document, 0.1)
     whole = index.overlaps(0.01, 2.0)
-    monkeypatch.setattr(footprint, "_PAIR_BLOCK", 7)
+    monkeypatch.setattr(footprint, "PAIR_BLOCK", 7)
     assert index.unrelated_pairs.shape[1] > 10 * 7 and len(whole) > 5
     assert index.overlaps(0.01, 2.0) == whole

@@ -45,7 +45,7 @@ def test_findings_located_together_are_located_as_one_by_one(corpus_dir: Path, n
         return points_at(geometry, at, placed)
 
     monkeypatch.setattr(places, "points_at", counted)
-    monkeypatch.setattr(places, "_PLACES_TOGETHER", 7)  # several batches
+    monkeypatch.setattr(places, "PLACES_TOGETHER", 7)  # several batches
     together = ctx.locate_all(findings)
     assert _places(together) == _places(alone)
     assert sum(f.x is not None for f in together) > 5

@@ -9,11 +9,34 @@ import pytest
 
 import xodrcheck
 
+#: Every public name of the package and the module that defines it (the documented home users may import it from).
+HOMES = {
+    "Category": "xodrcheck.findings",
+    "Config": "xodrcheck.config",
+    "ConfigError": "xodrcheck.config",
+    "Document": "xodrcheck.model",
+    "Finding": "xodrcheck.findings",
+    "FixResult": "xodrcheck.fix.result",
+    "LaneKey": "xodrcheck.model",
+    "OutputError": "xodrcheck.support.atomic",
+    "ReadError": "xodrcheck.findings",
+    "ReadResult": "xodrcheck.reader",
+    "Report": "xodrcheck.check",
+    "Severity": "xodrcheck.findings",
+    "Tolerances": "xodrcheck.config",
+    "XodrError": "xodrcheck.findings",
+    "check": "xodrcheck.check",
+    "fix": "xodrcheck.fix.result",
+    "is_valid": "xodrcheck.check",
+    "is_valid_reason": "xodrcheck.check",
+    "read": "xodrcheck.reader",
+}
+
 
 @pytest.mark.parametrize("name", xodrcheck.__all__)
 def test_every_public_name_resolves_to_its_module_object(name):
     value = getattr(xodrcheck, name)
-    module = xodrcheck._EXPORTS.get(name, {"check": "xodrcheck.check", "fix": "xodrcheck.fix.result"}.get(name))
+    module = HOMES[name]
     importlib.import_module("xodrcheck.check")  # binds the package attribute 'check' to the submodule, then...
     importlib.import_module("xodrcheck.fix.driver")  # (and 'fix' to the sub-package)
     assert getattr(importlib.import_module(module), name) is value
@@ -21,7 +44,10 @@ def test_every_public_name_resolves_to_its_module_object(name):
 
 
 def test_all_lists_the_lazy_names():
-    assert sorted(xodrcheck.__all__) == sorted([*xodrcheck._EXPORTS, "check", "fix"])
+    assert sorted(xodrcheck.__all__) == sorted(HOMES)
+    offered = {n for n in dir(xodrcheck) if not n.startswith("_")}
+    own = {n for n in offered if getattr(getattr(xodrcheck, n), "__module__", "").startswith("xodrcheck")}
+    assert own == set(HOMES)  # every name the package offers from its own modules is listed, and only those
 
 
 def test_unknown_name_is_an_attribute_error():

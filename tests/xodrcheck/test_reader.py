@@ -106,9 +106,12 @@ def test_a_file_that_grew_after_its_stat_is_read_whole(tmp_path, monkeypatch):
         return os.stat_result(fields)
 
     monkeypatch.setattr(reader_module.os, "stat", stale_stat)
-    assert reader_module._load(str(path), len(data)) == data
+    result = read(str(path), max_bytes=len(data))
+    whole = read(data)  # the bytes themselves
+    assert result.document.roads == whole.document.roads and len(whole.document.roads) == 1
+    assert result.findings == whole.findings
     with pytest.raises(ReadError, match="limit"):
-        reader_module._load(str(path), len(data) - 1)
+        read(str(path), max_bytes=len(data) - 1)
 
 
 @pytest.mark.parametrize("enabled", [True, False])
@@ -560,11 +563,11 @@ def test_a_short_file_of_many_lines_is_parsed_again_with_its_text_nodes():
     ones, here): the parse without text nodes shows it by its last element's line and is done again with them, so the
     lines past 65,535 are right."""
     from xodrcheck.reader import read_keeping_tree
-    from xodrcheck.reader.xmlsafe import _COUNT_LINES_FROM, parse
+    from xodrcheck.reader.xmlsafe import COUNT_LINES_FROM, parse
 
     lanes = "".join(f'\n\n\n\n\n\n\n\n<lane id="-{k}" type="driving" level="false"/>' for k in range(1, 9001))
     doc = xodr(road(lanes=f"<lanes>{section(CENTER, f'<right>{lanes}</right>')}</lanes>"))
-    assert len(doc) < _COUNT_LINES_FROM and doc.count(b"\n") > 65535
+    assert len(doc) < COUNT_LINES_FROM and doc.count(b"\n") > 65535
     root, _ = parse(doc, keep_blank_text=False)
     assert root.find(".//right")[0].tail is not None  # parsed again, keeping the text nodes
     without = etree.fromstring(doc, etree.XMLParser(remove_blank_text=True))

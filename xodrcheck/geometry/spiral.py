@@ -75,11 +75,9 @@ def phase_integral(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     finite = np.isfinite(a) & np.isfinite(b)
     out[~finite] = complex(math.nan, math.nan)
     abs_b = np.abs(b)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        error = _FRESNEL_ULPS * _EPS * (a * a / (4.0 * abs_b) + 2.0 / np.sqrt(abs_b))
-    use_fresnel = finite & (abs_b > 0) & (error <= _FRESNEL_BUDGET)
+    use_fresnel = uses_fresnel(a, b)
     if use_fresnel.any():
-        out[use_fresnel] = _by_fresnel(a[use_fresnel], b[use_fresnel])
+        out[use_fresnel] = by_fresnel(a[use_fresnel], b[use_fresnel])
     rest = finite & ~use_fresnel
     # Far from curvature 0 with a tiny curvature change over an absurd length (a > 2048 rad of turning): the series
     # would need over a thousand pieces per point; expand in b instead (or take Fresnel when b is not small).
@@ -88,11 +86,22 @@ def phase_integral(a: np.ndarray, b: np.ndarray) -> np.ndarray:
         small_b = long & (abs_b <= 1.0)
         out[small_b] = _by_moments(a[small_b], b[small_b])
         big_b = long & ~small_b
-        out[big_b] = _by_fresnel(a[big_b], b[big_b])
+        out[big_b] = by_fresnel(a[big_b], b[big_b])
         rest &= ~long
     if rest.any():
         out[rest] = _by_series(a[rest], b[rest])
     return out
+
+
+def uses_fresnel(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Where :func:`phase_integral` takes the Fresnel formula (:func:`by_fresnel`) for arrays ``a``, ``b``: finite,
+    ``b`` not 0, and the formula's estimated rounding error within ``_FRESNEL_BUDGET`` (elsewhere the series, exact
+    where the formula would lose digits)."""
+    a, b = np.asarray(a, dtype=float), np.asarray(b, dtype=float)
+    abs_b = np.abs(b)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        error = _FRESNEL_ULPS * _EPS * (a * a / (4.0 * abs_b) + 2.0 / np.sqrt(abs_b))
+    return np.isfinite(a) & np.isfinite(b) & (abs_b > 0) & (error <= _FRESNEL_BUDGET)
 
 
 def _by_moments(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -112,7 +121,9 @@ def _by_moments(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     return total
 
 
-def _by_fresnel(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def by_fresnel(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``I(a, b)`` by the classic clothoid formula: the Fresnel integrals after completing the square. Exact where
+    :func:`uses_fresnel` says so; it loses many digits elsewhere (nearly an arc, or far from curvature 0)."""
     from scipy.special import fresnel  # here: only maps with spirals need scipy
 
     # For b < 0 use I(a, b) = conj(I(-a, -b)), so that the quadratic coefficient is positive.

@@ -152,13 +152,14 @@ def _where(f: Finding, extra: dict[str, object]) -> str:
 
 def _extra(f: Finding) -> dict[str, object]:
     """Fields of the finding beyond the ones the page knows (added to Finding later), where set."""
-    values = ((k, getattr(f, k)) for k in _extra_fields())
+    kind: type = type(f)  # the cache key (typed plainly: mypy takes a frozen dataclass class for unhashable)
+    values = ((k, getattr(f, k)) for k in _extra_fields(kind))
     return {k: str(v) for k, v in values if v is not None and v != ""}
 
 
 @cache
-def _extra_fields() -> tuple[str, ...]:
-    return tuple(field.name for field in fields(Finding) if field.name not in _KNOWN)
+def _extra_fields(kind: type) -> tuple[str, ...]:
+    return tuple(field.name for field in fields(kind) if field.name not in _KNOWN)
 
 
 @cache

@@ -31,8 +31,8 @@ DRIVABLE_TYPE_NAMES = frozenset(t.value for t in DRIVABLE_LANE_TYPES)
 _UNION_BLOCK = 256
 #: Most points of an overlap polygon's outline sampled for heights (plus its representative point).
 _HEIGHT_POINTS = 24
-#: Lane-strip pairs intersected at a time by :meth:`OverlapIndex.overlaps` (bounds its temporary geometries).
-_PAIR_BLOCK = 4096
+#: Lane-strip pairs intersected at a time by :meth:`OverlapIndex.overlaps`: it bounds a block's temporary geometries.
+PAIR_BLOCK = 4096
 
 
 #: Mesh vertices whose lane outlines are made polygons at a time (the temporaries scale with it: a 10 km map's
@@ -334,8 +334,8 @@ class OverlapIndex:
         out: list[Overlap] = []
         if pairs.size == 0:
             return out
-        for lo in range(0, pairs.shape[1], _PAIR_BLOCK):  # blocks: the intersections of a whole map at once took GBs
-            if self._block_overlaps(pairs[:, lo : lo + _PAIR_BLOCK], min_area, clearance, deadline_check, out):
+        for lo in range(0, pairs.shape[1], PAIR_BLOCK):  # blocks: the intersections of a whole map at once took GBs
+            if self._block_overlaps(pairs[:, lo : lo + PAIR_BLOCK], min_area, clearance, deadline_check, out):
                 break
         return out
 

@@ -31,7 +31,16 @@ from xodrcheck.model import Document, Lane, LaneKey, document_cache, lane_type_n
 from xodrcheck.support import work
 from xodrcheck.support.arrays import batches, ranges
 
-__all__ = ["MAX_COORDINATE", "LaneSurfaces", "MeshTooLarge", "build_surfaces", "cached_per_chord", "surfaces_of"]
+__all__ = [
+    "MAX_COORDINATE",
+    "MESH_BATCH",
+    "SAMPLE_SECTIONS",
+    "LaneSurfaces",
+    "MeshTooLarge",
+    "build_surfaces",
+    "cached_per_chord",
+    "surfaces_of",
+]
 
 
 #: Largest coordinate (m) a meshed vertex may have: 25 times the Earth's circumference. Beyond it a lane is damaged
@@ -182,7 +191,7 @@ def build_surfaces(
 
 
 def _sections(document: Document, wanted: frozenset | None) -> Iterator[list[_Section]]:
-    """The lane sections to mesh, road after road, in runs of about :data:`_SAMPLE_SECTIONS` sections. Each run
+    """The lane sections to mesh, road after road, in runs of about :data:`SAMPLE_SECTIONS` sections. Each run
     evaluates its roads with a :class:`RoadGeometry` of its own, dropped with the run: the mesh of a big map holds the
     geometry of one run at a time, and leaves none in the document's cache."""
     todo: list[_Section] = []
@@ -195,7 +204,7 @@ def _sections(document: Document, wanted: frozenset | None) -> Iterator[list[_Se
                 pairs = _lane_pairs(rg, index, wanted)
                 if pairs:
                     todo.append(_Section(rg, index, pairs))
-        if len(todo) >= _SAMPLE_SECTIONS:
+        if len(todo) >= SAMPLE_SECTIONS:
             yield todo
             todo = []
     if todo:
@@ -282,10 +291,10 @@ class _Part:
 
 #: Border-line points (samples times lines) of the sections meshed in one evaluation: the temporaries of a call scale
 #: with it (a 10 km map's sections at once peaked about 900 MB over the mesh).
-_MESH_BATCH = 1 << 18
+MESH_BATCH = 1 << 18
 #: Sections sampled in one :func:`~xodrcheck.geometry.sampling.sample_sections` call (its temporaries scale with them:
 #: a 10 km map's 31,352 sections at once peaked 971 MB for 7 MB of samples).
-_SAMPLE_SECTIONS = 1 << 10
+SAMPLE_SECTIONS = 1 << 10
 
 
 def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound | None = None) -> list[_Part]:
@@ -294,11 +303,11 @@ def _together(todo: list[_Section], chord: float, max_step: float, bound: _Bound
     blocks = [(t.rg.rows(t.index), t.rg.knots(t.index)) for t in todo]
     budget = Tolerances().max_samples_per_section
     samples: list[np.ndarray] = []
-    for lo in range(0, len(blocks), _SAMPLE_SECTIONS):
-        samples.extend(sample_sections(blocks[lo : lo + _SAMPLE_SECTIONS], chord, max_step, budget))
+    for lo in range(0, len(blocks), SAMPLE_SECTIONS):
+        samples.extend(sample_sections(blocks[lo : lo + SAMPLE_SECTIONS], chord, max_step, budget))
     return [
         _batch(todo[lo:hi], samples[lo:hi], bound)
-        for lo, hi in batches([len(s) * (len(t.pairs) + 1) for t, s in zip(todo, samples)], _MESH_BATCH)
+        for lo, hi in batches([len(s) * (len(t.pairs) + 1) for t, s in zip(todo, samples)], MESH_BATCH)
     ]
 
 

@@ -54,7 +54,7 @@ _BIG_LINES = 65535
 #: Files this long have their lines counted before the parse to know whether the text nodes must be kept; shorter ones
 #: (whose 65,535th line would mean fewer than 16 bytes a line) are parsed without them and parsed again with them if
 #: the last element's line shows it was needed: counting costs about 2 % of a read.
-_COUNT_LINES_FROM = 1 << 20
+COUNT_LINES_FROM = 1 << 20
 _SHOW = 60  # characters of a raw value or of parser text shown in a message
 
 
@@ -271,7 +271,7 @@ def parse(
         return None, findings
     data = stripped
 
-    if not keep_blank_text and len(data) >= _COUNT_LINES_FROM:
+    if not keep_blank_text and len(data) >= COUNT_LINES_FROM:
         keep_blank_text = data.count(b"\n") >= _BIG_LINES
     # the parse adds to (and may reword) the findings so far: a copy, in case it is done again
     root, found = _parse(data, list(findings), recover, strip_namespaces, keep_blank_text, declared)

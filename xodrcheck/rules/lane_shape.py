@@ -50,9 +50,10 @@ def _cubic_minimum(coef: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 _PIECES: weakref.WeakKeyDictionary[Context, dict] = weakref.WeakKeyDictionary()
 
 
-def _lane_pieces(ctx: Context, road: Road, index: int):
-    """:func:`_section_pieces`, computed once per file and section for the rules that share it (G010, G011, G015):
-    on first use for every usable road's sections, their borders evaluated together (:func:`_all_borders`)."""
+def lane_pieces(ctx: Context, road: Road, index: int):
+    """:func:`section_pieces` of a section, computed once per file for the rules that share it (G010, G011, G015):
+    on first use for every usable road's sections, their borders evaluated together (:func:`_all_borders`: the same
+    numbers as section by section)."""
     cache = _PIECES.get(ctx)
     if cache is None:
         cache = _PIECES[ctx] = {}
@@ -60,16 +61,16 @@ def _lane_pieces(ctx: Context, road: Road, index: int):
         for each in ctx.document.roads:
             if ctx.usable_geometry(each) is not None:
                 for i in range(len(each.lane_sections)):
-                    nodes[(id(each), i)] = (each, _piece_nodes(ctx, each, i))
+                    nodes[(id(each), i)] = (each, piece_nodes(ctx, each, i))
         for key, borders in _all_borders(ctx, nodes):  # one batch's borders alive at a time
             each, found = nodes[key]
-            cache[key] = _section_pieces(ctx, each, key[1], found, borders)
+            cache[key] = section_pieces(ctx, each, key[1], found, borders)
         for key, (each, found) in nodes.items():
             if key not in cache:
-                cache[key] = None if found is None else _section_pieces(ctx, each, key[1], found)
+                cache[key] = None if found is None else section_pieces(ctx, each, key[1], found)
     key = (id(road), index)
     if key not in cache:  # a road the file-wide pass skipped (asked for by a caller of its own)
-        cache[key] = _section_pieces(ctx, road, index, _piece_nodes(ctx, road, index))
+        cache[key] = section_pieces(ctx, road, index, piece_nodes(ctx, road, index))
     return cache[key]
 
 
@@ -107,14 +108,14 @@ def _extremes(ctx: Context, road: Road, index: int) -> tuple[np.ndarray, np.ndar
         for each in ctx.document.roads:
             if ctx.usable_geometry(each) is not None:
                 for i in range(len(each.lane_sections)):
-                    pieces = _lane_pieces(ctx, each, i)
+                    pieces = lane_pieces(ctx, each, i)
                     if pieces is not None:
                         keys.append((id(each), i))
                         blocks.append(pieces[4])
         cache = _EXTREMES[ctx] = dict(zip(keys, _split_extremes(blocks)))
     key = (id(road), index)
     if key not in cache:  # a road the file-wide pass skipped (asked for by a caller of its own)
-        pieces = _lane_pieces(ctx, road, index)
+        pieces = lane_pieces(ctx, road, index)
         assert pieces is not None, "extremes are asked for sections with pieces only"
         cache[key] = _split_extremes([pieces[4]])[0]
     return cache[key]
@@ -131,9 +132,9 @@ def _split_extremes(blocks: list[np.ndarray]) -> list[tuple[np.ndarray, np.ndarr
     return list(zip(np.split(low, cuts), np.split(where, cuts), np.split(high, cuts)))
 
 
-def _piece_nodes(ctx: Context, road: Road, index: int) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
-    """``(a, b, s)``: the pieces ``[a, b]`` between consecutive knots of a section and the ``s`` of their nodes;
-    ``None`` when the section has no piece."""
+def piece_nodes(ctx: Context, road: Road, index: int) -> tuple[np.ndarray, np.ndarray, np.ndarray] | None:
+    """``(a, b, s)``: the pieces ``[a, b]`` between consecutive knots of a section and the ``s`` of their nodes
+    (where :func:`section_pieces` evaluates the borders); ``None`` when the section has no piece."""
     cuts = ctx.road_geometry(road).knots(index)
     if len(cuts) < 2:
         return None
@@ -145,12 +146,12 @@ def _piece_nodes(ctx: Context, road: Road, index: int) -> tuple[np.ndarray, np.n
     return a, b, (a[:, None] + (b - a)[:, None] * _NODES[None, :]).ravel()
 
 
-def _section_pieces(ctx: Context, road: Road, index: int, nodes, borders: dict[int, np.ndarray] | None = None):
+def section_pieces(ctx: Context, road: Road, index: int, nodes, borders: dict[int, np.ndarray] | None = None):
     """Every lane with records in a section and its signed width as exact cubics: ``(lanes, a, b, coefficients)``
     with the pieces ``[a, b]`` between consecutive knots and ``coefficients[:, :, k]`` the cubic in ``u`` in [0, 1] of
     each lane's width on piece ``k`` (all lanes and pieces of the section in one vectorised pass); ``None`` when the
-    section has no piece or no such lane. ``nodes``: :func:`_piece_nodes`; ``borders``: the borders at them when
-    evaluated already."""
+    section has no piece or no such lane. ``nodes``: :func:`piece_nodes`; ``borders``: the borders at them when
+    evaluated already (else evaluated here, the section alone; :func:`lane_pieces` keeps them for the whole file)."""
     if nodes is None:
         return None
     a, b, s = nodes
@@ -177,7 +178,7 @@ def _section_pieces(ctx: Context, road: Road, index: int, nodes, borders: dict[i
 def lane_minima(ctx: Context, road: Road, index: int):
     """(lane, minimum signed width, s where reached) for every lane with records in a section, from the exact
     per-piece cubics."""
-    pieces = _lane_pieces(ctx, road, index)
+    pieces = lane_pieces(ctx, road, index)
     if pieces is None:
         return
     lanes, a, b, raw, _ = pieces
@@ -196,7 +197,7 @@ def lane_minima(ctx: Context, road: Road, index: int):
 def lane_width_bounds(ctx: Context, road: Road, index: int):
     """``(lanes, a, b, low, high)``: the smallest and largest signed width of every lane with records on every piece
     ``[a, b]`` of a section (exact per piece; ``None`` when there is nothing to bound)."""
-    pieces = _lane_pieces(ctx, road, index)
+    pieces = lane_pieces(ctx, road, index)
     if pieces is None:
         return None
     lanes, a, b, raw, _ = pieces

@@ -140,9 +140,9 @@ class Box:
     high: float
 
 
-def _boxes(ctx: Context) -> list[Box]:
+def surface_boxes(ctx: Context) -> list[Box]:
     """Every placed bounding volume of the file's surface objects (each instance of a repeated one, thinned where
-    instances pile up: :func:`_thinned`). Cached."""
+    instances pile up: :func:`_thinned`), which the surface rules compare. Cached."""
     cache = ctx.__dict__.get("_surface_boxes")
     if cache is not None:
         return cache
@@ -237,7 +237,7 @@ def surface_volumes_overlap(ctx: Context):
         <object id="1" type="roadSurface" s="10" t="1" ... length="1" width="1" height="0"><surface>...</surface>
         <object id="2" type="roadSurface" s="10.5" t="1" ... length="1" width="1" height="0"><surface>...</surface>
     """
-    boxes = _boxes(ctx)
+    boxes = surface_boxes(ctx)
     if len(boxes) < 2:
         return
     import shapely  # here: the boxes' polygons are shapely's, so it is loaded already
@@ -319,7 +319,7 @@ def surface_object_not_referenced(ctx: Context):
 
         <road id="2" ...><objects/></road>
     """
-    boxes = _boxes(ctx)
+    boxes = surface_boxes(ctx)
     if not boxes:
         return
     referenced = {(road.id, r.id) for road in ctx.document.roads for r in road.object_references}
@@ -408,7 +408,7 @@ def surface_hides_road_crg(ctx: Context):
     for ref in (r for road in ctx.document.roads for r in road.object_references):
         if ref.id is not None and ref.s is not None:
             placed_on.setdefault(ref.id, {})[ref.road] = ref.s
-    for box in _boxes(ctx):
+    for box in surface_boxes(ctx):
         hiding = [c for s in box.obj.surfaces for c in s.crgs if c.hide_road_surface_crg is not False]
         if not hiding or box.obj.s is None:
             continue

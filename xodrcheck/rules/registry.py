@@ -103,17 +103,19 @@ class Rule:
         return any(applies(uid, version) for uid in self.uids)
 
 
+#: Every registered rule by its code.
 RULES: dict[str, Rule] = {}
-_NAMES: dict[str, str] = {}
+#: The code of every registered rule by its name (names are unique, like codes).
+NAMES: dict[str, str] = {}
 
 
 def _register(rule: Rule) -> Rule:
     if rule.code in RULES:
         raise ValueError(f"rule code {rule.code} registered twice")
-    if rule.name in _NAMES:
-        raise ValueError(f"rule name {rule.name} registered twice ({_NAMES[rule.name]} and {rule.code})")
+    if rule.name in NAMES:
+        raise ValueError(f"rule name {rule.name} registered twice ({NAMES[rule.name]} and {rule.code})")
     RULES[rule.code] = rule
-    _NAMES[rule.name] = rule.code
+    NAMES[rule.name] = rule.code
     return rule
 
 

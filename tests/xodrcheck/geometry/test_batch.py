@@ -26,6 +26,7 @@ from xodrcheck.reader import read
 from xodrcheck.rules import curvature, junction_geometry
 from xodrcheck.rules.shared import sampled
 from xodrcheck.rules.shared.context import Context
+from xodrcheck.rules.shared.grids import section_grids
 from xodrcheck.support import arrays
 
 CHORD, MAX_STEP, BUDGET = 0.01, 5.0, 200_000
@@ -153,11 +154,11 @@ def test_checker_grid_lines_in_one_pass(corpus_dir: Path):
     path = corpus_dir / "carla-towns/OpenDrive/Town07.xodr"
     document = read(path).document
     ctx = Context(document, Config(), path=str(path), data=None, deadline=time.monotonic() + 1e9)
-    together = sampled._all_sections(ctx)
+    together = sampled.SectionCache(ctx).evaluate_all()
     assert len(together) > 700
     for (road_id, i), got in list(together.items())[::7]:
         rg = ctx.geometry(road_id)
-        s = sampled._grid(ctx, rg, i)
+        s = section_grids(ctx.tolerances, [(rg, i)], sampled.grid_step(ctx.tolerances))[0]
         assert _same(got.s, s) and _same(got.curvature, rg.reference(s).curvature)
         curves = rg.border_curves(i, s)
         for lane_id, p in curves.items():
@@ -172,7 +173,7 @@ def test_checker_grid_lines_in_batches_are_the_one_pass_numbers(corpus_dir: Path
 
     def lines(batch: int) -> dict:
         monkeypatch.setattr(sampled, "BATCH_SAMPLES", batch)
-        return sampled._all_sections(Context(document, Config(), path=str(path), data=None))
+        return sampled.SectionCache(Context(document, Config(), path=str(path), data=None)).evaluate_all()
 
     whole, batched = lines(1 << 40), lines(1000)
     assert len(arrays.batches([len(v.s) for v in whole.values()], 1000)) > 5

@@ -152,7 +152,7 @@ def test_declare_and_rule_take_a_basis():
     finally:
         for code, name in (("Z901", "basis-reader-probe"), ("Z902", "basis-check-probe")):
             registry.RULES.pop(code, None)
-            registry._NAMES.pop(name, None)
+            registry.NAMES.pop(name, None)
 
 
 # ------------------------------------------------------------------------------------------- each basis, by fixture

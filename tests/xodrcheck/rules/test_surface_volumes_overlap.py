@@ -30,14 +30,14 @@ def test_piled_up_instances_are_thinned_and_still_overlap():
     """10 000 instances 1 mm apart (a typo for 1 m): a few dozen boxes, not 10^8 pairs, and the overlap is found."""
     from xodrcheck.check import check
     from xodrcheck.reader import read
-    from xodrcheck.rules.object_surfaces import _boxes
+    from xodrcheck.rules.object_surfaces import surface_boxes
     from xodrcheck.rules.shared.context import Context
 
     data = _repeated("10", "0.001")
     found = [f for f in check(data, select=("B",)).findings if f.code in ("B053", "X900", "X901")]
     assert [f.code for f in found] == ["B053"] and "another instance of it" in found[0].message
     ctx = Context(read(data).document, data=data)
-    boxes = _boxes(ctx)
+    boxes = surface_boxes(ctx)
     assert 2 <= len(boxes) <= 100, len(boxes)
     assert boxes[0].instance.s == 20 and boxes[-1].instance.s == pytest.approx(30, abs=0.01)
 

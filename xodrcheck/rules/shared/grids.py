@@ -19,8 +19,9 @@ from xodrcheck.geometry.lanes import RoadGeometry
 from xodrcheck.geometry.sampling import raw_counts, step_counts
 from xodrcheck.rules.shared.road_ends import left_of
 
-#: Knot intervals counted together (the temporaries of a batch scale with its samples, a few arrays of them).
-_BATCH_INTERVALS = 1 << 14
+#: Knot intervals counted together: it bounds a batch's temporaries (they scale with its samples, a few arrays of
+#: them).
+BATCH_INTERVALS = 1 << 14
 
 
 def section_grids(tol: Tolerances, entries: Sequence[tuple[RoadGeometry, int]], step: float) -> list[np.ndarray]:
@@ -32,22 +33,24 @@ def section_grids(tol: Tolerances, entries: Sequence[tuple[RoadGeometry, int]], 
     for geometry, index in entries:
         start, end = geometry.section_range(index)
         if not end > start:
-            out.extend(_grids(cuts, ends, step, tol.max_samples_per_section))
+            out.extend(knot_grids(cuts, ends, step, tol.max_samples_per_section))
             cuts, ends, pending = [], [], 0
             out.append(np.array([start], dtype=float))
             continue
         cuts.append(geometry.knots(index))
         ends.append(left_of(end))
         pending += len(cuts[-1])
-        if pending >= _BATCH_INTERVALS:
-            out.extend(_grids(cuts, ends, step, tol.max_samples_per_section))
+        if pending >= BATCH_INTERVALS:
+            out.extend(knot_grids(cuts, ends, step, tol.max_samples_per_section))
             cuts, ends, pending = [], [], 0
-    out.extend(_grids(cuts, ends, step, tol.max_samples_per_section))
+    out.extend(knot_grids(cuts, ends, step, tol.max_samples_per_section))
     return out
 
 
-def _grids(cuts: list[np.ndarray], ends: list[float], step: float, budget: int | None) -> list[np.ndarray]:
-    """The grids of sections with knots ``cuts`` (two or more each) and last samples ``ends``."""
+def knot_grids(cuts: list[np.ndarray], ends: list[float], step: float, budget: int | None) -> list[np.ndarray]:
+    """The grids of sections with knots ``cuts`` (two or more each) and last samples ``ends``, each section's steps
+    within ``budget`` (``None``: unbounded): the kernel of :func:`section_grids`, all sections in a few numpy calls.
+    It takes any knots, so its repairs (a falling grid made non-decreasing, a NaN spreading) can be tested alone."""
     if not cuts:
         return []
     sizes = np.array([len(c) for c in cuts], dtype=np.int64)

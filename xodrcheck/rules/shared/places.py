@@ -64,8 +64,9 @@ def _points(xs: np.ndarray, ys: np.ndarray, zs: np.ndarray) -> list[Point]:
     return out
 
 
-#: Places evaluated together (each a block of one sample: a few hundred bytes of temporaries each).
-_PLACES_TOGETHER = 1 << 12
+#: Places evaluated together: it bounds a batch's temporaries (each place a block of one sample: a few hundred
+#: bytes each).
+PLACES_TOGETHER = 1 << 12
 
 
 def locate_all(ctx: Context, findings: list[Finding]) -> list[Finding]:
@@ -88,8 +89,8 @@ def locate_all(ctx: Context, findings: list[Finding]) -> list[Finding]:
             else:
                 on_lanes[key] = (geometry, placed)
     keys = list(on_lanes)
-    for lo in range(0, len(keys), _PLACES_TOGETHER):
-        _lane_places(ctx, {key: on_lanes[key] for key in keys[lo : lo + _PLACES_TOGETHER]})
+    for lo in range(0, len(keys), PLACES_TOGETHER):
+        _lane_places(ctx, {key: on_lanes[key] for key in keys[lo : lo + PLACES_TOGETHER]})
     _line_places(ctx, on_lines)
     return [ctx.locate(f) for f in findings]
 

@@ -54,9 +54,10 @@ class SectionLines:
     borders: dict[int, LanePoints]
 
 
-_LINES: weakref.WeakKeyDictionary[Context, _SectionCache] = weakref.WeakKeyDictionary()
+#: Each file's :class:`SectionCache` (by its check's context), made on first use; :func:`release_lines` drops it.
+LINES: weakref.WeakKeyDictionary[Context, SectionCache] = weakref.WeakKeyDictionary()
 
-#: Bytes of :class:`SectionLines` kept per file (:class:`_SectionCache`): a small map's lines are evaluated once for
+#: Bytes of :class:`SectionLines` kept per file (:class:`SectionCache`): a small map's lines are evaluated once for
 #: all the rules (every corpus file fits, CARLA's Town05 included); of a big map's, each rule that reads them
 #: evaluates again, batch by batch, those that do not fit (kept whole, a 10 km map's took 490 MB). 64 MB: the 10 km
 #: generated map's whole check peaks at 995 MiB (1061 with 192 MB), 228 s CPU.
@@ -108,13 +109,13 @@ def release_lines(ctx: Context) -> None:
     """Drop the file's cached section lines (:func:`section_lines`), road ends (:func:`road_end`) and reference ends
     (:func:`reference_end`) once no rule to come reads them (the overlap rules, run last among the geometric rules,
     call it before building their meshes). A later call builds them again: the findings do not change."""
-    for cache in (_LINES, _ENDS, _END_CURVES, _REFERENCE):
+    for cache in (LINES, _ENDS, _END_CURVES, _REFERENCE):
         cache.pop(ctx, None)
 
 
-def _lines_of(ctx: Context) -> _SectionCache:
-    found = _LINES.get(ctx)
-    return found if found is not None else _LINES.setdefault(ctx, _SectionCache(ctx))
+def _lines_of(ctx: Context) -> SectionCache:
+    found = LINES.get(ctx)
+    return found if found is not None else LINES.setdefault(ctx, SectionCache(ctx))
 
 
 def _lines_size(lines: SectionLines) -> int:
@@ -122,7 +123,7 @@ def _lines_size(lines: SectionLines) -> int:
     return array_bytes(2 + 7 * len(lines.t), lines.s.size)
 
 
-class _SectionCache:
+class SectionCache:
     """The sampled lines of a file's lane sections, evaluated in batches of consecutive sections (document order)
     and kept within :data:`LINES_BUDGET`.
 
@@ -187,6 +188,15 @@ class _SectionCache:
         return len(self._resident) + len(self._window)
 
     @property
+    def listed(self) -> int:
+        """How many sections are listed: those whose samples are finite (evaluated in batches)."""
+        return len(self._keys)
+
+    def kept_sections(self) -> dict[tuple[str, int], SectionLines]:
+        """The lines kept, by section: those first evaluated, then the window's."""
+        return {**self._resident, **self._window}
+
+    @property
     def fits(self) -> bool:
         """Whether every listed section's lines fit :data:`LINES_BUDGET` (then all are kept)."""
         return self._first == BATCH_SAMPLES
@@ -202,9 +212,9 @@ class _SectionCache:
 
     def passing(self, position: int) -> dict[tuple[str, int], SectionLines]:
         """The lines of the listed sections from ``position`` on, up to the next kept one, in one batch of at most
-        :data:`_PASSING_BYTES` (at least one section), evaluated and not kept."""
+        :data:`PASSING_BYTES` (at least one section), evaluated and not kept."""
         end, weight = position, 0
-        while end < len(self._grids) and (end == position or weight + self._bytes[end] <= _PASSING_BYTES):
+        while end < len(self._grids) and (end == position or weight + self._bytes[end] <= PASSING_BYTES):
             if end > position and self.kept_lines(self._keys[end]) is not None:
                 break
             weight += self._bytes[end]
@@ -250,7 +260,8 @@ class _SectionCache:
         return found
 
     def evaluate_all(self) -> dict[tuple[str, int], SectionLines]:
-        """Every listed section's lines, evaluated in full batches (not kept)."""
+        """Every listed section's lines, evaluated in full batches of :data:`BATCH_SAMPLES` (not kept): the same
+        numbers as one section at a time, with a fraction of the calls."""
         out: dict[tuple[str, int], SectionLines] = {}
         for lo, hi in batches([len(s) for s in self._grids], BATCH_SAMPLES):
             _evaluate_batch(self._entries[lo:hi], self._keys[lo:hi], self._grids[lo:hi], out)
@@ -299,15 +310,9 @@ def _copied(lines: SectionLines) -> SectionLines:
     return SectionLines(lines.s, t, np.array(lines.curvature), borders)
 
 
-def _all_sections(ctx: Context) -> dict[tuple[str, int], SectionLines]:
-    """:class:`SectionLines` of every lane section with finite samples, evaluated together in batches
-    (the same numbers as one section at a time, with a fraction of the calls); the rest are evaluated when asked for."""
-    return _SectionCache(ctx).evaluate_all()
-
-
-#: Estimated bytes of the lines :func:`lines_in_order` evaluates together and drops once read (the temporaries of a
-#: batch are a few times its size).
-_PASSING_BYTES = 12 << 20
+#: Estimated bytes of the lines :func:`lines_in_order` evaluates together and drops once read: it bounds a batch's
+#: temporaries (a few times its size).
+PASSING_BYTES = 12 << 20
 #: Samples of the first batch a big file's sections are evaluated in where a rule starts reading (it doubles while
 #: the rule reads on in document order).
 _FIRST_BATCH_SAMPLES = 1 << 12
