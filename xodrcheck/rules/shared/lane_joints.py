@@ -9,7 +9,7 @@ joints like any other. The lane-link rules of :mod:`.lane`, :mod:`.lane_attribut
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, Road
@@ -94,6 +94,24 @@ def side_lanes(section: LaneSection) -> tuple[Lane, ...]:
 
 def pair_key(a: Side, a_id: int, b: Side, b_id: int) -> frozenset:
     return frozenset({(a.road.id, a.index, a.end, a_id), (b.road.id, b.index, b.end, b_id)})
+
+
+def linked_lane_pairs(ctx: Context, keep: Callable[[Joint, Lane, Lane], bool]) -> Iterator[tuple[Joint, Lane, Lane]]:
+    """Each pair of lanes a lane link joins across a joint, where ``keep(joint, lane, target)`` holds: once for the
+    pair (seen from the first side whose link ``keep`` takes), however many sides name the link."""
+    seen: set = set()
+    for joint in joints(ctx):
+        mine, other = joint.mine, joint.other
+        for lane in side_lanes(mine.section):
+            for target_id in mine.links(lane):
+                target = other.section.lane(target_id)
+                if target is None or not keep(joint, lane, target):
+                    continue
+                key = pair_key(mine, lane.id, other, target_id)
+                if key in seen:
+                    continue
+                seen.add(key)
+                yield joint, lane, target
 
 
 def opposed(road: Road, lane: Lane, other_road: Road, other: Lane, same_orientation: bool) -> bool:
