@@ -4,13 +4,15 @@ missing, and a ``laneLink`` naming a lane the road does not have where the lane 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
+from functools import partial
 
 from xodrcheck.findings import Finding
 from xodrcheck.fix import places
-from xodrcheck.fix.edits import set_attribute
+from xodrcheck.fix.edits import Edit, set_attribute
 from xodrcheck.fix.registry import Repair, Skip, fixer
 from xodrcheck.fix.workspace import Workspace
+from xodrcheck.fix.xmltext import Element
 from xodrcheck.model import Connection, ContactPoint, ElementType, Junction, JunctionLaneLink, JunctionType, Road
 
 #: How far along the road (m) a point may lie from a road's end and still be at that end (lanes are matched across
@@ -106,6 +108,22 @@ def lane_link_at(c: Connection, finding: Finding) -> JunctionLaneLink | None:
     return found[0] if len(found) == 1 else None
 
 
+def lane_link_repair(
+    ws: Workspace,
+    finding: Finding,
+    where: tuple[Junction, Connection, JunctionLaneLink],
+    edits: Callable[[Element], tuple[Edit, ...]],
+    action: str,
+) -> Repair | Skip:
+    """The repair of a finding on one junction ``laneLink``: ``edits`` of its element, said as ``action`` after the
+    junction and connection; a skip where the element is not found in the file."""
+    junction, c, ll = where
+    element = ws.lane_link_element(junction, c, ll)
+    if element is None:
+        return Skip(finding, "the <laneLink> is not found in the file")
+    return Repair((finding,), edits(element), f"junction {junction.id} connection {c.id}: {action}")
+
+
 @fixer("R012", "correct-junction-lane-link", safe=True, bound="moves nothing")
 def correct_junction_lane_link(ws: Workspace, findings: list[Finding]) -> Iterator[Repair | Skip]:
     """Corrects a junction ``laneLink`` whose ``from`` (``to``) names a lane the incoming (connecting) road does not
@@ -148,16 +166,17 @@ def correct_junction_lane_link(ws: Workspace, findings: list[Finding]) -> Iterat
         if any((other.from_lane, other.to_lane) == new for other in c.lane_links):
             yield Skip(finding, f"the connection links lane {new[0]} to lane {new[1]} already")
             continue
-        element = ws.lane_link_element(junction, c, ll)
-        if element is None:
-            yield Skip(finding, "the <laneLink> is not found in the file")
-            continue
-        yield Repair(
-            (finding,),
-            tuple(set_attribute(ws.text, element, name, str(value)) for name, value in changes.items()),
-            f"junction {junction.id} connection {c.id}: laneLink from {ll.from_lane} to {ll.to_lane} -> from "
-            f"{new[0]} to {new[1]}",
+        yield lane_link_repair(
+            ws,
+            finding,
+            (junction, c, ll),
+            partial(_set_all, ws, changes),
+            f"laneLink from {ll.from_lane} to {ll.to_lane} -> from {new[0]} to {new[1]}",
         )
+
+
+def _set_all(ws: Workspace, changes: dict[str, int], element: Element) -> tuple[Edit, ...]:
+    return tuple(set_attribute(ws.text, element, name, str(value)) for name, value in changes.items())
 
 
 def _centre(ws: Workspace, road: Road, end: ContactPoint, lane_id: int) -> tuple[float, float] | None:
