@@ -67,7 +67,7 @@ _MODULES = {
     "objects": (
         "Bridge CornerLocal CornerReference CornerRoad CurveLocal CurveShape LaneValidity Marking Markings "
         "ObjectBorder ObjectCrg ObjectMaterial ObjectReference ObjectSurface Outline OutlinePoint ParkingSpace "
-        "Polyline Repeat RoadObject Skeleton Tunnel Vertex"
+        "Polyline Repeat RoadObject RoadStructure Skeleton Tunnel Vertex"
     ),
     "signals": (
         "Control Controller DisplayArea PositionInertial PositionRoad Semantic Semantics Sign Signal "
