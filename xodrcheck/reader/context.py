@@ -213,6 +213,10 @@ class Context:
     ) -> None:
         self.report(R.MISSING_ATTRIBUTE, f"{describe(el)} has no '{name}' attribute; {then}", el, severity, uid=uid)
 
+    def missing_child(self, el: etree._Element, tag: str, then: str, uid: str | None = None) -> None:
+        """Report that ``el`` has no ``<tag>`` child, and what the reader does without it (``then``)."""
+        self.report(R.MISSING_ELEMENT, f"{describe(el)} has no <{tag}>; {then}", el, uid=uid)
+
     def invalid(self, el: etree._Element, name: str, raw: str, why: str, then: str) -> None:
         self.note_invalid(el, name, raw)
         self.report(R.INVALID_ATTRIBUTE, f'{describe(el)} has {name}="{_show(raw)}", {why}; {then}', el)

@@ -166,12 +166,7 @@ def _plan_view(ctx: Context, el: etree._Element) -> tuple[Geometry, ...]:
             if geometry is not None:
                 out.append(geometry)
     if not seen:
-        ctx.report(
-            R.MISSING_ELEMENT,
-            f"{describe(el)} has no <geometry>; the road has no reference line",
-            el,
-            uid=RU.GEOMETRY_REFLINE_EXISTS,
-        )
+        ctx.missing_child(el, "geometry", "the road has no reference line", RU.GEOMETRY_REFLINE_EXISTS)
     elif len(out) > 1:
         ctx.check_order(out, "<geometry>", el, RU.GEOMETRY_ORDER)
     return tuple(out)
@@ -271,12 +266,7 @@ def _children(
 
 def _reference_line(ctx: Context, el: etree._Element, plan_view: etree._Element | None) -> tuple[Geometry, ...]:
     if plan_view is None:
-        ctx.report(
-            R.MISSING_ELEMENT,
-            f"{describe(el)} has no <planView>; the road has no reference line",
-            el,
-            uid=RU.GEOMETRY_REFLINE_EXISTS,
-        )
+        ctx.missing_child(el, "planView", "the road has no reference line", RU.GEOMETRY_REFLINE_EXISTS)
         return ()
     return _plan_view(ctx, plan_view)
 
@@ -387,9 +377,7 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
     superelevation, shapes, cross_section = _lateral(ctx, first.get("lateralProfile"))
     permanent = temporary = None
     if not lanes:
-        ctx.report(
-            R.MISSING_ELEMENT, f"{describe(el)} has no <lanes>; the road has no lanes", el, uid=LANE_SECTION_REQUIRED
-        )
+        ctx.missing_child(el, "lanes", "the road has no lanes", LANE_SECTION_REQUIRED)
     else:
         permanent, temporary = build_layers(ctx, lanes)
     types, surface, railroad = _records(ctx, el, first)
