@@ -155,6 +155,16 @@ class Context:
             return None
         return self.geometry(road.id)
 
+    def usable_sections(self) -> Iterator[tuple[Road, RoadGeometry, int, LaneSection]]:
+        """Each lane section of each road whose :meth:`usable_geometry` there is: the road, its geometry, the
+        section's index and the section, in document order."""
+        for road in self.document.roads:
+            geometry = self.usable_geometry(road)
+            if geometry is None:
+                continue
+            for index, section in enumerate(road.lane_sections):
+                yield road, geometry, index, section
+
     def road_geometry(self, road: Road) -> RoadGeometry:
         """The evaluated geometry of a road of the document (every road's id has one; with a duplicated id, that of
         the first road of the id, as :meth:`geometry` gives)."""
