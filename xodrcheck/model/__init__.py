@@ -56,7 +56,7 @@ _MODULES = {
         "ReferenceType Side StationType SwitchPosition TrafficRule"
     ),
     "facts": "NO_FACTS UnknownElement UnreadLink XmlFacts facts_field",
-    "planview": "Arc Cubic Geometry Line ParamPoly3 Poly3 Profile Spiral",
+    "planview": "Arc Cubic Geometry Line ParamPoly3 PlanViewElement Poly3 Profile Spiral",
     "lanes": "Lane LaneHeight LaneKey LaneLinks LaneSection Lanes RoadMark Speed lane_type_name",
     "lane_records": (
         "LaneAccess LaneMaterial LaneRule LaneVisibility RoadMarkExplicit RoadMarkLine RoadMarkSway RoadMarkType"
