@@ -30,17 +30,6 @@ def connection_at(ws: Workspace, finding: Finding) -> tuple[Junction, Connection
     return None
 
 
-def _junction_end(junction: Junction, road: Road) -> list[ContactPoint]:
-    """The ends of ``road`` that link to ``junction``."""
-    return [
-        end
-        for end in (ContactPoint.START, ContactPoint.END)
-        if (link := road.link_at(end)) is not None
-        and link.element_type is ElementType.JUNCTION
-        and link.element_id == junction.id
-    ]
-
-
 def _nearer_end(ws: Workspace, road: Road, incoming: Road, incoming_end: ContactPoint) -> ContactPoint | None:
     """The end of ``road`` that lies at the incoming road's junction end: within the roads' width of it, and nearer
     than the other end by at least the ``gap`` tolerance (``None`` when the geometry does not tell)."""
@@ -73,14 +62,8 @@ def set_connection_contact_point(ws: Workspace, findings: list[Finding]) -> Iter
         if junction.type is not JunctionType.DEFAULT or incoming is None or target is None:
             yield Skip(finding, "only connections of default junctions with both roads present are fixed")
             continue
-        linked = [
-            end
-            for end in (ContactPoint.START, ContactPoint.END)
-            if (link := target.link_at(end)) is not None
-            and link.element_type is ElementType.ROAD
-            and link.element_id == incoming.id
-        ]
-        ends = _junction_end(junction, incoming)
+        linked = target.ends_linked_to(ElementType.ROAD, incoming.id)
+        ends = incoming.ends_linked_to(ElementType.JUNCTION, junction.id)
         if len(linked) != 1 or len(ends) != 1 or linked[0] is c.contact_point:
             yield Skip(finding, f"road {target.id}'s links do not tell which of its ends meets road {incoming.id}")
             continue
@@ -141,7 +124,7 @@ def correct_junction_lane_link(ws: Workspace, findings: list[Finding]) -> Iterat
         junction, c = found
         ll = lane_link_at(c, finding)
         incoming, target = ws.road(c.incoming_road), ws.road(c.connecting_road or c.linked_road)
-        ends = _junction_end(junction, incoming) if incoming is not None else []
+        ends = incoming.ends_linked_to(ElementType.JUNCTION, junction.id) if incoming is not None else []
         if ll is None or incoming is None or target is None or c.contact_point is None or len(ends) != 1:
             yield Skip(finding, "the laneLink, its roads or their ends at the junction are not plain")
             continue

@@ -81,7 +81,7 @@ def joints(ctx: Context) -> Iterator[Joint]:
             if target is None or not target.lane_sections:
                 continue
             back = target.link_at(link.contact_point)
-            mutual = back is not None and back.element_type is ElementType.ROAD and back.element_id == road.id
+            mutual = back is not None and back.names(ElementType.ROAD, road.id)
             index, target_index = ctx.section_index_at(road, end), ctx.section_index_at(target, link.contact_point)
             if index is None or target_index is None:  # both roads have lane sections (checked above)
                 continue
