@@ -268,10 +268,10 @@ def virtual_junction_range(ctx: Context):
 
 def _main_road_ends(road: Road, main: str) -> Iterator[tuple[ContactPoint, float | None, int]]:
     """(end, elementS, line) of each link of ``road`` to road ``main``."""
-    for end in road.ends_linked_to(ElementType.ROAD, main):
+    for end in (ContactPoint.START, ContactPoint.END):
         link = road.link_at(end)
-        assert link is not None  # a linked end has a link
-        yield end, link.element_s, link.line
+        if link is not None and link.names(ElementType.ROAD, main):
+            yield end, link.element_s, link.line
 
 
 @rule(
