@@ -50,7 +50,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
 ELEMENT_TYPES = {"road": ElementType.ROAD, "junction": ElementType.JUNCTION}
 CONTACT_POINTS = {"start": ContactPoint.START, "end": ContactPoint.END}
-_ELEMENT_DIRS = {"+": ElementDir.PLUS, "-": ElementDir.MINUS}
+ELEMENT_DIRS = {"+": ElementDir.PLUS, "-": ElementDir.MINUS}
 _TRAFFIC_RULES = {"rht": TrafficRule.RHT, "lht": TrafficRule.LHT}
 P_RANGES = {"arclength": PRange.ARC_LENGTH, "normalized": PRange.NORMALIZED}
 
@@ -192,7 +192,7 @@ def _road_link(ctx: Context, el: etree._Element) -> RoadLink | None:
     if el.get("elementS") is not None:
         element_s = ctx.number(el, "elementS", "read as absent", nonneg=True)
     if el.get("elementDir") is not None:
-        element_dir = ctx.choice(el, "elementDir", _ELEMENT_DIRS, "read as absent")
+        element_dir = ctx.choice(el, "elementDir", ELEMENT_DIRS, "read as absent")
     return model.RoadLink(element_type, element_id, contact, element_s, element_dir, el.sourceline, ctx.facts(el, LEAF))
 
 
