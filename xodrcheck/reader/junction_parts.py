@@ -31,10 +31,10 @@ from xodrcheck.model import (
     RoadPlace,
     RoadSection,
 )
-from xodrcheck.reader.context import LEAF, Context
+from xodrcheck.reader.context import ELEMENT_DIRS, LEAF, Context
 from xodrcheck.reader.objects import ORIENTATIONS, read_objects
 from xodrcheck.reader.road_records import surface
-from xodrcheck.reader.roads import ELEMENT_DIRS, ELEMENT_TYPES
+from xodrcheck.reader.roads import ELEMENT_TYPES
 
 _GROUP_TYPES = {t.value: t for t in JunctionGroupType}
 #: A boundary segment's road end: ``begin`` is the spec's own example's spelling of the start.

@@ -35,8 +35,7 @@ from xodrcheck.model import (
     SwitchPosition,
     SwitchTrack,
 )
-from xodrcheck.reader.context import LEAF, Context
-from xodrcheck.reader.roads import ELEMENT_DIRS
+from xodrcheck.reader.context import ELEMENT_DIRS, LEAF, Context
 
 _MAX_SPEEDS = {word.value: word for word in MaxSpeed}
 _CRG_MODES = {mode.value: mode for mode in CrgMode}

@@ -15,7 +15,6 @@ from xodrcheck import model
 from xodrcheck.findings import Severity
 from xodrcheck.model import (
     ContactPoint,
-    ElementDir,
     ElementType,
     Geometry,
     PRange,
@@ -26,7 +25,7 @@ from xodrcheck.model import (
     UnreadLink,
     XmlFacts,
 )
-from xodrcheck.reader.context import LEAF, Context, cubics, describe
+from xodrcheck.reader.context import ELEMENT_DIRS, LEAF, Context, cubics, describe
 from xodrcheck.reader.lanes import build_layers
 from xodrcheck.rules import xml as R
 from xodrcheck.rules.shared import road_uids as RU
@@ -50,7 +49,6 @@ if TYPE_CHECKING:  # pragma: no cover
 
 ELEMENT_TYPES = {"road": ElementType.ROAD, "junction": ElementType.JUNCTION}
 CONTACT_POINTS = {"start": ContactPoint.START, "end": ContactPoint.END}
-ELEMENT_DIRS = {"+": ElementDir.PLUS, "-": ElementDir.MINUS}
 _TRAFFIC_RULES = {"rht": TrafficRule.RHT, "lht": TrafficRule.LHT}
 P_RANGES = {"arclength": PRange.ARC_LENGTH, "normalized": PRange.NORMALIZED}
 
