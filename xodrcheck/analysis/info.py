@@ -8,7 +8,7 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -193,6 +193,28 @@ def _finding_counts(findings: Iterable[Finding]) -> dict[str, int]:
     return {str(sev): counts.get(str(sev), 0) for sev in sorted(Severity, reverse=True)}
 
 
+def map_counts(doc: Document) -> dict[str, Any]:
+    """The counts of roads, junctions, lane sections and lanes that :class:`MapInfo` holds (by its field names) and
+    :class:`~xodrcheck.analysis.snapshot.Snapshot` keeps; mappings sorted by key."""
+    lanes = Counter(
+        lane_type_name(lane)
+        for road in doc.roads
+        for section in road.lane_sections
+        for lane in (*section.left, *section.right)
+        if lane.id != 0
+    )
+    return {
+        "roads": len(doc.roads),
+        "junction_roads": sum(1 for road in doc.roads if road.junction is not None),
+        "junctions": len(doc.junctions),
+        "junctions_by_type": _sorted(Counter(j.type.value for j in doc.junctions)),
+        "junctions_by_legs": _sorted(Counter(junction_legs(j, doc) for j in doc.junctions)),
+        "lane_sections": sum(len(road.lane_sections) for road in doc.roads),
+        "lanes": sum(lanes.values()),
+        "lanes_by_type": _sorted(lanes),
+    }
+
+
 def map_info(result: ReadResult, tolerances: Tolerances | None = None) -> MapInfo:
     """Summarise a read file."""
     from xodrcheck.analysis.elevation import elevation_info  # here: the meshes' lane_type_name loads no elevation
@@ -202,25 +224,11 @@ def map_info(result: ReadResult, tolerances: Tolerances | None = None) -> MapInf
     if doc is None:
         return MapInfo(result.path, None, 0, 0, 0, {}, {}, 0, 0, {}, 0.0, {}, None, findings)
     version = None if doc.version is None else "{}.{}".format(*doc.version)
-    lanes = Counter(
-        lane_type_name(lane)
-        for road in doc.roads
-        for section in road.lane_sections
-        for lane in (*section.left, *section.right)
-        if lane.id != 0
-    )
     geometries = Counter(GEOMETRY_NAMES[type(g)] for road in doc.roads for g in road.plan_view)
     return MapInfo(
         path=result.path,
         version=version,
-        roads=len(doc.roads),
-        junction_roads=sum(1 for road in doc.roads if road.junction is not None),
-        junctions=len(doc.junctions),
-        junctions_by_type=_sorted(Counter(j.type.value for j in doc.junctions)),
-        junctions_by_legs=_sorted(Counter(junction_legs(j, doc) for j in doc.junctions)),
-        lane_sections=sum(len(road.lane_sections) for road in doc.roads),
-        lanes=sum(lanes.values()),
-        lanes_by_type=_sorted(lanes),
+        **map_counts(doc),
         reference_length=float(sum(road.length for road in doc.roads)),
         geometries=_sorted(geometries),
         bbox=bounding_box(doc, tolerances),

@@ -32,14 +32,14 @@ from typing import Any
 
 import numpy as np
 
-from xodrcheck.analysis.info import bounding_box, junction_legs
+from xodrcheck.analysis.info import bounding_box, map_counts
 from xodrcheck.check import check
 from xodrcheck.config import Config, Tolerances
 from xodrcheck.findings import XodrError
 from xodrcheck.geometry.lanes import geometry_of
 from xodrcheck.graph.invariants import KEYS as REACH_KEYS
 from xodrcheck.graph.invariants import reach_differences, reach_invariants
-from xodrcheck.model import ContactPoint, Document, ElementType, Road, lane_type_name
+from xodrcheck.model import ContactPoint, Document, ElementType, Road
 from xodrcheck.reader import read
 
 __all__ = [
@@ -238,25 +238,14 @@ def snapshot_of(source: str | Path | bytes, config: Config | None = None) -> Sna
         raise NotReadWhole(why)
     doc = result.document
     assert doc is not None  # not_whole() says so when there is no document
-    lanes = Counter(
-        lane_type_name(lane)
-        for road in doc.roads
-        for section in road.lane_sections
-        for lane in (*section.left, *section.right)
-        if lane.id != 0
-    )
+    counts = map_counts(doc)
+    legs = counts.pop("junctions_by_legs")
     edges = lane_links(doc)
     box = bounding_box(doc, config.tolerances)
     report = check(source, config=config)
     return Snapshot(
-        roads=len(doc.roads),
-        junction_roads=sum(1 for road in doc.roads if road.junction is not None),
-        junctions=len(doc.junctions),
-        junctions_by_type=dict(sorted(Counter(j.type.value for j in doc.junctions).items())),
-        legs={str(k): v for k, v in sorted(Counter(junction_legs(j, doc) for j in doc.junctions).items())},
-        lane_sections=sum(len(road.lane_sections) for road in doc.roads),
-        lanes=sum(lanes.values()),
-        lanes_by_type=dict(sorted(lanes.items())),
+        **counts,
+        legs={str(k): v for k, v in legs.items()},
         lane_length=_rounded(lane_length(doc, config.tolerances)),
         lane_links=len(edges),
         topology=topology_hash(edges),

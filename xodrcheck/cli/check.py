@@ -30,13 +30,12 @@ import dataclasses
 import sys
 from pathlib import Path
 
-from xodrcheck.cli.common import error, output, target_ok
+from xodrcheck.cli.common import error, target_ok, written
 from xodrcheck.config import PROFILES, SEVERITY_NAMES, Config, ConfigError, load_config
 from xodrcheck.findings import ReadError, Severity
 from xodrcheck.report import FORMATS, least_severity, render, shown
 from xodrcheck.report.verdict import count, verdict
 from xodrcheck.rules.internal import ENGINE_CODES
-from xodrcheck.support.atomic import OutputError
 
 NAME = "check"
 HELP = "Check OpenDRIVE files against the conformance rules (exit 1 when an error is found)."
@@ -213,17 +212,13 @@ def _write_report(args: argparse.Namespace, config: Config, reports: list, unrea
         text = render("text", reports, least=least, statistics=args.statistics, unreadable=unreadable)
     else:
         text = render(args.format, visible)
-    try:
-        with output(args.output) as stream:
-            stream.write(text)
-    except OutputError as exc:
-        error(str(exc))
+    if not written(args.output, lambda stream: stream.write(text)):
         return False
     if not (args.format == "text" and not to_file and _in_sight(text)):
         print(verdict(reports, len(unreadable)), file=sys.stderr)
     if to_file:
-        written = count(sum(len(r.findings) for r in visible), "finding")
-        print(f"wrote {args.output} ({written}, {_size(Path(args.output))})", file=sys.stderr)
+        found = count(sum(len(r.findings) for r in visible), "finding")
+        print(f"wrote {args.output} ({found}, {_size(Path(args.output))})", file=sys.stderr)
     return True
 
 

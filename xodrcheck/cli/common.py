@@ -98,6 +98,18 @@ def output(path: str | None) -> Iterator[IO[str]]:
         yield stream
 
 
+def written(path: str | None, write: Callable[[IO[str]], object]) -> bool:
+    """Whether ``write`` could write its whole output to ``path`` through :func:`output`; ``False`` after one line on
+    stderr when the target failed (the caller exits 2: nothing was written)."""
+    try:
+        with output(path) as stream:
+            write(stream)
+    except OutputError as exc:
+        error(str(exc))
+        return False
+    return True
+
+
 def guarded(path: str, action: Callable[[], int]) -> int:
     """Run one file's work; an unexpected exception becomes one line and exit 2 instead of a traceback."""
     try:

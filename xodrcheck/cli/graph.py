@@ -9,9 +9,14 @@ output cannot be written (nothing written then).
 from __future__ import annotations
 
 import argparse
+from typing import IO, TYPE_CHECKING
 
-from xodrcheck.cli.common import error, guarded, output, read_file, report_errors, target_ok
-from xodrcheck.support.atomic import OutputError
+from xodrcheck.cli.common import guarded, read_file, report_errors, target_ok, written
+
+if TYPE_CHECKING:
+    from xodrcheck.graph import LaneGraph
+    from xodrcheck.model import Document
+    from xodrcheck.reader import ReadResult
 
 NAME = "graph"
 HELP = "Write the lane graph of a map (lanes, links, lane changes) as JSON, Graphviz DOT or GeoJSON."
@@ -41,31 +46,41 @@ def summary(graph) -> dict:
     }
 
 
+def read_lane_graph(args: argparse.Namespace) -> tuple[ReadResult, Document, LaneGraph] | None:
+    """The file of ``graph`` or ``route`` read, with its document and lane graph (lane changes unless
+    ``--no-lane-changes``); ``None`` after one line on stderr when it cannot be read whole (exit 2)."""
+    from xodrcheck.graph import lane_graph
+
+    result = read_file(args.file)
+    if result is None:
+        return None
+    document = result.document
+    assert document is not None  # read_file refuses a file without one
+    return result, document, lane_graph(document, lane_changes=not args.no_lane_changes)
+
+
 def run(args: argparse.Namespace) -> int:
     if not target_ok(args.output):
         return 2
 
     def one() -> int:
-        from xodrcheck.graph import lane_graph
         from xodrcheck.graph.export import graph_dot, graph_geojson, graph_json
 
-        result = read_file(args.file)
-        if result is None:
+        read = read_lane_graph(args)
+        if read is None:
             return 2
+        result, document, graph = read
         failed = report_errors(args.file, result)
-        document = result.document
-        assert document is not None  # read_file refuses a file without one
-        graph = lane_graph(document, lane_changes=not args.no_lane_changes)
-        try:
-            with output(args.output) as stream:
-                if args.format == "dot":
-                    graph_dot(graph, stream)
-                elif args.format == "geojson":
-                    graph_geojson(document, graph, stream)
-                else:
-                    graph_json(document, graph, summary(graph), stream)
-        except OutputError as exc:
-            error(str(exc))
+
+        def write(stream: IO[str]) -> None:
+            if args.format == "dot":
+                graph_dot(graph, stream)
+            elif args.format == "geojson":
+                graph_geojson(document, graph, stream)
+            else:
+                graph_json(document, graph, summary(graph), stream)
+
+        if not written(args.output, write):
             return 2
         return 1 if failed else 0
 

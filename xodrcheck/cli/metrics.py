@@ -21,8 +21,7 @@ from collections.abc import Iterator
 from typing import IO
 
 from xodrcheck.analysis.metrics import JunctionMetrics, LegMetrics, map_metrics
-from xodrcheck.cli.common import error, guarded, output, read_file, report_errors, target_ok
-from xodrcheck.support.atomic import OutputError
+from xodrcheck.cli.common import error, guarded, read_file, report_errors, target_ok, written
 
 NAME = "metrics"
 HELP = "Expressive-range metrics of every junction: FOV, maxCurvature, cornerDeviation, complexity, area, conflicts."
@@ -161,12 +160,10 @@ def run(args: argparse.Namespace) -> int:
         if measured:  # the others could be: say why their metrics are not in the file either
             error(f"nothing written to {args.output}: a file could not be measured")
         return 2
-    try:
-        with output(args.output) as stream:
-            writer = _Writer(stream, args.format)
-            for path, metrics in measured:
-                writer.add(path, metrics)
-    except OutputError as exc:
-        error(str(exc))
-        return 2
-    return worst
+
+    def write(stream: IO[str]) -> None:
+        writer = _Writer(stream, args.format)
+        for path, metrics in measured:
+            writer.add(path, metrics)
+
+    return worst if written(args.output, write) else 2

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import argparse
 
-from xodrcheck.cli.common import error, guarded, output, read_file, target_ok
-from xodrcheck.support.atomic import OutputError
+from xodrcheck.cli.common import error, guarded, target_ok, written
+from xodrcheck.cli.graph import read_lane_graph
 
 NAME = "route"
 HELP = "Find the shortest route between two lanes (ROAD:LANE[:S]): its length, lanes and polyline."
@@ -41,27 +41,20 @@ def run(args: argparse.Namespace) -> int:
         return 2
 
     def one() -> int:
-        from xodrcheck.graph import lane_graph
         from xodrcheck.graph.export import route_geojson, route_json, route_text
         from xodrcheck.graph.routes import PlaceError, route
 
-        result = read_file(args.file)
-        if result is None:
+        read = read_lane_graph(args)
+        if read is None:
             return 2
-        document = result.document
-        assert document is not None  # read_file refuses a file without one
-        graph = lane_graph(document, lane_changes=not args.no_lane_changes)
+        _, document, graph = read
         try:
             found = route(document, graph, args.origin, args.destination)
         except PlaceError as exc:
             error(f"route: {exc}")
             return 2
         writer = route_json if args.format == "json" else route_geojson if args.format == "geojson" else route_text
-        try:
-            with output(args.output) as stream:
-                writer(found, stream)
-        except OutputError as exc:
-            error(str(exc))
+        if not written(args.output, lambda stream: writer(found, stream)):
             return 2
         if not found.found:
             error(f"no route from {found.origin} to {found.destination}: {found.why}")

@@ -24,15 +24,14 @@ from xodrcheck.analysis.sample import LaneLine, sample_count, sample_lanes
 from xodrcheck.cli.common import (
     error,
     guarded,
-    output,
     positive_number,
     read_file,
     report_errors,
     target_ok,
+    written,
 )
 from xodrcheck.config import ConfigError, load_config
 from xodrcheck.model import Document
-from xodrcheck.support.atomic import OutputError
 
 NAME = "sample"
 HELP = "Sample every lane's centre line (and borders) at a fixed step, as CSV or GeoJSON."
@@ -129,11 +128,7 @@ def run(args: argparse.Namespace) -> int:
             return 2
         lines = sample_lanes(result.document, args.step, kinds, budget=cap)
         writer = write_geojson if args.format == "geojson" else write_csv
-        try:
-            with output(args.output) as stream:
-                writer(lines, stream)
-        except OutputError as exc:
-            error(str(exc))
+        if not written(args.output, lambda stream: writer(lines, stream)):
             return 2
         return 1 if failed else 0
 

@@ -9,10 +9,9 @@ import argparse
 import json
 
 from xodrcheck.analysis.snapshot import NotReadWhole, Snapshot, snapshot_of
-from xodrcheck.cli.common import error, guarded, not_whole_message, output, target_ok
+from xodrcheck.cli.common import error, guarded, not_whole_message, target_ok, written
 from xodrcheck.config import Config, ConfigError, load_config
 from xodrcheck.findings import ReadError
-from xodrcheck.support.atomic import OutputError
 
 NAME = "snapshot"
 HELP = (
@@ -61,12 +60,6 @@ def run(args: argparse.Namespace) -> int:
         snap = snapshot_or_error(args.file, config)
         if snap is None:
             return 2
-        try:
-            with output(args.output) as stream:
-                stream.write(dumps(snap.to_json()))
-        except OutputError as exc:
-            error(str(exc))
-            return 2
-        return 0
+        return 0 if written(args.output, lambda stream: stream.write(dumps(snap.to_json()))) else 2
 
     return guarded(args.file, one)

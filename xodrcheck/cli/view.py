@@ -12,7 +12,7 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from xodrcheck.cli.common import error, guarded, output, positive_number, read_file, report_errors, target_ok
+from xodrcheck.cli.common import error, guarded, positive_number, read_file, report_errors, target_ok, written
 
 NAME = "view"
 HELP = "Write the map of a file as one self-contained HTML page (pan, zoom, hover a lane for its name and s)."
@@ -29,7 +29,6 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     from xodrcheck.mapview import CHORD, map_data
     from xodrcheck.mapview.page import FilePage, render_page
-    from xodrcheck.support.atomic import OutputError
 
     if not target_ok(args.output):
         return 2
@@ -45,11 +44,7 @@ def run(args: argparse.Namespace) -> int:
             return 1
         version = None if result.document.version is None else "{}.{}".format(*result.document.version)
         page = render_page([FilePage(args.file, version, None, data, note)], f"xodrcheck view: {Path(args.file).name}")
-        try:
-            with output(args.output) as stream:
-                stream.write(page)
-        except OutputError as exc:
-            error(str(exc))
+        if not written(args.output, lambda stream: stream.write(page)):
             return 2
         print(f"{args.output}: map of {len(data['roads'])} roads, {len(data['sections'])} lane sections")
         return 1 if failed else 0

@@ -4,13 +4,15 @@ missing, and a ``laneLink`` naming a lane the road does not have where the lane 
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
+from functools import partial
 
 from xodrcheck.findings import Finding
 from xodrcheck.fix import places
-from xodrcheck.fix.edits import set_attribute
+from xodrcheck.fix.edits import Edit, set_attribute
 from xodrcheck.fix.registry import Repair, Skip, fixer
 from xodrcheck.fix.workspace import Workspace
+from xodrcheck.fix.xmltext import Element
 from xodrcheck.model import Connection, ContactPoint, ElementType, Junction, JunctionLaneLink, JunctionType, Road
 
 #: How far along the road (m) a point may lie from a road's end and still be at that end (lanes are matched across
@@ -26,17 +28,6 @@ def connection_at(ws: Workspace, finding: Finding) -> tuple[Junction, Connection
             if finding.line and finding.line in (c.line, *(ll.line for ll in c.lane_links)) and finding.road in roads:
                 return junction, c
     return None
-
-
-def _junction_end(junction: Junction, road: Road) -> list[ContactPoint]:
-    """The ends of ``road`` that link to ``junction``."""
-    return [
-        end
-        for end in (ContactPoint.START, ContactPoint.END)
-        if (link := road.link_at(end)) is not None
-        and link.element_type is ElementType.JUNCTION
-        and link.element_id == junction.id
-    ]
 
 
 def _nearer_end(ws: Workspace, road: Road, incoming: Road, incoming_end: ContactPoint) -> ContactPoint | None:
@@ -71,14 +62,8 @@ def set_connection_contact_point(ws: Workspace, findings: list[Finding]) -> Iter
         if junction.type is not JunctionType.DEFAULT or incoming is None or target is None:
             yield Skip(finding, "only connections of default junctions with both roads present are fixed")
             continue
-        linked = [
-            end
-            for end in (ContactPoint.START, ContactPoint.END)
-            if (link := target.link_at(end)) is not None
-            and link.element_type is ElementType.ROAD
-            and link.element_id == incoming.id
-        ]
-        ends = _junction_end(junction, incoming)
+        linked = target.ends_linked_to(ElementType.ROAD, incoming.id)
+        ends = incoming.ends_linked_to(ElementType.JUNCTION, junction.id)
         if len(linked) != 1 or len(ends) != 1 or linked[0] is c.contact_point:
             yield Skip(finding, f"road {target.id}'s links do not tell which of its ends meets road {incoming.id}")
             continue
@@ -106,6 +91,22 @@ def lane_link_at(c: Connection, finding: Finding) -> JunctionLaneLink | None:
     return found[0] if len(found) == 1 else None
 
 
+def lane_link_repair(
+    ws: Workspace,
+    finding: Finding,
+    where: tuple[Junction, Connection, JunctionLaneLink],
+    edits: Callable[[Element], tuple[Edit, ...]],
+    action: str,
+) -> Repair | Skip:
+    """The repair of a finding on one junction ``laneLink``: ``edits`` of its element, said as ``action`` after the
+    junction and connection; a skip where the element is not found in the file."""
+    junction, c, ll = where
+    element = ws.lane_link_element(junction, c, ll)
+    if element is None:
+        return Skip(finding, "the <laneLink> is not found in the file")
+    return Repair((finding,), edits(element), f"junction {junction.id} connection {c.id}: {action}")
+
+
 @fixer("R012", "correct-junction-lane-link", safe=True, bound="moves nothing")
 def correct_junction_lane_link(ws: Workspace, findings: list[Finding]) -> Iterator[Repair | Skip]:
     """Corrects a junction ``laneLink`` whose ``from`` (``to``) names a lane the incoming (connecting) road does not
@@ -123,7 +124,7 @@ def correct_junction_lane_link(ws: Workspace, findings: list[Finding]) -> Iterat
         junction, c = found
         ll = lane_link_at(c, finding)
         incoming, target = ws.road(c.incoming_road), ws.road(c.connecting_road or c.linked_road)
-        ends = _junction_end(junction, incoming) if incoming is not None else []
+        ends = incoming.ends_linked_to(ElementType.JUNCTION, junction.id) if incoming is not None else []
         if ll is None or incoming is None or target is None or c.contact_point is None or len(ends) != 1:
             yield Skip(finding, "the laneLink, its roads or their ends at the junction are not plain")
             continue
@@ -148,16 +149,17 @@ def correct_junction_lane_link(ws: Workspace, findings: list[Finding]) -> Iterat
         if any((other.from_lane, other.to_lane) == new for other in c.lane_links):
             yield Skip(finding, f"the connection links lane {new[0]} to lane {new[1]} already")
             continue
-        element = ws.lane_link_element(junction, c, ll)
-        if element is None:
-            yield Skip(finding, "the <laneLink> is not found in the file")
-            continue
-        yield Repair(
-            (finding,),
-            tuple(set_attribute(ws.text, element, name, str(value)) for name, value in changes.items()),
-            f"junction {junction.id} connection {c.id}: laneLink from {ll.from_lane} to {ll.to_lane} -> from "
-            f"{new[0]} to {new[1]}",
+        yield lane_link_repair(
+            ws,
+            finding,
+            (junction, c, ll),
+            partial(_set_all, ws, changes),
+            f"laneLink from {ll.from_lane} to {ll.to_lane} -> from {new[0]} to {new[1]}",
         )
+
+
+def _set_all(ws: Workspace, changes: dict[str, int], element: Element) -> tuple[Edit, ...]:
+    return tuple(set_attribute(ws.text, element, name, str(value)) for name, value in changes.items())
 
 
 def _centre(ws: Workspace, road: Road, end: ContactPoint, lane_id: int) -> tuple[float, float] | None:

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 
 from xodrcheck.findings import Finding
 from xodrcheck.fix.edits import Edit, remove_element
-from xodrcheck.fix.junctions import connection_at, lane_link_at
+from xodrcheck.fix.junctions import connection_at, lane_link_at, lane_link_repair
 from xodrcheck.fix.registry import Repair, Skip, fixer
 from xodrcheck.fix.workspace import Workspace
 from xodrcheck.fix.xmltext import Element
@@ -93,12 +93,10 @@ def drop_junction_lane_link(ws: Workspace, findings: list[Finding]) -> Iterator[
         if found is None or ll is None:
             continue
         junction, c = found
-        element = ws.lane_link_element(junction, c, ll)
-        if element is None:
-            yield Skip(finding, "the <laneLink> is not found in the file")
-            continue
-        yield Repair(
-            (finding,),
-            (remove_element(ws.text, element),),
-            f"junction {junction.id} connection {c.id}: dropped laneLink from {ll.from_lane} to {ll.to_lane}",
+        yield lane_link_repair(
+            ws,
+            finding,
+            (junction, c, ll),
+            lambda element: (remove_element(ws.text, element),),
+            f"dropped laneLink from {ll.from_lane} to {ll.to_lane}",
         )

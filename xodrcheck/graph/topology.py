@@ -74,10 +74,6 @@ def links_across(lane: Lane, end: ContactPoint) -> tuple[int, ...]:
     return lane.predecessors if end is ContactPoint.START else lane.successors
 
 
-def _names(link: RoadLink | None, kind: ElementType, element_id: str) -> bool:
-    return link is not None and link.element_type is kind and link.element_id == element_id
-
-
 class Topology:
     """The links of one document, indexed for :meth:`onward`."""
 
@@ -148,7 +144,7 @@ class Topology:
         j = end_index(other, contact)
         ids = dict.fromkeys(links_across(lane, end))
         back = other.link_at(contact)
-        if _names(back, ElementType.ROAD, road.id) and back is not None and back.contact_point in (None, end):
+        if back is not None and back.names(ElementType.ROAD, road.id) and back.contact_point in (None, end):
             section = other.lane_sections[j]
             ids.update((v.id, None) for v in section.lanes if v.id != 0 and lane.id in links_across(v, contact))
         targets = tuple(Target(other, j, i, entering(contact)) for i in ids)
@@ -169,7 +165,7 @@ class Topology:
             if contact is None:
                 continue
             back = other.link_at(contact)
-            if _names(back, ElementType.ROAD, road.id) and back is not None and back.contact_point not in (None, end):
+            if back is not None and back.names(ElementType.ROAD, road.id) and back.contact_point not in (None, end):
                 continue  # the connection leaves from the road's other end
             j = end_index(other, contact)
             targets.extend(
@@ -225,17 +221,18 @@ def _contact(c: Connection, road: Road, kind: ElementType, element_id: str) -> C
     the links say where it is (``connection-contact-point`` reports the disagreement)."""
     given = c.contact_point
     named = _contact_naming(road, kind, element_id)
-    if given is None or (named is not None and not _names(road.link_at(given), kind, element_id)):
+    if given is None:
+        return named
+    link = road.link_at(given)
+    if named is not None and (link is None or not link.names(kind, element_id)):
         return named
     return given
 
 
 def _contact_naming(road: Road, kind: ElementType, element_id: str) -> ContactPoint | None:
     """The end of ``road`` whose link names the element (the start when both do); ``None`` when neither does."""
-    for end in (ContactPoint.START, ContactPoint.END):
-        if _names(road.link_at(end), kind, element_id):
-            return end
-    return None
+    ends = road.ends_linked_to(kind, element_id)
+    return ends[0] if ends else None
 
 
 def _junction_why(junction: Junction, road: Road, lane: Lane, connections: list, targets: list) -> str:

@@ -56,7 +56,7 @@ _MODULES = {
         "ReferenceType Side StationType SwitchPosition TrafficRule"
     ),
     "facts": "NO_FACTS UnknownElement UnreadLink XmlFacts facts_field",
-    "planview": "Arc Cubic Geometry Line ParamPoly3 Poly3 Profile Spiral",
+    "planview": "Arc Cubic Geometry Line ParamPoly3 PlanViewElement Poly3 Profile Spiral",
     "lanes": "Lane LaneHeight LaneKey LaneLinks LaneSection Lanes RoadMark Speed lane_type_name",
     "lane_records": (
         "LaneAccess LaneMaterial LaneRule LaneVisibility RoadMarkExplicit RoadMarkLine RoadMarkSway RoadMarkType"
@@ -67,7 +67,7 @@ _MODULES = {
     "objects": (
         "Bridge CornerLocal CornerReference CornerRoad CurveLocal CurveShape LaneValidity Marking Markings "
         "ObjectBorder ObjectCrg ObjectMaterial ObjectReference ObjectSurface Outline OutlinePoint ParkingSpace "
-        "Polyline Repeat RoadObject Skeleton Tunnel Vertex"
+        "Polyline Repeat RoadObject RoadStructure Skeleton Tunnel Vertex"
     ),
     "signals": (
         "Control Controller DisplayArea PositionInertial PositionRoad Semantic Semantics Sign Signal "

@@ -36,6 +36,7 @@ __all__ = [
     "Polyline",
     "Repeat",
     "RoadObject",
+    "RoadStructure",
     "Skeleton",
     "Tunnel",
     "Vertex",
@@ -392,8 +393,9 @@ class ObjectReference:
 
 
 @dataclass(frozen=True, slots=True)
-class Tunnel:
-    """A ``<tunnel>`` (13.11) from ``s`` over ``length``."""
+class RoadStructure:
+    """What a tunnel and a bridge both are (13.11, 13.12): a structure of road ``road`` from ``s`` over ``length``,
+    its ``type`` as the file spells it, for the lanes of its validities."""
 
     road: str
     id: str | None
@@ -401,23 +403,19 @@ class Tunnel:
     length: float | None
     type: str | None = None
     name: str | None = None
-    lighting: float | None = None
-    daylight: float | None = None
     validities: tuple[LaneValidity, ...] = ()
     line: int = 0
     xml: XmlFacts = facts_field()
 
 
 @dataclass(frozen=True, slots=True)
-class Bridge:
-    """A ``<bridge>`` (13.12) from ``s`` over ``length``."""
+class Tunnel(RoadStructure):
+    """A ``<tunnel>`` (13.11) with its degree of artificial ``lighting`` and of ``daylight`` inside, each 0 to 1."""
 
-    road: str
-    id: str | None
-    s: float | None
-    length: float | None
-    type: str | None = None
-    name: str | None = None
-    validities: tuple[LaneValidity, ...] = ()
-    line: int = 0
-    xml: XmlFacts = facts_field()
+    lighting: float | None = None
+    daylight: float | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Bridge(RoadStructure):
+    """A ``<bridge>`` (13.12)."""

@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from xodrcheck.model.enums import PRange
 from xodrcheck.model.facts import XmlFacts, facts_field
 
-__all__ = ["Arc", "Cubic", "Geometry", "Line", "ParamPoly3", "Poly3", "Profile", "Spiral"]
+__all__ = ["Arc", "Cubic", "Geometry", "Line", "ParamPoly3", "PlanViewElement", "Poly3", "Profile", "Spiral"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -38,41 +38,38 @@ Profile = tuple[Cubic, ...]
 
 
 @dataclass(frozen=True, slots=True)
-class Line:
-    """A straight line of the plan view (``<line>``)."""
+class PlanViewElement:
+    """What every element of the plan view has, the ``<geometry>``'s attributes: where it starts along the road
+    (``s``), at which point and heading (``x``, ``y``, ``hdg``), and its ``length``."""
 
     s: float
     x: float
     y: float
     hdg: float
     length: float
+
+
+@dataclass(frozen=True, slots=True)
+class Line(PlanViewElement):
+    """A straight line of the plan view (``<line>``)."""
+
     line: int = 0
     xml: XmlFacts = facts_field()
 
 
 @dataclass(frozen=True, slots=True)
-class Arc:
+class Arc(PlanViewElement):
     """An arc of constant curvature of the plan view (``<arc>``)."""
 
-    s: float
-    x: float
-    y: float
-    hdg: float
-    length: float
     curvature: float
     line: int = 0
     xml: XmlFacts = facts_field()
 
 
 @dataclass(frozen=True, slots=True)
-class Spiral:
+class Spiral(PlanViewElement):
     """A clothoid of the plan view (``<spiral>``): curvature linear in s from ``curv_start`` to ``curv_end``."""
 
-    s: float
-    x: float
-    y: float
-    hdg: float
-    length: float
     curv_start: float
     curv_end: float
     line: int = 0
@@ -80,14 +77,9 @@ class Spiral:
 
 
 @dataclass(frozen=True, slots=True)
-class Poly3:
+class Poly3(PlanViewElement):
     """Cubic ``v(u) = a + b u + c u^2 + d u^3`` in the local (u, v) frame (deprecated in 1.6, still read)."""
 
-    s: float
-    x: float
-    y: float
-    hdg: float
-    length: float
     a: float
     b: float
     c: float
@@ -97,14 +89,9 @@ class Poly3:
 
 
 @dataclass(frozen=True, slots=True)
-class ParamPoly3:
+class ParamPoly3(PlanViewElement):
     """A parametric cubic of the plan view (``<paramPoly3>``): u and v cubic in a parameter p."""
 
-    s: float
-    x: float
-    y: float
-    hdg: float
-    length: float
     aU: float
     bU: float
     cU: float

@@ -37,6 +37,10 @@ class RoadLink:
     line: int = 0
     xml: XmlFacts = facts_field()
 
+    def names(self, element_type: ElementType, element_id: str | None) -> bool:
+        """Whether the link leads to the road or junction ``element_id`` (by ``element_type``)."""
+        return self.element_type is element_type and self.element_id == element_id
+
 
 @dataclass(frozen=True, slots=True)
 class Road:
@@ -77,6 +81,14 @@ class Road:
     def link_at(self, end: ContactPoint) -> RoadLink | None:
         """The road's link at ``end``: its predecessor at the start, its successor at the end."""
         return self.predecessor if end is ContactPoint.START else self.successor
+
+    def ends_linked_to(self, element_type: ElementType, element_id: str) -> list[ContactPoint]:
+        """The road's ends (start first) whose link leads to the road or junction ``element_id``."""
+        return [
+            end
+            for end in (ContactPoint.START, ContactPoint.END)
+            if (link := self.link_at(end)) is not None and link.names(element_type, element_id)
+        ]
 
     def section_end(self, index: int) -> float:
         """End s of lane section ``index`` (the next section's start or the road length; earlier when the section

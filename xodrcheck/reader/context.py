@@ -25,7 +25,7 @@ from lxml import etree
 
 from xodrcheck import model
 from xodrcheck.findings import Finding, Severity
-from xodrcheck.model import NO_FACTS, Cubic, Profile, UnknownElement, XmlFacts
+from xodrcheck.model import NO_FACTS, Cubic, ElementDir, Profile, UnknownElement, XmlFacts
 from xodrcheck.rules import xml as R
 from xodrcheck.rules.registry import NO_UID, Rule
 from xodrcheck.support.quantities import metres
@@ -34,6 +34,8 @@ T = TypeVar("T")
 
 _SHOW = 40  # characters of a raw value shown in a message
 _BOOLEANS = {"true": True, "false": False, "1": True, "0": False}
+#: ``+`` and ``-`` of an ``elementDir`` (or a switch track's ``dir``) as the file spells them.
+ELEMENT_DIRS = {"+": ElementDir.PLUS, "-": ElementDir.MINUS}
 #: The standard's additional data (6.2), allowed in nearly every element: not unknown where the reader skips it.
 ADDITIONAL_DATA = frozenset({"userData", "include", "dataQuality"})
 #: Children a record without child elements of its own may have.
@@ -212,6 +214,10 @@ class Context:
         self, el: etree._Element, name: str, then: str, severity: Severity | None = None, uid: str | None = None
     ) -> None:
         self.report(R.MISSING_ATTRIBUTE, f"{describe(el)} has no '{name}' attribute; {then}", el, severity, uid=uid)
+
+    def missing_child(self, el: etree._Element, tag: str, then: str, uid: str | None = None) -> None:
+        """Report that ``el`` has no ``<tag>`` child, and what the reader does without it (``then``)."""
+        self.report(R.MISSING_ELEMENT, f"{describe(el)} has no <{tag}>; {then}", el, uid=uid)
 
     def invalid(self, el: etree._Element, name: str, raw: str, why: str, then: str) -> None:
         self.note_invalid(el, name, raw)

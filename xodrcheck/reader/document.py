@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 from lxml import etree
 
 from xodrcheck.model import Document
-from xodrcheck.reader.context import Context, describe
+from xodrcheck.reader.context import Context
 from xodrcheck.reader.elements import element_table
 from xodrcheck.reader.header import KNOWN_VERSIONS, build_header
 from xodrcheck.reader.ids import id_table
@@ -65,7 +65,7 @@ def _header(ctx: Context, root: etree._Element) -> Header | None:
         else:
             ctx.repeated(child, first)
     if first is None:
-        ctx.report(R.MISSING_ELEMENT, f"{describe(root)} has no <header>; the OpenDRIVE version is unknown", root)
+        ctx.missing_child(root, "header", "the OpenDRIVE version is unknown")
     return header
 
 

@@ -15,8 +15,6 @@ from xodrcheck.model import (
     ContactPoint,
     CrossPath,
     CrossPathLink,
-    ElementDir,
-    ElementType,
     ElevationGrid,
     GridRow,
     JointSegment,
@@ -33,12 +31,11 @@ from xodrcheck.model import (
     RoadPlace,
     RoadSection,
 )
-from xodrcheck.reader.context import LEAF, Context
+from xodrcheck.reader.context import ELEMENT_DIRS, LEAF, Context
 from xodrcheck.reader.objects import ORIENTATIONS, read_objects
 from xodrcheck.reader.road_records import surface
+from xodrcheck.reader.roads import ELEMENT_TYPES
 
-_ELEMENT_TYPES = {t.value: t for t in ElementType}
-_ELEMENT_DIRS = {d.value: d for d in ElementDir}
 _GROUP_TYPES = {t.value: t for t in JunctionGroupType}
 #: A boundary segment's road end: ``begin`` is the spec's own example's spelling of the start.
 _ENDS = {"start": ContactPoint.START, "begin": ContactPoint.START, "end": ContactPoint.END}
@@ -47,10 +44,10 @@ _ENDS = {"start": ContactPoint.START, "begin": ContactPoint.START, "end": Contac
 def _end(ctx: Context, el: etree._Element) -> ConnectionEnd:
     """A virtual connection's ``<predecessor>`` or ``<successor>``."""
     return ConnectionEnd(
-        ctx.opt_enum(el, "elementType", _ELEMENT_TYPES),
+        ctx.opt_enum(el, "elementType", ELEMENT_TYPES),
         el.get("elementId"),
         ctx.opt_number(el, "elementS"),
-        ctx.opt_enum(el, "elementDir", _ELEMENT_DIRS),
+        ctx.opt_enum(el, "elementDir", ELEMENT_DIRS),
         el.sourceline,
         ctx.facts(el, LEAF),
     )

@@ -445,12 +445,7 @@ def build_lanes(ctx: Context, el: etree._Element, layer: LaneLayer = LaneLayer.P
     if len(offsets) > 1:
         ctx.check_order(offsets, "<laneOffset>", el, U.LANE_OFFSET_ORDER)
     if not seen:
-        ctx.report(
-            R.MISSING_ELEMENT,
-            f"{describe(el)} has no <laneSection>; the road has no lanes",
-            el,
-            uid=U.LANE_SECT_MIN_AMOUNT,
-        )
+        ctx.missing_child(el, "laneSection", "the road has no lanes", U.LANE_SECT_MIN_AMOUNT)
     elif len(sections) > 1:
         ctx.check_order(sections, "<laneSection>", el, U.SECTION_ORDER)
     return Lanes(tuple(offsets), tuple(sections), el.sourceline, layer, ctx.facts(el, _LANES))

@@ -10,6 +10,7 @@ them), but an ``<outline>`` without ``outer`` is outer only in 1.9 ("Omitting @o
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import TypeVar
 
 from lxml import etree
 
@@ -45,6 +46,7 @@ from xodrcheck.model import (
     PRange,
     Repeat,
     RoadObject,
+    RoadStructure,
     Skeleton,
     Tunnel,
     Vertex,
@@ -60,6 +62,7 @@ _POINTS = frozenset({CORNER_ROAD, CORNER_LOCAL, CURVE_LOCAL})
 _VERTICES = {VERTEX_ROAD: ("s", "t", "dz"), VERTEX_LOCAL: ("u", "v", "z")}
 _VALIDITY = frozenset({"validity"})
 _POLYLINE = frozenset(_VERTICES)
+_S = TypeVar("_S", bound=RoadStructure)
 _REFERENCES = frozenset({"cornerReference"})
 _OUTLINE = _POINTS | {"markings"}
 _CURVE_SHAPES = ("line", "arc", "paramPoly3")
@@ -383,38 +386,33 @@ def _reference(ctx: Context, owner: str, el: etree._Element) -> ObjectReference:
     )
 
 
-def _tunnel(ctx: Context, owner: str, el: etree._Element) -> Tunnel:
+def _structure(ctx: Context, owner: str, el: etree._Element, kind: type[_S], numbers: tuple[str, ...] = ()) -> _S:
+    """A ``<tunnel>`` or ``<bridge>`` as ``kind``; ``numbers`` name the numeric attributes only ``kind`` has (read
+    after ``s`` and ``length``)."""
     n = ctx.opt_number
     found = validities(ctx, el)
-    return Tunnel(
+    s, length = n(el, "s"), n(el, "length")
+    own = {name: n(el, name) for name in numbers}
+    return kind(
         owner,
         el.get("id"),
-        n(el, "s"),
-        n(el, "length"),
+        s,
+        length,
         el.get("type"),
         el.get("name"),
-        n(el, "lighting"),
-        n(el, "daylight"),
         found,
         el.sourceline,
         ctx.facts(el, _VALIDITY),
+        **own,
     )
+
+
+def _tunnel(ctx: Context, owner: str, el: etree._Element) -> Tunnel:
+    return _structure(ctx, owner, el, Tunnel, ("lighting", "daylight"))
 
 
 def _bridge(ctx: Context, owner: str, el: etree._Element) -> Bridge:
-    n = ctx.opt_number
-    found = validities(ctx, el)
-    return Bridge(
-        owner,
-        el.get("id"),
-        n(el, "s"),
-        n(el, "length"),
-        el.get("type"),
-        el.get("name"),
-        found,
-        el.sourceline,
-        ctx.facts(el, _VALIDITY),
-    )
+    return _structure(ctx, owner, el, Bridge)
 
 
 @dataclass(frozen=True, slots=True)

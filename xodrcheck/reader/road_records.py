@@ -15,7 +15,6 @@ from xodrcheck.model import (
     CrgOrientation,
     CrgPurpose,
     CrossSectionSurface,
-    ElementDir,
     MaxSpeed,
     Platform,
     PlatformSegment,
@@ -36,13 +35,12 @@ from xodrcheck.model import (
     SwitchPosition,
     SwitchTrack,
 )
-from xodrcheck.reader.context import LEAF, Context
+from xodrcheck.reader.context import ELEMENT_DIRS, LEAF, Context
 
 _MAX_SPEEDS = {word.value: word for word in MaxSpeed}
 _CRG_MODES = {mode.value: mode for mode in CrgMode}
 _CRG_PURPOSES = {purpose.value: purpose for purpose in CrgPurpose}
 _CRG_ORIENTATIONS = {o.value: o for o in CrgOrientation}
-_ELEMENT_DIRS = {d.value: d for d in ElementDir}
 _SWITCH_POSITIONS = {p.value: p for p in SwitchPosition}
 #: The polynomials of a cross section surface strip (10.5.4), in the standard's order.
 STRIP_POLYNOMIALS = ("width", "constant", "linear", "quadratic", "cubic")
@@ -148,7 +146,7 @@ def _track(ctx: Context, el: etree._Element) -> SwitchTrack:
     return SwitchTrack(
         el.get("id"),
         ctx.opt_number(el, "s"),
-        ctx.opt_enum(el, "dir", _ELEMENT_DIRS),
+        ctx.opt_enum(el, "dir", ELEMENT_DIRS),
         el.sourceline,
         ctx.facts(el, LEAF),
     )

@@ -15,7 +15,6 @@ from xodrcheck import model
 from xodrcheck.findings import Severity
 from xodrcheck.model import (
     ContactPoint,
-    ElementDir,
     ElementType,
     Geometry,
     PRange,
@@ -26,7 +25,7 @@ from xodrcheck.model import (
     UnreadLink,
     XmlFacts,
 )
-from xodrcheck.reader.context import LEAF, Context, cubics, describe
+from xodrcheck.reader.context import ELEMENT_DIRS, LEAF, Context, cubics, describe
 from xodrcheck.reader.lanes import build_layers
 from xodrcheck.rules import xml as R
 from xodrcheck.rules.shared import road_uids as RU
@@ -50,7 +49,6 @@ if TYPE_CHECKING:  # pragma: no cover
 
 ELEMENT_TYPES = {"road": ElementType.ROAD, "junction": ElementType.JUNCTION}
 CONTACT_POINTS = {"start": ContactPoint.START, "end": ContactPoint.END}
-_ELEMENT_DIRS = {"+": ElementDir.PLUS, "-": ElementDir.MINUS}
 _TRAFFIC_RULES = {"rht": TrafficRule.RHT, "lht": TrafficRule.LHT}
 P_RANGES = {"arclength": PRange.ARC_LENGTH, "normalized": PRange.NORMALIZED}
 
@@ -166,12 +164,7 @@ def _plan_view(ctx: Context, el: etree._Element) -> tuple[Geometry, ...]:
             if geometry is not None:
                 out.append(geometry)
     if not seen:
-        ctx.report(
-            R.MISSING_ELEMENT,
-            f"{describe(el)} has no <geometry>; the road has no reference line",
-            el,
-            uid=RU.GEOMETRY_REFLINE_EXISTS,
-        )
+        ctx.missing_child(el, "geometry", "the road has no reference line", RU.GEOMETRY_REFLINE_EXISTS)
     elif len(out) > 1:
         ctx.check_order(out, "<geometry>", el, RU.GEOMETRY_ORDER)
     return tuple(out)
@@ -197,7 +190,7 @@ def _road_link(ctx: Context, el: etree._Element) -> RoadLink | None:
     if el.get("elementS") is not None:
         element_s = ctx.number(el, "elementS", "read as absent", nonneg=True)
     if el.get("elementDir") is not None:
-        element_dir = ctx.choice(el, "elementDir", _ELEMENT_DIRS, "read as absent")
+        element_dir = ctx.choice(el, "elementDir", ELEMENT_DIRS, "read as absent")
     return model.RoadLink(element_type, element_id, contact, element_s, element_dir, el.sourceline, ctx.facts(el, LEAF))
 
 
@@ -271,12 +264,7 @@ def _children(
 
 def _reference_line(ctx: Context, el: etree._Element, plan_view: etree._Element | None) -> tuple[Geometry, ...]:
     if plan_view is None:
-        ctx.report(
-            R.MISSING_ELEMENT,
-            f"{describe(el)} has no <planView>; the road has no reference line",
-            el,
-            uid=RU.GEOMETRY_REFLINE_EXISTS,
-        )
+        ctx.missing_child(el, "planView", "the road has no reference line", RU.GEOMETRY_REFLINE_EXISTS)
         return ()
     return _plan_view(ctx, plan_view)
 
@@ -387,9 +375,7 @@ def _road(ctx: Context, el: etree._Element, road_id: str) -> Road:
     superelevation, shapes, cross_section = _lateral(ctx, first.get("lateralProfile"))
     permanent = temporary = None
     if not lanes:
-        ctx.report(
-            R.MISSING_ELEMENT, f"{describe(el)} has no <lanes>; the road has no lanes", el, uid=LANE_SECTION_REQUIRED
-        )
+        ctx.missing_child(el, "lanes", "the road has no lanes", LANE_SECTION_REQUIRED)
     else:
         permanent, temporary = build_layers(ctx, lanes)
     types, surface, railroad = _records(ctx, el, first)

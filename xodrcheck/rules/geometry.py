@@ -368,24 +368,20 @@ def sampling_capped(ctx: Context):
     tol = ctx.tolerances
     step = grid_step(tol)
     budget = tol.max_samples_per_section
-    for road in ctx.document.roads:
-        geometry = ctx.usable_geometry(road)
-        if geometry is None:
+    for road, geometry, index, section in ctx.usable_sections():
+        cuts = geometry.knots(index)
+        if not capped(np.diff(cuts), step, budget):
             continue
-        for index, section in enumerate(road.lane_sections):
-            cuts = geometry.knots(index)
-            if not capped(np.diff(cuts), step, budget):
-                continue
-            length = road.section_end(index) - section.s
-            yield sampling_capped.finding(
-                f"road {road.id}: the lane section at s={metres(section.s)} is {length:.4g} m long; the geometric "
-                f"rules sample it with about {budget:,} points, a {length / max(budget, 1):.4g} m step instead of "
-                f"{step:.3g} m (max_samples_per_section): their findings there are less precise",
-                road=road.id,
-                section_s=section.s,
-                s=section.s,
-                line=section.line or road.line or None,
-            )
+        length = road.section_end(index) - section.s
+        yield sampling_capped.finding(
+            f"road {road.id}: the lane section at s={metres(section.s)} is {length:.4g} m long; the geometric "
+            f"rules sample it with about {budget:,} points, a {length / max(budget, 1):.4g} m step instead of "
+            f"{step:.3g} m (max_samples_per_section): their findings there are less precise",
+            road=road.id,
+            section_s=section.s,
+            s=section.s,
+            line=section.line or road.line or None,
+        )
 
 
 #: The road-level profiles G014 checks: attribute of :class:`Road`, element name, unit and kind of deviation.

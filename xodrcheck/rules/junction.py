@@ -75,11 +75,7 @@ def junction_incoming_not_linked(ctx: Context):
                 road = ctx.road(road_id)
                 if road is None or road.id in reported:
                     continue
-                links = [road.link_at(end) for end in (ContactPoint.START, ContactPoint.END)]
-                if any(
-                    link is not None and link.element_type is ElementType.JUNCTION and link.element_id == junction.id
-                    for link in links
-                ):
+                if road.ends_linked_to(ElementType.JUNCTION, junction.id):
                     continue
                 reported.add(road.id)
                 yield junction_incoming_not_linked.finding(
@@ -156,11 +152,11 @@ def connection_contact_point(ctx: Context):
                         line=c.line or None,
                     )
                 continue
-            if link is not None and link.element_type is ElementType.ROAD and link.element_id == c.incoming_road:
+            if link is not None and link.names(ElementType.ROAD, c.incoming_road):
                 continue
             other = target.link_at(ContactPoint.END if c.contact_point is ContactPoint.START else ContactPoint.START)
             hint = ""
-            if other is not None and other.element_type is ElementType.ROAD and other.element_id == c.incoming_road:
+            if other is not None and other.names(ElementType.ROAD, c.incoming_road):
                 hint = f"; its other end is: contactPoint should be {'end' if word == 'predecessor' else 'start'}"
             yield connection_contact_point.finding(
                 f"{at}: contactPoint {c.contact_point.value} says connecting road {target.id} "

@@ -325,7 +325,7 @@ def _zone_lanes(ctx: Context, j: Junction) -> list[tuple[Road, int, bool, float,
             link = road.successor if road is not None else None
             if road is None or ll.overlap_zone is None:
                 return None
-            at_end = link is not None and link.element_type is ElementType.JUNCTION and link.element_id == j.id
+            at_end = link is not None and link.names(ElementType.JUNCTION, j.id)
             out.append((road, ll.from_lane, at_end, ll.overlap_zone, ll.line))
     else:
         return None

@@ -270,7 +270,7 @@ def _main_road_ends(road: Road, main: str) -> Iterator[tuple[ContactPoint, float
     """(end, elementS, line) of each link of ``road`` to road ``main``."""
     for end in (ContactPoint.START, ContactPoint.END):
         link = road.link_at(end)
-        if link is not None and link.element_type is ElementType.ROAD and link.element_id == main:
+        if link is not None and link.names(ElementType.ROAD, main):
             yield end, link.element_s, link.line
 
 
@@ -375,7 +375,7 @@ def reachable(ctx: Context, junction: Junction) -> dict[RoadEnd, set[RoadEnd]]:
             if connecting is None or c.contact_point is None:
                 continue
             near = connecting.link_at(c.contact_point)
-            if near is not None and near.element_type is ElementType.ROAD and near.element_id == c.incoming_road:
+            if near is not None and near.names(ElementType.ROAD, c.incoming_road):
                 source = (c.incoming_road, near.contact_point)
             link = connecting.link_at(c.contact_point.opposite)
             if link is not None and link.element_type is ElementType.ROAD:

@@ -14,7 +14,7 @@ from xodrcheck.model import ContactPoint, Lane, LaneType
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.shared import lane_uids as U
 from xodrcheck.rules.shared.context import Context
-from xodrcheck.rules.shared.lane_joints import WORD, joints, opposed, pair_key, side_lanes
+from xodrcheck.rules.shared.lane_joints import WORD, Joint, joints, linked_lane_pairs, opposed, side_lanes
 from xodrcheck.support.quantities import metres
 
 # ------------------------------------------------------------------------------------------------ centre lane, ids
@@ -337,25 +337,19 @@ def lane_link_direction(ctx: Context):
         <road id="1"><link><predecessor elementType="road" elementId="2" contactPoint="start"/></link>
           ... <lane id="-1"><link><predecessor id="-1"/></link>...
     """
-    seen: set = set()
-    for joint in joints(ctx):
+
+    def against(joint: Joint, lane: Lane, target: Lane) -> bool:
+        return opposed(joint.mine.road, lane, joint.other.road, target, joint.same_orientation)
+
+    for joint, lane, target in linked_lane_pairs(ctx, against):
         mine, other = joint.mine, joint.other
-        for lane in side_lanes(mine.section):
-            for target_id in mine.links(lane):
-                target = other.section.lane(target_id)
-                if target is None or not opposed(mine.road, lane, other.road, target, joint.same_orientation):
-                    continue
-                key = pair_key(mine, lane.id, other, target_id)
-                if key in seen:
-                    continue
-                seen.add(key)
-                yield lane_link_direction.finding(
-                    f"{mine.describe()}: lane {lane.id}'s {WORD[mine.end]} is lane {target_id} of "
-                    f"{other.describe()}, whose traffic runs the other way "
-                    f"({'an end meets a start' if joint.same_orientation else f'two {mine.end.value}s meet'})",
-                    line=lane.line or None,
-                    **mine.where(lane.id),
-                )
+        yield lane_link_direction.finding(
+            f"{mine.describe()}: lane {lane.id}'s {WORD[mine.end]} is lane {target.id} of "
+            f"{other.describe()}, whose traffic runs the other way "
+            f"({'an end meets a start' if joint.same_orientation else f'two {mine.end.value}s meet'})",
+            line=lane.line or None,
+            **mine.where(lane.id),
+        )
 
 
 def _own_zero_width_uid(ctx: Context, end: ContactPoint) -> str:

@@ -11,7 +11,7 @@ from xodrcheck.model import Lane, LaneAccess, LaneDirection, LaneSection, Road
 from xodrcheck.rules.registry import rule
 from xodrcheck.rules.shared import lane_uids as U
 from xodrcheck.rules.shared.context import Context
-from xodrcheck.rules.shared.lane_joints import joints, pair_key, side_lanes
+from xodrcheck.rules.shared.lane_joints import Joint, linked_lane_pairs
 from xodrcheck.support.quantities import metres
 
 
@@ -65,26 +65,18 @@ def lane_level_changes(ctx: Context):
         <laneSection s="0">  ... <lane id="-1" level="true"><link><successor id="-1"/></link>...
         <laneSection s="50"> ... <lane id="-1" level="false">...
     """
-    seen: set = set()
-    for joint in joints(ctx):
-        mine, other = joint.mine, joint.other
-        if mine.road is not other.road:
-            continue
-        for lane in side_lanes(mine.section):
-            for target_id in mine.links(lane):
-                target = other.section.lane(target_id)
-                if target is None or target.level == lane.level:
-                    continue
-                key = pair_key(mine, lane.id, other, target_id)
-                if key in seen:
-                    continue
-                seen.add(key)
-                yield lane_level_changes.finding(
-                    f"{mine.describe()}: lane {lane.id} (level={str(lane.level).lower()}) is linked to lane "
-                    f"{target_id} of {other.describe()} (level={str(target.level).lower()})",
-                    line=lane.line or None,
-                    **mine.where(lane.id),
-                )
+
+    def steps(joint: Joint, lane: Lane, target: Lane) -> bool:
+        return joint.mine.road is joint.other.road and target.level != lane.level
+
+    for joint, lane, target in linked_lane_pairs(ctx, steps):
+        mine = joint.mine
+        yield lane_level_changes.finding(
+            f"{mine.describe()}: lane {lane.id} (level={str(lane.level).lower()}) is linked to lane "
+            f"{target.id} of {joint.other.describe()} (level={str(target.level).lower()})",
+            line=lane.line or None,
+            **mine.where(lane.id),
+        )
 
 
 @rule("L016", "lane-access-mixed", Category.LANE, Severity.ERROR, uids=(U.ACCESS_NO_MIX,), every_version=True)

@@ -221,14 +221,10 @@ def _width_findings(ctx: Context, by_widths: bool):
     found = _MINIMA.get(ctx)
     if found is None:
         found = []
-        for road in ctx.document.roads:
-            geometry = ctx.usable_geometry(road)
-            if geometry is None:
-                continue
-            for index, section in enumerate(road.lane_sections):
-                for lane, minimum, s in lane_minima(ctx, road, index):
-                    if minimum < -tol:
-                        found.append((road, geometry, index, section, lane, minimum, s))
+        for road, geometry, index, section in ctx.usable_sections():
+            for lane, minimum, s in lane_minima(ctx, road, index):
+                if minimum < -tol:
+                    found.append((road, geometry, index, section, lane, minimum, s))
         _MINIMA[ctx] = found
     for road, geometry, index, section, lane, minimum, s in found:
         if bool(lane.widths) != by_widths:

@@ -71,26 +71,22 @@ def lane_zero_width_stretch(ctx: Context):
                                              <width sOffset="30" a="0" b="0" c="0" d="0"/>
     """
     tol = ctx.tolerances
-    for road in ctx.document.roads:
-        geometry = ctx.usable_geometry(road)
-        if geometry is None:
+    for road, geometry, index, section in ctx.usable_sections():
+        bounds = lane_width_bounds(ctx, road, index)
+        if bounds is None:
             continue
-        for index, section in enumerate(road.lane_sections):
-            bounds = lane_width_bounds(ctx, road, index)
-            if bounds is None:
+        lanes, a, b, low, high = bounds
+        s0, s1 = geometry.section_range(index)
+        zero = (high < tol.zero_width) & (low > -tol.zero_width)
+        for row, lane in enumerate(lanes):
+            records = _zero_records(lane, s0, s1, a, b, zero[row], tol.min_section_length)
+            stretches = [r for r in records if r[3]]
+            if not stretches:
                 continue
-            lanes, a, b, low, high = bounds
-            s0, s1 = geometry.section_range(index)
-            zero = (high < tol.zero_width) & (low > -tol.zero_width)
-            for row, lane in enumerate(lanes):
-                records = _zero_records(lane, s0, s1, a, b, zero[row], tol.min_section_length)
-                stretches = [r for r in records if r[3]]
-                if not stretches:
-                    continue
-                if len(stretches) < len(records):
-                    yield _finding(road, geometry, index, section.s, lane, stretches)
-                elif s1 - s0 > tol.long_zero_width:
-                    yield _long_finding(road, index, section, lane, s1 - s0)
+            if len(stretches) < len(records):
+                yield _finding(road, geometry, index, section.s, lane, stretches)
+            elif s1 - s0 > tol.long_zero_width:
+                yield _long_finding(road, index, section, lane, s1 - s0)
 
 
 def _long_finding(road: Road, index: int, section, lane: Lane, length: float):

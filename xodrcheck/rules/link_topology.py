@@ -30,11 +30,8 @@ def _junction_refers_to(ctx: Context, junction_id: str, road: Road) -> bool:
     for c in junction.connections:
         if road.id in (c.incoming_road, c.linked_road):
             return True
-    for member in ctx.roads_in_junction.get(junction.id, ()):
-        for link in (member.predecessor, member.successor):
-            if link is not None and link.element_type is ElementType.ROAD and link.element_id == road.id:
-                return True
-    return False
+    members = ctx.roads_in_junction.get(junction.id, ())
+    return any(member.ends_linked_to(ElementType.ROAD, road.id) for member in members)
 
 
 @rule("K001", "link-not-reciprocal", Category.LINK, Severity.ERROR, uids=(U.LINKAGE_BOTH_SIDES,), every_version=True)
@@ -81,7 +78,7 @@ def link_not_reciprocal(ctx: Context):
             if target is None or link.contact_point is None:
                 continue  # reported by road-link-target-missing / link-contact-point-missing
             back = target.link_at(link.contact_point)
-            if back is not None and back.element_type is ElementType.ROAD and back.element_id == road.id:
+            if back is not None and back.names(ElementType.ROAD, road.id):
                 if back.contact_point is not None and back.contact_point is not end:
                     yield link_not_reciprocal.finding(
                         f"{mine}, but road {target.id}'s {_WORD[link.contact_point]} names road {road.id} at its "

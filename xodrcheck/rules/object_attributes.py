@@ -21,7 +21,7 @@ from xodrcheck.rules.shared.context import Context
 from xodrcheck.support.quantities import metres
 
 if TYPE_CHECKING:
-    from xodrcheck.model import Bridge, LaneValidity, ObjectReference, RoadObject, Tunnel
+    from xodrcheck.model import Bridge, LaneValidity, ObjectReference, RoadObject, RoadStructure, Tunnel
 
 
 def orientation_text(record: RoadObject | ObjectReference) -> str | None:
@@ -305,13 +305,13 @@ _TYPE_UID = {"tunnel": U.TUNNELS_TYPE, "bridge": U.BRIDGES_TYPE}
 _TYPES = {"tunnel": "standard or underpass", "bridge": "concrete, steel, brick or wood"}
 
 
-def _road_structures(tunnels: tuple[Tunnel, ...], bridges: tuple[Bridge, ...]) -> Iterator[tuple[str, Tunnel | Bridge]]:
+def _road_structures(tunnels: tuple[Tunnel, ...], bridges: tuple[Bridge, ...]) -> Iterator[tuple[str, RoadStructure]]:
     """(element name, record) of a road's tunnels and bridges."""
     yield from (("tunnel", t) for t in tunnels)
     yield from (("bridge", b) for b in bridges)
 
 
-def _structures(ctx: Context) -> Iterator[tuple[str, Tunnel | Bridge]]:
+def _structures(ctx: Context) -> Iterator[tuple[str, RoadStructure]]:
     for road in ctx.document.roads:
         yield from _road_structures(road.tunnels, road.bridges)
 

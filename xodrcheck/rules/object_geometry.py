@@ -404,28 +404,19 @@ def _touches(obj: RoadObject, placed: Placed, outer: Outline, shell: tuple, outl
     if hole is None:
         return
     text = f"{label(obj)}: inner {name_of(outline)} touches outer {name_of(outer)}"
-    k = _loose_touch(hole[0], hole[2], shell, tol)
-    if k is not None:
-        u, v = hole[0][k]
-        yield inner_outline_touch.finding(
-            f"{text} at its point u={u:.3f}, v={v:.3f} (line {hole[2][k]}), where the outer outline has no point: "
-            "give both outlines this point",
-            road=obj.road,
-            s=obj.s,
-            line=hole[2][k],
-            **placed.plan(u, v),
-        )
-    k = _loose_touch(shell[0], shell[2], hole, tol)
-    if k is not None:
-        u, v = shell[0][k]
-        yield inner_outline_touch.finding(
-            f"{text} at the outer outline's point u={u:.3f}, v={v:.3f} (line {shell[2][k]}), where the inner outline "
-            "has no point: give both outlines this point",
-            road=obj.road,
-            s=obj.s,
-            line=shell[2][k],
-            **placed.plan(u, v),
-        )
+    # a point of one outline on the other's edge where the other has no point, either way round
+    for points, other, whose, lacking in ((hole, shell, "its", "outer"), (shell, hole, "the outer outline's", "inner")):
+        k = _loose_touch(points[0], points[2], other, tol)
+        if k is not None:
+            u, v = points[0][k]
+            yield inner_outline_touch.finding(
+                f"{text} at {whose} point u={u:.3f}, v={v:.3f} (line {points[2][k]}), where the {lacking} outline has "
+                "no point: give both outlines this point",
+                road=obj.road,
+                s=obj.s,
+                line=points[2][k],
+                **placed.plan(u, v),
+            )
     if outer.closed is False or outline.closed is False or len(shell[1]) < 4 or len(hole[1]) < 4:
         return
     area, inside = shapely.Polygon(shell[1]).buffer(tol), shapely.Polygon(hole[1])

@@ -130,8 +130,10 @@ def declare(
     partial: Mapping[str, str] | None = None,
     every_version: bool = False,
     basis: str | None = None,
+    check: CheckFn | None = None,
 ) -> Rule:
-    """Register a reader rule (emitted while reading) and return it; the keywords are :func:`rule`'s."""
+    """Register a rule and return it: a reader rule (emitted while reading) without ``check``, else the rule
+    ``check`` runs (see :func:`rule`, which gives the other keywords' meaning)."""
     return _register(
         Rule(
             code,
@@ -139,11 +141,11 @@ def declare(
             category,
             severity,
             inspect.cleandoc(doc),
-            None,
+            check,
             _uids(uids, partial),
             MappingProxyType(dict(partial or {})),
             every_version,
-            basis=basis,
+            basis,
         )
     )
 
@@ -168,19 +170,17 @@ def rule(
     """
 
     def wrap(fn: CheckFn) -> Rule:
-        return _register(
-            Rule(
-                code,
-                name,
-                category,
-                severity,
-                inspect.cleandoc(fn.__doc__ or ""),
-                fn,
-                _uids(uids, partial),
-                MappingProxyType(dict(partial or {})),
-                every_version,
-                basis,
-            )
+        return declare(
+            code,
+            name,
+            category,
+            severity,
+            fn.__doc__ or "",
+            uids=uids,
+            partial=partial,
+            every_version=every_version,
+            basis=basis,
+            check=fn,
         )
 
     return wrap

@@ -74,7 +74,7 @@ def leads_in(road: Road, end: ContactPoint, lane_id: int) -> bool:
 def junction_end(road: Road, junction_id: str) -> ContactPoint | None:
     """The end of ``road`` whose link names the junction (``None`` when neither does)."""
     for link, end in ((road.successor, ContactPoint.END), (road.predecessor, ContactPoint.START)):
-        if link is not None and link.element_type is ElementType.JUNCTION and link.element_id == junction_id:
+        if link is not None and link.names(ElementType.JUNCTION, junction_id):
             return end
     return None
 

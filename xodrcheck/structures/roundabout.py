@@ -148,9 +148,7 @@ def _path(document: Document, start: str, steps: list[tuple[str, str | None, str
     for road_id, _, via in [(start, None, ""), *steps]:
         if via:
             link = roads[via].predecessor
-            entered_at_start = (
-                link is not None and link.element_type is ElementType.ROAD and link.element_id == previous
-            )
+            entered_at_start = link is not None and link.names(ElementType.ROAD, previous)
             sequence.append((via, ContactPoint.END if entered_at_start else ContactPoint.START))
         leave = _one_way(roads[road_id])
         if leave is not None and (road_id != start or not sequence):

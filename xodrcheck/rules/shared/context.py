@@ -163,6 +163,16 @@ class Context:
         self._geometry = None
         document_cache(self.document).pop("geometry", None)
 
+    def usable_sections(self) -> Iterator[tuple[Road, RoadGeometry, int, LaneSection]]:
+        """Each lane section of each road whose :meth:`usable_geometry` there is: the road, its geometry, the
+        section's index and the section, in document order."""
+        for road in self.document.roads:
+            geometry = self.usable_geometry(road)
+            if geometry is None:
+                continue
+            for index, section in enumerate(road.lane_sections):
+                yield road, geometry, index, section
+
     def road_geometry(self, road: Road) -> RoadGeometry:
         """The evaluated geometry of a road of the document (every road's id has one; with a duplicated id, that of
         the first road of the id, as :meth:`geometry` gives)."""
@@ -356,24 +366,13 @@ class Context:
         incoming = self.road(connection.incoming_road)
         if incoming is None:
             return None
-        ends = [
-            end
-            for end in (ContactPoint.START, ContactPoint.END)
-            if (link := incoming.link_at(end)) is not None
-            and link.element_type is ElementType.JUNCTION
-            and link.element_id == junction.id
-        ]
+        ends = incoming.ends_linked_to(ElementType.JUNCTION, junction.id)
         if len(ends) == 1:
             return ends[0]
         connecting = self.road(self.connected_road_id(connection))
         if connecting is not None and connection.contact_point is not None:
             back = connecting.link_at(connection.contact_point)
-            if (
-                back is not None
-                and back.element_type is ElementType.ROAD
-                and back.element_id == incoming.id
-                and back.contact_point is not None
-            ):
+            if back is not None and back.names(ElementType.ROAD, incoming.id) and back.contact_point is not None:
                 return back.contact_point
         return ends[0] if ends else None
 

@@ -9,7 +9,7 @@ joints like any other. The lane-link rules of :mod:`.lane`, :mod:`.lane_attribut
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from xodrcheck.model import ContactPoint, ElementType, Lane, LaneSection, Road
@@ -81,7 +81,7 @@ def joints(ctx: Context) -> Iterator[Joint]:
             if target is None or not target.lane_sections:
                 continue
             back = target.link_at(link.contact_point)
-            mutual = back is not None and back.element_type is ElementType.ROAD and back.element_id == road.id
+            mutual = back is not None and back.names(ElementType.ROAD, road.id)
             index, target_index = ctx.section_index_at(road, end), ctx.section_index_at(target, link.contact_point)
             if index is None or target_index is None:  # both roads have lane sections (checked above)
                 continue
@@ -94,6 +94,24 @@ def side_lanes(section: LaneSection) -> tuple[Lane, ...]:
 
 def pair_key(a: Side, a_id: int, b: Side, b_id: int) -> frozenset:
     return frozenset({(a.road.id, a.index, a.end, a_id), (b.road.id, b.index, b.end, b_id)})
+
+
+def linked_lane_pairs(ctx: Context, keep: Callable[[Joint, Lane, Lane], bool]) -> Iterator[tuple[Joint, Lane, Lane]]:
+    """Each pair of lanes a lane link joins across a joint, where ``keep(joint, lane, target)`` holds: once for the
+    pair (seen from the first side whose link ``keep`` takes), however many sides name the link."""
+    seen: set = set()
+    for joint in joints(ctx):
+        mine, other = joint.mine, joint.other
+        for lane in side_lanes(mine.section):
+            for target_id in mine.links(lane):
+                target = other.section.lane(target_id)
+                if target is None or not keep(joint, lane, target):
+                    continue
+                key = pair_key(mine, lane.id, other, target_id)
+                if key in seen:
+                    continue
+                seen.add(key)
+                yield joint, lane, target
 
 
 def opposed(road: Road, lane: Lane, other_road: Road, other: Lane, same_orientation: bool) -> bool:

@@ -102,7 +102,7 @@ def lane_pairs(road: Road, end: ContactPoint, neighbour: Neighbour) -> list[tupl
         for other in lane.predecessors if end is ContactPoint.START else lane.successors:
             pairs.setdefault((lane.id, other), lane.line)
     back = neighbour.road.link_at(neighbour.contact)
-    if back is not None and back.element_type is ElementType.ROAD and back.element_id == road.id:
+    if back is not None and back.names(ElementType.ROAD, road.id):
         other_index = 0 if neighbour.contact is ContactPoint.START else len(neighbour.road.lane_sections) - 1
         for lane in neighbour.road.lane_sections[other_index].lanes:
             links = lane.predecessors if neighbour.contact is ContactPoint.START else lane.successors

@@ -47,5 +47,5 @@ def _contact_agrees(junction: Junction, c: Connection, target: Road, contact: Co
     if link is None:
         return False
     if junction.type is JunctionType.DIRECT:
-        return link.element_type is ElementType.JUNCTION and link.element_id == junction.id
-    return link.element_type is ElementType.ROAD and link.element_id == c.incoming_road
+        return link.names(ElementType.JUNCTION, junction.id)
+    return link.names(ElementType.ROAD, c.incoming_road)
