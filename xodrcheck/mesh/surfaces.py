@@ -32,6 +32,7 @@ from xodrcheck.support import work
 from xodrcheck.support.arrays import batches, ranges
 
 __all__ = [
+    "FACE_BLOCK",
     "MAX_COORDINATE",
     "MESH_BATCH",
     "SAMPLE_SECTIONS",
@@ -76,16 +77,22 @@ class LaneSurfaces:
     @cached_property
     def face_areas(self) -> np.ndarray:
         """Area of each face in 3D."""
-        a, b, c = (self.vertices[self.faces[:, k]] for k in range(3))
-        return 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
+        return self._per_face(_face_area)
 
     @cached_property
     def plan_areas(self) -> np.ndarray:
         """Signed plan-view area of each face: positive where the lane surface lies the right way up, negative where it
         folds back over itself."""
-        a, b, c = (self.vertices[self.faces[:, k], :2] for k in range(3))
-        u, v = b - a, c - a
-        return 0.5 * (u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
+        return self._per_face(_plan_area)
+
+    def _per_face(self, measure: Callable[[np.ndarray, np.ndarray, np.ndarray], np.ndarray]) -> np.ndarray:
+        """``measure(a, b, c)`` of every face's corners, in blocks of :data:`FACE_BLOCK` faces (the corners of a big
+        map's faces at once are hundreds of MB of temporaries)."""
+        out = np.empty(len(self.faces))
+        for lo in range(0, len(self.faces), FACE_BLOCK):
+            faces = self.faces[lo : lo + FACE_BLOCK]
+            out[lo : lo + len(faces)] = measure(*(self.vertices[faces[:, k]] for k in range(3)))
+        return out
 
     def lane_areas(self) -> np.ndarray:
         """3D surface area of each lane strip."""
@@ -141,6 +148,19 @@ class LaneSurfaces:
         import trimesh
 
         return trimesh.Trimesh(vertices=self.vertices, faces=self.faces, process=False, validate=False)
+
+
+#: Faces measured at a time (:meth:`LaneSurfaces.face_areas`, :meth:`LaneSurfaces.plan_areas`).
+FACE_BLOCK = 1 << 16
+
+
+def _face_area(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
+    return 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
+
+
+def _plan_area(a: np.ndarray, b: np.ndarray, c: np.ndarray) -> np.ndarray:
+    u, v = b[:, :2] - a[:, :2], c[:, :2] - a[:, :2]
+    return 0.5 * (u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0])
 
 
 def _strip_faces(lane_count: int, n: int, left: np.ndarray) -> np.ndarray:
