@@ -118,7 +118,9 @@ def road_end(ctx: Context, road: Road, end: ContactPoint) -> RoadEnd:
         geometry = ctx.geometry(road.id)
         assert geometry is not None, "road_end is asked for usable roads only"
         index, ends, s = end_samples(road, end)
-        curves = end_curves(ctx).get((road.id, index))
+        # taken out: each (road, section) is asked for once (both ends of a one-section road in one call), and the
+        # curves of a big map's ends are large
+        curves = end_curves(ctx).pop((road.id, index), None)
         if curves is None:
             curves = geometry.border_curves(index, s)
         inner: dict[int, int] = {}
