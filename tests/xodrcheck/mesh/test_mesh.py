@@ -244,3 +244,18 @@ def test_derived_caches_die_with_their_document():
     del document, index
     gc.collect()
     assert alive() is None
+
+
+def test_meshing_leaves_no_road_geometry_cached_with_the_document():
+    """The mesh evaluates its roads with geometry of its own, dropped run by run: a big map's mesh does not keep every
+    road's evaluated geometry alive beside it (nor is a geometry the rules cached replaced)."""
+    from xodrcheck.geometry.lanes import geometry_of
+    from xodrcheck.model import document_cache
+
+    doc = document(Line(0.0, 0.0, 0.0, 0.0, 50.0), 50.0)
+    assert len(build_surfaces(doc, chord=0.05).lanes) == 2
+    assert "geometry" not in document_cache(doc)
+    cached = geometry_of(doc)
+    cached["r"]  # a rule evaluated the road
+    build_surfaces(doc, chord=0.05)
+    assert document_cache(doc)["geometry"] is cached and cached.built() == ["r"]
