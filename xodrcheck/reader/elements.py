@@ -11,14 +11,16 @@ from xodrcheck.model import ElementTable
 
 
 def element_table(root: etree._Element) -> ElementTable:
-    """Every node under (and with) ``root``, in document order: three passes of the tree's own iteration straight
-    into the arrays (a pass of tuples would hold about 100 bytes a node beside the tree while it is built); the
-    parents follow from the child counts."""
-    lines = array("i", (el.sourceline or 0 for el in root.iter()))
-    counts = array("i", (len(el) for el in root.iter()))
+    """Every node under (and with) ``root``, in document order, in one pass of the tree's own iteration straight into
+    the arrays (a list of tuples would hold about 100 bytes a node beside the tree while it is built); the parents
+    follow from the child counts."""
+    lines, counts, tags = array("i"), array("i"), array("i")
     names: dict[object, int] = {}
     number = names.setdefault
-    tags = array("i", (number(el.tag, len(names)) for el in root.iter()))
+    for el in root.iter():
+        lines.append(el.sourceline or 0)
+        counts.append(len(el))
+        tags.append(number(el.tag, len(names)))
     # an entity reference a recovering parse kept is a node without a tag name of its own
     tag_names = tuple(name if isinstance(name, str) else "node()" for name in names)
     return ElementTable(lines, counts, tags, tag_names)
