@@ -36,8 +36,8 @@ from xodrcheck.support import work
 from xodrcheck.support.arrays import batches
 
 #: Samples evaluated together by the checker's file-wide passes (sections' lane lines, road ends, the curvature and
-#: junction rules): the temporaries of one pass scale with it (a 10 km map's sections at once took about 1 GB more
-#: than the results; batches keep that to tens of MB at the same speed).
+#: junction rules): the temporaries of one pass scale with it (many times the results' size); batches keep them to
+#: tens of MB at the speed of one pass.
 BATCH_SAMPLES = 1 << 17
 
 _WHERE = ("centre", "inner", "outer")

@@ -72,8 +72,8 @@ _WHERE = ("centre", "inner", "outer")
 
 
 #: Bytes of lane evaluations the roads of one document keep cached together
-#: (:class:`~xodrcheck.support.budget.ByteBudget`; each road also keeps at most its last few): a 10 km map's roads kept
-#: 466 MB after the curvature rules without it.
+#: (:class:`~xodrcheck.support.budget.ByteBudget`; each road also keeps at most its last few): unbounded, a big map's
+#: cached evaluations grow with the map.
 EVALUATION_BUDGET = 32 << 20
 
 

@@ -35,8 +35,8 @@ _HEIGHT_POINTS = 24
 PAIR_BLOCK = 4096
 
 
-#: Mesh vertices whose lane outlines are made polygons at a time (the temporaries scale with it: a 10 km map's
-#: outlines at once peaked about 450 MB over the mesh).
+#: Mesh vertices whose lane outlines are made polygons at a time (the temporaries scale with it, a few times the
+#: vertices' own size).
 OUTLINE_BLOCK = 1 << 18
 
 

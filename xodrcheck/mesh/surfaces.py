@@ -310,10 +310,10 @@ class _Part:
 
 
 #: Border-line points (samples times lines) of the sections meshed in one evaluation: the temporaries of a call scale
-#: with it (a 10 km map's sections at once peaked about 900 MB over the mesh).
+#: with it, so a big map is meshed in batches, not all at once.
 MESH_BATCH = 1 << 18
-#: Sections sampled in one :func:`~xodrcheck.geometry.sampling.sample_sections` call (its temporaries scale with them:
-#: a 10 km map's 31,352 sections at once peaked 971 MB for 7 MB of samples).
+#: Sections sampled in one :func:`~xodrcheck.geometry.sampling.sample_sections` call (its temporaries scale with them,
+#: many times the samples' own size); also about the sections whose road geometry the mesh holds at once.
 SAMPLE_SECTIONS = 1 << 10
 
 

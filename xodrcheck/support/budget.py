@@ -2,7 +2,7 @@
 
 The geometric rules cache evaluations per road (a road's last lane evaluations, a lane section's sampled lines), so
 that the rules asking for the same numbers share one computation. Kept for the whole check, those caches grew with
-the map (a 10 km map: about 1 GB after the sampled rules); counted against one :class:`ByteBudget` per document,
+the map; counted against one :class:`ByteBudget` per document,
 they keep what fits, and a dropped entry is computed again when asked for, with the same numbers. A small map's
 caches fit whole: it is checked as fast as without a bound.
 """

@@ -2,8 +2,8 @@
 
 A check parses the file with lxml, builds the model, frees the parse tree, and then runs rule after rule, each
 building and dropping numpy arrays and geometry. glibc's allocator keeps most of what is freed in its heap instead of
-returning it (the lxml tree of a 15 MB file is about 200 MB of small blocks): the process's resident size then grows
-with every step although the live data does not, and a 50 MB map peaked at 3.5 GB. :func:`release` asks the
+returning it (an lxml tree is many small blocks, about ten times the file's size): the process's resident size then
+grows with every step although the live data does not. :func:`release` asks the
 allocator to return its free pages (``malloc_trim(0)``), which it does in milliseconds. On a C library without
 ``malloc_trim`` (macOS, musl) it does nothing: results never depend on it, only the process's size.
 """

@@ -59,8 +59,8 @@ LINES: weakref.WeakKeyDictionary[Context, SectionCache] = weakref.WeakKeyDiction
 
 #: Bytes of :class:`SectionLines` kept per file (:class:`SectionCache`): a small map's lines are evaluated once for
 #: all the rules (every corpus file fits, CARLA's Town05 included); of a big map's, each rule that reads them
-#: evaluates again, batch by batch, those that do not fit (kept whole, a 10 km map's took 490 MB). 64 MB: the 10 km
-#: generated map's whole check peaks at 995 MiB (1061 with 192 MB), 228 s CPU.
+#: evaluates again, batch by batch, those that do not fit (kept whole, a big map's lines grow with the map): the bound
+#: trades evaluating again for a big map's peak memory (benchmarks/bench_memory.py measures it).
 LINES_BUDGET = 64 << 20
 
 
