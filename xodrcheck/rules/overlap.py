@@ -122,6 +122,16 @@ def _message(
     )
 
 
+#: Lane sections from which a file's first overlap rule collects garbage before meshing
+#: (:func:`xodrcheck.support.memory.give_back`): worth its cost on a big map, whose caches were large; a collection
+#: costs with every object of the process, so a process checking many small files would pay it for nothing.
+GIVE_BACK_SECTIONS = 5000
+
+
+def _sections(ctx: Context) -> int:
+    return sum(len(road.lane_sections) for road in ctx.document.roads)
+
+
 def _in_junction(ctx: Context, road_id: str) -> bool:
     road = ctx.road(road_id)
     return road is not None and road.junction is not None
@@ -132,7 +142,8 @@ def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: 
 
     release_lines(ctx)  # the rules after these read no section lines or road ends: room for the lane meshes
     ctx.release_geometry()  # and the roads' geometry the earlier rules cached: the mesh evaluates what it needs
-    memory.give_back()  # what they held, before the largest allocation of a check (the whole map's lane meshes)
+    if "_overlap_pairs" not in ctx.__dict__ and _sections(ctx) >= GIVE_BACK_SECTIONS:
+        memory.give_back()  # what they held, before the largest allocation of a big map's check (its lane meshes)
     surfaces = _overlap_index(ctx).surfaces
     roadside = _pairs(ctx, False) if drivable else {}
     for roads, pair in sorted(_pairs(ctx, drivable).items()):
