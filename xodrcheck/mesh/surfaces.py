@@ -25,7 +25,7 @@ import numpy as np
 from xodrcheck.config import Tolerances
 from xodrcheck.findings import XodrError
 from xodrcheck.geometry.batch import Evaluation
-from xodrcheck.geometry.lanes import RoadGeometry
+from xodrcheck.geometry.lanes import RoadGeometry, road_geometry
 from xodrcheck.geometry.sampling import sample_sections
 from xodrcheck.model import Document, Lane, LaneKey, document_cache, lane_type_name
 from xodrcheck.support import work
@@ -211,14 +211,16 @@ def build_surfaces(
 
 
 def _sections(document: Document, wanted: frozenset | None) -> Iterator[list[_Section]]:
-    """The lane sections to mesh, road after road, in runs of about :data:`SAMPLE_SECTIONS` sections. Each run
-    evaluates its roads with a :class:`RoadGeometry` of its own, dropped with the run: the mesh of a big map holds the
-    geometry of one run at a time, and leaves none in the document's cache."""
+    """The lane sections to mesh, road after road, in runs of about :data:`SAMPLE_SECTIONS` sections. Their roads'
+    geometry is the document's cached one where the rules built it (``geometry_of``), else each run's own, dropped
+    with the run: the mesh of a big map (whose check drops the cache first) holds the geometry of one run at a time
+    and leaves none in the document's cache."""
+    cached = document_cache(document).get("geometry")
     todo: list[_Section] = []
     for road in document.roads:
         if not road.plan_view:
             continue
-        rg = RoadGeometry(road)
+        rg = RoadGeometry(road) if cached is None else road_geometry(cached, road)
         for index, section in enumerate(road.lane_sections):
             if road.section_end(index) > section.s:
                 pairs = _lane_pairs(rg, index, wanted)

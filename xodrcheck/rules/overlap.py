@@ -122,9 +122,10 @@ def _message(
     )
 
 
-#: Lane sections from which a file's first overlap rule collects garbage before meshing
-#: (:func:`xodrcheck.support.memory.give_back`): worth its cost on a big map, whose caches were large; a collection
-#: costs with every object of the process, so a process checking many small files would pay it for nothing.
+#: Lane sections from which a file's first overlap rule drops the roads' cached geometry and collects garbage before
+#: meshing (:func:`xodrcheck.support.memory.give_back`): worth it on a big map, whose caches are large; a small map's
+#: mesh reuses the geometry, and a collection costs with every object of the process (many small checks in one
+#: process would pay it for nothing).
 GIVE_BACK_SECTIONS = 5000
 
 
@@ -141,8 +142,8 @@ def _findings(ctx: Context, check, drivable: bool, junction: bool | None, what: 
     from xodrcheck.rules.shared.sampled import release_lines
 
     release_lines(ctx)  # the rules after these read no section lines or road ends: room for the lane meshes
-    ctx.release_geometry()  # and the roads' geometry the earlier rules cached: the mesh evaluates what it needs
     if "_overlap_pairs" not in ctx.__dict__ and _sections(ctx) >= GIVE_BACK_SECTIONS:
+        ctx.release_geometry()  # a big map: the mesh evaluates its roads run by run, not with every road's geometry
         memory.give_back()  # what they held, before the largest allocation of a big map's check (its lane meshes)
     surfaces = _overlap_index(ctx).surfaces
     roadside = _pairs(ctx, False) if drivable else {}
